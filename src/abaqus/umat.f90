@@ -1,0 +1,86 @@
+!> Abaqus/Standard UMAT for cohesive elements (RESPONSE=TRACTION SEPARATION, constitutive
+!> thickness 1): STRAN and DSTRAN are separations (mm), normal first, then the shear(s);
+!> STRESS are tractions (MPa); DDSDDE = d(traction)/d(separation) (MPa/mm), unsymmetric
+!> (use *USER MATERIAL, UNSYMM). PROPS and STATEV are documented in docs/abaqus.md.
+!>
+!> This adapter only packs arguments and calls the pure kernel. On a failed update it lowers
+!> PNEWDT, reports through `interphase_host_message` and returns before touching STRESS,
+!> STATEV, DDSDDE, SSE or SPD. Thread-safe: no SAVE, COMMON or module data is written.
+!> SSE returns the stored energy and SPD accumulates the dissipated energy per unit area
+!> (N/mm): SPD += 1/2 (t_n + t).ds - (psi - psi_n), with psi_n the SSE passed in.
+subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, &
+      stran, dstran, time, dtime, temp, dtemp, predef, dpred, cmname, ndi, nshr, ntens, &
+      nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, &
+      layer, kspt, jstep, kinc)
+   use interphase_kinds, only: dp
+   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, MESSAGE_LEN, SEVERITY_WARNING, &
+      SEVERITY_FATAL, status_message
+   use interphase_params, only: law_params_type, from_props
+   use interphase_state, only: interface_state_type, state_unpack, state_pack
+   use interphase_kernel, only: interface_update
+   use interphase_abaqus_interfaces, only: interphase_host_message
+   implicit none
+   integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, layer, kspt, kinc
+   integer, intent(in) :: jstep(4)
+   real(dp), intent(inout) :: stress(ntens), statev(nstatv), ddsdde(ntens, ntens)
+   real(dp), intent(inout) :: sse, spd, scd, rpl, pnewdt
+   real(dp), intent(inout) :: ddsddt(ntens), drplde(ntens), drpldt
+   real(dp), intent(in) :: stran(ntens), dstran(ntens), time(2), dtime, temp, dtemp
+   real(dp), intent(in) :: predef(*), dpred(*), props(nprops), coords(3), drot(3, 3)
+   real(dp), intent(in) :: celent, dfgrd0(3, 3), dfgrd1(3, 3)
+   character(len=80), intent(in) :: cmname
+
+   !> Factor applied to PNEWDT when an update fails (Abaqus retries a smaller increment).
+   real(dp), parameter :: PNEWDT_CUTBACK = 0.25_dp
+
+   type(law_params_type) :: params
+   type(interface_state_type) :: old, new
+   real(dp) :: s(3), traction(3), tangent(3, 3), psi
+   integer :: status
+   character(len=MESSAGE_LEN) :: message
+
+   if ((ntens /= 2 .and. ntens /= 3) .or. ndi /= 1 .or. nshr /= ntens - 1) then
+      write (message, '(a,i0,a,i0,a,i0,a)') 'NTENS = ', ntens, ', NDI = ', ndi, ', NSHR = ', nshr, &
+         ': interphase needs a cohesive element with NDI = 1 and NSHR = 1 (2-D) or 2 (3-D)'
+      call fail(STATUS_BAD_NTENS, SEVERITY_FATAL)
+      return
+   end if
+   call from_props(props, params, status, message)
+   if (status /= STATUS_OK) then
+      call fail(status, SEVERITY_FATAL)
+      return
+   end if
+   call state_unpack(statev, ntens, old, status, message)
+   if (status /= STATUS_OK) then
+      call fail(status, SEVERITY_FATAL)
+      return
+   end if
+
+   s(1:ntens) = stran + dstran
+   call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
+      new, psi, status)
+   if (status /= STATUS_OK) then
+      write (message, '(a,3es12.4)') 'update failed at separation (mm) ', s(1:ntens)
+      call fail(status, SEVERITY_WARNING)
+      return
+   end if
+
+   spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
+   sse = psi
+   stress = traction(1:ntens)
+   ddsdde = tangent(1:ntens, 1:ntens)
+   call state_pack(new, statev)
+
+contains
+
+   !> Lower PNEWDT and pass the message, with where it happened, to the host.
+   subroutine fail(code, severity)
+      integer, intent(in) :: code, severity
+      character(len=2*MESSAGE_LEN) :: full
+      pnewdt = min(pnewdt, PNEWDT_CUTBACK)
+      write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
+         ': ', status_message(code), ': ', trim(message)
+      call interphase_host_message(severity, trim(full))
+   end subroutine fail
+
+end subroutine umat

@@ -1,0 +1,71 @@
+!> The coefficient set of the paper's section 4 at one crack length, in interface units, and its
+!> providers. The update (`interphase_kernel`) is written once against this set; each model is a
+!> provider of it: the simplified spring model (section 3.4) here, the micromechanical RVE
+!> tables later.
+!>
+!> Interface units: the paper's RVE coefficients are per unit mean strain E = s/h; here they are
+!> divided by h so that the update works on the separation s (mm) directly:
+!> k = C/h, kc = C^c/h, dbar = Dbar/h, tc_t = T^c_T/h, sc_n = S^c_N/h; C^f, T^f are per unit
+!> slip lambda (mm) already. The symmetric RVE (crack centred, periodic sides) makes every
+!> cross term vanish (C_TN = C_NT = 0, Dbar_TN = Dbar_NT = 0, T^c_N = S^c_T = 0, C^f_N = 0,
+!> S^f = 0; MODEL-NOTES section 6); providers guarantee it and the set holds the non-zero
+!> members only, which is also what in-plane isotropy requires in 3-D.
+module interphase_coefficients
+   use interphase_kinds, only: dp
+   implicit none
+   private
+   public :: coefficient_set_type, simplified_coefficients
+
+   !> Coefficients at one damage D = a/b (or their derivatives d/dD, in the same type).
+   type :: coefficient_set_type
+      real(dp) :: k_n = 0.0_dp     !! C_NN/h: open-crack normal stiffness (MPa/mm)
+      real(dp) :: k_t = 0.0_dp     !! C_TT/h: open-crack tangential stiffness (MPa/mm)
+      real(dp) :: kc_n = 0.0_dp    !! C^c_NN/h: contact stiffness added when closed (MPa/mm)
+      real(dp) :: kc_t = 0.0_dp    !! C^c_TT/h (MPa/mm)
+      real(dp) :: dbar_n = 0.0_dp  !! Dbar_NN/h: mean crack opening per unit s_N (-)
+      real(dp) :: dbar_t = 0.0_dp  !! Dbar_TT/h: mean crack sliding per unit s_T (-)
+      real(dp) :: tc_t = 0.0_dp    !! T^c_T/h: mean crack shear stress per unit s_T, closed (MPa/mm)
+      real(dp) :: sc_n = 0.0_dp    !! S^c_N/h: mean crack normal stress per unit s_N, closed (MPa/mm)
+      real(dp) :: cf_t = 0.0_dp    !! C^f_T: interface shear traction per unit slip (MPa/mm)
+      real(dp) :: tf = 0.0_dp      !! T^f: mean crack shear stress per unit slip, < 0 (MPa/mm)
+      real(dp) :: ufbar = 0.0_dp   !! mean over the crack of the slip shape u^f, max|u^f| = 1 (-)
+   end type coefficient_set_type
+
+contains
+
+   !> The simplified (spring) model of section 3.4, eqs 31-35 (the Alfano-Sacco law), and its
+   !> derivatives with respect to D. With lambda in mm: C = (1-D) C^, Dbar = h I, C^c = D C^,
+   !> T^c_T = C^_TT, S^c_N = C^_NN, C^f_T = -D K_T, T^f = -K_T, u^f = 1.
+   pure subroutine simplified_coefficients(k_n, k_t, d, coef, dcoef_dd)
+      real(dp), intent(in) :: k_n                    !! K_N (MPa/mm)
+      real(dp), intent(in) :: k_t                    !! K_T (MPa/mm)
+      real(dp), intent(in) :: d                      !! damage D (-)
+      type(coefficient_set_type), intent(out) :: coef       !! coefficients at D
+      type(coefficient_set_type), intent(out) :: dcoef_dd   !! their derivatives d/dD
+
+      coef%k_n = (1.0_dp - d)*k_n
+      coef%k_t = (1.0_dp - d)*k_t
+      coef%kc_n = d*k_n
+      coef%kc_t = d*k_t
+      coef%dbar_n = 1.0_dp
+      coef%dbar_t = 1.0_dp
+      coef%tc_t = k_t
+      coef%sc_n = k_n
+      coef%cf_t = -d*k_t
+      coef%tf = -k_t
+      coef%ufbar = 1.0_dp
+
+      dcoef_dd%k_n = -k_n
+      dcoef_dd%k_t = -k_t
+      dcoef_dd%kc_n = k_n
+      dcoef_dd%kc_t = k_t
+      dcoef_dd%dbar_n = 0.0_dp
+      dcoef_dd%dbar_t = 0.0_dp
+      dcoef_dd%tc_t = 0.0_dp
+      dcoef_dd%sc_n = 0.0_dp
+      dcoef_dd%cf_t = -k_t
+      dcoef_dd%tf = 0.0_dp
+      dcoef_dd%ufbar = 0.0_dp
+   end subroutine simplified_coefficients
+
+end module interphase_coefficients

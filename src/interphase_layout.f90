@@ -1,0 +1,58 @@
+!> The Abaqus-facing layout of interphase: PROPS and STATEV slot numbers and the codes stored in
+!> them. This module is the only place that knows which slot holds what; `docs/abaqus.md` is its
+!> user-facing copy and must be kept in step with it.
+module interphase_layout
+   implicit none
+   private
+
+   ! ---- PROPS (material constants, `*USER MATERIAL, CONSTANTS=...`) --------------------------
+   !> Model selector: MODEL_SIMPLIFIED or MODEL_MICROMECHANICAL.
+   integer, parameter, public :: PROP_MODEL = 1
+   !> Damage-law selector: DAMAGE_DISPLACEMENT.
+   integer, parameter, public :: PROP_DAMAGE_LAW = 2
+   !> Coulomb friction coefficient mu on the crack faces (-), mu >= 0.
+   integer, parameter, public :: PROP_MU = 3
+   !> First-cracking normal separation s0_N (mm), > 0.
+   integer, parameter, public :: PROP_S0_N = 4
+   !> Full-crack normal separation sf_N (mm), > s0_N.
+   integer, parameter, public :: PROP_SF_N = 5
+   !> First-cracking tangential separation s0_T (mm), > 0.
+   integer, parameter, public :: PROP_S0_T = 6
+   !> Full-crack tangential separation sf_T (mm), > s0_T.
+   integer, parameter, public :: PROP_SF_T = 7
+   !> Simplified model: normal spring stiffness K_N = C^_NN/h (MPa/mm), > 0.
+   integer, parameter, public :: PROP_K_N = 8
+   !> Simplified model: tangential spring stiffness K_T = C^_TT/h (MPa/mm), > 0.
+   integer, parameter, public :: PROP_K_T = 9
+   !> Number of PROPS the simplified model takes.
+   integer, parameter, public :: NPROPS_SIMPLIFIED = 9
+
+   !> PROPS(PROP_MODEL) value: the simplified spring model of the paper's section 3.4.
+   integer, parameter, public :: MODEL_SIMPLIFIED = 1
+   !> PROPS(PROP_MODEL) value: the micromechanical model on RVE tables (not yet available).
+   integer, parameter, public :: MODEL_MICROMECHANICAL = 2
+   !> PROPS(PROP_DAMAGE_LAW) value: the displacement-driven damage law, eqs 13-18.
+   integer, parameter, public :: DAMAGE_DISPLACEMENT = 1
+
+   ! ---- STATEV (solution-dependent state, `*DEPVAR`) -----------------------------------------
+   !> Damage D = a/b (-), history maximum, 0 <= D <= 1.
+   integer, parameter, public :: SV_DAMAGE = 1
+   !> Frictional slip lambda, first tangential component (mm).
+   integer, parameter, public :: SV_SLIP_1 = 2
+   !> Frictional slip lambda, second tangential component (mm); stays 0 in 2-D.
+   integer, parameter, public :: SV_SLIP_2 = 3
+   !> Regime of the last converged update (output only): one of the REGIME_* codes.
+   integer, parameter, public :: SV_REGIME = 4
+   !> Number of STATEV slots interphase uses (NSTATV must be at least this).
+   integer, parameter, public :: NSTATV_REQUIRED = 4
+
+   !> Regime codes (STATEV(SV_REGIME)): no crack yet.
+   integer, parameter, public :: REGIME_INTACT = 0
+   !> Regime code: crack open, crack faces traction-free.
+   integer, parameter, public :: REGIME_OPEN = 1
+   !> Regime code: crack closed, faces stick.
+   integer, parameter, public :: REGIME_STICK = 2
+   !> Regime code: crack closed, faces slip (Coulomb).
+   integer, parameter, public :: REGIME_SLIP = 3
+
+end module interphase_layout

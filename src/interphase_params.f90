@@ -1,0 +1,154 @@
+!> Material parameters of the interface law and their one decoder from an Abaqus PROPS array.
+!> Every value is range-checked here, once, with a message that names the PROPS index, the
+!> symbol, the value and the admissible range; nothing is clamped.
+module interphase_params
+   use interphase_kinds, only: dp
+   use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
+      PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
+      MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT
+   use interphase_status, only: STATUS_OK, STATUS_BAD_NPROPS, STATUS_BAD_MODEL, &
+      STATUS_BAD_DAMAGE_LAW, STATUS_BAD_MU, STATUS_BAD_S0_N, STATUS_BAD_SF_N, STATUS_BAD_S0_T, &
+      STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_MODEL_UNAVAILABLE, MESSAGE_LEN
+   implicit none
+   private
+   public :: law_params_type, from_props, params_from_values
+
+   !> Parameters of one interface material (immutable once decoded).
+   type :: law_params_type
+      integer :: model = MODEL_SIMPLIFIED            !! MODEL_* selector
+      integer :: damage_law = DAMAGE_DISPLACEMENT    !! DAMAGE_* selector
+      real(dp) :: mu = 0.0_dp                        !! Coulomb friction coefficient (-)
+      real(dp) :: s0_n = 0.0_dp                      !! first-cracking normal separation (mm)
+      real(dp) :: sf_n = 0.0_dp                      !! full-crack normal separation (mm)
+      real(dp) :: s0_t = 0.0_dp                      !! first-cracking tangential separation (mm)
+      real(dp) :: sf_t = 0.0_dp                      !! full-crack tangential separation (mm)
+      real(dp) :: k_n = 0.0_dp                       !! simplified model: K_N = C^_NN/h (MPa/mm)
+      real(dp) :: k_t = 0.0_dp                       !! simplified model: K_T = C^_TT/h (MPa/mm)
+      real(dp) :: eta_n = 0.0_dp                     !! eta_N = s0_N/sf_N (-), eq 13
+      real(dp) :: eta_t = 0.0_dp                     !! eta_T = s0_T/sf_T (-), eq 13
+   end type law_params_type
+
+contains
+
+   !> Decode and validate an Abaqus PROPS array. On failure `params` is undefined, `status`
+   !> names the first bad value and `message` says which PROPS index, its value and the range.
+   pure subroutine from_props(props, params, status, message)
+      real(dp), intent(in) :: props(:)                  !! PROPS as given by the host
+      type(law_params_type), intent(out) :: params      !! decoded parameters
+      integer, intent(out) :: status                    !! STATUS_OK or a STATUS_BAD_* code
+      character(len=MESSAGE_LEN), intent(out) :: message   !! empty on success
+
+      integer :: model, damage_law
+
+      status = STATUS_OK
+      message = ''
+      if (size(props) < PROP_DAMAGE_LAW) then
+         status = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a)') 'NPROPS = ', size(props), &
+            ' is too small: PROPS(1) selects the model, PROPS(2) the damage law'
+         return
+      end if
+      model = selector_code(props(PROP_MODEL))
+      if (model /= MODEL_SIMPLIFIED .and. model /= MODEL_MICROMECHANICAL) then
+         status = STATUS_BAD_MODEL
+         write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_MODEL, ') model = ', props(PROP_MODEL), &
+            ' is not a model: use 1 (simplified spring model) or 2 (micromechanical)'
+         return
+      end if
+      if (model == MODEL_MICROMECHANICAL) then
+         status = STATUS_MODEL_UNAVAILABLE
+         write (message, '(a,i0,a)') 'PROPS(', PROP_MODEL, &
+            ') model = 2 (micromechanical, RVE tables) is not available in this version'
+         return
+      end if
+      if (size(props) /= NPROPS_SIMPLIFIED) then
+         status = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a,i0)') 'NPROPS = ', size(props), &
+            ' but the simplified model takes exactly ', NPROPS_SIMPLIFIED
+         return
+      end if
+      damage_law = selector_code(props(PROP_DAMAGE_LAW))
+      if (damage_law /= DAMAGE_DISPLACEMENT) then
+         status = STATUS_BAD_DAMAGE_LAW
+         write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_DAMAGE_LAW, ') damage law = ', &
+            props(PROP_DAMAGE_LAW), ' is not a damage law: use 1 (displacement-driven, eqs 13-18)'
+         return
+      end if
+
+      call params_from_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), &
+         props(PROP_SF_N), props(PROP_S0_T), props(PROP_SF_T), props(PROP_K_N), props(PROP_K_T), &
+         params, status, message)
+   end subroutine from_props
+
+   !> Build and validate parameters from named values (the same checks as `from_props`; the
+   !> messages cite the PROPS index each value occupies).
+   pure subroutine params_from_values(model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, &
+         params, status, message)
+      integer, intent(in) :: model                 !! MODEL_* selector
+      integer, intent(in) :: damage_law            !! DAMAGE_* selector
+      real(dp), intent(in) :: mu                   !! friction coefficient (-)
+      real(dp), intent(in) :: s0_n, sf_n           !! normal first-cracking / full-crack separations (mm)
+      real(dp), intent(in) :: s0_t, sf_t           !! tangential first-cracking / full-crack separations (mm)
+      real(dp), intent(in) :: k_n, k_t             !! spring stiffnesses (MPa/mm)
+      type(law_params_type), intent(out) :: params
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+
+      status = STATUS_OK
+      message = ''
+      ! Each test is written so that NaN fails it.
+      if (.not. (mu >= 0.0_dp .and. mu <= huge(mu))) then
+         call reject(STATUS_BAD_MU, PROP_MU, 'mu', mu, 'must be finite and >= 0', status, message)
+      else if (.not. (s0_n > 0.0_dp .and. s0_n <= huge(s0_n))) then
+         call reject(STATUS_BAD_S0_N, PROP_S0_N, 's0_N', s0_n, 'must be finite and > 0 mm', status, message)
+      else if (.not. (sf_n > s0_n .and. sf_n <= huge(sf_n))) then
+         call reject(STATUS_BAD_SF_N, PROP_SF_N, 'sf_N', sf_n, 'must be finite and > s0_N = PROPS(4)', status, message)
+      else if (.not. (s0_t > 0.0_dp .and. s0_t <= huge(s0_t))) then
+         call reject(STATUS_BAD_S0_T, PROP_S0_T, 's0_T', s0_t, 'must be finite and > 0 mm', status, message)
+      else if (.not. (sf_t > s0_t .and. sf_t <= huge(sf_t))) then
+         call reject(STATUS_BAD_SF_T, PROP_SF_T, 'sf_T', sf_t, 'must be finite and > s0_T = PROPS(6)', status, message)
+      else if (.not. (k_n > 0.0_dp .and. k_n <= huge(k_n))) then
+         call reject(STATUS_BAD_K_N, PROP_K_N, 'K_N', k_n, 'must be finite and > 0 MPa/mm', status, message)
+      else if (.not. (k_t > 0.0_dp .and. k_t <= huge(k_t))) then
+         call reject(STATUS_BAD_K_T, PROP_K_T, 'K_T', k_t, 'must be finite and > 0 MPa/mm', status, message)
+      end if
+      if (status /= STATUS_OK) return
+
+      params%model = model
+      params%damage_law = damage_law
+      params%mu = mu
+      params%s0_n = s0_n
+      params%sf_n = sf_n
+      params%s0_t = s0_t
+      params%sf_t = sf_t
+      params%k_n = k_n
+      params%k_t = k_t
+      params%eta_n = s0_n/sf_n
+      params%eta_t = s0_t/sf_t
+
+   contains
+
+      pure subroutine reject(code, index, symbol, value, rule, status, message)
+         integer, intent(in) :: code, index
+         character(len=*), intent(in) :: symbol, rule
+         real(dp), intent(in) :: value
+         integer, intent(out) :: status
+         character(len=MESSAGE_LEN), intent(out) :: message
+         status = code
+         write (message, '(a,i0,a,a,a,es12.5,a,a)') 'PROPS(', index, ') ', symbol, ' = ', value, &
+            ' is out of range: ', rule
+      end subroutine reject
+
+   end subroutine params_from_values
+
+   !> The selector code held by a PROPS value: its integer value when `x` is finite and exactly
+   !> integral, else -1 (which no selector uses).
+   pure integer function selector_code(x) result(code)
+      real(dp), intent(in) :: x
+      code = -1
+      if (.not. (abs(x) < 1.0e6_dp)) return
+      code = nint(x)
+      if (abs(x - real(code, dp)) > 0.0_dp) code = -1
+   end function selector_code
+
+end module interphase_params

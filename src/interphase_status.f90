@@ -1,0 +1,78 @@
+!> Status codes of interphase and their messages. Library code never stops: every failure is a
+!> status that the caller (an adapter, the driver) turns into a cut-back, a host error or an exit.
+module interphase_status
+   implicit none
+   private
+   public :: status_message, severity_label
+
+   !> Length of the message strings that go with a status.
+   integer, parameter, public :: MESSAGE_LEN = 256
+
+   integer, parameter, public :: STATUS_OK = 0
+   ! ---- PROPS and size validation (setup errors) ----
+   integer, parameter, public :: STATUS_BAD_NPROPS = 1
+   integer, parameter, public :: STATUS_BAD_MODEL = 2
+   integer, parameter, public :: STATUS_BAD_DAMAGE_LAW = 3
+   integer, parameter, public :: STATUS_BAD_MU = 4
+   integer, parameter, public :: STATUS_BAD_S0_N = 5
+   integer, parameter, public :: STATUS_BAD_SF_N = 6
+   integer, parameter, public :: STATUS_BAD_S0_T = 7
+   integer, parameter, public :: STATUS_BAD_SF_T = 8
+   integer, parameter, public :: STATUS_BAD_K_N = 9
+   integer, parameter, public :: STATUS_BAD_K_T = 10
+   integer, parameter, public :: STATUS_BAD_NTENS = 11
+   integer, parameter, public :: STATUS_BAD_NSTATV = 12
+   integer, parameter, public :: STATUS_MODEL_UNAVAILABLE = 13
+   ! ---- update failures (the increment may be retried smaller) ----
+   integer, parameter, public :: STATUS_NONFINITE_SEPARATION = 20
+   integer, parameter, public :: STATUS_BAD_STATE = 21
+   integer, parameter, public :: STATUS_BAD_COEFFICIENTS = 22
+
+   !> Severity of a host message: information, warning (the increment is cut back), fatal.
+   integer, parameter, public :: SEVERITY_INFO = 1
+   integer, parameter, public :: SEVERITY_WARNING = 2
+   integer, parameter, public :: SEVERITY_FATAL = 3
+
+contains
+
+   !> Generic text of a status code (callers add the offending value and where it came from).
+   pure function status_message(status) result(message)
+      integer, intent(in) :: status          !! a STATUS_* code
+      character(len=:), allocatable :: message
+
+      select case (status)
+      case (STATUS_OK);                    message = 'success'
+      case (STATUS_BAD_NPROPS);            message = 'wrong number of material constants (NPROPS)'
+      case (STATUS_BAD_MODEL);             message = 'unknown model selector'
+      case (STATUS_BAD_DAMAGE_LAW);        message = 'unknown damage-law selector'
+      case (STATUS_BAD_MU);                message = 'friction coefficient mu out of range'
+      case (STATUS_BAD_S0_N);              message = 'first-cracking normal separation s0_N out of range'
+      case (STATUS_BAD_SF_N);              message = 'full-crack normal separation sf_N out of range'
+      case (STATUS_BAD_S0_T);              message = 'first-cracking tangential separation s0_T out of range'
+      case (STATUS_BAD_SF_T);              message = 'full-crack tangential separation sf_T out of range'
+      case (STATUS_BAD_K_N);               message = 'normal stiffness K_N out of range'
+      case (STATUS_BAD_K_T);               message = 'tangential stiffness K_T out of range'
+      case (STATUS_BAD_NTENS);             message = 'unsupported number of traction components (NTENS)'
+      case (STATUS_BAD_NSTATV);            message = 'too few state variables (NSTATV)'
+      case (STATUS_MODEL_UNAVAILABLE);     message = 'model not available in this build'
+      case (STATUS_NONFINITE_SEPARATION);  message = 'separation is not finite (NaN or Inf)'
+      case (STATUS_BAD_STATE);             message = 'state variables out of range or not finite'
+      case (STATUS_BAD_COEFFICIENTS);      message = 'coefficient set not admissible at this damage'
+      case default;                        message = 'unknown status code'
+      end select
+   end function status_message
+
+   !> Label of a SEVERITY_* code for printed messages.
+   pure function severity_label(severity) result(label)
+      integer, intent(in) :: severity        !! a SEVERITY_* code
+      character(len=:), allocatable :: label
+
+      select case (severity)
+      case (SEVERITY_INFO);    label = 'info'
+      case (SEVERITY_WARNING); label = 'warning'
+      case (SEVERITY_FATAL);   label = 'error'
+      case default;            label = 'message'
+      end select
+   end function severity_label
+
+end module interphase_status

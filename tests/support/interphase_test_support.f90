@@ -1,0 +1,83 @@
+!> Shared helpers of the interphase test suites: the paper's data and a finite-difference tangent.
+module interphase_test_support
+   use interphase_kinds, only: dp
+   use interphase_layout, only: MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
+   use interphase_params, only: law_params_type, params_from_values
+   use interphase_state, only: interface_state_type
+   use interphase_kernel, only: interface_update
+   use interphase_status, only: MESSAGE_LEN
+   implicit none
+   private
+   public :: paper_params, paper_k_n, paper_k_t, fd_tangent, linear_path
+
+   !> RVE data of the paper's section 5 (mm, MPa).
+   real(dp), parameter :: H_M = 2.0_dp, H_B = 3.0_dp, E_M = 1000.0_dp, E_B = 16000.0_dp, NU = 0.15_dp
+
+contains
+
+   !> K_T = C^_TT/h from the laminate closed form of MODEL-NOTES section 6 (MPa/mm).
+   pure real(dp) function paper_k_t()
+      real(dp) :: g_m, g_b
+      g_m = E_M/(2.0_dp*(1.0_dp + NU))
+      g_b = E_B/(2.0_dp*(1.0_dp + NU))
+      paper_k_t = 1.0_dp/(H_M/g_m + H_B/g_b)
+   end function paper_k_t
+
+   !> K_N = C^_NN/h, with the constrained moduli M = E(1-nu)/((1+nu)(1-2nu)) (MPa/mm).
+   pure real(dp) function paper_k_n()
+      real(dp) :: m_m, m_b
+      m_m = E_M*(1.0_dp - NU)/((1.0_dp + NU)*(1.0_dp - 2.0_dp*NU))
+      m_b = E_B*(1.0_dp - NU)/((1.0_dp + NU)*(1.0_dp - 2.0_dp*NU))
+      paper_k_n = 1.0_dp/(H_M/m_m + H_B/m_b)
+   end function paper_k_n
+
+   !> The simplified model with the paper's Table 1 and mu (default 0.75, our assumption).
+   function paper_params(mu) result(params)
+      real(dp), intent(in), optional :: mu
+      type(law_params_type) :: params
+      integer :: status
+      character(len=MESSAGE_LEN) :: message
+      real(dp) :: mu_used
+      mu_used = 0.75_dp
+      if (present(mu)) mu_used = mu
+      call params_from_values(MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, mu_used, 0.00044_dp, 0.04_dp, &
+         0.00072_dp, 0.06_dp, paper_k_n(), paper_k_t(), params, status, message)
+      if (status /= 0) error stop 'paper_params: invalid test data'
+   end function paper_params
+
+   !> Central finite-difference tangent of the update at fixed old state (MPa/mm).
+   function fd_tangent(params, old, s, step) result(tangent)
+      type(law_params_type), intent(in) :: params
+      type(interface_state_type), intent(in) :: old
+      real(dp), intent(in) :: s(:)
+      real(dp), intent(in) :: step           !! separation step (mm)
+      real(dp) :: tangent(size(s), size(s))
+      real(dp) :: sp(size(s)), tp(size(s)), tm(size(s)), k(size(s), size(s)), psi
+      type(interface_state_type) :: new
+      integer :: j, status
+      do j = 1, size(s)
+         sp = s
+         sp(j) = s(j) + step
+         call interface_update(params, old, sp, tp, k, new, psi, status)
+         sp(j) = s(j) - step
+         call interface_update(params, old, sp, tm, k, new, psi, status)
+         tangent(:, j) = (tp - tm)/(2.0_dp*step)
+      end do
+   end function fd_tangent
+
+   !> Points of a piecewise-linear path through `knots(:, k)` with `nsub` equal steps per segment
+   !> (the first column is the first knot).
+   pure function linear_path(knots, nsub) result(path)
+      real(dp), intent(in) :: knots(:, :)
+      integer, intent(in) :: nsub
+      real(dp) :: path(size(knots, 1), (size(knots, 2) - 1)*nsub + 1)
+      integer :: k, i
+      path(:, 1) = knots(:, 1)
+      do k = 1, size(knots, 2) - 1
+         do i = 1, nsub
+            path(:, (k - 1)*nsub + i + 1) = knots(:, k) + (knots(:, k + 1) - knots(:, k))*real(i, dp)/real(nsub, dp)
+         end do
+      end do
+   end function linear_path
+
+end module interphase_test_support

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Install the optional Debian packages interphase uses, when they are missing and we can:
+#   freefem++   (FreeFem++: RVE coefficient tables and their tests)
+#   gnuplot-nox (gnuplot: PNG plots of the driver and of the tables)
+# Usage: tools/ensure-packages.sh [freefem] [gnuplot]   (default: both)
+# Never fails: where a package cannot be installed it says so, and the parts that need it
+# skip with their own clear message.
+set -u
+want=("$@")
+[ ${#want[@]} -eq 0 ] && want=(freefem gnuplot)
+
+declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot)
+declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox)
+
+missing=()
+for w in "${want[@]}"; do
+  c=${cmd_of[$w]:-}
+  if [ -z "$c" ]; then echo "ensure-packages: unknown component '$w'" >&2; continue; fi
+  command -v "$c" >/dev/null 2>&1 || missing+=("${pkg_of[$w]}")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if ! command -v apt-get >/dev/null 2>&1; then
+  echo "ensure-packages: apt-get not available; not installing ${missing[*]} (dependent steps will be skipped)"
+  exit 0
+fi
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then sudo="sudo -n"; else
+    echo "ensure-packages: not root; not installing ${missing[*]} (dependent steps will be skipped)"
+    exit 0
+  fi
+fi
+echo "ensure-packages: installing ${missing[*]} from Debian's packages"
+export DEBIAN_FRONTEND=noninteractive
+if $sudo apt-get update -qq >/dev/null 2>&1 && \
+   $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null 2>&1; then
+  echo "ensure-packages: installed ${missing[*]}"
+else
+  echo "ensure-packages: could not install ${missing[*]} (dependent steps will be skipped)"
+fi
+exit 0
