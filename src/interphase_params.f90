@@ -2,6 +2,7 @@
 !> Every value is range-checked here, once, with a message that names the PROPS index, the
 !> symbol, the value and the admissible range; nothing is clamped.
 module interphase_params
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
@@ -96,20 +97,20 @@ contains
 
       status = STATUS_OK
       message = ''
-      ! Each test is written so that NaN fails it.
-      if (.not. (mu >= 0.0_dp .and. mu <= huge(mu))) then
+      ! Each test fails for NaN and Inf without comparing them (no FP exception is raised).
+      if (.not. finite_at_least(mu, 0.0_dp)) then
          call reject(STATUS_BAD_MU, PROP_MU, 'mu', mu, 'must be finite and >= 0', status, message)
-      else if (.not. (s0_n > 0.0_dp .and. s0_n <= huge(s0_n))) then
+      else if (.not. finite_above(s0_n, 0.0_dp)) then
          call reject(STATUS_BAD_S0_N, PROP_S0_N, 's0_N', s0_n, 'must be finite and > 0 mm', status, message)
-      else if (.not. (sf_n > s0_n .and. sf_n <= huge(sf_n))) then
+      else if (.not. finite_above(sf_n, s0_n)) then
          call reject(STATUS_BAD_SF_N, PROP_SF_N, 'sf_N', sf_n, 'must be finite and > s0_N = PROPS(4)', status, message)
-      else if (.not. (s0_t > 0.0_dp .and. s0_t <= huge(s0_t))) then
+      else if (.not. finite_above(s0_t, 0.0_dp)) then
          call reject(STATUS_BAD_S0_T, PROP_S0_T, 's0_T', s0_t, 'must be finite and > 0 mm', status, message)
-      else if (.not. (sf_t > s0_t .and. sf_t <= huge(sf_t))) then
+      else if (.not. finite_above(sf_t, s0_t)) then
          call reject(STATUS_BAD_SF_T, PROP_SF_T, 'sf_T', sf_t, 'must be finite and > s0_T = PROPS(6)', status, message)
-      else if (.not. (k_n > 0.0_dp .and. k_n <= huge(k_n))) then
+      else if (.not. finite_above(k_n, 0.0_dp)) then
          call reject(STATUS_BAD_K_N, PROP_K_N, 'K_N', k_n, 'must be finite and > 0 MPa/mm', status, message)
-      else if (.not. (k_t > 0.0_dp .and. k_t <= huge(k_t))) then
+      else if (.not. finite_above(k_t, 0.0_dp)) then
          call reject(STATUS_BAD_K_T, PROP_K_T, 'K_T', k_t, 'must be finite and > 0 MPa/mm', status, message)
       end if
       if (status /= STATUS_OK) return
@@ -146,9 +147,24 @@ contains
    pure integer function selector_code(x) result(code)
       real(dp), intent(in) :: x
       code = -1
-      if (.not. (abs(x) < 1.0e6_dp)) return
+      if (.not. ieee_is_finite(x)) return
+      if (abs(x) > 1.0e6_dp) return
       code = nint(x)
       if (abs(x - real(code, dp)) > 0.0_dp) code = -1
    end function selector_code
+
+   !> x is finite and x > lower (false for NaN and Inf, without an invalid-operation exception).
+   pure logical function finite_above(x, lower)
+      real(dp), intent(in) :: x, lower
+      finite_above = .false.
+      if (ieee_is_finite(x)) finite_above = x > lower
+   end function finite_above
+
+   !> x is finite and x >= lower.
+   pure logical function finite_at_least(x, lower)
+      real(dp), intent(in) :: x, lower
+      finite_at_least = .false.
+      if (ieee_is_finite(x)) finite_at_least = x >= lower
+   end function finite_at_least
 
 end module interphase_params

@@ -1,5 +1,6 @@
 !> The history state of one interface point and its one load/store pair with Abaqus STATEV.
 module interphase_state
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
    use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED, &
       REGIME_INTACT, REGIME_SLIP
@@ -39,22 +40,32 @@ contains
       state%slip(1) = statev(SV_SLIP_1)
       state%slip(2) = 0.0_dp
       if (ntens == 3) state%slip(2) = statev(SV_SLIP_2)
-      regime = nint(max(-1.0_dp, min(9.0_dp, statev(SV_REGIME))))
+      regime = -1
+      if (ieee_is_finite(statev(SV_REGIME))) then
+         if (abs(statev(SV_REGIME)) < 10.0_dp) regime = nint(statev(SV_REGIME))
+      end if
       state%regime = regime
-      if (.not. (state%d >= 0.0_dp .and. state%d <= 1.0_dp)) then
+      if (.not. in_unit_interval(state%d)) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE, ') D = ', state%d, &
             ' must lie in [0, 1]'
-      else if (.not. all(abs(state%slip) <= huge(1.0_dp))) then
+      else if (.not. all(ieee_is_finite(state%slip))) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,i0,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
             ') slip is not finite'
-      else if (.not. (statev(SV_REGIME) >= REGIME_INTACT .and. statev(SV_REGIME) <= REGIME_SLIP)) then
+      else if (regime < REGIME_INTACT .or. regime > REGIME_SLIP .or. abs(real(regime, dp) - statev(SV_REGIME)) > 0.0_dp) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_REGIME, ') regime = ', &
             statev(SV_REGIME), ' is not a regime code 0..3'
       end if
    end subroutine state_unpack
+
+   !> 0 <= x <= 1 (false for NaN without an invalid-operation exception).
+   pure logical function in_unit_interval(x)
+      real(dp), intent(in) :: x
+      in_unit_interval = .false.
+      if (ieee_is_finite(x)) in_unit_interval = x >= 0.0_dp .and. x <= 1.0_dp
+   end function in_unit_interval
 
    !> Store the state into STATEV (slots beyond NSTATV_REQUIRED are left alone).
    pure subroutine state_pack(state, statev)

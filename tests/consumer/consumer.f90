@@ -6,13 +6,14 @@ program consumer
    implicit none
    real(dp) :: stress(2), statev(NSTATV_REQUIRED), ddsdde(2, 2), sse, spd, scd, rpl, pnewdt
    real(dp) :: ddsddt(2), drplde(2), drpldt, props(NPROPS_SIMPLIFIED), d3(3, 3), z(1), c(3)
+   character(len=80) :: cmname = 'CONSUMER'
 
    props = [1.0_dp, 1.0_dp, 0.75_dp, 0.00044_dp, 0.04_dp, 0.00072_dp, 0.06_dp, 482.7_dp, 198.8_dp]
    stress = 0.0_dp; statev = 0.0_dp; ddsdde = 0.0_dp; sse = 0.0_dp; spd = 0.0_dp
    scd = 0.0_dp; rpl = 0.0_dp; pnewdt = 1.0_dp; ddsddt = 0.0_dp; drplde = 0.0_dp
    drpldt = 0.0_dp; d3 = 0.0_dp; z = 0.0_dp; c = 0.0_dp
    call umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, [0.0_dp, 0.0_dp], &
-      [0.01_dp, 0.0_dp], [0.0_dp, 0.0_dp], 1.0_dp, 0.0_dp, 0.0_dp, z, z, 'CONSUMER', 1, 1, 2, &
+      [0.01_dp, 0.0_dp], [0.0_dp, 0.0_dp], 1.0_dp, 0.0_dp, 0.0_dp, z, z, cmname, 1, 1, 2, &
       NSTATV_REQUIRED, props, NPROPS_SIMPLIFIED, c, d3, pnewdt, 1.0_dp, d3, d3, 1, 1, 1, 1, [1, 1, 0, 0], 1)
    if (pnewdt < 1.0_dp .or. .not. (statev(SV_DAMAGE) > 0.0_dp)) then
       write (*, '(a)') 'consumer: unexpected UMAT result'

@@ -1,0 +1,667 @@
+!> pfunit_lite runtime: the subset of pFUnit 4.x's `funit` module that interphase's `.pf` suites
+!> use, for machines without pFUnit (see cmake/InterphasePfunit.cmake).
+!>
+!> Generated test code records the `.pf` location with funit_location() before each assertion and
+!> leaves the test when anyExceptions() is true; the generated driver calls funit_initialize(),
+!> funit_run_test() once per @test, then funit_finalize(), which prints `N passed, N failed`.
+!> Nothing here stops the program: the generated driver turns the result into the exit status.
+module funit
+   use, intrinsic :: iso_fortran_env, only: dp => real64, output_unit, error_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
+   implicit none
+   private
+
+   ! ---- assertions (same generic names and keywords as pFUnit) ----
+   public :: assertEqual, assertRelativelyEqual, assertTrue, assertFalse
+   public :: assertLessThan, assertLessThanOrEqual, assertGreaterThan, assertGreaterThanOrEqual
+   public :: assertAll, assertAny, assertIsFinite, anyExceptions
+   ! ---- used by the generated code ----
+   public :: funit_location, funit_initialize, funit_run_test, funit_finalize, funit_test_procedure
+
+   !> funit_initialize() status: run the tests, usage shown on request, bad command line.
+   integer, parameter, public :: FUNIT_RUN = 0, FUNIT_HELP_SHOWN = 1, FUNIT_USAGE_ERROR = 2
+
+   !> Length of the buffer a number is written into.
+   integer, parameter :: NUMBER_LEN = 48
+   !> Above this magnitude a - b may overflow, so differences are formed from halves.
+   real(dp), parameter :: HALF_HUGE = 0.5_dp * huge(1.0_dp)
+   !> Line number meaning "no .pf location recorded".
+   integer, parameter :: NO_LINE = 0
+
+   abstract interface
+      !> A @test, @before or @after procedure.
+      subroutine funit_test_procedure()
+      end subroutine funit_test_procedure
+   end interface
+
+   interface assertEqual
+      module procedure equal_int, equal_int_1d, equal_int_0_1d, equal_logical, equal_string
+      module procedure equal_r0, equal_r0_tol, equal_r1, equal_r1_tol, equal_r0_r1, equal_r0_r1_tol
+      module procedure equal_r2, equal_r2_tol, equal_r0_r2, equal_r0_r2_tol
+   end interface assertEqual
+
+   interface assertRelativelyEqual
+      module procedure relatively_equal_r0, relatively_equal_r1, relatively_equal_r0_r1
+   end interface assertRelativelyEqual
+
+   interface assertTrue
+      module procedure true_0d, true_1d
+   end interface assertTrue
+
+   interface assertFalse
+      module procedure false_0d, false_1d
+   end interface assertFalse
+
+   interface assertLessThan
+      module procedure less_than_int, less_than_real
+   end interface assertLessThan
+
+   interface assertLessThanOrEqual
+      module procedure less_equal_int, less_equal_real
+   end interface assertLessThanOrEqual
+
+   interface assertGreaterThan
+      module procedure greater_than_int, greater_than_real
+   end interface assertGreaterThan
+
+   interface assertGreaterThanOrEqual
+      module procedure greater_equal_int, greater_equal_real
+   end interface assertGreaterThanOrEqual
+
+   interface assertIsFinite
+      module procedure is_finite_r0, is_finite_r1
+   end interface assertIsFinite
+
+   ! ---- state of the run ----
+   character(len=:), allocatable :: location_file   !! .pf file of the assertion being checked
+   integer :: location_line = NO_LINE               !! its line, NO_LINE when unknown
+   character(len=:), allocatable :: current_test    !! "module.test" of the running test
+   logical :: current_failed = .false.              !! an assertion of the running test failed
+   character(len=:), allocatable :: name_filter     !! run only tests whose name contains this
+   logical :: verbose = .false.                     !! print one line per test run
+   integer :: n_passed = 0, n_failed = 0
+
+contains
+
+   ! =============================== driver side ===============================
+
+   !> Reads the command line: `[-f|--filter] NAME`, `-v|--verbose`, `-h|--help`.
+   subroutine funit_initialize(status)
+      integer, intent(out) :: status   !! FUNIT_RUN, FUNIT_HELP_SHOWN or FUNIT_USAGE_ERROR
+      integer :: i, n_args
+      character(len=:), allocatable :: arg
+
+      status = FUNIT_RUN
+      n_args = command_argument_count()
+      i = 0
+      do while (i < n_args)
+         i = i + 1
+         arg = argument(i)
+         select case (arg)
+         case ('-h', '--help')
+            call print_usage(output_unit)
+            status = FUNIT_HELP_SHOWN
+            return
+         case ('-v', '--verbose', '-d', '--debug')
+            verbose = .true.
+         case ('-f', '--filter')
+            if (i == n_args .or. allocated(name_filter)) then
+               status = FUNIT_USAGE_ERROR
+            else
+               i = i + 1
+               name_filter = lower(argument(i))
+            end if
+         case default
+            if (arg(1:min(1, len(arg))) == '-' .or. allocated(name_filter)) then
+               status = FUNIT_USAGE_ERROR
+            else
+               name_filter = lower(arg)
+            end if
+         end select
+         if (status == FUNIT_USAGE_ERROR) then
+            write (error_unit, '(3a)') 'funit: unexpected argument "', arg, '"'
+            call print_usage(error_unit)
+            return
+         end if
+      end do
+   end subroutine funit_initialize
+
+   !> Runs one test (unless filtered out): before, the test if before passed, after; then tallies.
+   subroutine funit_run_test(suite, name, test, before, after)
+      character(len=*), intent(in) :: suite   !! module of the test
+      character(len=*), intent(in) :: name    !! test procedure
+      procedure(funit_test_procedure) :: test
+      procedure(funit_test_procedure), optional :: before, after
+
+      current_test = suite // '.' // name
+      if (allocated(name_filter)) then
+         if (index(lower(current_test), name_filter) == 0) return
+      end if
+      current_failed = .false.
+      if (present(before)) call before()
+      if (.not. current_failed) call test()
+      if (present(after)) call after()
+      if (current_failed) then
+         n_failed = n_failed + 1
+         if (verbose) write (output_unit, '(2a)') 'FAILED  ', current_test
+      else
+         n_passed = n_passed + 1
+         if (verbose) write (output_unit, '(2a)') 'passed  ', current_test
+      end if
+      location_line = NO_LINE
+   end subroutine funit_run_test
+
+   !> Prints the closing line `N passed, N failed`.
+   subroutine funit_finalize(all_passed)
+      logical, intent(out) :: all_passed   !! no test failed
+      if (allocated(name_filter) .and. n_passed + n_failed == 0) then
+         write (output_unit, '(3a)') 'funit: no test name contains "', name_filter, '"'
+      end if
+      write (output_unit, '(i0, a, i0, a)') n_passed, ' passed, ', n_failed, ' failed'
+      flush (output_unit)
+      all_passed = n_failed == 0
+   end subroutine funit_finalize
+
+   !> Records where the next assertion is written (set by the generated code).
+   subroutine funit_location(file, line)
+      character(len=*), intent(in) :: file   !! .pf file name
+      integer, intent(in) :: line            !! line in that file
+      location_file = file
+      location_line = line
+   end subroutine funit_location
+
+   !> True once an assertion of the running test has failed (pFUnit's name).
+   logical function anyExceptions()
+      anyExceptions = current_failed
+   end function anyExceptions
+
+   ! ================================ equality =================================
+
+   subroutine equal_int(expected, actual, message)
+      integer, intent(in) :: expected, actual
+      character(len=*), intent(in), optional :: message
+      call conclude(expected == actual, 'assertEqual', &
+         'expected <' // int_str(expected) // '> but found <' // int_str(actual) // '>', message)
+   end subroutine equal_int
+
+   subroutine equal_int_1d(expected, actual, message)
+      integer, intent(in) :: expected(:), actual(:)
+      character(len=*), intent(in), optional :: message
+      integer :: k, n_bad
+
+      if (.not. same_shape('assertEqual', shape(expected), shape(actual), message)) return
+      n_bad = count(expected /= actual)
+      if (n_bad == 0) then
+         call conclude(.true., 'assertEqual', '', message)
+      else
+         k = findloc(expected /= actual, .true., dim=1)
+         call conclude(.false., 'assertEqual', 'expected <' // int_str(expected(k)) // '> but found <' &
+            // int_str(actual(k)) // '>' // where_str(k, shape(actual), n_bad), message)
+      end if
+   end subroutine equal_int_1d
+
+   subroutine equal_int_0_1d(expected, actual, message)
+      integer, intent(in) :: expected, actual(:)
+      character(len=*), intent(in), optional :: message
+      integer :: e(size(actual))
+      e = expected
+      call equal_int_1d(e, actual, message)
+   end subroutine equal_int_0_1d
+
+   subroutine equal_logical(expected, actual, message)
+      logical, intent(in) :: expected, actual
+      character(len=*), intent(in), optional :: message
+      call conclude(expected .eqv. actual, 'assertEqual', &
+         'expected <' // logical_str(expected) // '> but found <' // logical_str(actual) // '>', message)
+   end subroutine equal_logical
+
+   !> Strings are equal when they differ only by leading and trailing blanks (pFUnit's default).
+   subroutine equal_string(expected, actual, message)
+      character(len=*), intent(in) :: expected, actual
+      character(len=*), intent(in), optional :: message
+      call conclude(adjustl(expected) == adjustl(actual), 'assertEqual', &
+         'expected <"' // trim(adjustl(expected)) // '"> but found <"' // trim(adjustl(actual)) // '">', message)
+   end subroutine equal_string
+
+   subroutine equal_r0(expected, actual, message)
+      real(dp), intent(in) :: expected, actual
+      character(len=*), intent(in), optional :: message
+      call check_reals('assertEqual', [expected], [actual], 0.0_dp, .false., [integer ::], message)
+   end subroutine equal_r0
+
+   subroutine equal_r0_tol(expected, actual, tolerance, message)
+      real(dp), intent(in) :: expected, actual, tolerance
+      character(len=*), intent(in), optional :: message
+      call check_reals('assertEqual', [expected], [actual], tolerance, .false., [integer ::], message)
+   end subroutine equal_r0_tol
+
+   subroutine equal_r1(expected, actual, message)
+      real(dp), intent(in) :: expected(:), actual(:)
+      character(len=*), intent(in), optional :: message
+      call equal_r1_tol(expected, actual, 0.0_dp, message)
+   end subroutine equal_r1
+
+   subroutine equal_r1_tol(expected, actual, tolerance, message)
+      real(dp), intent(in) :: expected(:), actual(:), tolerance
+      character(len=*), intent(in), optional :: message
+      if (.not. same_shape('assertEqual', shape(expected), shape(actual), message)) return
+      call check_reals('assertEqual', expected, actual, tolerance, .false., shape(actual), message)
+   end subroutine equal_r1_tol
+
+   subroutine equal_r0_r1(expected, actual, message)
+      real(dp), intent(in) :: expected, actual(:)
+      character(len=*), intent(in), optional :: message
+      call equal_r0_r1_tol(expected, actual, 0.0_dp, message)
+   end subroutine equal_r0_r1
+
+   subroutine equal_r0_r1_tol(expected, actual, tolerance, message)
+      real(dp), intent(in) :: expected, actual(:), tolerance
+      character(len=*), intent(in), optional :: message
+      real(dp) :: e(size(actual))
+      e = expected
+      call check_reals('assertEqual', e, actual, tolerance, .false., shape(actual), message)
+   end subroutine equal_r0_r1_tol
+
+   subroutine equal_r2(expected, actual, message)
+      real(dp), intent(in) :: expected(:, :), actual(:, :)
+      character(len=*), intent(in), optional :: message
+      call equal_r2_tol(expected, actual, 0.0_dp, message)
+   end subroutine equal_r2
+
+   subroutine equal_r2_tol(expected, actual, tolerance, message)
+      real(dp), intent(in) :: expected(:, :), actual(:, :), tolerance
+      character(len=*), intent(in), optional :: message
+      if (.not. same_shape('assertEqual', shape(expected), shape(actual), message)) return
+      call check_reals('assertEqual', reshape(expected, [size(expected)]), reshape(actual, [size(actual)]), &
+         tolerance, .false., shape(actual), message)
+   end subroutine equal_r2_tol
+
+   subroutine equal_r0_r2(expected, actual, message)
+      real(dp), intent(in) :: expected, actual(:, :)
+      character(len=*), intent(in), optional :: message
+      call equal_r0_r2_tol(expected, actual, 0.0_dp, message)
+   end subroutine equal_r0_r2
+
+   subroutine equal_r0_r2_tol(expected, actual, tolerance, message)
+      real(dp), intent(in) :: expected, actual(:, :), tolerance
+      character(len=*), intent(in), optional :: message
+      real(dp) :: e(size(actual))
+      e = expected
+      call check_reals('assertEqual', e, reshape(actual, [size(actual)]), tolerance, .false., shape(actual), message)
+   end subroutine equal_r0_r2_tol
+
+   subroutine relatively_equal_r0(expected, actual, tolerance, message)
+      real(dp), intent(in) :: expected, actual, tolerance
+      character(len=*), intent(in), optional :: message
+      call check_reals('assertRelativelyEqual', [expected], [actual], tolerance, .true., [integer ::], message)
+   end subroutine relatively_equal_r0
+
+   subroutine relatively_equal_r1(expected, actual, tolerance, message)
+      real(dp), intent(in) :: expected(:), actual(:), tolerance
+      character(len=*), intent(in), optional :: message
+      if (.not. same_shape('assertRelativelyEqual', shape(expected), shape(actual), message)) return
+      call check_reals('assertRelativelyEqual', expected, actual, tolerance, .true., shape(actual), message)
+   end subroutine relatively_equal_r1
+
+   subroutine relatively_equal_r0_r1(expected, actual, tolerance, message)
+      real(dp), intent(in) :: expected, actual(:), tolerance
+      character(len=*), intent(in), optional :: message
+      real(dp) :: e(size(actual))
+      e = expected
+      call check_reals('assertRelativelyEqual', e, actual, tolerance, .true., shape(actual), message)
+   end subroutine relatively_equal_r0_r1
+
+   !> Element-wise check |e - a| <= tol (relative: <= tol*|e|, and e must not be 0, as in pFUnit).
+   !> actual_shape is empty for a scalar, else the shape used to print the first bad index.
+   subroutine check_reals(assertion, expected, actual, tolerance, relative, actual_shape, message)
+      character(len=*), intent(in) :: assertion
+      real(dp), intent(in) :: expected(:), actual(:), tolerance
+      logical, intent(in) :: relative
+      integer, intent(in) :: actual_shape(:)
+      character(len=*), intent(in), optional :: message
+      logical :: ok(size(actual))
+      integer :: k, n_bad
+      character(len=:), allocatable :: detail
+
+      do k = 1, size(actual)
+         if (relative) then
+            ok(k) = relatively_within(expected(k), actual(k), tolerance)
+         else
+            ok(k) = within(expected(k), actual(k), tolerance)
+         end if
+      end do
+      n_bad = count(.not. ok)
+      if (n_bad == 0) then
+         call conclude(.true., assertion, '', message)
+         return
+      end if
+      k = findloc(ok, .false., dim=1)
+      detail = 'expected <' // real_str(expected(k)) // '> but found <' // real_str(actual(k)) // '>'
+      if (size(actual_shape) > 0) detail = detail // where_str(k, actual_shape, n_bad)
+      if (relative .and. is_zero(expected(k))) then
+         detail = detail // '; expected value is zero, a relative tolerance is meaningless'
+      else if (relative) then
+         detail = detail // '; ' // difference_str(expected(k), actual(k)) // &
+            'relative tolerance ' // real_str(tolerance) // ' * |expected|'
+      else
+         detail = detail // '; ' // difference_str(expected(k), actual(k)) // 'tolerance ' // real_str(tolerance)
+      end if
+      call conclude(.false., assertion, detail, message)
+   end subroutine check_reals
+
+   !> |e - a| <= tol without floating-point exceptions (NaN never passes; equal infinities do).
+   !> Operands are tested for NaN before any ordered comparison: a comparison with NaN raises
+   !> the invalid flag, which traps when the tests run with -ffpe-trap=invalid.
+   elemental logical function within(e, a, tol)
+      real(dp), intent(in) :: e, a, tol
+      if (ieee_is_nan(e) .or. ieee_is_nan(a) .or. ieee_is_nan(tol)) then
+         within = .false.
+      else if (.not. (e < a .or. e > a)) then
+         within = .true.
+      else if (.not. (ieee_is_finite(e) .and. ieee_is_finite(a))) then
+         within = .false.
+      else if (max(abs(e), abs(a)) > HALF_HUGE) then
+         within = abs(0.5_dp * e - 0.5_dp * a) <= 0.5_dp * tol
+      else
+         within = abs(e - a) <= tol
+      end if
+   end function within
+
+   !> |e - a| <= tol*|e|; a zero expected value always fails, as in pFUnit.
+   elemental logical function relatively_within(e, a, tol)
+      real(dp), intent(in) :: e, a, tol
+      if (ieee_is_nan(e) .or. is_zero(e)) then
+         relatively_within = .false.
+      else if (.not. ieee_is_finite(e)) then
+         relatively_within = within(e, a, 0.0_dp)
+      else
+         relatively_within = within(e, a, tol * abs(e))
+      end if
+   end function relatively_within
+
+   elemental logical function is_zero(x)
+      real(dp), intent(in) :: x
+      is_zero = .false.
+      if (.not. ieee_is_nan(x)) is_zero = .not. (abs(x) > 0.0_dp)
+   end function is_zero
+
+   ! ============================ logical conditions ============================
+
+   subroutine true_0d(condition, message)
+      logical, intent(in) :: condition
+      character(len=*), intent(in), optional :: message
+      call conclude(condition, 'assertTrue', 'condition is false', message)
+   end subroutine true_0d
+
+   subroutine true_1d(condition, message)
+      logical, intent(in) :: condition(:)
+      character(len=*), intent(in), optional :: message
+      call check_logicals('assertTrue', condition, .true., message)
+   end subroutine true_1d
+
+   subroutine false_0d(condition, message)
+      logical, intent(in) :: condition
+      character(len=*), intent(in), optional :: message
+      call conclude(.not. condition, 'assertFalse', 'condition is true', message)
+   end subroutine false_0d
+
+   subroutine false_1d(condition, message)
+      logical, intent(in) :: condition(:)
+      character(len=*), intent(in), optional :: message
+      call check_logicals('assertFalse', condition, .false., message)
+   end subroutine false_1d
+
+   subroutine assertAll(conditions, message)
+      logical, intent(in) :: conditions(:)
+      character(len=*), intent(in), optional :: message
+      call check_logicals('assertAll', conditions, .true., message)
+   end subroutine assertAll
+
+   subroutine assertAny(conditions, message)
+      logical, intent(in) :: conditions(:)
+      character(len=*), intent(in), optional :: message
+      call conclude(any(conditions), 'assertAny', 'all ' // int_str(size(conditions)) // ' elements are false', &
+         message)
+   end subroutine assertAny
+
+   !> Every element of conditions must equal wanted.
+   subroutine check_logicals(assertion, conditions, wanted, message)
+      character(len=*), intent(in) :: assertion
+      logical, intent(in) :: conditions(:), wanted
+      character(len=*), intent(in), optional :: message
+      integer :: n_bad
+
+      n_bad = count(conditions .neqv. wanted)
+      if (n_bad == 0) then
+         call conclude(.true., assertion, '', message)
+      else
+         call conclude(.false., assertion, 'element is ' // logical_str(.not. wanted) &
+            // where_str(findloc(conditions, .not. wanted, dim=1), shape(conditions), n_bad), message)
+      end if
+   end subroutine check_logicals
+
+   subroutine is_finite_r0(x, message)
+      real(dp), intent(in) :: x
+      character(len=*), intent(in), optional :: message
+      call conclude(ieee_is_finite(x), 'assertIsFinite', 'value is <' // real_str(x) // '>', message)
+   end subroutine is_finite_r0
+
+   subroutine is_finite_r1(x, message)
+      real(dp), intent(in) :: x(:)
+      character(len=*), intent(in), optional :: message
+      integer :: k, n_bad
+
+      n_bad = count(.not. ieee_is_finite(x))
+      if (n_bad == 0) then
+         call conclude(.true., 'assertIsFinite', '', message)
+      else
+         k = findloc(ieee_is_finite(x), .false., dim=1)
+         call conclude(.false., 'assertIsFinite', 'value is <' // real_str(x(k)) // '>' &
+            // where_str(k, shape(x), n_bad), message)
+      end if
+   end subroutine is_finite_r1
+
+   ! =============================== orderings =================================
+
+   subroutine less_than_int(lhs, rhs, message)
+      integer, intent(in) :: lhs, rhs
+      character(len=*), intent(in), optional :: message
+      call conclude(lhs < rhs, 'assertLessThan', int_str(lhs) // ' is not < ' // int_str(rhs), message)
+   end subroutine less_than_int
+
+   subroutine less_equal_int(lhs, rhs, message)
+      integer, intent(in) :: lhs, rhs
+      character(len=*), intent(in), optional :: message
+      call conclude(lhs <= rhs, 'assertLessThanOrEqual', int_str(lhs) // ' is not <= ' // int_str(rhs), message)
+   end subroutine less_equal_int
+
+   subroutine greater_than_int(lhs, rhs, message)
+      integer, intent(in) :: lhs, rhs
+      character(len=*), intent(in), optional :: message
+      call conclude(lhs > rhs, 'assertGreaterThan', int_str(lhs) // ' is not > ' // int_str(rhs), message)
+   end subroutine greater_than_int
+
+   subroutine greater_equal_int(lhs, rhs, message)
+      integer, intent(in) :: lhs, rhs
+      character(len=*), intent(in), optional :: message
+      call conclude(lhs >= rhs, 'assertGreaterThanOrEqual', int_str(lhs) // ' is not >= ' // int_str(rhs), message)
+   end subroutine greater_equal_int
+
+   subroutine less_than_real(lhs, rhs, message)
+      real(dp), intent(in) :: lhs, rhs
+      character(len=*), intent(in), optional :: message
+      call check_order('assertLessThan', lhs, rhs, '<', message)
+   end subroutine less_than_real
+
+   subroutine less_equal_real(lhs, rhs, message)
+      real(dp), intent(in) :: lhs, rhs
+      character(len=*), intent(in), optional :: message
+      call check_order('assertLessThanOrEqual', lhs, rhs, '<=', message)
+   end subroutine less_equal_real
+
+   subroutine greater_than_real(lhs, rhs, message)
+      real(dp), intent(in) :: lhs, rhs
+      character(len=*), intent(in), optional :: message
+      call check_order('assertGreaterThan', lhs, rhs, '>', message)
+   end subroutine greater_than_real
+
+   subroutine greater_equal_real(lhs, rhs, message)
+      real(dp), intent(in) :: lhs, rhs
+      character(len=*), intent(in), optional :: message
+      call check_order('assertGreaterThanOrEqual', lhs, rhs, '>=', message)
+   end subroutine greater_equal_real
+
+   !> lhs <relation> rhs for reals; a NaN operand fails without being compared, so that the
+   !> comparison cannot raise an invalid-operation trap (tests may run with -ffpe-trap=invalid).
+   subroutine check_order(assertion, lhs, rhs, relation, message)
+      character(len=*), intent(in) :: assertion
+      real(dp), intent(in) :: lhs, rhs
+      character(len=*), intent(in) :: relation   !! '<', '<=', '>' or '>='
+      character(len=*), intent(in), optional :: message
+      logical :: holds
+
+      holds = .false.
+      if (.not. (ieee_is_nan(lhs) .or. ieee_is_nan(rhs))) then
+         select case (relation)
+         case ('<')
+            holds = lhs < rhs
+         case ('<=')
+            holds = lhs <= rhs
+         case ('>')
+            holds = lhs > rhs
+         case ('>=')
+            holds = lhs >= rhs
+         end select
+      end if
+      call conclude(holds, assertion, real_str(lhs) // ' is not ' // relation // ' ' // real_str(rhs), message)
+   end subroutine check_order
+
+   ! ================================ reporting ================================
+
+   !> Ends every assertion: on failure marks the test failed and prints one line
+   !> `file.pf:LINE: FAILED suite.test: assertion: detail; message: "..."`.
+   subroutine conclude(passed, assertion, detail, message)
+      logical, intent(in) :: passed
+      character(len=*), intent(in) :: assertion, detail
+      character(len=*), intent(in), optional :: message
+      character(len=:), allocatable :: where, who, note
+
+      if (.not. passed) then
+         current_failed = .true.
+         if (location_line == NO_LINE) then
+            where = '(unknown location)'
+         else
+            where = location_file // ':' // int_str(location_line)
+         end if
+         who = '(outside a test)'
+         if (allocated(current_test)) who = current_test
+         note = ''
+         if (present(message)) then
+            if (len_trim(message) > 0) note = '; message: "' // trim(message) // '"'
+         end if
+         write (output_unit, '(a)') where // ': FAILED ' // who // ': ' // assertion // ': ' // detail // note
+      end if
+      location_line = NO_LINE
+   end subroutine conclude
+
+   !> Fails with a shape message unless the shapes agree; returns whether they do.
+   logical function same_shape(assertion, expected_shape, actual_shape, message)
+      character(len=*), intent(in) :: assertion
+      integer, intent(in) :: expected_shape(:), actual_shape(:)
+      character(len=*), intent(in), optional :: message
+      same_shape = all(expected_shape == actual_shape)
+      if (.not. same_shape) call conclude(.false., assertion, 'expected shape ' // shape_str(expected_shape) &
+         // ' but found shape ' // shape_str(actual_shape), message)
+   end function same_shape
+
+   !> " at index (i,j) (n of m elements differ)" for element k (array element order) of an array.
+   function where_str(k, array_shape, n_bad) result(text)
+      integer, intent(in) :: k, array_shape(:), n_bad
+      character(len=:), allocatable :: text
+      integer :: position(size(array_shape)), rest, d
+
+      rest = k - 1
+      do d = 1, size(array_shape)
+         position(d) = mod(rest, array_shape(d)) + 1
+         rest = rest / array_shape(d)
+      end do
+      text = ' at index ' // shape_str(position) // ' (' // int_str(n_bad) // ' of ' &
+         // int_str(product(array_shape)) // ' elements differ)'
+   end function where_str
+
+   function shape_str(values) result(text)
+      integer, intent(in) :: values(:)
+      character(len=:), allocatable :: text
+      integer :: d
+      text = '('
+      do d = 1, size(values)
+         text = text // int_str(values(d))
+         if (d < size(values)) text = text // ','
+      end do
+      text = text // ')'
+   end function shape_str
+
+   !> "|difference| d > " when |e - a| can be formed without an exception, else "".
+   function difference_str(e, a) result(text)
+      real(dp), intent(in) :: e, a
+      character(len=:), allocatable :: text
+      text = ''
+      if (.not. (ieee_is_finite(e) .and. ieee_is_finite(a))) return   ! no ordered compare of NaN
+      if (max(abs(e), abs(a)) <= HALF_HUGE) text = '|difference| ' // real_str(abs(e - a)) // ' > '
+   end function difference_str
+
+   function int_str(value) result(text)
+      integer, intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=NUMBER_LEN) :: buffer
+      write (buffer, '(i0)') value
+      text = trim(buffer)
+   end function int_str
+
+   function real_str(value) result(text)
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: text
+      character(len=NUMBER_LEN) :: buffer
+      write (buffer, '(g0)') value
+      text = trim(adjustl(buffer))
+   end function real_str
+
+   function logical_str(value) result(text)
+      logical, intent(in) :: value
+      character(len=:), allocatable :: text
+      if (value) then
+         text = '.true.'
+      else
+         text = '.false.'
+      end if
+   end function logical_str
+
+   !> Command argument i, any length.
+   function argument(i) result(arg)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: arg
+      integer :: arg_len
+      call get_command_argument(i, length=arg_len)
+      allocate (character(len=arg_len) :: arg)
+      call get_command_argument(i, arg)
+   end function argument
+
+   pure function lower(text) result(low)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: low
+      integer, parameter :: CASE_SHIFT = iachar('a') - iachar('A')
+      integer :: i
+      low = text
+      do i = 1, len(text)
+         if (lge(text(i:i), 'A') .and. lle(text(i:i), 'Z')) low(i:i) = achar(iachar(text(i:i)) + CASE_SHIFT)
+      end do
+   end function lower
+
+   subroutine print_usage(unit)
+      integer, intent(in) :: unit
+      write (unit, '(a)') 'usage: <test executable> [-v|--verbose] [[-f|--filter] NAME]', &
+         '  runs every test (or those whose "module.test" name contains NAME, ignoring case)', &
+         '  and ends with the line "N passed, N failed"; exit status 1 if any test failed.'
+   end subroutine print_usage
+
+end module funit
