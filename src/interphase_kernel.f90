@@ -20,7 +20,7 @@
 !>   5. stored energy psi = 1/2 t.s - 1/2 D T^f (ufbar |lambda|^2 - dbar_t lambda.s_T)
 !>      (derivation in docs/theory.md).
 module interphase_kernel
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
    use interphase_layout, only: MODEL_SIMPLIFIED, REGIME_INTACT, REGIME_OPEN, REGIME_STICK, &
@@ -61,7 +61,7 @@ contains
          status = STATUS_BAD_NTENS
          return
       end if
-      if (.not. all(ieee_is_finite(s))) then
+      if (.not. all(is_finite(s))) then
          status = STATUS_NONFINITE_SEPARATION
          return
       end if

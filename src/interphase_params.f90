@@ -2,7 +2,7 @@
 !> Every value is range-checked here, once, with a message that names the PROPS index, the
 !> symbol, the value and the admissible range; nothing is clamped.
 module interphase_params
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
@@ -37,12 +37,11 @@ contains
       real(dp), intent(in) :: props(:)                  !! PROPS as given by the host
       type(law_params_type), intent(out) :: params      !! decoded parameters
       integer, intent(out) :: status                    !! STATUS_OK or a STATUS_BAD_* code
-      character(len=MESSAGE_LEN), intent(out) :: message   !! empty on success
+      character(len=MESSAGE_LEN), intent(out) :: message   !! set only on failure
 
       integer :: model, damage_law
 
       status = STATUS_OK
-      message = ''
       if (size(props) < PROP_DAMAGE_LAW) then
          status = STATUS_BAD_NPROPS
          write (message, '(a,i0,a)') 'NPROPS = ', size(props), &
@@ -96,7 +95,6 @@ contains
       character(len=MESSAGE_LEN), intent(out) :: message
 
       status = STATUS_OK
-      message = ''
       ! Each test fails for NaN and Inf without comparing them (no FP exception is raised).
       if (.not. finite_at_least(mu, 0.0_dp)) then
          call reject(STATUS_BAD_MU, PROP_MU, 'mu', mu, 'must be finite and >= 0', status, message)
@@ -147,9 +145,9 @@ contains
    pure integer function selector_code(x) result(code)
       real(dp), intent(in) :: x
       code = -1
-      if (.not. ieee_is_finite(x)) return
+      if (.not. is_finite(x)) return
       if (abs(x) > 1.0e6_dp) return
-      code = nint(x)
+      code = int(x)
       if (abs(x - real(code, dp)) > 0.0_dp) code = -1
    end function selector_code
 
@@ -157,14 +155,14 @@ contains
    pure logical function finite_above(x, lower)
       real(dp), intent(in) :: x, lower
       finite_above = .false.
-      if (ieee_is_finite(x)) finite_above = x > lower
+      if (is_finite(x)) finite_above = x > lower
    end function finite_above
 
    !> x is finite and x >= lower.
    pure logical function finite_at_least(x, lower)
       real(dp), intent(in) :: x, lower
       finite_at_least = .false.
-      if (ieee_is_finite(x)) finite_at_least = x >= lower
+      if (is_finite(x)) finite_at_least = x >= lower
    end function finite_at_least
 
 end module interphase_params

@@ -1,6 +1,6 @@
 !> The history state of one interface point and its one load/store pair with Abaqus STATEV.
 module interphase_state
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED, &
       REGIME_INTACT, REGIME_SLIP
@@ -29,7 +29,6 @@ contains
       integer :: regime
 
       status = STATUS_OK
-      message = ''
       if (size(statev) < NSTATV_REQUIRED) then
          status = STATUS_BAD_NSTATV
          write (message, '(a,i0,a,i0)') 'NSTATV = ', size(statev), &
@@ -41,15 +40,15 @@ contains
       state%slip(2) = 0.0_dp
       if (ntens == 3) state%slip(2) = statev(SV_SLIP_2)
       regime = -1
-      if (ieee_is_finite(statev(SV_REGIME))) then
-         if (abs(statev(SV_REGIME)) < 10.0_dp) regime = nint(statev(SV_REGIME))
+      if (is_finite(statev(SV_REGIME))) then
+         if (abs(statev(SV_REGIME)) < 10.0_dp) regime = int(statev(SV_REGIME))
       end if
       state%regime = regime
       if (.not. in_unit_interval(state%d)) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE, ') D = ', state%d, &
             ' must lie in [0, 1]'
-      else if (.not. all(ieee_is_finite(state%slip))) then
+      else if (.not. all(is_finite(state%slip))) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,i0,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
             ') slip is not finite'
@@ -64,7 +63,7 @@ contains
    pure logical function in_unit_interval(x)
       real(dp), intent(in) :: x
       in_unit_interval = .false.
-      if (ieee_is_finite(x)) in_unit_interval = x >= 0.0_dp .and. x <= 1.0_dp
+      if (is_finite(x)) in_unit_interval = x >= 0.0_dp .and. x <= 1.0_dp
    end function in_unit_interval
 
    !> Store the state into STATEV (slots beyond NSTATV_REQUIRED are left alone).

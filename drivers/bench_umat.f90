@@ -1,0 +1,228 @@
+!> `interphase-bench`: cost of one `umat` call, simplified model.
+!>
+!>     interphase-bench [CALLS_PER_RUN [RUNS]]      (defaults 1000000 and 5)
+!>
+!> Replays the paper's mixed-mode history (Table 4: s_N = -0.005 mm throughout, s_T = 0, 0,
+!> 0.05, 0, 0.08, -0.05, 0 mm at t = 0..6) in 2-D and its 3-D version with the shear rotated by
+!> 30 degrees into (s_T1, s_T2), with CALLS_PER_RUN / 6 equal increments per segment, RUNS
+!> times each from the virgin state, and prints the best and median wall time per call
+!> (`system_clock`, int64). The sum of all returned tractions is printed as a checksum so the
+!> calls cannot be optimised away. Material: the paper's Table 1 data as in drivers/cases.
+program bench_umat
+   use, intrinsic :: iso_fortran_env, only: int64, output_unit, error_unit
+   use interphase_kinds, only: dp
+   use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
+      PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
+      DAMAGE_DISPLACEMENT, NSTATV_REQUIRED
+   use interphase_abaqus_interfaces, only: umat
+   implicit none
+
+   !> Number of history segments of the mixed-mode history.
+   integer, parameter :: NSEGMENTS = 6
+   !> Shear separation of Table 4 at t = 0..6 (mm).
+   real(dp), parameter :: SHEAR(0:NSEGMENTS) = [0.0_dp, 0.0_dp, 0.05_dp, 0.0_dp, 0.08_dp, &
+      -0.05_dp, 0.0_dp]
+   !> Normal separation of Table 4, constant (mm).
+   real(dp), parameter :: NORMAL = -0.005_dp
+   !> Rotation of the shear in 3-D (degrees).
+   real(dp), parameter :: ANGLE_DEGREES = 30.0_dp
+
+   real(dp) :: props(NPROPS_SIMPLIFIED)
+   real(dp), allocatable :: ns_per_call(:)
+   real(dp) :: checksum
+   integer :: calls_per_run, runs, increments, ntens, run
+   integer(int64) :: count_rate
+   character(len=32) :: argument
+   character(len=*), parameter :: ROW_FORMAT = '(a12, i6, i12, i6, 2f16.1, es24.15)'
+
+   calls_per_run = 1000000
+   runs = 5
+   if (command_argument_count() >= 1) then
+      call get_command_argument(1, argument)
+      calls_per_run = parse_positive(argument, 'CALLS_PER_RUN')
+   end if
+   if (command_argument_count() >= 2) then
+      call get_command_argument(2, argument)
+      runs = parse_positive(argument, 'RUNS')
+   end if
+   increments = max(1, calls_per_run/NSEGMENTS)
+
+   ! Paper Table 1 (simplified model), mu = 0.75 (our assumption), K from MODEL-NOTES section 6.
+   props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
+   props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+   props(PROP_MU) = 0.75_dp
+   props(PROP_S0_N) = 0.00044_dp
+   props(PROP_SF_N) = 0.04_dp
+   props(PROP_S0_T) = 0.00072_dp
+   props(PROP_SF_T) = 0.06_dp
+   props(PROP_K_N) = 544000.0_dp/1127.0_dp
+   props(PROP_K_T) = 32000.0_dp/161.0_dp
+
+   call system_clock(count_rate=count_rate)
+   allocate (ns_per_call(runs))
+   write (output_unit, '(a)') 'interphase-bench: umat, simplified model, paper mixed-mode history'
+   write (output_unit, '(a, i0, a, i0, a, i0, a, i0, a)') 'increments per segment: ', increments, &
+      ' (', NSEGMENTS*increments, ' calls per run), runs: ', runs, &
+      ', clock resolution: ', count_rate, ' ticks/s'
+   write (output_unit, '(a12, a6, a12, a6, 2a16, a24)') 'history', 'NTENS', 'calls/run', &
+      'runs', 'best ns/call', 'median ns/call', 'checksum (MPa)'
+   do ntens = 2, 3
+      do run = 1, runs
+         call one_run(ntens, ns_per_call(run), checksum)
+      end do
+      if (ntens == 2) then
+         write (output_unit, ROW_FORMAT) 'mixed 2-D', ntens, NSEGMENTS*increments, runs, &
+            minval(ns_per_call), median(ns_per_call), checksum
+      else
+         write (output_unit, ROW_FORMAT) 'mixed 3-D', ntens, NSEGMENTS*increments, runs, &
+            minval(ns_per_call), median(ns_per_call), checksum
+      end if
+   end do
+
+contains
+
+   !> Replay the history once from the virgin state; time per call (ns) and checksum (MPa).
+   subroutine one_run(ntens, ns, checksum)
+      integer, intent(in) :: ntens                !! 2 or 3
+      real(dp), intent(out) :: ns                 !! wall time per call (ns)
+      real(dp), intent(out) :: checksum           !! sum of all tractions returned (MPa)
+      real(dp) :: stress(ntens), stran(ntens), dstran(ntens), s_a(ntens), s_b(ntens), s_new(ntens)
+      real(dp) :: ddsdde(ntens, ntens), ddsddt(ntens), drplde(ntens), statev(NSTATV_REQUIRED)
+      real(dp) :: sse, spd, scd, rpl, drpldt, time(2), dtime, predef(1), dpred(1), coords(3)
+      real(dp) :: drot(3, 3), dfgrd(3, 3), pnewdt, theta, direction(2)
+      integer(int64) :: start, finish
+      integer :: segment, j, kinc, i
+      character(len=80), parameter :: CMNAME = 'INTERPHASE'
+
+      direction = [1.0_dp, 0.0_dp]
+      if (ntens == 3) direction = [cos(ANGLE_DEGREES*acos(-1.0_dp)/180.0_dp), &
+         sin(ANGLE_DEGREES*acos(-1.0_dp)/180.0_dp)]
+      stress = 0.0_dp
+      statev = 0.0_dp
+      ddsdde = 0.0_dp
+      ddsddt = 0.0_dp
+      drplde = 0.0_dp
+      sse = 0.0_dp
+      spd = 0.0_dp
+      scd = 0.0_dp
+      rpl = 0.0_dp
+      drpldt = 0.0_dp
+      predef = 0.0_dp
+      dpred = 0.0_dp
+      coords = 0.0_dp
+      drot = 0.0_dp
+      dfgrd = 0.0_dp
+      do i = 1, 3
+         drot(i, i) = 1.0_dp
+         dfgrd(i, i) = 1.0_dp
+      end do
+      dtime = 1.0_dp/real(increments, dp)
+      checksum = 0.0_dp
+      kinc = 0
+      ! The history starts at s_N = -0.005 mm: the clock starts after a first (elastic) call
+      ! from zero to that separation, which is not counted.
+      stran = 0.0_dp
+      s_new = separation(0, ntens, direction)
+      dstran = s_new
+      time = 0.0_dp
+      pnewdt = 1.0_dp
+      call umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, &
+         dstran, time, 0.0_dp, 0.0_dp, 0.0_dp, predef, dpred, CMNAME, 1, ntens - 1, ntens, &
+         NSTATV_REQUIRED, props, NPROPS_SIMPLIFIED, coords, drot, pnewdt, 1.0_dp, dfgrd, dfgrd, &
+         1, 1, 1, 1, [1, 0, 0, 0], kinc)
+      call check(pnewdt, 0.0_dp)
+      stran = s_new
+
+      call system_clock(start)
+      do segment = 1, NSEGMENTS
+         s_a = separation(segment - 1, ntens, direction)
+         s_b = separation(segment, ntens, direction)
+         do j = 1, increments
+            theta = real(j, dp)/real(increments, dp)
+            s_new = (1.0_dp - theta)*s_a + theta*s_b
+            dstran = s_new - stran
+            time = real(segment - 1, dp) + real(j - 1, dp)*dtime
+            kinc = kinc + 1
+            pnewdt = 1.0_dp
+            call umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, &
+               stran, dstran, time, dtime, 0.0_dp, 0.0_dp, predef, dpred, CMNAME, 1, ntens - 1, &
+               ntens, NSTATV_REQUIRED, props, NPROPS_SIMPLIFIED, coords, drot, pnewdt, 1.0_dp, &
+               dfgrd, dfgrd, 1, 1, 1, 1, [1, 0, 0, 0], kinc)
+            if (pnewdt < 1.0_dp) call check(pnewdt, time(2))
+            stran = s_new
+            checksum = checksum + sum(stress) + ddsdde(1, 1)*1.0e-6_dp
+         end do
+      end do
+      call system_clock(finish)
+      ns = 1.0e9_dp*real(finish - start, dp)/real(count_rate, dp)/real(kinc, dp)
+      checksum = checksum + spd
+   end subroutine one_run
+
+   !> Separation of history row k in UMAT order (normal first), mm.
+   pure function separation(k, ntens, direction) result(s)
+      integer, intent(in) :: k                    !! row 0..NSEGMENTS
+      integer, intent(in) :: ntens                !! 2 or 3
+      real(dp), intent(in) :: direction(2)        !! unit shear direction in (T1, T2)
+      real(dp) :: s(ntens)
+
+      s(1) = NORMAL
+      s(2:) = SHEAR(k)*direction(:ntens - 1)
+   end function separation
+
+   !> Stop the benchmark if the UMAT asked for a cut-back (it must not on this history).
+   subroutine check(pnewdt, time)
+      real(dp), intent(in) :: pnewdt              !! as returned by umat
+      real(dp), intent(in) :: time                !! time at the start of the call
+
+      if (pnewdt < 1.0_dp) then
+         write (error_unit, '(a, g0)') 'interphase-bench: error: umat asked for a cut-back at t = ', &
+            time
+         error stop 1
+      end if
+   end subroutine check
+
+   !> Median of a short array (sorted copy).
+   pure real(dp) function median(values)
+      real(dp), intent(in) :: values(:)           !! samples
+      real(dp) :: sorted(size(values)), swap
+      integer :: i, j, n
+
+      sorted = values
+      n = size(sorted)
+      do i = 2, n
+         swap = sorted(i)
+         j = i - 1
+         do while (j >= 1)
+            if (sorted(j) <= swap) exit
+            sorted(j + 1) = sorted(j)
+            j = j - 1
+         end do
+         sorted(j + 1) = swap
+      end do
+      if (mod(n, 2) == 1) then
+         median = sorted((n + 1)/2)
+      else
+         median = 0.5_dp*(sorted(n/2) + sorted(n/2 + 1))
+      end if
+   end function median
+
+   !> A positive integer from a command-line argument, or stop with a message.
+   integer function parse_positive(text, name)
+      character(len=*), intent(in) :: text        !! the argument
+      character(len=*), intent(in) :: name        !! its name for the message
+      integer :: ios
+
+      read (text, *, iostat=ios) parse_positive
+      if (ios /= 0 .or. verify(trim(text), '0123456789') /= 0) then
+         write (error_unit, '(a)') 'interphase-bench: error: '//name//" must be a positive "// &
+            "integer, got '"//trim(text)//"'"
+         write (error_unit, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS]]'
+         error stop 1
+      end if
+      if (parse_positive < 1) then
+         write (error_unit, '(a)') 'interphase-bench: error: '//name//' must be at least 1'
+         error stop 1
+      end if
+   end function parse_positive
+
+end program bench_umat

@@ -1,0 +1,259 @@
+!> Case files of the single-point driver: the namelist groups `&material` and `&loading`.
+!>
+!>     &material
+!>       model = 'simplified', damage_law = 'displacement',
+!>       mu = 0.75, s0_n = 0.00044, sf_n = 0.04, s0_t = 0.00072, sf_t = 0.06,   ! (-), mm
+!>       k_n = 482.69742679680568, k_t = 198.75776397515528                      ! MPa/mm
+!>     /
+!>     &loading
+!>       history = 'h1I.txt', increments = 200, output = 'h1I.csv', plot = .true.
+!>     /
+!>
+!> Every `&material` entry is required; `&loading` needs `history`, `increments` and `output`
+!> (`plot` defaults to true). The driver only packs the material data into PROPS: range checks
+!> are the UMAT's. Nothing is stopped here: errors come back as a message.
+module interphase_driver_case
+   use, intrinsic :: iso_fortran_env, only: iostat_end
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use interphase_kinds, only: dp
+   use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
+      PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
+      DAMAGE_DISPLACEMENT
+   use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
+   implicit none
+   private
+   public :: case_type, read_case
+
+   !> Length of the character entries of the namelists (model names, paths).
+   integer, parameter :: ENTRY_LEN = 1024
+   !> Marks a real entry the case file did not set.
+   real(dp), parameter :: UNSET_REAL = -huge(1.0_dp)
+   !> Marks an integer entry the case file did not set.
+   integer, parameter :: UNSET_INTEGER = -huge(1)
+
+   !> Everything the driver needs from one case file.
+   type :: case_type
+      !> The case file as given on the command line.
+      character(len=:), allocatable :: path
+      !> Case name: the case file's name without directory and extension (plot title).
+      character(len=:), allocatable :: name
+      !> Material constants in the UMAT's PROPS layout (`interphase_layout`).
+      real(dp), allocatable :: props(:)
+      !> History file, resolved against the case file's directory.
+      character(len=:), allocatable :: history_path
+      !> CSV output path as written in the case file (resolved later against --output-dir).
+      character(len=:), allocatable :: output
+      !> Number of equal sub-increments per history segment (>= 1).
+      integer :: increments = 0
+      !> Whether a PNG of the traction-separation curves is wanted.
+      logical :: plot = .true.
+   end type case_type
+
+contains
+
+   !> Read and check a case file. On failure `ok` is false and `message` says what and where,
+   !> always naming the case file.
+   subroutine read_case(path, case, ok, message)
+      character(len=*), intent(in) :: path        !! case file path
+      type(case_type), intent(out) :: case        !! the case, valid when ok
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      integer :: unit, ios
+      character(len=512) :: iomsg
+
+      ok = .false.
+      case%path = path
+      case%name = stem_of(path)
+      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
+         iostat=ios, iomsg=iomsg)
+      if (ios /= 0) then
+         message = path//': cannot open the case file: '//trim(iomsg)
+         return
+      end if
+      call read_material(unit, case, ok, message)
+      if (ok) then
+         rewind (unit)
+         call read_loading(unit, case, ok, message)
+      end if
+      close (unit)
+   end subroutine read_case
+
+   !> Read the `&material` group and pack it into PROPS.
+   subroutine read_material(unit, case, ok, message)
+      integer, intent(in) :: unit                 !! open case file
+      type(case_type), intent(inout) :: case      !! receives props
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      character(len=ENTRY_LEN) :: model, damage_law
+      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t
+      namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t
+      character(len=:), allocatable :: missing, where
+      integer :: ios
+      character(len=512) :: iomsg
+
+      ok = .false.
+      where = case%path//': &material: '
+      model = ''
+      damage_law = ''
+      mu = UNSET_REAL
+      s0_n = UNSET_REAL
+      sf_n = UNSET_REAL
+      s0_t = UNSET_REAL
+      sf_t = UNSET_REAL
+      k_n = UNSET_REAL
+      k_t = UNSET_REAL
+      read (unit, nml=material, iostat=ios, iomsg=iomsg)
+      if (ios == iostat_end) then
+         message = where//'group not found (expected "&material ... /")'
+         return
+      else if (ios /= 0) then
+         message = where//'cannot read the group: '//trim(iomsg)
+         return
+      end if
+
+      missing = ''
+      if (len_trim(model) == 0) call add_name(missing, 'model')
+      if (len_trim(damage_law) == 0) call add_name(missing, 'damage_law')
+      if (is_unset(mu)) call add_name(missing, 'mu')
+      if (is_unset(s0_n)) call add_name(missing, 's0_n')
+      if (is_unset(sf_n)) call add_name(missing, 'sf_n')
+      if (is_unset(s0_t)) call add_name(missing, 's0_t')
+      if (is_unset(sf_t)) call add_name(missing, 'sf_t')
+      if (is_unset(k_n)) call add_name(missing, 'k_n')
+      if (is_unset(k_t)) call add_name(missing, 'k_t')
+      if (len(missing) > 0) then
+         if (index(missing, ',') > 0) then
+            message = where//'missing entries '//missing
+         else
+            message = where//'missing entry '//missing
+         end if
+         return
+      end if
+
+      allocate (case%props(NPROPS_SIMPLIFIED))
+      select case (to_lower(trim(adjustl(model))))
+      case ('simplified')
+         case%props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
+      case ('micromechanical')
+         message = where//"model = 'micromechanical' is not available in interphase-point yet "// &
+            "(available: 'simplified')"
+         return
+      case default
+         message = where//"unknown model '"//trim(adjustl(model))//"' (available: 'simplified')"
+         return
+      end select
+      select case (to_lower(trim(adjustl(damage_law))))
+      case ('displacement')
+         case%props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+      case default
+         message = where//"unknown damage_law '"//trim(adjustl(damage_law))// &
+            "' (available: 'displacement')"
+         return
+      end select
+
+      if (.not. finite_entry('mu', mu)) return
+      if (.not. finite_entry('s0_n', s0_n)) return
+      if (.not. finite_entry('sf_n', sf_n)) return
+      if (.not. finite_entry('s0_t', s0_t)) return
+      if (.not. finite_entry('sf_t', sf_t)) return
+      if (.not. finite_entry('k_n', k_n)) return
+      if (.not. finite_entry('k_t', k_t)) return
+      case%props(PROP_MU) = mu
+      case%props(PROP_S0_N) = s0_n
+      case%props(PROP_SF_N) = sf_n
+      case%props(PROP_S0_T) = s0_t
+      case%props(PROP_SF_T) = sf_t
+      case%props(PROP_K_N) = k_n
+      case%props(PROP_K_T) = k_t
+      ok = .true.
+
+   contains
+
+      !> False (and the message set) when the entry is NaN or infinite.
+      logical function finite_entry(name, value)
+         character(len=*), intent(in) :: name     !! entry name
+         real(dp), intent(in) :: value            !! its value
+
+         finite_entry = ieee_is_finite(value)
+         if (.not. finite_entry) message = where//name//' is not a finite number'
+      end function finite_entry
+
+   end subroutine read_material
+
+   !> Read the `&loading` group.
+   subroutine read_loading(unit, case, ok, message)
+      integer, intent(in) :: unit                 !! open case file
+      type(case_type), intent(inout) :: case      !! receives history_path, increments, output, plot
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      character(len=ENTRY_LEN) :: history, output
+      integer :: increments
+      logical :: plot
+      namelist /loading/ history, increments, output, plot
+      character(len=:), allocatable :: missing, where
+      integer :: ios
+      character(len=512) :: iomsg
+
+      ok = .false.
+      where = case%path//': &loading: '
+      history = ''
+      output = ''
+      increments = UNSET_INTEGER
+      plot = .true.
+      read (unit, nml=loading, iostat=ios, iomsg=iomsg)
+      if (ios == iostat_end) then
+         message = where//'group not found (expected "&loading ... /")'
+         return
+      else if (ios /= 0) then
+         message = where//'cannot read the group: '//trim(iomsg)
+         return
+      end if
+
+      missing = ''
+      if (len_trim(history) == 0) call add_name(missing, 'history')
+      if (increments == UNSET_INTEGER) call add_name(missing, 'increments')
+      if (len_trim(output) == 0) call add_name(missing, 'output')
+      if (len(missing) > 0) then
+         if (index(missing, ',') > 0) then
+            message = where//'missing entries '//missing
+         else
+            message = where//'missing entry '//missing
+         end if
+         return
+      end if
+      if (increments < 1) then
+         message = where//'increments must be at least 1, got '//int_to_string(increments)
+         return
+      end if
+
+      case%history_path = join_path(directory_of(case%path), trim(adjustl(history)))
+      case%output = trim(adjustl(output))
+      case%increments = increments
+      case%plot = plot
+      ok = .true.
+   end subroutine read_loading
+
+   !> True when a real entry still holds UNSET_REAL (a NaN from the file is not "unset").
+   pure logical function is_unset(value)
+      real(dp), intent(in) :: value               !! the entry after the namelist read
+
+      if (ieee_is_nan(value)) then
+         is_unset = .false.
+      else
+         is_unset = value >= UNSET_REAL .and. value <= UNSET_REAL
+      end if
+   end function is_unset
+
+   !> Append a name to a comma-separated list.
+   pure subroutine add_name(list, name)
+      character(len=:), allocatable, intent(inout) :: list  !! 'a, b' or ''
+      character(len=*), intent(in) :: name        !! name to append
+
+      if (len(list) == 0) then
+         list = name
+      else
+         list = list//', '//name
+      end if
+   end subroutine add_name
+
+end module interphase_driver_case

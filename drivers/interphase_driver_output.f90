@@ -1,0 +1,181 @@
+!> Output of the single-point driver: the CSV table of the replayed history and the gnuplot
+!> script that draws its traction-separation curves.
+!>
+!> CSV columns (2-D): t,s_T,s_N,Sigma_T,Sigma_N,D,slip,state,psi,W_dis
+!> CSV columns (3-D): t,s_T1,s_T2,s_N,Sigma_T1,Sigma_T2,Sigma_N,D,slip_1,slip_2,state,psi,W_dis
+!> Separations and slips in mm, tractions in MPa, D dimensionless, state one of
+!> intact|open|stick|slip, psi the stored energy (UMAT's SSE) and W_dis the dissipated energy
+!> (UMAT's SPD), both per unit area (N/mm). Numbers are written with 17 significant digits.
+!> Note the order: the UMAT arrays are normal first, the CSV puts the shear(s) first.
+module interphase_driver_output
+   use interphase_kinds, only: dp
+   use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, REGIME_INTACT, &
+      REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+   use interphase_driver_text, only: int_to_string, real_to_csv, real_to_string
+   implicit none
+   private
+   public :: csv_header, write_csv_row, write_plot_script
+
+contains
+
+   !> The CSV header line for NTENS = 2 or 3.
+   pure function csv_header(ntens) result(header)
+      integer, intent(in) :: ntens                !! 2 (2-D) or 3 (3-D)
+      character(len=:), allocatable :: header
+
+      if (ntens == 2) then
+         header = 't,s_T,s_N,Sigma_T,Sigma_N,D,slip,state,psi,W_dis'
+      else
+         header = 't,s_T1,s_T2,s_N,Sigma_T1,Sigma_T2,Sigma_N,D,slip_1,slip_2,state,psi,W_dis'
+      end if
+   end function csv_header
+
+   !> Write one CSV row. Fails (ok false) if STATEV holds no known regime code.
+   subroutine write_csv_row(unit, time, separation, stress, statev, sse, spd, ok, message)
+      integer, intent(in) :: unit                 !! open CSV file
+      real(dp), intent(in) :: time                !! t
+      real(dp), intent(in) :: separation(:)       !! s, UMAT order: normal first (mm)
+      real(dp), intent(in) :: stress(:)           !! traction, UMAT order: normal first (MPa)
+      real(dp), intent(in) :: statev(:)           !! UMAT state variables
+      real(dp), intent(in) :: sse                 !! stored energy per unit area (N/mm)
+      real(dp), intent(in) :: spd                 !! dissipated energy per unit area (N/mm)
+      logical, intent(out) :: ok                  !! false on an unknown regime code
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      character(len=:), allocatable :: row, state
+      character(len=1), parameter :: SEP = ','
+
+      call regime_name(statev(SV_REGIME), state, ok)
+      if (.not. ok) then
+         message = 'unknown regime code STATEV('//int_to_string(SV_REGIME)// &
+            ') = '//real_to_string(statev(SV_REGIME))//' at t = '//real_to_string(time)
+         return
+      end if
+      if (size(separation) == 2) then
+         row = real_to_csv(time)//SEP//real_to_csv(separation(2))//SEP// &
+            real_to_csv(separation(1))//SEP//real_to_csv(stress(2))//SEP// &
+            real_to_csv(stress(1))//SEP//real_to_csv(statev(SV_DAMAGE))//SEP// &
+            real_to_csv(statev(SV_SLIP_1))//SEP//state//SEP//real_to_csv(sse)//SEP// &
+            real_to_csv(spd)
+      else
+         row = real_to_csv(time)//SEP//real_to_csv(separation(2))//SEP// &
+            real_to_csv(separation(3))//SEP//real_to_csv(separation(1))//SEP// &
+            real_to_csv(stress(2))//SEP//real_to_csv(stress(3))//SEP// &
+            real_to_csv(stress(1))//SEP//real_to_csv(statev(SV_DAMAGE))//SEP// &
+            real_to_csv(statev(SV_SLIP_1))//SEP//real_to_csv(statev(SV_SLIP_2))//SEP// &
+            state//SEP//real_to_csv(sse)//SEP//real_to_csv(spd)
+      end if
+      write (unit, '(a)') row
+   end subroutine write_csv_row
+
+   !> Name of the regime stored in STATEV(SV_REGIME): intact, open, stick or slip.
+   subroutine regime_name(code, name, ok)
+      real(dp), intent(in) :: code                !! STATEV(SV_REGIME)
+      character(len=:), allocatable, intent(out) :: name  !! the name when ok
+      logical, intent(out) :: ok                  !! false if code is not a REGIME_* value
+      integer :: icode
+
+      ok = .false.
+      name = ''
+      if (.not. (abs(code) < 100.0_dp)) return
+      icode = nint(code)
+      if (abs(code - real(icode, dp)) > 0.0_dp) return
+      ok = .true.
+      select case (icode)
+      case (REGIME_INTACT); name = 'intact'
+      case (REGIME_OPEN);   name = 'open'
+      case (REGIME_STICK);  name = 'stick'
+      case (REGIME_SLIP);   name = 'slip'
+      case default;         ok = .false.
+      end select
+   end subroutine regime_name
+
+   !> Write a gnuplot script that draws the traction-separation curves of a CSV file into one
+   !> PNG: Sigma_N vs s_N and Sigma_T vs s_T (2-D) or Sigma_T1 vs s_T1 and Sigma_T2 vs s_T2
+   !> (3-D), one panel each. File names in the script are relative: run it in its directory.
+   subroutine write_plot_script(script_path, csv_name, png_name, title, ntens, ok, message)
+      character(len=*), intent(in) :: script_path !! where to write the script
+      character(len=*), intent(in) :: csv_name    !! CSV file name, relative to the script
+      character(len=*), intent(in) :: png_name    !! PNG file name, relative to the script
+      character(len=*), intent(in) :: title       !! plot title (the case name)
+      integer, intent(in) :: ntens                !! 2 or 3
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      !> Capital sigma as a gnuplot Unicode escape (double-quoted strings, gnuplot >= 5.2).
+      character(len=*), parameter :: SIGMA = '\U+03A3'
+      integer :: unit, ios, npanels
+      character(len=512) :: iomsg
+
+      ok = .false.
+      open (newunit=unit, file=script_path, status='replace', action='write', iostat=ios, &
+         iomsg=iomsg)
+      if (ios /= 0) then
+         message = script_path//': cannot write the gnuplot script: '//trim(iomsg)
+         return
+      end if
+      npanels = ntens
+      write (unit, '(a)') '# Traction-separation curves of '//csv_name// &
+         ' - generated by interphase-point, do not edit.', &
+         'set encoding utf8', &
+         'set datafile separator ","'
+      if (npanels == 2) then
+         write (unit, '(a)') 'width = 1200'
+      else
+         write (unit, '(a)') 'width = 1650'
+      end if
+      write (unit, '(a)') &
+         'if (strstrt(GPVAL_TERMINALS, "pngcairo") > 0) {', &
+         '  set terminal pngcairo enhanced size width, 520 font ",11"', &
+         '} else {', &
+         '  set terminal png enhanced size width, 520', &
+         '}', &
+         'set output "'//png_name//'"', &
+         'set multiplot layout 1,'//achar(iachar('0') + npanels)//' title "'//title// &
+         '" noenhanced font ",14"', &
+         'set grid', &
+         'set key off', &
+         'set zeroaxis', &
+         'set xtics nomirror rotate by -30', &
+         'set rmargin 5'
+      if (ntens == 2) then
+         call panel('s_N', SIGMA//'_N', 3, 5, 'normal')
+         call panel('s_T', SIGMA//'_T', 2, 4, 'tangential')
+      else
+         call panel('s_N', SIGMA//'_N', 4, 7, 'normal')
+         call panel('s_{T1}', SIGMA//'_{T1}', 2, 5, 'tangential 1')
+         call panel('s_{T2}', SIGMA//'_{T2}', 3, 6, 'tangential 2')
+      end if
+      write (unit, '(a)') 'unset multiplot'
+      close (unit)
+      ok = .true.
+
+   contains
+
+      !> One panel: traction (column y) against separation (column x).
+      subroutine panel(x_name, y_name, x_column, y_column, label)
+         character(len=*), intent(in) :: x_name   !! separation symbol (enhanced text)
+         character(len=*), intent(in) :: y_name   !! traction symbol (enhanced text)
+         integer, intent(in) :: x_column          !! CSV column of the separation
+         integer, intent(in) :: y_column          !! CSV column of the traction
+         character(len=*), intent(in) :: label    !! panel title
+
+         character(len=:), allocatable :: columns
+
+         columns = achar(iachar('0') + x_column)//':'//achar(iachar('0') + y_column)
+         ! A constant column (e.g. s_T = 0 in mode I) gets a fixed range and is drawn as points.
+         write (unit, '(a)') &
+            'set title "'//label//'"', &
+            'set xlabel "'//x_name//' (mm)"', &
+            'set ylabel "'//y_name//' (MPa)"', &
+            'set autoscale xy', &
+            'stats "'//csv_name//'" using '//columns//' skip 1 nooutput', &
+            'flat_x = (STATS_max_x - STATS_min_x <= 1e-9*(abs(STATS_max_x) + abs(STATS_min_x)))', &
+            'flat_y = (STATS_max_y - STATS_min_y <= 1e-9*(abs(STATS_max_y) + abs(STATS_min_y)))', &
+            'if (flat_x) { set xrange [STATS_min_x - 0.01 : STATS_max_x + 0.01] }', &
+            'if (flat_y) { set yrange [STATS_min_y - 0.1 : STATS_max_y + 0.1] }', &
+            'style = (flat_x || flat_y) ? "points pt 7 ps 1.5" : "lines lw 2"', &
+            'plot "'//csv_name//'" using '//columns//' skip 1 with @style lc rgb "#1f4e9a"'
+      end subroutine panel
+
+   end subroutine write_plot_script
+
+end module interphase_driver_output

@@ -1,0 +1,184 @@
+!> Text and path helpers of the single-point driver `interphase-point`: number formatting,
+!> line reading, tokenising, lower-casing, path splitting and shell quoting. No physics here.
+module interphase_driver_text
+   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
+   use interphase_kinds, only: dp
+   implicit none
+   private
+   public :: int_to_string, real_to_string, real_to_csv, to_lower
+   public :: read_line, split_words, directory_of, base_name, stem_of, join_path, shell_quote
+
+contains
+
+   !> Decimal text of an integer, without blanks.
+   pure function int_to_string(value) result(text)
+      integer, intent(in) :: value                !! the integer
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+
+      write (buffer, '(i0)') value
+      text = trim(buffer)
+   end function int_to_string
+
+   !> Short text of a real for messages (`g0`, up to 17 significant digits, no blanks).
+   function real_to_string(value) result(text)
+      real(dp), intent(in) :: value               !! the number
+      character(len=:), allocatable :: text
+      character(len=40) :: buffer
+
+      write (buffer, '(g0)') value
+      text = trim(adjustl(buffer))
+   end function real_to_string
+
+   !> Full-precision text of a real for CSV files (`es24.16e3`: 17 significant digits), no blanks.
+   function real_to_csv(value) result(text)
+      real(dp), intent(in) :: value               !! the number
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+
+      write (buffer, '(es24.16e3)') value
+      text = trim(adjustl(buffer))
+   end function real_to_csv
+
+   !> Lower-case copy of an ASCII string.
+   pure function to_lower(text) result(lower)
+      character(len=*), intent(in) :: text        !! any text
+      character(len=len(text)) :: lower
+      integer :: i, code
+
+      lower = text
+      do i = 1, len(text)
+         code = iachar(text(i:i))
+         if (code >= iachar('A') .and. code <= iachar('Z')) lower(i:i) = achar(code + 32)
+      end do
+   end function to_lower
+
+   !> Read one whole line of any length from a formatted sequential unit. A last line without a
+   !> newline is returned as a line. `iostat` is 0, `iostat_end` at the end of the file, or the
+   !> processor's error code (then `iomsg` says why).
+   subroutine read_line(unit, line, iostat, iomsg)
+      integer, intent(in) :: unit                 !! open formatted sequential unit
+      character(len=:), allocatable, intent(out) :: line  !! the line, without its newline
+      integer, intent(out) :: iostat              !! 0, iostat_end or an error code
+      character(len=*), intent(inout) :: iomsg    !! error text when iostat is an error code
+      character(len=512) :: buffer
+      integer :: nread
+
+      line = ''
+      do
+         read (unit, '(a)', advance='no', iostat=iostat, iomsg=iomsg, size=nread) buffer
+         if (iostat == 0 .or. iostat == iostat_eor .or. iostat == iostat_end) then
+            line = line//buffer(:nread)
+         end if
+         if (iostat == iostat_eor) then
+            iostat = 0
+            return
+         else if (iostat == iostat_end) then
+            if (len(line) > 0) iostat = 0
+            return
+         else if (iostat /= 0) then
+            return
+         end if
+      end do
+   end subroutine read_line
+
+   !> Split a line into blank-separated words (blanks: space, tab, carriage return).
+   !> `starts(i):ends(i)` is word i.
+   pure subroutine split_words(line, starts, ends)
+      character(len=*), intent(in) :: line        !! the text to split
+      integer, allocatable, intent(out) :: starts(:)  !! first character of each word
+      integer, allocatable, intent(out) :: ends(:)    !! last character of each word
+      integer :: i, nwords
+      logical :: in_word
+
+      allocate (starts(len(line)/2 + 1), ends(len(line)/2 + 1))
+      nwords = 0
+      in_word = .false.
+      do i = 1, len(line)
+         if (is_blank(line(i:i))) then
+            if (in_word) ends(nwords) = i - 1
+            in_word = .false.
+         else if (.not. in_word) then
+            nwords = nwords + 1
+            starts(nwords) = i
+            in_word = .true.
+         end if
+      end do
+      if (in_word) ends(nwords) = len(line)
+      starts = starts(:nwords)
+      ends = ends(:nwords)
+   end subroutine split_words
+
+   !> True for the characters that separate words: space, tab, carriage return.
+   pure logical function is_blank(character)
+      character(len=1), intent(in) :: character   !! one character
+
+      is_blank = character == ' ' .or. character == achar(9) .or. character == achar(13)
+   end function is_blank
+
+   !> Directory part of a path, with its trailing '/', or '' when the path has none.
+   pure function directory_of(path) result(directory)
+      character(len=*), intent(in) :: path        !! a file path
+      character(len=:), allocatable :: directory
+
+      directory = path(:index(path, '/', back=.true.))
+   end function directory_of
+
+   !> File-name part of a path (after the last '/').
+   pure function base_name(path) result(name)
+      character(len=*), intent(in) :: path        !! a file path
+      character(len=:), allocatable :: name
+
+      name = path(index(path, '/', back=.true.) + 1:)
+   end function base_name
+
+   !> File name without directory and without its last extension: 'cases/h1I.nml' -> 'h1I'.
+   pure function stem_of(path) result(stem)
+      character(len=*), intent(in) :: path        !! a file path
+      character(len=:), allocatable :: stem
+      integer :: dot
+
+      stem = base_name(path)
+      dot = index(stem, '.', back=.true.)
+      if (dot > 1) stem = stem(:dot - 1)
+   end function stem_of
+
+   !> `relative` placed under `directory`, unless it is absolute or `directory` is empty.
+   pure function join_path(directory, relative) result(path)
+      character(len=*), intent(in) :: directory   !! base directory ('' for none)
+      character(len=*), intent(in) :: relative    !! a path, absolute or relative
+      character(len=:), allocatable :: path
+
+      if (len(relative) > 0) then
+         if (relative(1:1) == '/') then
+            path = relative
+            return
+         end if
+      end if
+      if (len(directory) == 0) then
+         path = relative
+      else if (directory(len(directory):) == '/') then
+         path = directory//relative
+      else
+         path = directory//'/'//relative
+      end if
+   end function join_path
+
+   !> A string quoted for the POSIX shell: 'it''s' becomes 'it'\''s'.
+   pure function shell_quote(text) result(quoted)
+      character(len=*), intent(in) :: text        !! any text
+      character(len=:), allocatable :: quoted
+      integer :: i
+
+      quoted = "'"
+      do i = 1, len(text)
+         if (text(i:i) == "'") then
+            quoted = quoted//"'\''"
+         else
+            quoted = quoted//text(i:i)
+         end if
+      end do
+      quoted = quoted//"'"
+   end function shell_quote
+
+end module interphase_driver_text

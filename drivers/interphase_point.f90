@@ -1,0 +1,160 @@
+!> `interphase-point`: single material-point driver of the interphase UMAT.
+!>
+!>     interphase-point CASE.nml [--output-dir DIR] [--no-plot]
+!>
+!> Reads the case file (namelists `&material` and `&loading`, see `interphase_driver_case`),
+!> replays its separation history (see `interphase_driver_history`) through `umat` and writes a
+!> CSV table (see `interphase_driver_output`); when `plot` is true, `--no-plot` is not given and
+!> gnuplot is on PATH, also a gnuplot script and a PNG of the traction-separation curves next
+!> to the CSV. Relative `output` paths are taken relative to DIR, or to the current directory.
+!> Every error is printed to standard error and ends the program with exit status 1 (`stop 1`).
+program interphase_point
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use interphase_driver_case, only: case_type, read_case
+   use interphase_driver_history, only: history_type, read_history
+   use interphase_driver_output, only: csv_header, write_plot_script
+   use interphase_driver_replay, only: replay_history
+   use interphase_driver_text, only: int_to_string, directory_of, base_name, stem_of, &
+      join_path, shell_quote
+   implicit none
+
+   character(len=:), allocatable :: case_path, output_dir, csv_path, message, argument
+   type(case_type) :: case
+   type(history_type) :: history
+   logical :: no_plot, ok
+   integer :: i, nargs, unit, ios, nrows
+   character(len=512) :: iomsg
+
+   ! ---- command line ----
+   no_plot = .false.
+   output_dir = ''
+   case_path = ''
+   nargs = command_argument_count()
+   i = 0
+   do while (i < nargs)
+      i = i + 1
+      call get_argument(i, argument)
+      select case (argument)
+      case ('-h', '--help')
+         call print_usage(output_unit)
+         stop
+      case ('--no-plot')
+         no_plot = .true.
+      case ('--output-dir')
+         if (i == nargs) call fail('--output-dir needs a directory', usage=.true.)
+         i = i + 1
+         call get_argument(i, output_dir)
+         if (len(output_dir) == 0) call fail('--output-dir needs a non-empty directory', usage=.true.)
+      case default
+         if (len(argument) > 0) then
+            if (argument(1:1) == '-') call fail('unknown option '//argument, usage=.true.)
+         end if
+         if (len(case_path) > 0) call fail('only one case file may be given (got '//case_path// &
+            ' and '//argument//')', usage=.true.)
+         case_path = argument
+      end select
+   end do
+   if (len(case_path) == 0) call fail('no case file given', usage=.true.)
+
+   ! ---- inputs ----
+   call read_case(case_path, case, ok, message)
+   if (.not. ok) call fail(message)
+   call read_history(case%history_path, history, ok, message)
+   if (.not. ok) call fail(message)
+
+   ! ---- replay into the CSV ----
+   csv_path = join_path(output_dir, case%output)
+   call make_directory(directory_of(csv_path))
+   open (newunit=unit, file=csv_path, status='replace', action='write', form='formatted', &
+      iostat=ios, iomsg=iomsg)
+   if (ios /= 0) call fail(csv_path//': cannot write the CSV file: '//trim(iomsg))
+   write (unit, '(a)') csv_header(history%ntens)
+   call replay_history(case, history, unit, nrows, ok, message)
+   close (unit)
+   if (.not. ok) call fail(message//' (the CSV '//csv_path//' is incomplete)')
+   write (output_unit, '(a)') case%name//': '//int_to_string(nrows)//' rows ('// &
+      int_to_string(history%ntens)//'-D) written to '//csv_path
+
+   ! ---- plot ----
+   if (case%plot .and. .not. no_plot) call plot_csv()
+
+contains
+
+   !> Print the message to standard error and stop with exit status 1.
+   subroutine fail(text, usage)
+      character(len=*), intent(in) :: text        !! what went wrong
+      logical, intent(in), optional :: usage      !! also print the usage line
+
+      write (error_unit, '(a)') 'interphase-point: error: '//text
+      if (present(usage)) then
+         if (usage) call print_usage(error_unit)
+      end if
+      stop 1
+   end subroutine fail
+
+   !> Print how to call the program.
+   subroutine print_usage(unit)
+      integer, intent(in) :: unit                 !! where to print
+
+      write (unit, '(a)') 'usage: interphase-point CASE.nml [--output-dir DIR] [--no-plot]', &
+         '  Replays the separation history of CASE.nml through the interphase UMAT and writes', &
+         '  a CSV table (and a PNG of the traction-separation curves if gnuplot is on PATH).'
+   end subroutine print_usage
+
+   !> Command-line argument number n, of any length.
+   subroutine get_argument(n, value)
+      integer, intent(in) :: n                    !! argument number
+      character(len=:), allocatable, intent(out) :: value  !! its text
+      integer :: length
+
+      call get_command_argument(n, length=length)
+      allocate (character(len=length) :: value)
+      if (length > 0) call get_command_argument(n, value)
+   end subroutine get_argument
+
+   !> Create a directory and its parents (`mkdir -p`) unless it is '' (current directory).
+   subroutine make_directory(directory)
+      character(len=*), intent(in) :: directory   !! directory path, may end in '/'
+      integer :: exitstat, cmdstat
+      character(len=256) :: cmdmsg
+
+      if (len(directory) == 0) return
+      exitstat = 0
+      cmdmsg = ''
+      call execute_command_line('mkdir -p '//shell_quote(directory), exitstat=exitstat, &
+         cmdstat=cmdstat, cmdmsg=cmdmsg)
+      if (cmdstat /= 0) call fail('cannot run mkdir -p '//directory//': '//trim(cmdmsg))
+      if (exitstat /= 0) call fail('mkdir -p '//directory//' failed (exit status '// &
+         int_to_string(exitstat)//')')
+   end subroutine make_directory
+
+   !> Write the gnuplot script next to the CSV and run it, or say why not.
+   subroutine plot_csv()
+      character(len=:), allocatable :: directory, stem, script_name
+      integer :: exitstat, cmdstat
+      character(len=256) :: cmdmsg
+
+      exitstat = 1
+      cmdmsg = ''
+      call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=exitstat, &
+         cmdstat=cmdstat, cmdmsg=cmdmsg)
+      if (cmdstat /= 0 .or. exitstat /= 0) then
+         write (output_unit, '(a)') 'gnuplot not found: PNG skipped (install Debian package gnuplot-nox)'
+         return
+      end if
+      directory = directory_of(csv_path)
+      stem = stem_of(csv_path)
+      script_name = stem//'.gp'
+      call write_plot_script(join_path(directory, script_name), base_name(csv_path), &
+         stem//'.png', case%name, history%ntens, ok, message)
+      if (.not. ok) call fail(message)
+      if (len(directory) == 0) directory = '.'
+      call execute_command_line('cd '//shell_quote(directory)//' && gnuplot '// &
+         shell_quote(script_name), exitstat=exitstat, cmdstat=cmdstat, cmdmsg=cmdmsg)
+      if (cmdstat /= 0) call fail('cannot run gnuplot: '//trim(cmdmsg))
+      if (exitstat /= 0) call fail('gnuplot failed on '//join_path(directory, script_name)// &
+         ' (exit status '//int_to_string(exitstat)//')')
+      write (output_unit, '(a)') case%name//': plot written to '//join_path(directory, stem//'.png')
+   end subroutine plot_csv
+
+end program interphase_point
