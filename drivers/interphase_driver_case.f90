@@ -18,7 +18,8 @@ module interphase_driver_case
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
-      DAMAGE_DISPLACEMENT
+      DAMAGE_DISPLACEMENT, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
+      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE
    use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
    implicit none
    private
@@ -47,54 +48,59 @@ module interphase_driver_case
       integer :: increments = 0
       !> Whether a PNG of the traction-separation curves is wanted.
       logical :: plot = .true.
+      !> Custom RVE table of the micromechanical model, resolved against the case file's
+      !> directory; empty for the built-in table.
+      character(len=:), allocatable :: table_path
    end type case_type
 
 contains
 
    !> Read and check a case file. On failure `ok` is false and `message` says what and where,
    !> always naming the case file.
-   subroutine read_case(path, case, ok, message)
+   subroutine read_case(path, run, ok, message)
       character(len=*), intent(in) :: path        !! case file path
-      type(case_type), intent(out) :: case        !! the case, valid when ok
+      type(case_type), intent(out) :: run        !! the case, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       integer :: unit, ios
       character(len=512) :: iomsg
 
       ok = .false.
-      case%path = path
-      case%name = stem_of(path)
+      run%path = path
+      run%name = stem_of(path)
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
          iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
          message = path//': cannot open the case file: '//trim(iomsg)
          return
       end if
-      call read_material(unit, case, ok, message)
+      call read_material(unit, run, ok, message)
       if (ok) then
          rewind (unit)
-         call read_loading(unit, case, ok, message)
+         call read_loading(unit, run, ok, message)
       end if
       close (unit)
    end subroutine read_case
 
    !> Read the `&material` group and pack it into PROPS.
-   subroutine read_material(unit, case, ok, message)
+   subroutine read_material(unit, run, ok, message)
       integer, intent(in) :: unit                 !! open case file
-      type(case_type), intent(inout) :: case      !! receives props
+      type(case_type), intent(inout) :: run      !! receives props
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      character(len=ENTRY_LEN) :: model, damage_law
+      character(len=ENTRY_LEN) :: model, damage_law, table
       real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t
-      namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t
+      namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table
       character(len=:), allocatable :: missing, where
       integer :: ios
       character(len=512) :: iomsg
 
       ok = .false.
-      where = case%path//': &material: '
+      where = run%path//': &material: '
       model = ''
       damage_law = ''
+      table = ''
+      run%table_path = ''
       mu = UNSET_REAL
       s0_n = UNSET_REAL
       sf_n = UNSET_REAL
@@ -119,8 +125,10 @@ contains
       if (is_unset(sf_n)) call add_name(missing, 'sf_n')
       if (is_unset(s0_t)) call add_name(missing, 's0_t')
       if (is_unset(sf_t)) call add_name(missing, 'sf_t')
-      if (is_unset(k_n)) call add_name(missing, 'k_n')
-      if (is_unset(k_t)) call add_name(missing, 'k_t')
+      if (to_lower(trim(adjustl(model))) == 'simplified') then
+         if (is_unset(k_n)) call add_name(missing, 'k_n')
+         if (is_unset(k_t)) call add_name(missing, 'k_t')
+      end if
       if (len(missing) > 0) then
          if (index(missing, ',') > 0) then
             message = where//'missing entries '//missing
@@ -130,21 +138,40 @@ contains
          return
       end if
 
-      allocate (case%props(NPROPS_SIMPLIFIED))
       select case (to_lower(trim(adjustl(model))))
       case ('simplified')
-         case%props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
+         if (len_trim(table) > 0) then
+            message = where//"table is an entry of model = 'micromechanical' only"
+            return
+         end if
+         allocate (run%props(NPROPS_SIMPLIFIED))
+         run%props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
+         if (.not. finite_entry('k_n', k_n)) return
+         if (.not. finite_entry('k_t', k_t)) return
+         run%props(PROP_K_N) = k_n
+         run%props(PROP_K_T) = k_t
       case ('micromechanical')
-         message = where//"model = 'micromechanical' is not available in interphase-point yet "// &
-            "(available: 'simplified')"
-         return
+         if (.not. (is_unset(k_n) .and. is_unset(k_t))) then
+            message = where//"k_n and k_t are entries of model = 'simplified' only (the "// &
+               "micromechanical model takes its stiffness from the RVE table)"
+            return
+         end if
+         allocate (run%props(NPROPS_MICROMECHANICAL))
+         run%props(PROP_MODEL) = real(MODEL_MICROMECHANICAL, dp)
+         if (len_trim(table) == 0) then
+            run%props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
+         else
+            run%props(PROP_TABLE) = real(TABLE_CUSTOM_CODE, dp)
+            run%table_path = join_path(directory_of(run%path), trim(adjustl(table)))
+         end if
       case default
-         message = where//"unknown model '"//trim(adjustl(model))//"' (available: 'simplified')"
+         message = where//"unknown model '"//trim(adjustl(model))// &
+            "' (available: 'simplified', 'micromechanical')"
          return
       end select
       select case (to_lower(trim(adjustl(damage_law))))
       case ('displacement')
-         case%props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+         run%props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
       case default
          message = where//"unknown damage_law '"//trim(adjustl(damage_law))// &
             "' (available: 'displacement')"
@@ -156,15 +183,11 @@ contains
       if (.not. finite_entry('sf_n', sf_n)) return
       if (.not. finite_entry('s0_t', s0_t)) return
       if (.not. finite_entry('sf_t', sf_t)) return
-      if (.not. finite_entry('k_n', k_n)) return
-      if (.not. finite_entry('k_t', k_t)) return
-      case%props(PROP_MU) = mu
-      case%props(PROP_S0_N) = s0_n
-      case%props(PROP_SF_N) = sf_n
-      case%props(PROP_S0_T) = s0_t
-      case%props(PROP_SF_T) = sf_t
-      case%props(PROP_K_N) = k_n
-      case%props(PROP_K_T) = k_t
+      run%props(PROP_MU) = mu
+      run%props(PROP_S0_N) = s0_n
+      run%props(PROP_SF_N) = sf_n
+      run%props(PROP_S0_T) = s0_t
+      run%props(PROP_SF_T) = sf_t
       ok = .true.
 
    contains
@@ -181,9 +204,9 @@ contains
    end subroutine read_material
 
    !> Read the `&loading` group.
-   subroutine read_loading(unit, case, ok, message)
+   subroutine read_loading(unit, run, ok, message)
       integer, intent(in) :: unit                 !! open case file
-      type(case_type), intent(inout) :: case      !! receives history_path, increments, output, plot
+      type(case_type), intent(inout) :: run      !! receives history_path, increments, output, plot
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       character(len=ENTRY_LEN) :: history, output
@@ -195,7 +218,7 @@ contains
       character(len=512) :: iomsg
 
       ok = .false.
-      where = case%path//': &loading: '
+      where = run%path//': &loading: '
       history = ''
       output = ''
       increments = UNSET_INTEGER
@@ -226,10 +249,10 @@ contains
          return
       end if
 
-      case%history_path = join_path(directory_of(case%path), trim(adjustl(history)))
-      case%output = trim(adjustl(output))
-      case%increments = increments
-      case%plot = plot
+      run%history_path = join_path(directory_of(run%path), trim(adjustl(history)))
+      run%output = trim(adjustl(output))
+      run%increments = increments
+      run%plot = plot
       ok = .true.
    end subroutine read_loading
 

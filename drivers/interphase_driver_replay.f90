@@ -18,7 +18,7 @@ module interphase_driver_replay
    use interphase_driver_text, only: int_to_string, real_to_string
    implicit none
    private
-   public :: replay_history, MAX_HALVINGS
+   public :: replay_history, MAX_HALVINGS, point_state_type, new_point, call_umat
 
    !> Largest number of halvings of one sub-increment before the driver gives up.
    integer, parameter :: MAX_HALVINGS = 10
@@ -38,8 +38,8 @@ contains
 
    !> Replay `history` through the UMAT with the case's material, writing the CSV rows (not the
    !> header) to `csv_unit`. On failure `ok` is false and `message` names the case file.
-   subroutine replay_history(case, history, csv_unit, nrows_written, ok, message)
-      type(case_type), intent(in) :: case         !! material (PROPS) and increments
+   subroutine replay_history(run, history, csv_unit, nrows_written, ok, message)
+      type(case_type), intent(in) :: run         !! material (PROPS) and increments
       type(history_type), intent(in) :: history   !! prescribed separations
       integer, intent(in) :: csv_unit             !! open CSV file, header already written
       integer, intent(out) :: nrows_written       !! number of CSV rows written
@@ -55,26 +55,22 @@ contains
       ntens = history%ntens
       allocate (zero(ntens))
       zero = 0.0_dp
-      point%time = history%time(1)
-      point%separation = zero
-      point%stress = zero
-      allocate (point%statev(NSTATV_REQUIRED))
-      point%statev = 0.0_dp
+      point = new_point(ntens, history%time(1))
 
       ! Probe: a zero increment on the virgin state checks PROPS and sizes before anything else.
       trial = point
-      call call_umat(case%props, trial, zero, history%time(1), pnewdt)
+      call call_umat(run%props, trial, zero, history%time(1), pnewdt)
       if (pnewdt < 1.0_dp) then
-         message = case%path//': the UMAT rejected the material data or sizes (NTENS = '// &
-            int_to_string(ntens)//', NPROPS = '//int_to_string(size(case%props))// &
+         message = run%path//': the UMAT rejected the material data or sizes (NTENS = '// &
+            int_to_string(ntens)//', NPROPS = '//int_to_string(size(run%props))// &
             '); see its message above'
          return
       end if
 
       if (any(abs(history%separation(:, 1)) > 0.0_dp)) then
-         do j = 1, case%increments
+         do j = 1, run%increments
             call advance(zero, history%separation(:, 1), history%time(1), history%time(1), &
-               real(j - 1, dp)/real(case%increments, dp), real(j, dp)/real(case%increments, dp), &
+               real(j - 1, dp)/real(run%increments, dp), real(j, dp)/real(run%increments, dp), &
                .false., ok)
             if (.not. ok) return
          end do
@@ -82,16 +78,16 @@ contains
       call write_csv_row(csv_unit, point%time, point%separation, point%stress, point%statev, &
          point%sse, point%spd, ok, message)
       if (.not. ok) then
-         message = case%path//': '//message
+         message = run%path//': '//message
          return
       end if
       nrows_written = 1
 
       do k = 1, history%nrows - 1
-         do j = 1, case%increments
+         do j = 1, run%increments
             call advance(history%separation(:, k), history%separation(:, k + 1), &
                history%time(k), history%time(k + 1), &
-               real(j - 1, dp)/real(case%increments, dp), real(j, dp)/real(case%increments, dp), &
+               real(j - 1, dp)/real(run%increments, dp), real(j, dp)/real(run%increments, dp), &
                .true., ok)
             if (.not. ok) return
          end do
@@ -137,12 +133,12 @@ contains
                time_new = time_a + theta*(time_b - time_a)
             end if
             trial = point
-            call call_umat(case%props, trial, s_new, time_new, pnewdt)
+            call call_umat(run%props, trial, s_new, time_new, pnewdt)
             if (pnewdt < 1.0_dp) then
                halvings = halvings + 1
                if (halvings > MAX_HALVINGS) then
                   success = .false.
-                  message = case%path//': the UMAT did not converge from t = '// &
+                  message = run%path//': the UMAT did not converge from t = '// &
                      real_to_string(point%time)//' to t = '//real_to_string(time_new)// &
                      ' (separation '//separation_text(s_new)//' mm) even after '// &
                      int_to_string(MAX_HALVINGS)//' halvings of the sub-increment'
@@ -157,7 +153,7 @@ contains
                call write_csv_row(csv_unit, point%time, point%separation, point%stress, &
                   point%statev, point%sse, point%spd, written, message)
                if (.not. written) then
-                  message = case%path//': '//message
+                  message = run%path//': '//message
                   return
                end if
                nrows_written = nrows_written + 1
@@ -171,12 +167,13 @@ contains
    !> One UMAT call taking `point` from its separation and time to `separation_new` at
    !> `time_new`. `point` is updated in place (callers pass a copy and keep it only if
    !> pnewdt >= 1).
-   subroutine call_umat(props, point, separation_new, time_new, pnewdt)
+   subroutine call_umat(props, point, separation_new, time_new, pnewdt, tangent)
       real(dp), intent(in) :: props(:)            !! material constants (PROPS layout)
       type(point_state_type), intent(inout) :: point  !! state at the start; at the end on exit
       real(dp), intent(in) :: separation_new(:)   !! separation at the end of the step (mm)
       real(dp), intent(in) :: time_new            !! time at the end of the step
       real(dp), intent(out) :: pnewdt             !! < 1: the UMAT asks for a smaller step
+      real(dp), intent(out), optional :: tangent(:, :)   !! DDSDDE of the step (MPa/mm)
       character(len=80), parameter :: CMNAME = 'INTERPHASE'
       real(dp), allocatable :: ddsdde(:, :), ddsddt(:), drplde(:), dstran(:)
       real(dp) :: scd, rpl, drpldt, time(2), temp, dtemp, predef(1), dpred(1), coords(3)
@@ -214,7 +211,21 @@ contains
          coords, drot, pnewdt, 1.0_dp, dfgrd, dfgrd, 1, 1, 1, 1, jstep, point%kinc)
       point%separation = separation_new
       point%time = time_new
+      if (present(tangent)) tangent = ddsdde
    end subroutine call_umat
+
+   !> A virgin material point with NTENS components at time t0: zero separation, traction,
+   !> state and energies.
+   pure function new_point(ntens, t0) result(point)
+      integer, intent(in) :: ntens                !! 2 (2-D) or 3 (3-D)
+      real(dp), intent(in) :: t0                  !! initial time
+      type(point_state_type) :: point
+      point%time = t0
+      allocate (point%separation(ntens), point%stress(ntens), point%statev(NSTATV_REQUIRED))
+      point%separation = 0.0_dp
+      point%stress = 0.0_dp
+      point%statev = 0.0_dp
+   end function new_point
 
    !> Separation in the CSV/history order for messages: "(s_T, s_N)" or "(s_T1, s_T2, s_N)".
    function separation_text(separation) result(text)

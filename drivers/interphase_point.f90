@@ -11,6 +11,8 @@
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_driver_case, only: case_type, read_case
+   use interphase_micro_coefficients, only: load_custom_table
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_driver_history, only: history_type, read_history
    use interphase_driver_output, only: csv_header, write_plot_script
    use interphase_driver_replay, only: replay_history
@@ -19,11 +21,13 @@ program interphase_point
    implicit none
 
    character(len=:), allocatable :: case_path, output_dir, csv_path, message, argument
-   type(case_type) :: case
+   type(case_type) :: run
    type(history_type) :: history
    logical :: no_plot, ok
    integer :: i, nargs, unit, ios, nrows
    character(len=512) :: iomsg
+   character(len=MESSAGE_LEN) :: table_message
+   integer :: status
 
    ! ---- command line ----
    no_plot = .false.
@@ -57,26 +61,31 @@ program interphase_point
    if (len(case_path) == 0) call fail('no case file given', usage=.true.)
 
    ! ---- inputs ----
-   call read_case(case_path, case, ok, message)
+   call read_case(case_path, run, ok, message)
    if (.not. ok) call fail(message)
-   call read_history(case%history_path, history, ok, message)
+   call read_history(run%history_path, history, ok, message)
    if (.not. ok) call fail(message)
+   if (len(run%table_path) > 0) then
+      ! start-up: the custom RVE table is read once, before any update (as UEXTERNALDB does)
+      call load_custom_table(run%table_path, status, table_message)
+      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
+   end if
 
    ! ---- replay into the CSV ----
-   csv_path = join_path(output_dir, case%output)
+   csv_path = join_path(output_dir, run%output)
    call make_directory(directory_of(csv_path))
    open (newunit=unit, file=csv_path, status='replace', action='write', form='formatted', &
       iostat=ios, iomsg=iomsg)
    if (ios /= 0) call fail(csv_path//': cannot write the CSV file: '//trim(iomsg))
    write (unit, '(a)') csv_header(history%ntens)
-   call replay_history(case, history, unit, nrows, ok, message)
+   call replay_history(run, history, unit, nrows, ok, message)
    close (unit)
    if (.not. ok) call fail(message//' (the CSV '//csv_path//' is incomplete)')
-   write (output_unit, '(a)') case%name//': '//int_to_string(nrows)//' rows ('// &
+   write (output_unit, '(a)') run%name//': '//int_to_string(nrows)//' rows ('// &
       int_to_string(history%ntens)//'-D) written to '//csv_path
 
    ! ---- plot ----
-   if (case%plot .and. .not. no_plot) call plot_csv()
+   if (run%plot .and. .not. no_plot) call plot_csv()
 
 contains
 
@@ -146,7 +155,7 @@ contains
       stem = stem_of(csv_path)
       script_name = stem//'.gp'
       call write_plot_script(join_path(directory, script_name), base_name(csv_path), &
-         stem//'.png', case%name, history%ntens, ok, message)
+         stem//'.png', run%name, history%ntens, ok, message)
       if (.not. ok) call fail(message)
       if (len(directory) == 0) directory = '.'
       call execute_command_line('cd '//shell_quote(directory)//' && gnuplot '// &
@@ -154,7 +163,7 @@ contains
       if (cmdstat /= 0) call fail('cannot run gnuplot: '//trim(cmdmsg))
       if (exitstat /= 0) call fail('gnuplot failed on '//join_path(directory, script_name)// &
          ' (exit status '//int_to_string(exitstat)//')')
-      write (output_unit, '(a)') case%name//': plot written to '//join_path(directory, stem//'.png')
+      write (output_unit, '(a)') run%name//': plot written to '//join_path(directory, stem//'.png')
    end subroutine plot_csv
 
 end program interphase_point

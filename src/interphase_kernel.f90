@@ -23,11 +23,12 @@ module interphase_kernel
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: MODEL_SIMPLIFIED, REGIME_INTACT, REGIME_OPEN, REGIME_STICK, &
+   use interphase_layout, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, REGIME_INTACT, REGIME_OPEN, REGIME_STICK, &
       REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, &
       STATUS_BAD_COEFFICIENTS, STATUS_MODEL_UNAVAILABLE
    use interphase_coefficients, only: coefficient_set_type, simplified_coefficients
+   use interphase_micro_coefficients, only: micro_coefficients
    use interphase_damage, only: displacement_damage
    use interphase_state, only: interface_state_type
    implicit none
@@ -86,6 +87,9 @@ contains
       select case (params%model)
       case (MODEL_SIMPLIFIED)
          call simplified_coefficients(params%k_n, params%k_t, d, c, dc)
+      case (MODEL_MICROMECHANICAL)
+         call micro_coefficients(params%table, d, c, dc, status)
+         if (status /= STATUS_OK) return
       case default
          status = STATUS_MODEL_UNAVAILABLE
          return

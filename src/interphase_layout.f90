@@ -26,10 +26,20 @@ module interphase_layout
    integer, parameter, public :: PROP_K_T = 9
    !> Number of PROPS the simplified model takes.
    integer, parameter, public :: NPROPS_SIMPLIFIED = 9
+   !> Micromechanical model: table selector, TABLE_DEFAULT_CODE (the built-in table of the
+   !> paper's RVE) or TABLE_CUSTOM_CODE (the table loaded at start-up: UEXTERNALDB with the
+   !> environment variable INTERPHASE_TABLE, or the driver's case file).
+   integer, parameter, public :: PROP_TABLE = 8
+   !> Number of PROPS the micromechanical model takes.
+   integer, parameter, public :: NPROPS_MICROMECHANICAL = 8
+   !> PROPS(PROP_TABLE) value: the built-in table (tables/paper.dat).
+   integer, parameter, public :: TABLE_DEFAULT_CODE = 0
+   !> PROPS(PROP_TABLE) value: the custom table loaded at start-up.
+   integer, parameter, public :: TABLE_CUSTOM_CODE = 1
 
    !> PROPS(PROP_MODEL) value: the simplified spring model of the paper's section 3.4.
    integer, parameter, public :: MODEL_SIMPLIFIED = 1
-   !> PROPS(PROP_MODEL) value: the micromechanical model on RVE tables (not yet available).
+   !> PROPS(PROP_MODEL) value: the micromechanical model on RVE tables.
    integer, parameter, public :: MODEL_MICROMECHANICAL = 2
    !> PROPS(PROP_DAMAGE_LAW) value: the displacement-driven damage law, eqs 13-18.
    integer, parameter, public :: DAMAGE_DISPLACEMENT = 1
@@ -45,6 +55,19 @@ module interphase_layout
    integer, parameter, public :: SV_REGIME = 4
    !> Number of STATEV slots interphase uses (NSTATV must be at least this).
    integer, parameter, public :: NSTATV_REQUIRED = 4
+
+   ! ---- STATEV slots of the VUMAT only (Abaqus/Explicit passes increments, not totals) -------
+   !> VUMAT: total normal separation s_N accumulated from the increments (mm).
+   integer, parameter, public :: SV_SEP_N = 5
+   !> VUMAT: total tangential separation s_T1, first shear direction (mm).
+   integer, parameter, public :: SV_SEP_T1 = 6
+   !> VUMAT: total tangential separation s_T2, second shear direction (mm); stays 0 in 2-D.
+   integer, parameter, public :: SV_SEP_T2 = 7
+   !> VUMAT: failure flag, 0 = every update succeeded, 1 = an update at this point failed at
+   !> some increment and its stress and state were held there (sticky; output only).
+   integer, parameter, public :: SV_FAILED = 8
+   !> Number of STATEV slots the VUMAT uses (nstatev must be at least this).
+   integer, parameter, public :: NSTATV_VUMAT = 8
 
    !> Regime codes (STATEV(SV_REGIME)): no crack yet.
    integer, parameter, public :: REGIME_INTACT = 0

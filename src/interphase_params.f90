@@ -6,10 +6,11 @@ module interphase_params
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
-      MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT
+      MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, PROP_TABLE, NPROPS_MICROMECHANICAL, &
+      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_BAD_NPROPS, STATUS_BAD_MODEL, &
       STATUS_BAD_DAMAGE_LAW, STATUS_BAD_MU, STATUS_BAD_S0_N, STATUS_BAD_SF_N, STATUS_BAD_S0_T, &
-      STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_MODEL_UNAVAILABLE, MESSAGE_LEN
+      STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_TABLE_SELECTOR, MESSAGE_LEN
    implicit none
    private
    public :: law_params_type, from_props, params_from_values
@@ -25,6 +26,7 @@ module interphase_params
       real(dp) :: sf_t = 0.0_dp                      !! full-crack tangential separation (mm)
       real(dp) :: k_n = 0.0_dp                       !! simplified model: K_N = C^_NN/h (MPa/mm)
       real(dp) :: k_t = 0.0_dp                       !! simplified model: K_T = C^_TT/h (MPa/mm)
+      integer :: table = TABLE_DEFAULT_CODE          !! micromechanical model: TABLE_*_CODE
       real(dp) :: eta_n = 0.0_dp                     !! eta_N = s0_N/sf_N (-), eq 13
       real(dp) :: eta_t = 0.0_dp                     !! eta_T = s0_T/sf_T (-), eq 13
    end type law_params_type
@@ -39,7 +41,7 @@ contains
       integer, intent(out) :: status                    !! STATUS_OK or a STATUS_BAD_* code
       character(len=MESSAGE_LEN), intent(out) :: message   !! set only on failure
 
-      integer :: model, damage_law
+      integer :: model, damage_law, table
 
       status = STATUS_OK
       if (size(props) < PROP_DAMAGE_LAW) then
@@ -55,16 +57,16 @@ contains
             ' is not a model: use 1 (simplified spring model) or 2 (micromechanical)'
          return
       end if
-      if (model == MODEL_MICROMECHANICAL) then
-         status = STATUS_MODEL_UNAVAILABLE
-         write (message, '(a,i0,a)') 'PROPS(', PROP_MODEL, &
-            ') model = 2 (micromechanical, RVE tables) is not available in this version'
-         return
-      end if
-      if (size(props) /= NPROPS_SIMPLIFIED) then
+      if (model == MODEL_SIMPLIFIED .and. size(props) /= NPROPS_SIMPLIFIED) then
          status = STATUS_BAD_NPROPS
          write (message, '(a,i0,a,i0)') 'NPROPS = ', size(props), &
             ' but the simplified model takes exactly ', NPROPS_SIMPLIFIED
+         return
+      end if
+      if (model == MODEL_MICROMECHANICAL .and. size(props) /= NPROPS_MICROMECHANICAL) then
+         status = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a,i0)') 'NPROPS = ', size(props), &
+            ' but the micromechanical model takes exactly ', NPROPS_MICROMECHANICAL
          return
       end if
       damage_law = selector_code(props(PROP_DAMAGE_LAW))
@@ -75,26 +77,51 @@ contains
          return
       end if
 
-      call params_from_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), &
-         props(PROP_SF_N), props(PROP_S0_T), props(PROP_SF_T), props(PROP_K_N), props(PROP_K_T), &
-         params, status, message)
+      if (model == MODEL_SIMPLIFIED) then
+         call params_from_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), &
+            props(PROP_SF_N), props(PROP_S0_T), props(PROP_SF_T), params, status, message, &
+            k_n=props(PROP_K_N), k_t=props(PROP_K_T))
+      else
+         table = selector_code(props(PROP_TABLE))
+         if (table /= TABLE_DEFAULT_CODE .and. table /= TABLE_CUSTOM_CODE) then
+            status = STATUS_BAD_TABLE_SELECTOR
+            write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_TABLE, ') table = ', props(PROP_TABLE), &
+               ' is not a table selector: use 0 (built-in table) or 1 (custom table loaded at start-up)'
+            return
+         end if
+         call params_from_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), &
+            props(PROP_SF_N), props(PROP_S0_T), props(PROP_SF_T), params, status, message, &
+            table=table)
+      end if
    end subroutine from_props
 
    !> Build and validate parameters from named values (the same checks as `from_props`; the
-   !> messages cite the PROPS index each value occupies).
-   pure subroutine params_from_values(model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, &
-         params, status, message)
+   !> messages cite the PROPS index each value occupies). The simplified model needs k_n and
+   !> k_t; the micromechanical model takes `table` (default: the built-in table).
+   pure subroutine params_from_values(model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, &
+         params, status, message, k_n, k_t, table)
       integer, intent(in) :: model                 !! MODEL_* selector
       integer, intent(in) :: damage_law            !! DAMAGE_* selector
       real(dp), intent(in) :: mu                   !! friction coefficient (-)
       real(dp), intent(in) :: s0_n, sf_n           !! normal first-cracking / full-crack separations (mm)
       real(dp), intent(in) :: s0_t, sf_t           !! tangential first-cracking / full-crack separations (mm)
-      real(dp), intent(in) :: k_n, k_t             !! spring stiffnesses (MPa/mm)
       type(law_params_type), intent(out) :: params
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
+      real(dp), intent(in), optional :: k_n, k_t   !! simplified model: spring stiffnesses (MPa/mm)
+      integer, intent(in), optional :: table       !! micromechanical model: TABLE_*_CODE
+
+      real(dp) :: k_n_used, k_t_used
 
       status = STATUS_OK
+      k_n_used = 0.0_dp
+      k_t_used = 0.0_dp
+      if (model == MODEL_SIMPLIFIED) then
+         k_n_used = -1.0_dp
+         k_t_used = -1.0_dp
+         if (present(k_n)) k_n_used = k_n
+         if (present(k_t)) k_t_used = k_t
+      end if
       ! Each test fails for NaN and Inf without comparing them (no FP exception is raised).
       if (.not. finite_at_least(mu, 0.0_dp)) then
          call reject(STATUS_BAD_MU, PROP_MU, 'mu', mu, 'must be finite and >= 0', status, message)
@@ -106,10 +133,10 @@ contains
          call reject(STATUS_BAD_S0_T, PROP_S0_T, 's0_T', s0_t, 'must be finite and > 0 mm', status, message)
       else if (.not. finite_above(sf_t, s0_t)) then
          call reject(STATUS_BAD_SF_T, PROP_SF_T, 'sf_T', sf_t, 'must be finite and > s0_T = PROPS(6)', status, message)
-      else if (.not. finite_above(k_n, 0.0_dp)) then
-         call reject(STATUS_BAD_K_N, PROP_K_N, 'K_N', k_n, 'must be finite and > 0 MPa/mm', status, message)
-      else if (.not. finite_above(k_t, 0.0_dp)) then
-         call reject(STATUS_BAD_K_T, PROP_K_T, 'K_T', k_t, 'must be finite and > 0 MPa/mm', status, message)
+      else if (model == MODEL_SIMPLIFIED .and. .not. finite_above(k_n_used, 0.0_dp)) then
+         call reject(STATUS_BAD_K_N, PROP_K_N, 'K_N', k_n_used, 'must be finite and > 0 MPa/mm', status, message)
+      else if (model == MODEL_SIMPLIFIED .and. .not. finite_above(k_t_used, 0.0_dp)) then
+         call reject(STATUS_BAD_K_T, PROP_K_T, 'K_T', k_t_used, 'must be finite and > 0 MPa/mm', status, message)
       end if
       if (status /= STATUS_OK) return
 
@@ -120,8 +147,10 @@ contains
       params%sf_n = sf_n
       params%s0_t = s0_t
       params%sf_t = sf_t
-      params%k_n = k_n
-      params%k_t = k_t
+      params%k_n = k_n_used
+      params%k_t = k_t_used
+      params%table = TABLE_DEFAULT_CODE
+      if (present(table)) params%table = table
       params%eta_n = s0_n/sf_n
       params%eta_t = s0_t/sf_t
 

@@ -23,10 +23,32 @@ module interphase_status
    integer, parameter, public :: STATUS_BAD_NTENS = 11
    integer, parameter, public :: STATUS_BAD_NSTATV = 12
    integer, parameter, public :: STATUS_MODEL_UNAVAILABLE = 13
+   integer, parameter, public :: STATUS_BAD_TABLE_SELECTOR = 14
    ! ---- update failures (the increment may be retried smaller) ----
    integer, parameter, public :: STATUS_NONFINITE_SEPARATION = 20
    integer, parameter, public :: STATUS_BAD_STATE = 21
    integer, parameter, public :: STATUS_BAD_COEFFICIENTS = 22
+   ! ---- interpolation tables (interphase_spline): construction, then evaluation ----
+   integer, parameter, public :: STATUS_SPLINE_TOO_FEW_POINTS = 40
+   integer, parameter, public :: STATUS_SPLINE_BAD_SHAPE = 41
+   integer, parameter, public :: STATUS_SPLINE_BAD_METHOD = 42
+   integer, parameter, public :: STATUS_SPLINE_NONFINITE_DATA = 43
+   integer, parameter, public :: STATUS_SPLINE_BAD_KNOTS = 44
+   integer, parameter, public :: STATUS_SPLINE_SOLVER_FAILED = 45
+   integer, parameter, public :: STATUS_SPLINE_NOT_BUILT = 46
+   integer, parameter, public :: STATUS_SPLINE_OUT_OF_RANGE = 47
+   integer, parameter, public :: STATUS_SPLINE_NONFINITE_ARGUMENT = 48
+   ! ---- RVE coefficient tables (interphase_rve_table): reading and checking ----
+   integer, parameter, public :: STATUS_TABLE_UNREADABLE = 50
+   integer, parameter, public :: STATUS_TABLE_BAD_HEADER = 51
+   integer, parameter, public :: STATUS_TABLE_MISSING_COLUMN = 52
+   integer, parameter, public :: STATUS_TABLE_MISSING_KEY = 53
+   integer, parameter, public :: STATUS_TABLE_BAD_ROW = 54
+   integer, parameter, public :: STATUS_TABLE_NONFINITE = 55
+   integer, parameter, public :: STATUS_TABLE_NOT_INCREASING = 56
+   integer, parameter, public :: STATUS_TABLE_BAD_RANGE = 57
+   integer, parameter, public :: STATUS_TABLE_IDENTITY = 58
+   integer, parameter, public :: STATUS_TABLE_NOT_LOADED = 59
 
    !> Severity of a host message: information, warning (the increment is cut back), fatal.
    integer, parameter, public :: SEVERITY_INFO = 1
@@ -55,9 +77,29 @@ contains
       case (STATUS_BAD_NTENS);             message = 'unsupported number of traction components (NTENS)'
       case (STATUS_BAD_NSTATV);            message = 'too few state variables (NSTATV)'
       case (STATUS_MODEL_UNAVAILABLE);     message = 'model not available in this build'
+      case (STATUS_BAD_TABLE_SELECTOR);    message = 'unknown RVE table selector'
       case (STATUS_NONFINITE_SEPARATION);  message = 'separation is not finite (NaN or Inf)'
       case (STATUS_BAD_STATE);             message = 'state variables out of range or not finite'
       case (STATUS_BAD_COEFFICIENTS);      message = 'coefficient set not admissible at this damage'
+      case (STATUS_SPLINE_TOO_FEW_POINTS); message = 'too few table points for the interpolation method'
+      case (STATUS_SPLINE_BAD_SHAPE);      message = 'table values do not match the knots (rows) or have no column'
+      case (STATUS_SPLINE_BAD_METHOD);     message = 'unknown interpolation method'
+      case (STATUS_SPLINE_NONFINITE_DATA); message = 'table knots or values not finite (NaN or Inf)'
+      case (STATUS_SPLINE_BAD_KNOTS);      message = 'table knots not strictly increasing'
+      case (STATUS_SPLINE_SOLVER_FAILED);  message = 'spline system could not be solved (LAPACK dgtsv)'
+      case (STATUS_SPLINE_NOT_BUILT);      message = 'interpolation table not built'
+      case (STATUS_SPLINE_OUT_OF_RANGE);   message = 'argument outside the interpolation table'
+      case (STATUS_SPLINE_NONFINITE_ARGUMENT); message = 'interpolation argument not finite (NaN or Inf)'
+      case (STATUS_TABLE_UNREADABLE);      message = 'RVE table file cannot be opened or read'
+      case (STATUS_TABLE_BAD_HEADER);      message = 'RVE table header line is not "# key = value"'
+      case (STATUS_TABLE_MISSING_COLUMN);  message = 'RVE table lacks a required column'
+      case (STATUS_TABLE_MISSING_KEY);     message = 'RVE table header lacks a required key'
+      case (STATUS_TABLE_BAD_ROW);         message = 'RVE table row does not hold one number per column'
+      case (STATUS_TABLE_NONFINITE);       message = 'RVE table value not finite (NaN or Inf)'
+      case (STATUS_TABLE_NOT_INCREASING);  message = 'RVE table crack half-lengths a not strictly increasing'
+      case (STATUS_TABLE_BAD_RANGE);       message = 'RVE table does not run from a = 0 to a = b'
+      case (STATUS_TABLE_IDENTITY);        message = 'RVE table violates an exact identity of the RVE problems'
+      case (STATUS_TABLE_NOT_LOADED);      message = 'custom RVE table selected but none loaded'
       case default;                        message = 'unknown status code'
       end select
    end function status_message

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The main job: build interphase (Release) and run the single-point driver on the paper's five
-# loading histories (and the 3-D mixed case) with the built-in default model, writing CSV and,
-# when gnuplot is available, PNG traction-separation curves into OUT_DIR.
+# loading histories (and the 3-D mixed case) with the simplified model and with the
+# micromechanical model on the built-in default RVE table, writing CSV and, when gnuplot is
+# available, PNG traction-separation curves into OUT_DIR; then reproduce the paper's section 5.2
+# (calibration, Figs 17-19 with both models) into OUT_DIR/section5.
 # Usage: tools/run-paper-cases.sh [OUT_DIR]   (default: ./out/paper-cases)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -11,11 +13,13 @@ jobs=$(nproc 2>/dev/null || echo 2)
 
 bash "$here/tools/ensure-packages.sh" gnuplot
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j "$jobs" --target interphase-point
+cmake --build "$build" -j "$jobs" --target interphase-point interphase-calibrate
 mkdir -p "$out"
-for case in "$here"/drivers/cases/*.nml; do
+for case in "$here"/drivers/cases/*.nml "$here"/drivers/cases/micro/*.nml; do
   echo "== $(basename "$case")"
   "$build/drivers/interphase-point" "$case" --output-dir "$out"
 done
-echo "Results in $out:"
-ls "$out"
+echo "== the paper's section 5.2"
+bash "$here/tools/paper-section5.sh" "$build" "$out/section5"
+echo "Results in $out (section 5.2 figures in $out/section5):"
+ls "$out" "$out/section5"

@@ -1,10 +1,10 @@
 !> Explicit interfaces of the Abaqus-style entry points of interphase, for Fortran hosts (the
-!> single-point driver, the tests, a research FE code) that call `umat` directly.
+!> single-point driver, the tests, a research FE code) that call `umat` or `vumat` directly.
 module interphase_abaqus_interfaces
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: umat, interphase_host_message
+   public :: umat, vumat, uexternaldb, interphase_host_message
 
    interface
       !> Abaqus/Standard UMAT (cohesive elements, RESPONSE=TRACTION SEPARATION).
@@ -23,6 +23,35 @@ module interphase_abaqus_interfaces
          real(dp), intent(in) :: celent, dfgrd0(3, 3), dfgrd1(3, 3)
          character(len=80), intent(in) :: cmname
       end subroutine umat
+
+      !> Abaqus/Explicit VUMAT (cohesive elements, RESPONSE=TRACTION SEPARATION, thickness 1).
+      subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime, totaltime, &
+            dt, cmname, coordmp, charlength, props, density, straininc, relspininc, tempold, &
+            stretchold, defgradold, fieldold, stressold, stateold, enerinternold, enerinelasold, &
+            tempnew, stretchnew, defgradnew, fieldnew, stressnew, statenew, enerinternnew, &
+            enerinelasnew)
+         import :: dp
+         integer, intent(in) :: nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal
+         real(dp), intent(in) :: steptime, totaltime, dt
+         character(len=80), intent(in) :: cmname
+         real(dp), intent(in) :: coordmp(nblock, *), charlength(nblock), props(nprops), density(nblock)
+         real(dp), intent(in) :: straininc(nblock, ndir + nshr), relspininc(nblock, nshr), tempold(nblock)
+         real(dp), intent(in) :: stretchold(nblock, ndir + nshr), defgradold(nblock, ndir + nshr + nshr)
+         real(dp), intent(in) :: fieldold(nblock, nfieldv)
+         real(dp), intent(in) :: stressold(nblock, ndir + nshr), stateold(nblock, nstatev)
+         real(dp), intent(in) :: enerinternold(nblock), enerinelasold(nblock)
+         real(dp), intent(in) :: tempnew(nblock), stretchnew(nblock, ndir + nshr)
+         real(dp), intent(in) :: defgradnew(nblock, ndir + nshr + nshr), fieldnew(nblock, nfieldv)
+         real(dp), intent(out) :: stressnew(nblock, ndir + nshr), statenew(nblock, nstatev)
+         real(dp), intent(out) :: enerinternnew(nblock), enerinelasnew(nblock)
+      end subroutine vumat
+
+      !> Abaqus UEXTERNALDB: loads the custom RVE table (INTERPHASE_TABLE) at LOP = 0 and 4.
+      subroutine uexternaldb(lop, lrestart, time, dtime, kstep, kinc)
+         import :: dp
+         integer, intent(in) :: lop, lrestart, kstep, kinc
+         real(dp), intent(in) :: time(2), dtime
+      end subroutine uexternaldb
 
       !> Message hook every adapter calls on failure; each host links exactly one
       !> implementation (Abaqus: its error routine; the driver: standard error; tests: a

@@ -1,14 +1,16 @@
 !> Shared helpers of the interphase test suites: the paper's data and a finite-difference tangent.
 module interphase_test_support
    use interphase_kinds, only: dp
-   use interphase_layout, only: MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
+   use interphase_layout, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, &
+      TABLE_DEFAULT_CODE
    use interphase_params, only: law_params_type, params_from_values
    use interphase_state, only: interface_state_type
    use interphase_kernel, only: interface_update
    use interphase_status, only: MESSAGE_LEN
    implicit none
    private
-   public :: paper_params, paper_k_n, paper_k_t, fd_tangent, linear_path
+   public :: paper_params, paper_k_n, paper_k_t, fd_tangent, linear_path, micro_params, source_path, &
+      scratch_path
 
    !> RVE data of the paper's section 5 (mm, MPa).
    real(dp), parameter :: H_M = 2.0_dp, H_B = 3.0_dp, E_M = 1000.0_dp, E_B = 16000.0_dp, NU = 0.15_dp
@@ -41,9 +43,41 @@ contains
       mu_used = 0.75_dp
       if (present(mu)) mu_used = mu
       call params_from_values(MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, mu_used, 0.00044_dp, 0.04_dp, &
-         0.00072_dp, 0.06_dp, paper_k_n(), paper_k_t(), params, status, message)
+         0.00072_dp, 0.06_dp, params, status, message, k_n=paper_k_n(), k_t=paper_k_t())
       if (status /= 0) error stop 'paper_params: invalid test data'
    end function paper_params
+
+   !> The micromechanical model with the paper's Table 1 damage data and mu = 0.75 on the given
+   !> table (default: the built-in one).
+   function micro_params(table) result(params)
+      integer, intent(in), optional :: table
+      type(law_params_type) :: params
+      integer :: status, table_used
+      character(len=MESSAGE_LEN) :: message
+      table_used = TABLE_DEFAULT_CODE
+      if (present(table)) table_used = table
+      call params_from_values(MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, 0.75_dp, 0.00044_dp, 0.04_dp, &
+         0.00072_dp, 0.06_dp, params, status, message, table=table_used)
+      if (status /= 0) error stop 'micro_params: invalid test data'
+   end function micro_params
+
+   !> A path inside the source tree (INTERPHASE_SOURCE_DIR, set by ctest).
+   function source_path(relative) result(path)
+      character(len=*), intent(in) :: relative
+      character(len=:), allocatable :: path
+      character(len=4096) :: root
+      integer :: status
+      call get_environment_variable('INTERPHASE_SOURCE_DIR', root, status=status)
+      if (status /= 0) error stop 'source_path: INTERPHASE_SOURCE_DIR is not set (run the test through ctest)'
+      path = trim(root)//'/'//relative
+   end function source_path
+
+   !> A scratch file name in the test's working directory.
+   function scratch_path(name) result(path)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: path
+      path = 'scratch_'//name
+   end function scratch_path
 
    !> Central finite-difference tangent of the update at fixed old state (MPa/mm).
    function fd_tangent(params, old, s, step) result(tangent)

@@ -1,0 +1,153 @@
+!> `interphase-calibrate`: the paper's calibration of the simplified model (section 5.2: "for
+!> the simplified model the values of s0_T and s0_N are properly modified in order to recover
+!> the same fracture energy").
+!>
+!>     interphase-calibrate CASE.nml [--increments N] [--write FILE.nml]
+!>
+!> CASE.nml is a micromechanical case file (its &loading group is not used). The program runs
+!> the monotonic mode-I and mode-II tests (h1I, h1II) to full damage through `umat`, takes the
+!> fracture energies G_I, G_II as the dissipated energy at the end (SPD) and the undamaged
+!> stiffnesses K_N, K_T from the tangent at the origin, and sets
+!>     s0_N = 2 G_I/(K_N sf_N),   s0_T = 2 G_II/(K_T sf_T)
+!> so that the simplified model's fracture energies 1/2 K s0 sf equal them (sf kept). It prints
+!> the numbers and, with --write, a `&material` group of the calibrated simplified model.
+program interphase_calibrate
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use interphase_kinds, only: dp
+   use interphase_layout, only: PROP_MODEL, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, PROP_SF_T, &
+      MODEL_MICROMECHANICAL
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
+   use interphase_micro_coefficients, only: load_custom_table, custom_table_source
+   use interphase_layout, only: PROP_TABLE
+   use interphase_driver_case, only: case_type, read_case
+   use interphase_driver_replay, only: point_state_type, new_point, call_umat
+   use interphase_driver_text, only: int_to_string
+   implicit none
+
+   type(case_type) :: run
+   character(len=:), allocatable :: case_path, write_path, message, argument
+   character(len=MESSAGE_LEN) :: table_message
+   integer :: increments, i, nargs, status, unit, ios
+   logical :: ok
+   real(dp) :: g_i, g_ii, k_n, k_t, peak_n, peak_t, s_peak_n, s_peak_t, s0_n, s0_t
+
+   increments = 20000
+   case_path = ''
+   write_path = ''
+   nargs = command_argument_count()
+   i = 0
+   do while (i < nargs)
+      i = i + 1
+      call get_argument(i, argument)
+      select case (argument)
+      case ('--increments')
+         i = i + 1
+         call get_argument(i, argument)
+         read (argument, *, iostat=ios) increments
+         if (ios /= 0 .or. increments < 10) call fail('--increments needs an integer >= 10')
+      case ('--write')
+         i = i + 1
+         call get_argument(i, write_path)
+         if (len(write_path) == 0) call fail('--write needs a file name')
+      case default
+         if (argument(1:1) == '-') call fail('unknown option '//argument)
+         case_path = argument
+      end select
+   end do
+   if (len(case_path) == 0) call fail('usage: interphase-calibrate CASE.nml [--increments N] [--write FILE.nml]')
+
+   call read_case(case_path, run, ok, message)
+   if (.not. ok) call fail(message)
+   if (nint(run%props(PROP_MODEL)) /= MODEL_MICROMECHANICAL) &
+      call fail(case_path//": the case must use model = 'micromechanical'")
+   if (len(run%table_path) > 0) then
+      call load_custom_table(run%table_path, status, table_message)
+      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
+   end if
+
+   call monotonic(1, run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)
+   call monotonic(2, run%props(PROP_SF_T), g_ii, k_t, peak_t, s_peak_t)
+   s0_n = 2.0_dp*g_i/(k_n*run%props(PROP_SF_N))
+   s0_t = 2.0_dp*g_ii/(k_t*run%props(PROP_SF_T))
+
+   write (output_unit, '(a)') 'interphase-calibrate: micromechanical model of '//case_path
+   write (output_unit, '(a)') '  table: '//custom_table_source(nint(run%props(PROP_TABLE)))
+   write (output_unit, '(a,i0,a)') '  monotonic tests h1I, h1II to 1.01 sf, ', increments, ' increments each'
+   write (output_unit, '(a,es16.8,a,es16.8,a)') '  K_N  = ', k_n, ' MPa/mm   K_T  = ', k_t, ' MPa/mm'
+   write (output_unit, '(a,es16.8,a,es16.8,a)') '  G_I  = ', g_i, ' N/mm     G_II = ', g_ii, ' N/mm'
+   write (output_unit, '(a,es16.8,a,es16.8,a)') '  peak Sigma_N = ', peak_n, ' MPa at s_N = ', s_peak_n, ' mm'
+   write (output_unit, '(a,es16.8,a,es16.8,a)') '  peak Sigma_T = ', peak_t, ' MPa at s_T = ', s_peak_t, ' mm'
+   write (output_unit, '(a)') '  simplified model with the same K, sf and fracture energies (s0 = 2 G/(K sf)):'
+   write (output_unit, '(a,es16.8,a,es16.8,a)') '  s0_N = ', s0_n, ' mm (given ', run%props(PROP_S0_N), ')'
+   write (output_unit, '(a,es16.8,a,es16.8,a)') '  s0_T = ', s0_t, ' mm (given ', run%props(PROP_S0_T), ')'
+   if (.not. (s0_n < run%props(PROP_SF_N) .and. s0_t < run%props(PROP_SF_T))) &
+      call fail('no simplified model matches: the calibrated s0 is not below sf (G > 1/2 K sf^2)')
+
+   if (len(write_path) > 0) then
+      open (newunit=unit, file=write_path, status='replace', action='write', iostat=ios)
+      if (ios /= 0) call fail('cannot write '//write_path)
+      write (unit, '(a)') '! Simplified model calibrated by interphase-calibrate on '//case_path
+      write (unit, '(a)') '! (same K, sf and fracture energies as the micromechanical model; table '// &
+         custom_table_source(nint(run%props(PROP_TABLE)))//')'
+      write (unit, '(a,es24.16,a,es24.16)') '! G_I = ', g_i, ' N/mm, G_II = ', g_ii
+      write (unit, '(a)') '&material'
+      write (unit, '(a)') "  model = 'simplified'"
+      write (unit, '(a)') "  damage_law = 'displacement'"
+      write (unit, '(a,es24.16)') '  mu = ', run%props(PROP_MU)
+      write (unit, '(a,es24.16)') '  s0_n = ', s0_n
+      write (unit, '(a,es24.16)') '  sf_n = ', run%props(PROP_SF_N)
+      write (unit, '(a,es24.16)') '  s0_t = ', s0_t
+      write (unit, '(a,es24.16)') '  sf_t = ', run%props(PROP_SF_T)
+      write (unit, '(a,es24.16)') '  k_n = ', k_n
+      write (unit, '(a,es24.16)') '  k_t = ', k_t
+      write (unit, '(a)') '/'
+      close (unit)
+      write (output_unit, '(a)') '  written: '//write_path
+   end if
+
+contains
+
+   !> Monotonic pure-mode test (component 1: s_N, 2: s_T) from 0 to 1.01 sf in `increments`
+   !> steps: dissipated energy at the end, undamaged stiffness, peak traction.
+   subroutine monotonic(component, sf, energy, stiffness, peak, s_peak)
+      integer, intent(in) :: component
+      real(dp), intent(in) :: sf
+      real(dp), intent(out) :: energy, stiffness, peak, s_peak
+      type(point_state_type) :: point
+      real(dp) :: s(2), pnewdt, ddsdde(2, 2)
+      integer :: k
+      point = new_point(2, 0.0_dp)
+      peak = 0.0_dp
+      s_peak = 0.0_dp
+      stiffness = 0.0_dp
+      do k = 1, increments
+         s = 0.0_dp
+         s(component) = 1.01_dp*sf*real(k, dp)/real(increments, dp)
+         call call_umat(run%props, point, s, real(k, dp), pnewdt, ddsdde)
+         if (pnewdt < 1.0_dp) call fail('the UMAT failed at step '//int_to_string(k)// &
+            ' of the monotonic test; see its message above')
+         if (k == 1) stiffness = ddsdde(component, component)
+         if (abs(point%stress(component)) > peak) then
+            peak = abs(point%stress(component))
+            s_peak = s(component)
+         end if
+      end do
+      energy = point%spd
+   end subroutine monotonic
+
+   subroutine get_argument(index, value)
+      integer, intent(in) :: index
+      character(len=:), allocatable, intent(out) :: value
+      integer :: length
+      call get_command_argument(index, length=length)
+      allocate (character(len=length) :: value)
+      if (length > 0) call get_command_argument(index, value)
+   end subroutine get_argument
+
+   subroutine fail(text)
+      character(len=*), intent(in) :: text
+      write (error_unit, '(a)') 'interphase-calibrate: error: '//text
+      stop 1
+   end subroutine fail
+
+end program interphase_calibrate

@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# check-table.sh -- verify an RVE coefficient table against the exact facts of MODEL-NOTES 6.
+#
+#   bash rve_freefem/check-table.sh TABLE.dat [TABLE-diag.txt]
+#
+# Checks (each prints its largest residual; any failure gives exit code 1):
+#   format     every header line '# key = value', required keys, one '# columns:' line, 23 finite
+#              numbers per row, a ascending from 0 to b
+#   closed     a = 0: C_TT, C_NN = closed forms (Chat), cross terms 0            tol TOL_CLOSED
+#   eq52       C(a) + C^c(a) = C(0) for every a (all four components)          tol TOL_EQ52
+#   crack      T^c_T = Chat_TT, S^c_N = Chat_NN at every a (crack means)      tol TOL_EXACT
+#   symmetry   C_TN, C_NT, Dbar_TN, Dbar_NT, T^c_N, S^c_T, C^f_N, S^f = 0      tol TOL_EXACT
+#   full       a = b: C = 0, Dbar = h I, C^c = C(0), C^f_T = T^f = -Chat_TT/h, ufbar = 1
+#   reciproc.  C^c_TT = Chat_TT (a/b) Dbar_TT / h, C^c_NN likewise, and
+#              C^f_T = -(Chat_TT/h) (a/b) ufbar (Betti with the intact laminate) tol TOL_EQ52
+#   signs      T^f < 0, 0 < ufbar <= 1, 0 <= C <= Chat, C_TT and C_NN non-increasing in a
+#   pointwise  (with the diag file) max over crack nodes of |t - Chat|/Chat in p2, of the
+#              p3 shear stress |t - T^f|/|T^f| (uniform crack stress) and of the p3 jump error
+#                                                                              tol TOL_POINT
+# Residuals are relative to the natural scale of each quantity (Chat, h, Chat_TT/h).
+set -u
+export LC_ALL=C
+TOL_CLOSED=1e-10
+TOL_EQ52=1e-8
+TOL_EXACT=1e-10
+TOL_POINT=1e-9
+
+[ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: check-table.sh TABLE.dat [DIAG.txt]" >&2; exit 2; }
+table=$1
+diag=${2:-}
+[ -r "$table" ] || { echo "check-table.sh: error: cannot read $table" >&2; exit 3; }
+[ -z "$diag" ] || [ -r "$diag" ] || { echo "check-table.sh: error: cannot read $diag" >&2; exit 3; }
+
+awk -v TC="$TOL_CLOSED" -v TE="$TOL_EQ52" -v TX="$TOL_EXACT" -v TP="$TOL_POINT" -v diag="$diag" '
+function abs(x) { return x < 0 ? -x : x }
+function report(name, res, tol, what) {
+  ok = (res <= tol)
+  printf "%-10s %-4s max residual %.3e (tol %.0e)  %s\n", name, ok ? "ok" : "FAIL", res, tol, what
+  if (!ok) fail = 1
+}
+function isnumber(s) { return s ~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/ }
+BEGIN {
+  cols = "a D C_TT C_TN C_NT C_NN Dbar_TT Dbar_TN Dbar_NT Dbar_NN Cc_TT Cc_TN Cc_NT Cc_NN Tc_T Tc_N Sc_T Sc_N Cf_T Cf_N Tf Sf ufbar"
+  nreq = split("h_m h_b b E_m nu_m E_b nu_b script freefem_version date element refine unknowns_min unknowns_max", req, " ")
+}
+/^#/ {
+  line = $0
+  if (line ~ /^# columns: /) { ncolsline++; c = line; sub(/^# columns: /, "", c); if (c != cols) badcols = 1; next }
+  if (n == 0 && line !~ /^# [A-Za-z_0-9]+ = ./) { printf "header line is not \"# key = value\": %s\n", line; badhdr = 1 }
+  if (match(line, /^# [A-Za-z_0-9]+ = /)) { k = line; sub(/^# /, "", k); sub(/ = .*/, "", k); hv = line; sub(/^# [A-Za-z_0-9]+ = /, "", hv); hdr[k] = hv }
+  next
+}
+NF == 0 { next }
+{
+  n++
+  if (NF != 23) { badrow = 1; printf "row %d has %d fields\n", n, NF }
+  for (i = 1; i <= NF; i++) { if (!isnumber($i)) { badnum = 1; printf "row %d field %d not a finite number: %s\n", n, i, $i } ; v[n, i] = $i + 0 }
+  if (n > 1 && !(v[n, 1] > v[n - 1, 1])) badorder = 1
+}
+END {
+  # ---- format
+  fmt = 0
+  for (i = 1; i <= nreq; i++) if (!(req[i] in hdr)) { printf "missing header key %s\n", req[i]; fmt = 1 }
+  if (badhdr) fmt = 1
+  if (ncolsline != 1 || badcols) { print "the # columns: line is missing, repeated or different"; fmt = 1 }
+  if (badrow || badnum || badorder || n < 2) fmt = 1
+  hm = hdr["h_m"]; hb = hdr["h_b"]; b = hdr["b"]; Em = hdr["E_m"]; nm = hdr["nu_m"]; Eb = hdr["E_b"]; nb = hdr["nu_b"]
+  if (!fmt && (v[1, 1] != 0 || abs(v[n, 1] - b) > 1e-12 * b)) { print "rows must run from a = 0 to a = b"; fmt = 1 }
+  report("format", fmt, 0, "header, columns line, " n " rows of 23 numbers, a = 0 .. b ascending")
+  if (fmt) exit 1
+  h = hm + hb
+  Gm = Em / (2 * (1 + nm)); Gb = Eb / (2 * (1 + nb))
+  Mm = Em * (1 - nm) / ((1 + nm) * (1 - 2 * nm)); Mb = Eb * (1 - nb) / ((1 + nb) * (1 - 2 * nb))
+  CT = h / (hm / Gm + hb / Gb); CN = h / (hm / Mm + hb / Mb); CM = (CT > CN) ? CT : CN
+  KT = CT / h
+  printf "closed forms: Chat_TT = %.12g MPa, Chat_NN = %.12g MPa (table a = 0: %.12g, %.12g)\n", CT, CN, v[1, 3], v[1, 6]
+  # ---- closed forms at a = 0
+  r = abs(v[1, 3] - CT) / CT; t = abs(v[1, 6] - CN) / CN; if (t > r) r = t
+  t = abs(v[1, 4]) / CM; if (t > r) r = t; t = abs(v[1, 5]) / CM; if (t > r) r = t
+  report("closed", r, TC, "a = 0: C = diag(Chat_TT, Chat_NN)")
+  # ---- eq 52
+  r = 0
+  for (i = 1; i <= n; i++) for (j = 0; j < 4; j++) { t = abs(v[i, 3 + j] + v[i, 11 + j] - v[1, 3 + j]) / ((j == 0) ? CT : (j == 3) ? CN : CM); if (t > r) { r = t; ra = v[i, 1] } }
+  report("eq52", r, TE, "C + C^c = C(0) at every a (worst a = " ra ")")
+  # ---- crack stresses of p2
+  r = 0
+  for (i = 1; i <= n; i++) { t = abs(v[i, 15] - CT) / CT; if (t > r) r = t; t = abs(v[i, 18] - CN) / CN; if (t > r) r = t }
+  report("crack", r, TX, "T^c_T = Chat_TT and S^c_N = Chat_NN at every a")
+  # ---- symmetry zeros
+  r = 0
+  for (i = 1; i <= n; i++) {
+    t = abs(v[i, 4]) / CM; if (t > r) r = t; t = abs(v[i, 5]) / CM; if (t > r) r = t
+    t = abs(v[i, 8]) / h; if (t > r) r = t; t = abs(v[i, 9]) / h; if (t > r) r = t
+    t = abs(v[i, 12]) / CM; if (t > r) r = t; t = abs(v[i, 13]) / CM; if (t > r) r = t
+    t = abs(v[i, 16]) / CM; if (t > r) r = t; t = abs(v[i, 17]) / CM; if (t > r) r = t
+    t = abs(v[i, 20]) / KT; if (t > r) r = t; t = abs(v[i, 22]) / KT; if (t > r) r = t
+  }
+  report("symmetry", r, TX, "C_TN C_NT Dbar_TN Dbar_NT Cc_TN Cc_NT Tc_N Sc_T Cf_N Sf = 0")
+  # ---- fully cracked
+  r = 0
+  t = abs(v[n, 3]) / CT; if (t > r) r = t; t = abs(v[n, 6]) / CN; if (t > r) r = t
+  t = abs(v[n, 7] - h) / h; if (t > r) r = t; t = abs(v[n, 10] - h) / h; if (t > r) r = t
+  t = abs(v[n, 11] - v[1, 3]) / CT; if (t > r) r = t; t = abs(v[n, 14] - v[1, 6]) / CN; if (t > r) r = t
+  t = abs(v[n, 19] + KT) / KT; if (t > r) r = t; t = abs(v[n, 21] + KT) / KT; if (t > r) r = t
+  t = abs(v[n, 23] - 1); if (t > r) r = t
+  report("full", r, TX, sprintf("a = b: C = 0, Dbar = h I, C^c = C(0), C^f_T = %.10g, T^f = %.10g (-Chat_TT/h = %.10g), ufbar = 1", v[n, 19], v[n, 21], -KT))
+  # ---- reciprocity (Betti with the intact laminate)
+  r = 0
+  for (i = 1; i <= n; i++) {
+    d = v[i, 1] / b
+    t = abs(v[i, 11] - CT * d * v[i, 7] / h) / CT; if (t > r) r = t
+    t = abs(v[i, 14] - CN * d * v[i, 10] / h) / CN; if (t > r) r = t
+    t = abs(v[i, 19] + KT * d * v[i, 23]) / KT; if (t > r) r = t
+  }
+  report("reciproc", r, TE, "C^c_TT = Chat_TT D Dbar_TT/h, C^c_NN = Chat_NN D Dbar_NN/h, C^f_T = -Chat_TT D ufbar/h")
+  # ---- signs and bounds
+  bad = 0
+  for (i = 2; i <= n; i++) {
+    if (!(v[i, 21] < 0)) { bad++; printf "  T^f >= 0 at a = %g\n", v[i, 1] }
+    if (!(v[i, 23] > 0 && v[i, 23] <= 1 + 1e-12)) { bad++; printf "  ufbar outside (0,1] at a = %g\n", v[i, 1] }
+    if (v[i, 3] > v[i - 1, 3] + 1e-9 * CT || v[i, 6] > v[i - 1, 6] + 1e-9 * CN) { bad++; printf "  C increases at a = %g\n", v[i, 1] }
+    if (v[i, 3] < -1e-9 * CT || v[i, 6] < -1e-9 * CN) { bad++; printf "  C < 0 at a = %g\n", v[i, 1] }
+  }
+  report("signs", bad, 0, "T^f < 0, 0 < ufbar <= 1, C_TT and C_NN non-increasing and >= 0")
+  if (diag != "") {
+    r1 = r2 = r3 = r4 = 0; nd = 0
+    while ((getline line < diag) > 0) {
+      if (line ~ /^#/) continue
+      m = split(line, f, " ")
+      for (k = 1; k < m; k++) {
+        if (f[k] == "resTc=" && f[k + 1] + 0 > r1) r1 = f[k + 1] + 0
+        if (f[k] == "resSc=" && f[k + 1] + 0 > r2) r2 = f[k + 1] + 0
+        if (f[k] == "resTfpt=" && f[k + 1] + 0 > r3) r3 = f[k + 1] + 0
+        if (f[k] == "resuf=" && f[k + 1] + 0 > r4) r4 = f[k + 1] + 0
+      }
+      nd++
+    }
+    if (nd != n) { printf "diag file has %d lines, table %d rows\n", nd, n; fail = 1 }
+    report("pointwise", (r1 > r2 ? r1 : r2), TP, "p2 crack stresses = Chat at every crack node")
+    report("uniform", r3, TP, "p3 crack shear stress uniform (= T^f) at every crack node")
+    report("p3jump", r4, TP, "p3 jump equals (u^f, 0) at every crack node")
+  }
+  exit fail
+}' "$table"

@@ -1,0 +1,295 @@
+#!/usr/bin/env bash
+# make-table.sh -- RVE coefficient table (paper section 3.3) from a parameter file.
+#
+#   bash rve_freefem/make-table.sh [options] PARAMS OUT.dat
+#
+# Writes OUT.dat (format: tables/README.md), OUT-fields.dat (D(x), u^f(x) for the a values in
+# fields_a_over_b) and OUT-diag.txt (per-a mesh size, unknowns, time and identity residuals).
+# Options:
+#   --refine R      multiply the mesh refinement level of PARAMS by R (convergence studies)
+#   --jobs N        FreeFEM processes run in parallel (default 2)
+#   --a-over-b "v1 v2 ..."   compute only these a/b values (a = 0 and a = b are NOT added)
+#   --no-fields     do not write the side file (its a values stay in the table)
+# Needs bash, awk and FreeFem++ (Debian package freefem++).  Exit code 0 on success, 2 for bad
+# parameters or usage, 3 for a missing program or unreadable file, 4 if a FreeFEM run failed.
+set -u
+export LC_ALL=C
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+prog="make-table.sh"
+die() { local code=$1; shift; echo "$prog: error: $*" >&2; exit "$code"; }
+
+refine_mult=1
+jobs=2
+a_override=""
+want_fields=1
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --refine) [ $# -ge 2 ] || die 2 "--refine needs a value"; refine_mult=$2; shift 2 ;;
+    --jobs) [ $# -ge 2 ] || die 2 "--jobs needs a value"; jobs=$2; shift 2 ;;
+    --a-over-b) [ $# -ge 2 ] || die 2 "--a-over-b needs a list"; a_override=$2; shift 2 ;;
+    --no-fields) want_fields=0; shift ;;
+    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    --) shift; break ;;
+    -*) die 2 "unknown option $1" ;;
+    *) break ;;
+  esac
+done
+[ $# -eq 2 ] || die 2 "usage: $prog [--refine R] [--jobs N] [--a-over-b LIST] [--no-fields] PARAMS OUT.dat"
+params=$1
+out=$2
+[ -f "$params" ] && [ -r "$params" ] || die 3 "cannot read parameter file '$params'"
+command -v FreeFem++ >/dev/null 2>&1 || die 3 "FreeFem++ not found: install the Debian package freefem++"
+case "$jobs" in ''|*[!0-9]*) die 2 "--jobs must be a positive integer" ;; esac
+[ "$jobs" -ge 1 ] || die 2 "--jobs must be >= 1"
+
+# ---------------------------------------------------------------- read and check the parameters
+# prints "key<TAB>value" lines; fails on syntax errors and unknown keys
+parsed=$(awk '
+  BEGIN { n = split("h_m h_b b E_m nu_m E_b nu_b order hmax ftip htipmax grow fseg refine huni a_over_b_list a_over_b_uniform ligament_over_b a_list_mm fields_a_over_b fields_a_mm", k, " ")
+          for (i = 1; i <= n; i++) known[k[i]] = 1 }
+  { sub(/#.*/, "") }
+  /^[ \t]*$/ { next }
+  {
+    eq = index($0, "=")
+    if (eq == 0) { printf "line %d: expected key = value: %s\n", NR, $0 > "/dev/stderr"; bad = 1; next }
+    key = substr($0, 1, eq - 1); val = substr($0, eq + 1)
+    gsub(/^[ \t]+|[ \t]+$/, "", key); gsub(/^[ \t]+|[ \t]+$/, "", val); gsub(/[ \t]+/, " ", val)
+    if (!(key in known)) { printf "line %d: unknown key \"%s\"\n", NR, key > "/dev/stderr"; bad = 1; next }
+    if (key in seen) { printf "line %d: key \"%s\" given twice\n", NR, key > "/dev/stderr"; bad = 1; next }
+    seen[key] = 1
+    printf "%s\t%s\n", key, val
+  }
+  END { exit bad }' "$params") || die 2 "bad parameter file '$params' (see above)"
+
+get() { printf '%s\n' "$parsed" | awk -F'\t' -v k="$1" '$1 == k { print $2; f = 1 } END { exit !f }'; }
+isnum() { printf '%s\n' "$1" | awk '{ exit !($0 ~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/) }'; }
+numlist() { local v; for v in $1; do isnum "$v" || return 1; done; return 0; }
+# awk comparison helper: test EXPR on x
+chk() { awk -v x="$1" "BEGIN { exit !($2) }"; }
+
+declare -A P
+for key in h_m h_b b E_m nu_m E_b nu_b; do
+  P[$key]=$(get "$key") || die 2 "parameter '$key' missing in '$params'"
+  isnum "${P[$key]}" || die 2 "parameter '$key' = '${P[$key]}' is not a number"
+done
+for key in h_m h_b b E_m E_b; do
+  chk "${P[$key]}" "x > 0" || die 2 "parameter '$key' = ${P[$key]} must be positive"
+done
+for key in nu_m nu_b; do
+  chk "${P[$key]}" "x < 0.5" || die 2 "parameter '$key' = ${P[$key]}: Poisson's ratio must be < 0.5 (plane strain)"
+  chk "${P[$key]}" "x > -1" || die 2 "parameter '$key' = ${P[$key]}: Poisson's ratio must be > -1"
+done
+# mesh controls with defaults
+declare -A D=([order]=P2 [hmax]=1 [ftip]=0.005 [htipmax]=0.005 [grow]=1.25 [fseg]=0.1 [refine]=1 [huni]=0)
+for key in order hmax ftip htipmax grow fseg refine huni; do
+  P[$key]=$(get "$key") || P[$key]=${D[$key]}
+done
+case "${P[order]}" in P1|P2) ;; *) die 2 "parameter 'order' = '${P[order]}' must be P1 or P2" ;; esac
+for key in hmax ftip htipmax grow fseg refine huni; do
+  isnum "${P[$key]}" || die 2 "parameter '$key' = '${P[$key]}' is not a number"
+done
+for key in hmax ftip htipmax; do chk "${P[$key]}" "x > 0" || die 2 "parameter '$key' = ${P[$key]} must be positive"; done
+chk "${P[ftip]}" "x < 1" || die 2 "parameter 'ftip' must be < 1"
+chk "${P[grow]}" "x >= 1 && x < 3" || die 2 "parameter 'grow' = ${P[grow]} must be in [1, 3)"
+chk "${P[fseg]}" "x > 0 && x <= 1" || die 2 "parameter 'fseg' = ${P[fseg]} must be in (0, 1]"
+chk "${P[refine]}" "x >= 1" || die 2 "parameter 'refine' = ${P[refine]} must be >= 1"
+chk "${P[huni]}" "x >= 0" || die 2 "parameter 'huni' = ${P[huni]} must be >= 0"
+isnum "$refine_mult" && chk "$refine_mult" "x >= 1" || die 2 "--refine must be a number >= 1"
+refine=$(awk -v a="${P[refine]}" -v m="$refine_mult" 'BEGIN { printf "%.17g", a * m }')
+
+bval=${P[b]}
+# ---------------------------------------------------------------- crack half-lengths (mm)
+alist_raw=""
+if [ -n "$a_override" ]; then
+  numlist "$a_override" || die 2 "--a-over-b: not a list of numbers: $a_override"
+  for f in $a_override; do
+    chk "$f" "x >= 0" || die 2 "a/b = $f < 0"
+    chk "$f" "x <= 1" || die 2 "crack half-length a/b = $f > 1: a must not exceed b"
+  done
+  alist_raw=$(for f in $a_override; do awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g\n", (f == 1) ? b : f * b }'; done)
+else
+  alist_raw=$(printf '0\n%s\n' "$bval")
+  if v=$(get a_over_b_list); then
+    numlist "$v" || die 2 "a_over_b_list: not a list of numbers: $v"
+    for f in $v; do
+      chk "$f" "x >= 0" || die 2 "a_over_b_list: a/b = $f < 0"
+      chk "$f" "x <= 1" || die 2 "a_over_b_list: crack half-length a/b = $f > 1: a must not exceed b"
+      alist_raw+=$'\n'$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", f * b }')
+    done
+  fi
+  if v=$(get a_list_mm); then
+    numlist "$v" || die 2 "a_list_mm: not a list of numbers: $v"
+    for f in $v; do
+      chk "$f" "x >= 0" || die 2 "a_list_mm: a = $f < 0"
+      awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x <= b) }' || die 2 "a_list_mm: crack half-length a = $f > b = $bval"
+      alist_raw+=$'\n'$f
+    done
+  fi
+  if v=$(get a_over_b_uniform); then
+    set -- $v
+    [ $# -eq 3 ] && numlist "$v" || die 2 "a_over_b_uniform needs 'start stop step', got '$v'"
+    chk "$3" "x > 0" || die 2 "a_over_b_uniform: step must be > 0"
+    awk -v s="$1" -v e="$2" 'BEGIN { exit !(s >= 0 && e <= 1 && s <= e) }' || die 2 "a_over_b_uniform: need 0 <= start <= stop <= 1 (a must not exceed b)"
+    alist_raw+=$'\n'$(awk -v s="$1" -v e="$2" -v d="$3" -v b="$bval" 'BEGIN { n = int((e - s) / d + 1e-9); for (i = 0; i <= n; i++) printf "%.15g\n", (s + i * d) * b }')
+  fi
+  if v=$(get ligament_over_b); then
+    set -- $v
+    [ $# -eq 3 ] && numlist "$v" || die 2 "ligament_over_b needs 'from to per-decade', got '$v'"
+    awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { exit !(f > 0 && f <= 1 && t > 0 && t <= f && n >= 1) }' || die 2 "ligament_over_b: need 0 < to <= from <= 1 and per-decade >= 1"
+    alist_raw+=$'\n'$(awk -v f="$1" -v t="$2" -v n="$3" -v b="$bval" 'BEGIN { m = int(n * log(f / t) / log(10) + 1e-9); for (j = 0; j <= m; j++) { l = f * 10 ^ (-j / n); printf "%.15g\n", b - l * b } }')
+  fi
+fi
+# the a values of the side file are always part of the table (so --no-fields keeps the rows)
+fields_raw=""
+if true; then
+  if v=$(get fields_a_over_b); then
+    numlist "$v" || die 2 "fields_a_over_b: not a list of numbers"
+    for f in $v; do
+      chk "$f" "x >= 0 && x <= 1" || die 2 "fields_a_over_b: a/b = $f outside [0, 1]"
+      fields_raw+=$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", (f == 1) ? b : f * b }')$'\n'
+    done
+  fi
+  if v=$(get fields_a_mm); then
+    numlist "$v" || die 2 "fields_a_mm: not a list of numbers"
+    for f in $v; do
+      awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x >= 0 && x <= b) }' || die 2 "fields_a_mm: a = $f outside [0, b]"
+      fields_raw+=$f$'\n'
+    done
+  fi
+  [ -z "$a_override" ] && alist_raw+=$'\n'$fields_raw
+fi
+# sorted, duplicates (to 1e-12 b) removed
+alist=$(printf '%s\n' "$alist_raw" | awk 'NF' | sort -g | awk -v b="$bval" 'NR == 1 || $1 - last > 1e-12 * b { print; last = $1 }')
+na=$(printf '%s\n' "$alist" | wc -l)
+
+# ---------------------------------------------------------------- run FreeFEM
+outdir=$(dirname "$out")
+[ -d "$outdir" ] || die 3 "output directory '$outdir' does not exist"
+base=${out%.dat}
+work=$(mktemp -d "${TMPDIR:-/tmp}/rve-table.XXXXXX") || die 3 "cannot create a scratch directory"
+trap 'rm -rf "$work"' EXIT
+
+script="$here/rve.edp"
+[ -r "$script" ] || die 3 "cannot read $script"
+if [ "${P[order]}" = P1 ]; then
+  { echo "macro FEORDER P1 //"; cat "$script"; } > "$work/rve.edp"
+else
+  cp "$script" "$work/rve.edp"
+fi
+if [ "$want_fields" = 1 ]; then printf '%s' "$fields_raw" | awk 'NF' > "$work/fields.list"; else : > "$work/fields.list"; fi
+{ wc -l < "$work/fields.list"; cat "$work/fields.list"; } > "$work/fields.count"
+
+# deal the a values to the jobs round robin from the largest a down (similar cost per job)
+njobs=$(( jobs < na ? jobs : na ))
+for ((j = 0; j < njobs; j++)); do
+  printf '%s\n' "$alist" | sort -gr | awk -v j="$j" -v n="$njobs" '(NR - 1) % n == j' | sort -g > "$work/a$j.list"
+  { wc -l < "$work/a$j.list"; cat "$work/a$j.list"; } > "$work/a$j.count"
+done
+
+echo "$prog: $na crack half-lengths, element ${P[order]}, refine $refine, $njobs parallel FreeFEM job(s)"
+t_start=$(date +%s.%N)
+pids=()
+for ((j = 0; j < njobs; j++)); do
+  (
+    set -o pipefail
+    FreeFem++ -nw -v 0 "$work/rve.edp" \
+      -hm "${P[h_m]}" -hb "${P[h_b]}" -b "${P[b]}" -Em "${P[E_m]}" -num "${P[nu_m]}" -Eb "${P[E_b]}" -nub "${P[nu_b]}" \
+      -hmax "${P[hmax]}" -ftip "${P[ftip]}" -htipmax "${P[htipmax]}" -grow "${P[grow]}" -fseg "${P[fseg]}" \
+      -refine "$refine" -huni "${P[huni]}" \
+      -alist "$work/a$j.count" -out "$work/rows$j" -diag "$work/diag$j" \
+      -fields "$work/fields$j" -fieldsa "$work/fields.count" 2> "$work/err$j" \
+      | while IFS= read -r line; do case "$line" in *"a = "*" mm  (a/b = "*) printf '[job %d] %s\n' "$j" "$line" ;; *) printf '%s\n' "$line" >> "$work/err$j" ;; esac; done
+  ) &
+  pids+=($!)
+done
+fail=0
+for ((j = 0; j < njobs; j++)); do
+  if ! wait "${pids[$j]}"; then
+    fail=1
+    echo "$prog: FreeFEM job $j failed:" >&2
+    grep -v -e '^ *$' -e 'current line' -e 'call die' -e '^exit(' -e 'err code' "$work/err$j" | head -20 | sed 's/^/  /' >&2
+  fi
+done
+[ "$fail" = 0 ] || exit 4
+t_end=$(date +%s.%N)
+wall=$(awk -v a="$t_start" -v b="$t_end" 'BEGIN { printf "%.1f", b - a }')
+
+cat "$work"/rows* | sort -g -k1,1 > "$work/rows"
+cat "$work"/diag* | sort -g -k2,2 > "$work/diag"
+nrows=$(wc -l < "$work/rows")
+[ "$nrows" -eq "$na" ] || die 4 "expected $na rows, got $nrows"
+
+# a = 0: T^f and ufbar have no value (T^f -> -infinity like 1/a): take those of the smallest a > 0
+a1=$(awk '$1 > 0 { print $1; exit }' "$work/rows")
+awk -v a1="${a1:-}" '
+  NR == FNR { if ($1 == a1) { tf = $21; uf = $23 } next }
+  { if ($21 == "lim0") { if (a1 == "") { $21 = "nan"; $23 = "nan" } else { $21 = tf; $23 = uf } } print }
+' "$work/rows" "$work/rows" > "$work/rows.filled"
+
+# ---------------------------------------------------------------- provenance header
+ffver=$(FreeFem++ 2>&1 | awk '/version/ { sub(/^.*version */, ""); sub(/ .*/, ""); print; exit }')
+debver=$(dpkg-query -W -f='${Version}' freefem++ 2>/dev/null || echo unknown)
+sha=$(sha256sum "$script" | awk '{ print $1 }')
+umin=$(awk '{ for (i = 1; i < NF; i++) if ($i == "ndof=") print $(i + 1) }' "$work/diag" | sort -g | head -1)
+umax=$(awk '{ for (i = 1; i < NF; i++) if ($i == "ndof=") print $(i + 1) }' "$work/diag" | sort -g | tail -1)
+hmin=$(awk '{ for (i = 1; i < NF; i++) if ($i == "htip=") print $(i + 1) }' "$work/diag" | sort -g | head -1)
+chat=$(awk -v hm="${P[h_m]}" -v hb="${P[h_b]}" -v Em="${P[E_m]}" -v nm="${P[nu_m]}" -v Eb="${P[E_b]}" -v nb="${P[nu_b]}" 'BEGIN {
+  Gm = Em / (2 * (1 + nm)); Gb = Eb / (2 * (1 + nb))
+  Mm = Em * (1 - nm) / ((1 + nm) * (1 - 2 * nm)); Mb = Eb * (1 - nb) / ((1 + nb) * (1 - 2 * nb))
+  h = hm + hb; printf "%.17g %.17g", h / (hm / Gm + hb / Gb), h / (hm / Mm + hb / Mb) }')
+set -- $chat
+{
+  echo "# title = interphase RVE coefficient table (generated by rve_freefem/make-table.sh; do not edit)"
+  echo "# format = interphase-rve-table 1"
+  echo "# command = bash rve_freefem/make-table.sh$( [ "$refine_mult" != 1 ] && printf ' --refine %s' "$refine_mult")$( [ -n "$a_override" ] && printf ' --a-over-b "%s"' "$a_override") $params $out"
+  echo "# params_file = $params"
+  echo "# script = rve_freefem/rve.edp"
+  echo "# script_sha256 = $sha"
+  echo "# freefem_version = $ffver (Debian package freefem++ $debver)"
+  echo "# date = $(date -u +%Y-%m-%dT%H:%M:%SZ)"
+  echo "# units = mm, MPa; E is s/h with h the RVE height h_m + h_b; E_NT engineering shear strain"
+  echo "# model = plane strain; periodic lateral sides; brick y in [-h_b,0] (bottom fixed), mortar y in [0,h_m] (top displaced h*E); crack |x-b| < a on y = 0"
+  echo "# crack_jump = two meshes coupled by Lagrange multipliers (imposed exactly)"
+  for key in h_m h_b b E_m nu_m E_b nu_b; do echo "# $key = ${P[$key]}"; done
+  echo "# h = $(awk -v a="${P[h_m]}" -v b="${P[h_b]}" 'BEGIN { printf "%.17g", a + b }')"
+  echo "# Chat_TT = $1"
+  echo "# Chat_NN = $2"
+  echo "# element = ${P[order]}"
+  if chk "${P[huni]}" "x > 0"; then
+    echo "# mesh = uniform squares (each split into two triangles), side huni"
+    echo "# huni = ${P[huni]}"
+  else
+    echo "# mesh = graded: interface spacing min(htipmax, ftip*min(a, b-a))/refine at the tips, growing by the factor grow^(1/refine), capped at min(hmax, fseg*segment)/refine; half RVE meshed and mirrored about x b"
+    for key in hmax ftip htipmax grow fseg; do echo "# $key = ${P[$key]}"; done
+  fi
+  echo "# refine = $refine"
+  echo "# smallest_tip_spacing = $hmin"
+  echo "# unknowns_min = $umin"
+  echo "# unknowns_max = $umax"
+  echo "# n_a = $na"
+  echo "# a0_row = no crack; Dbar, C^c, C^f, S^f are 0 and T^c, S^c equal C(0) (exact limits a -> 0+); T^f and ufbar copied from the smallest a > 0 (a: ${a1:-none} mm); T^f tends to -infinity like 1/a"
+  echo "# crack_means = Dbar, ufbar: integral over the crack divided by 2a; T, S: sum of the multipliers divided by the sum of the interface weights over the crack nodes"
+  echo "# wall_time_s = $wall"
+  echo "# columns: a D C_TT C_TN C_NT C_NN Dbar_TT Dbar_TN Dbar_NT Dbar_NN Cc_TT Cc_TN Cc_NT Cc_NN Tc_T Tc_N Sc_T Sc_N Cf_T Cf_N Tf Sf ufbar"
+  cat "$work/rows.filled"
+} > "$out.tmp" && mv "$out.tmp" "$out" || die 3 "cannot write $out"
+{
+  echo "# diagnostics for $out: per a, unknowns (ndof), mortar/brick DOFs, interface pairs, crack pairs,"
+  echo "# triangles, smallest tip spacing (mm), time (s), max pointwise relative residuals of"
+  echo "# T^c_T = Chat_TT (resTc), S^c_N = Chat_NN (resSc), uniform p3 shear stress (resTfpt), p3 jump = (u^f,0) (resuf)"
+  cat "$work/diag"
+} > "$base-diag.txt"
+if [ "$want_fields" = 1 ] && [ -s "$work/fields.list" ]; then
+  {
+    echo "# distributions along the interface for $out (same provenance); x in [0, 2b), crack |x - b| < a"
+    echo "# D_ij(x) = crack jump component i per unit E_j (mm); uf = u^f(x) (max 1); all 0 on the bonded part"
+    echo "# one block per a (gnuplot index 0, 1, ...), blocks separated by two blank lines, ascending a"
+    echo "# columns: a x D_TT D_NT D_TN D_NN uf"
+    # paragraph mode: one record per block ("# a = ..." line + data); sort the blocks by a
+    cat "$work"/fields[0-9]* | awk 'BEGIN { RS = "" } { split($0, l, "\n"); k = l[1]; sub(/^# a = /, "", k); key[++n] = k + 0; txt[n] = $0 }
+      END { for (i = 2; i <= n; i++) { t = key[i]; u = txt[i]; for (j = i - 1; j >= 1 && key[j] > t; j--) { key[j + 1] = key[j]; txt[j + 1] = txt[j] } key[j + 1] = t; txt[j + 1] = u }
+            for (i = 1; i <= n; i++) printf "%s\n%s", txt[i], (i < n ? "\n\n" : "") }'
+  } > "$base-fields.dat"
+fi
+echo "$prog: wrote $out ($na rows) in $wall s wall time"

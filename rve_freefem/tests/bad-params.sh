@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# bad-params.sh WORKDIR -- bad input must stop with a clear message and a non-zero exit code,
+# both through make-table.sh and when rve.edp is run directly.
+set -u
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+work=$1
+mkdir -p "$work" || exit 3
+good="h_m = 2
+h_b = 3
+b = 25
+E_m = 1000
+nu_m = 0.15
+E_b = 16000
+nu_b = 0.15
+hmax = 2
+ftip = 0.05
+htipmax = 0.05
+grow = 1.6
+a_over_b_list = 0.5"
+fail=0
+# case NAME EXPECTED-MESSAGE-REGEX sed-expression-applied-to-good
+case_() {
+  local name=$1 pat=$2 expr=$3
+  printf '%s\n' "$good" | sed "$expr" > "$work/$name.params"
+  bash "$here/make-table.sh" "$work/$name.params" "$work/$name.dat" > "$work/$name.out" 2>&1
+  local rc=$?
+  if [ $rc -ne 0 ] && grep -Eq "$pat" "$work/$name.out" && [ ! -e "$work/$name.dat" ]; then
+    echo "ok   $name: exit $rc: $(grep -m1 -E "$pat" "$work/$name.out")"
+  else
+    echo "FAIL $name: exit $rc, output:"; cat "$work/$name.out"; fail=1
+  fi
+}
+case_ a_gt_b          "a must not exceed b"            's/^a_over_b_list = .*/a_over_b_list = 0.5 1.2/'
+case_ a_mm_gt_b       "a = 30 > b"                     '$a a_list_mm = 30'
+case_ nu_half         "Poisson.s ratio must be < 0.5"  's/^nu_m = .*/nu_m = 0.5/'
+case_ nu_big          "Poisson.s ratio must be < 0.5"  's/^nu_b = .*/nu_b = 0.7/'
+case_ hm_zero         "'h_m' = 0 must be positive"     's/^h_m = .*/h_m = 0/'
+case_ hb_negative     "'h_b' = -3 must be positive"    's/^h_b = .*/h_b = -3/'
+case_ b_negative      "'b' = -25 must be positive"     's/^b = .*/b = -25/'
+case_ E_zero          "'E_b' = 0 must be positive"     's/^E_b = .*/E_b = 0/'
+case_ E_negative      "'E_m' = -1000 must be positive" 's/^E_m = .*/E_m = -1000/'
+case_ hmax_negative   "'hmax' = -1 must be positive"   's/^hmax = .*/hmax = -1/'
+case_ not_a_number    "is not a number"                's/^E_m = .*/E_m = soft/'
+case_ missing_key     "'nu_b' missing"                 '/^nu_b/d'
+case_ unknown_key     "unknown key"                    '$a thickness = 3'
+case_ syntax          "expected key = value"           '$a h_m 2'
+case_ ligament_tiny   "too short for this mesh"        's/^a_over_b_list = .*/a_over_b_list = 0.999999/'
+# unreadable parameter file
+bash "$here/make-table.sh" "$work/does-not-exist.params" "$work/x.dat" > "$work/nofile.out" 2>&1
+rc=$?
+if [ $rc -ne 0 ] && grep -q "cannot read parameter file" "$work/nofile.out"; then echo "ok   missing_file: exit $rc"; else echo "FAIL missing_file"; cat "$work/nofile.out"; fail=1; fi
+mkdir -p "$work/a-directory.params"
+bash "$here/make-table.sh" "$work/a-directory.params" "$work/x.dat" > "$work/dir.out" 2>&1
+rc=$?
+if [ $rc -ne 0 ] && grep -q "cannot read parameter file" "$work/dir.out"; then echo "ok   directory_as_file: exit $rc"; else echo "FAIL directory_as_file"; cat "$work/dir.out"; fail=1; fi
+# rve.edp itself validates its arguments
+printf '1\n30\n' > "$work/a.count"
+for args in "-nub 0.5" "-hm -2" "-Em 0" ; do
+  FreeFem++ -nw -v 0 "$here/rve.edp" -hm 2 -hb 3 -b 25 -Em 1000 -num 0.15 -Eb 16000 -nub 0.15 $args -alist "$work/a.count" -out "$work/rows" > "$work/edp.out" 2>&1
+  rc=$?
+  if [ $rc -eq 2 ] && grep -q "rve.edp: error:" "$work/edp.out"; then echo "ok   rve.edp $args: exit 2: $(grep -m1 'rve.edp: error' "$work/edp.out")"; else echo "FAIL rve.edp $args (exit $rc)"; cat "$work/edp.out"; fail=1; fi
+done
+FreeFem++ -nw -v 0 "$here/rve.edp" -hm 2 -hb 3 -b 25 -Em 1000 -num 0.15 -Eb 16000 -nub 0.15 -alist "$work/a.count" -out "$work/rows" > "$work/edp.out" 2>&1
+rc=$?
+if [ $rc -eq 2 ] && grep -q "> b" "$work/edp.out"; then echo "ok   rve.edp a > b: exit 2: $(grep -m1 'rve.edp: error' "$work/edp.out")"; else echo "FAIL rve.edp a > b (exit $rc)"; cat "$work/edp.out"; fail=1; fi
+FreeFem++ -nw -v 0 "$here/rve.edp" -hm 2 -hb 3 -b 25 -Em 1000 -num 0.15 -Eb 16000 -nub 0.15 -alist "$work/none.count" -out "$work/rows" > "$work/edp.out" 2>&1
+rc=$?
+if [ $rc -ne 0 ]; then echo "ok   rve.edp unreadable a-list: exit $rc"; else echo "FAIL rve.edp unreadable a-list"; fail=1; fi
+exit $fail

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# detects-errors.sh TABLE DIAG WORKDIR -- check-table.sh must FAIL on tables that violate the
+# identities by a little more than its tolerances (so the identity tests can fail for real).
+set -u
+export LC_ALL=C
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+table=$1; diag=$2; work=$3
+mkdir -p "$work" || exit 3
+bash "$here/check-table.sh" "$table" "$diag" > /dev/null || { echo "the unperturbed table must pass"; exit 1; }
+# perturb column COL of data row ROW by the relative amount F
+perturb() { awk -v row="$1" -v col="$2" -v f="$3" '/^#/ || NF == 0 { print; next } { n++; if (n == row) $col = sprintf("%.17g", $col * (1 + f)); print }' "$table"; }
+fail=0
+expect_fail() {
+  local what=$1 file=$2 d=${3:-$diag}
+  if bash "$here/check-table.sh" "$file" "$d" > "$work/out.txt" 2>&1; then
+    echo "NOT DETECTED: $what"; fail=1
+  else
+    echo "detected: $what ($(grep -m1 FAIL "$work/out.txt" | awk '{ print $1 }'))"
+  fi
+}
+perturb 3 11 1e-7 > "$work/t1.dat"; expect_fail "C^c_TT off by 1e-7 (eq 52, reciprocity)" "$work/t1.dat"
+perturb 3 15 1e-9 > "$work/t2.dat"; expect_fail "T^c_T off by 1e-9" "$work/t2.dat"
+perturb 1 3 1e-9 > "$work/t3.dat"; expect_fail "C_TT(0) off the closed form by 1e-9" "$work/t3.dat"
+awk '/^#/ || NF == 0 { print; next } { if (++n == 4) $4 = "1e-6"; print }' "$table" > "$work/t4.dat"
+expect_fail "C_TN = 1e-6 MPa instead of 0 (1e-9 Chat)" "$work/t4.dat"
+n=$(awk '!/^#/ && NF' "$table" | wc -l)
+perturb "$n" 21 1e-9 > "$work/t5.dat"; expect_fail "T^f(b) off -Chat_TT/h by 1e-9" "$work/t5.dat"
+perturb 3 19 1e-7 > "$work/t6.dat"; expect_fail "C^f_T off by 1e-7 (reciprocity)" "$work/t6.dat"
+sed 's/^# columns: a D C_TT C_TN C_NT/# columns: a D C_TT C_NT C_TN/' "$table" > "$work/t7.dat"; expect_fail "columns line changed" "$work/t7.dat"
+awk '!/^#/ && NF { n++; if (n == 2) next } { print }' "$table" | sed '/^0 0 /d' > "$work/t8.dat"; expect_fail "a = 0 row missing" "$work/t8.dat"
+awk '{ for (i = 1; i < NF; i++) if ($i == "resTfpt=" && ++k == 2) $(i + 1) = "2e-9"; print }' "$diag" > "$work/d9.txt"
+expect_fail "p3 crack shear stress not uniform (2e-9)" "$table" "$work/d9.txt"
+exit $fail

@@ -1,0 +1,135 @@
+!> C entry points of interphase (declared in include/interphase.h): one interface update from a
+!> PROPS array, the old state and the separation, with an integer status, and the message of a
+!> status. Part of the core library: no I/O, no host hook, no module data; re-entrant.
+!>
+!> Array conventions for C: separation and traction in the order (s_N, s_T[, s_T2]); the
+!> tangent is returned **row-major**, tangent[i*ntens + j] = d traction[i] / d separation[j];
+!> the state is the NSTATV_REQUIRED doubles of the UMAT's STATEV (docs/abaqus.md).
+module interphase_capi
+   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_ptr, c_null_char, &
+      c_associated, c_f_pointer
+   use interphase_kinds, only: dp
+   use interphase_layout, only: NSTATV_REQUIRED
+   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
+      status_message
+   use interphase_params, only: law_params_type, from_props
+   use interphase_state, only: interface_state_type, state_unpack, state_pack
+   use interphase_kernel, only: interface_update
+   implicit none
+   private
+   public :: interphase_update_c, interphase_status_message_c
+
+contains
+
+   !> C: `int interphase_update(const double *props, int nprops, int ntens,
+   !>    const double *state_old, const double *separation, double *traction, double *tangent,
+   !>    double *state_new, double *stored_energy, char *detail, size_t detail_len)`.
+   !> Returns STATUS_OK (0) or a status code; on a non-zero status the outputs are untouched and,
+   !> when `detail` is not NULL, it receives the detailed message (which value, which range).
+   function interphase_update_c(props, nprops, ntens, state_old, separation, traction, tangent, &
+         state_new, stored_energy, detail, detail_len) result(status) bind(C, name="interphase_update")
+      integer(c_int), value, intent(in) :: nprops          !! number of PROPS (9)
+      real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
+      integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
+      real(c_double), intent(in) :: state_old(*)           !! NSTATV_REQUIRED doubles
+      real(c_double), intent(in) :: separation(*)          !! ntens doubles (mm)
+      real(c_double), intent(inout) :: traction(*)         !! ntens doubles (MPa)
+      real(c_double), intent(inout) :: tangent(*)          !! ntens*ntens doubles, row-major (MPa/mm)
+      real(c_double), intent(inout) :: state_new(*)        !! NSTATV_REQUIRED doubles
+      real(c_double), intent(inout) :: stored_energy       !! stored energy per unit area (N/mm)
+      type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
+      integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
+      integer(c_int) :: status
+
+      type(law_params_type) :: params
+      type(interface_state_type) :: old, new
+      real(dp) :: t(3), k(3, 3), psi, sv(NSTATV_REQUIRED)
+      integer :: code, i, j, n
+      character(len=MESSAGE_LEN) :: message
+
+      message = ''
+      if (nprops < 0) then
+         code = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a)') 'nprops = ', nprops, ' is negative'
+         call finish()
+         return
+      end if
+      if (ntens /= 2 .and. ntens /= 3) then
+         code = STATUS_BAD_NTENS
+         write (message, '(a,i0,a)') 'ntens = ', ntens, ' but interphase takes 2 (2-D) or 3 (3-D)'
+         call finish()
+         return
+      end if
+      n = ntens
+      call from_props(props(1:nprops), params, code, message)
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      call state_unpack(state_old(1:NSTATV_REQUIRED), n, old, code, message)
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      call interface_update(params, old, separation(1:n), t(1:n), k(1:n, 1:n), new, psi, code)
+      if (code /= STATUS_OK) then
+         write (message, '(a,3es12.4)') 'separation (mm) ', separation(1:n)
+         call finish()
+         return
+      end if
+
+      traction(1:n) = t(1:n)
+      do i = 1, n
+         do j = 1, n
+            tangent((i - 1)*n + j) = k(i, j)
+         end do
+      end do
+      sv = state_old(1:NSTATV_REQUIRED)
+      call state_pack(new, sv)
+      state_new(1:NSTATV_REQUIRED) = sv
+      stored_energy = psi
+      call finish()
+
+   contains
+
+      !> Set the result and copy the detailed message into the caller's buffer (NUL-terminated).
+      subroutine finish()
+         status = int(code, c_int)
+         if (code /= STATUS_OK) call copy_to_c(trim(message), detail, detail_len)
+      end subroutine finish
+
+   end function interphase_update_c
+
+   !> C: `size_t interphase_status_message(int status, char *buf, size_t len)`. Writes the
+   !> generic message of `status` into `buf` (at most len - 1 characters and a NUL; nothing if
+   !> `buf` is NULL or `len` is 0) and returns the full length of the message, like snprintf.
+   function interphase_status_message_c(status, buf, len) result(full_len) &
+         bind(C, name="interphase_status_message")
+      integer(c_int), value, intent(in) :: status          !! a status code
+      type(c_ptr), value, intent(in) :: buf                !! char buffer or NULL
+      integer(c_size_t), value, intent(in) :: len          !! its size in bytes
+      integer(c_size_t) :: full_len
+      character(len=:), allocatable :: text
+      text = status_message(int(status))
+      full_len = int(len_trim(text), c_size_t)
+      call copy_to_c(trim(text), buf, len)
+   end function interphase_status_message_c
+
+   !> Copy `text` into the C buffer `buf` of `len` bytes, truncated, NUL-terminated.
+   subroutine copy_to_c(text, buf, len)
+      character(len=*), intent(in) :: text
+      type(c_ptr), intent(in) :: buf
+      integer(c_size_t), intent(in) :: len
+      character(kind=c_char), pointer :: chars(:)
+      integer :: i, n
+      if (.not. c_associated(buf)) return
+      if (len < 1_c_size_t) return
+      n = int(min(int(len_trim(text), c_size_t), len - 1_c_size_t))
+      call c_f_pointer(buf, chars, [n + 1])
+      do i = 1, n
+         chars(i) = text(i:i)
+      end do
+      chars(n + 1) = c_null_char
+   end subroutine copy_to_c
+
+end module interphase_capi

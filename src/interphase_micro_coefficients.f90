@@ -1,0 +1,123 @@
+!> The micromechanical model's coefficient provider: the coefficient set at damage D
+!> interpolated from an RVE table (paper section 5.1: "spline regression" of the FE results),
+!> with its derivatives d/dD for the consistent tangent.
+!>
+!> Two tables can serve: the default one, compiled in as generated `parameter` data
+!> (`interphase_default_table`, from tables/paper.dat), and one custom table per process,
+!> loaded once at start-up by `load_custom_table` (Abaqus: UEXTERNALDB; the driver: its case
+!> file) into `protected` data that the pure update only reads.
+module interphase_micro_coefficients
+   use interphase_kinds, only: dp
+   use interphase_layout, only: TABLE_CUSTOM_CODE
+   use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, MESSAGE_LEN, status_message
+   use interphase_coefficients, only: coefficient_set_type
+   use interphase_spline, only: spline_type, spline_build, spline_export, &
+      cubic_locate, cubic_eval
+   use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
+      interpolation_data, crack_variable, N_COEFFICIENTS, TABLE_SPLINE_METHOD, IC_K_N, IC_K_T, &
+      IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_CF_T, IC_TF, IC_UFBAR
+   use interphase_default_table, only: DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_SOURCE, &
+      DEFAULT_TABLE_VARIABLE
+   implicit none
+   private
+   public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients
+
+   !> The custom table: written once by `load_custom_table` before any update, then read only.
+   integer, protected :: custom_variable = 0
+   real(dp), allocatable, protected :: custom_knots(:)
+   real(dp), allocatable, protected :: custom_coef(:, :, :)
+   character(len=:), allocatable, protected :: custom_source
+
+contains
+
+   !> Coefficients at D from the selected table (TABLE_DEFAULT_CODE or TABLE_CUSTOM_CODE).
+   pure subroutine micro_coefficients(table, d, coef, dcoef_dd, status)
+      integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
+      real(dp), intent(in) :: d                              !! damage D = a/b
+      type(coefficient_set_type), intent(out) :: coef        !! coefficients at D
+      type(coefficient_set_type), intent(out) :: dcoef_dd    !! their derivatives d/dD
+      integer, intent(out) :: status
+      if (table == TABLE_CUSTOM_CODE) then
+         if (.not. allocated(custom_coef)) then
+            status = STATUS_TABLE_NOT_LOADED
+            return
+         end if
+         call table_coefficients(custom_variable, custom_knots, custom_coef, d, coef, dcoef_dd, status)
+      else
+         call table_coefficients(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, d, &
+            coef, dcoef_dd, status)
+      end if
+   end subroutine micro_coefficients
+
+   !> Coefficients at D from interpolation data (docs/theory.md).
+   pure subroutine table_coefficients(variable, knots, coef_table, d, coef, dcoef_dd, status)
+      integer, intent(in) :: variable                        !! VARIABLE_* of the knots
+      real(dp), intent(in) :: knots(:)                       !! knots, ascending
+      real(dp), intent(in) :: coef_table(:, 0:, :)           !! cubic coefficients (column, power, interval)
+      real(dp), intent(in) :: d
+      type(coefficient_set_type), intent(out) :: coef
+      type(coefficient_set_type), intent(out) :: dcoef_dd
+      integer, intent(out) :: status
+
+      real(dp) :: x, dx_dd, v(N_COEFFICIENTS), dv(N_COEFFICIENTS)
+      integer :: interval
+
+      call crack_variable(variable, d, x, dx_dd)
+      call cubic_locate(knots, x, interval, status)
+      if (status /= STATUS_OK) return
+      call cubic_eval(knots, coef_table, interval, x, v, dv)
+      dv = dv*dx_dd
+      coef = coefficient_set_type(k_n=v(IC_K_N), k_t=v(IC_K_T), kc_n=v(IC_KC_N), kc_t=v(IC_KC_T), &
+         dbar_n=v(IC_DBAR_N), dbar_t=v(IC_DBAR_T), tc_t=v(IC_TC_T), sc_n=v(IC_SC_N), &
+         cf_t=v(IC_CF_T), tf=v(IC_TF), ufbar=v(IC_UFBAR))
+      dcoef_dd = coefficient_set_type(k_n=dv(IC_K_N), k_t=dv(IC_K_T), kc_n=dv(IC_KC_N), &
+         kc_t=dv(IC_KC_T), dbar_n=dv(IC_DBAR_N), dbar_t=dv(IC_DBAR_T), tc_t=dv(IC_TC_T), &
+         sc_n=dv(IC_SC_N), cf_t=dv(IC_CF_T), tf=dv(IC_TF), ufbar=dv(IC_UFBAR))
+   end subroutine table_coefficients
+
+   !> Read, check and interpolate a custom table; call once at start-up, before any update
+   !> and from one thread (UEXTERNALDB at LOP = 0 does). A second call replaces the table and
+   !> is only safe while no update runs.
+   subroutine load_custom_table(path, status, message)
+      character(len=*), intent(in) :: path                   !! table file (tables/README.md format)
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+
+      type(rve_table_type) :: table
+      type(spline_type) :: spline
+      real(dp), allocatable :: x(:), y(:, :)
+      integer :: n
+
+      call read_rve_table(path, table, status, message)
+      if (status /= STATUS_OK) return
+      call check_rve_table(table, status, message)
+      if (status /= STATUS_OK) return
+      n = size(table%rows, 1)
+      allocate (x(n), y(n, N_COEFFICIENTS))
+      call interpolation_data(table, x, y)
+      call spline_build(x, y, TABLE_SPLINE_METHOD, spline, status)
+      if (status /= STATUS_OK) then
+         message = trim(path)//': '//status_message(status)
+         return
+      end if
+      call spline_export(spline, custom_knots, custom_coef)
+      custom_variable = table%variable
+      custom_source = path
+   end subroutine load_custom_table
+
+   !> Where the table selected by `table` came from (for messages and output headers).
+   function custom_table_source(table) result(source)
+      integer, intent(in) :: table
+      character(len=:), allocatable :: source
+      if (table == TABLE_CUSTOM_CODE) then
+         if (allocated(custom_source)) then
+            source = custom_source
+         else
+            source = '(no custom table loaded)'
+         end if
+      else
+         source = 'built-in '//DEFAULT_TABLE_SOURCE
+      end if
+   end function custom_table_source
+
+end module interphase_micro_coefficients

@@ -1,0 +1,459 @@
+!> RVE coefficient tables (`tables/README.md` gives the format): reading a table file, checking
+!> it against the exact identities of the RVE problems (MODEL-NOTES section 6), and turning it
+!> into the interpolation data of the micromechanical coefficient provider.
+!>
+!> This is set-up code (it reads files); the pure update never calls it. A table is read once,
+!> at start-up, and its interpolant is immutable afterwards.
+!>
+!> **Interpolation variable.** Near a = b the ligament 2(b - a) carries the load and every
+!> coefficient tends to its a = b value only like 1/ln(1/(b - a)). In a the functions have an
+!> infinite slope at b and no polynomial interpolates them well; in
+!>     w = 1/(1 + ln(b/(b - a))) = 1/(1 - ln(1 - D)),     w(0) = 1, w(b) = 0,
+!> that behaviour becomes linear (C ~ c w as w -> 0), so a cubic in w converges. The knots are
+!> the table's rows in ascending w (descending a). dX/dD = (dX/dw)(dw/dD), dw/dD = -w^2/(1 - D).
+!> This is the default (`interpolation_variable = w` in the header, or no such key); a table may
+!> instead declare `interpolation_variable = D` (knots in ascending D), e.g. a table of
+!> coefficients that are polynomials in D, such as the simplified model's.
+module interphase_rve_table
+   use interphase_finite, only: is_finite
+   use interphase_kinds, only: dp
+   use interphase_spline, only: SPLINE_NOT_A_KNOT
+   use interphase_status, only: STATUS_OK, STATUS_TABLE_UNREADABLE, STATUS_TABLE_BAD_HEADER, &
+      STATUS_TABLE_MISSING_COLUMN, STATUS_TABLE_MISSING_KEY, STATUS_TABLE_BAD_ROW, &
+      STATUS_TABLE_NONFINITE, STATUS_TABLE_NOT_INCREASING, STATUS_TABLE_BAD_RANGE, &
+      STATUS_TABLE_IDENTITY, MESSAGE_LEN
+   implicit none
+   private
+   public :: rve_table_type, read_rve_table, check_rve_table, interpolation_data, crack_variable
+
+   !> Interpolation variables: w = 1/(1 - ln(1 - D)) (default) or D itself.
+   integer, parameter, public :: VARIABLE_LOG_LIGAMENT = 1
+   integer, parameter, public :: VARIABLE_DAMAGE = 2
+
+   !> Interpolant of the coefficient tables (SPLINE_* of interphase_spline); see docs/theory.md
+   !> for the choice.
+   integer, parameter, public :: TABLE_SPLINE_METHOD = SPLINE_NOT_A_KNOT
+
+   !> Number of columns of a table file.
+   integer, parameter, public :: N_TABLE_COLUMNS = 23
+   !> Column names of a table file, in the documented order.
+   character(len=8), parameter, public :: TABLE_COLUMNS(N_TABLE_COLUMNS) = [character(len=8) :: &
+      'a', 'D', 'C_TT', 'C_TN', 'C_NT', 'C_NN', 'Dbar_TT', 'Dbar_TN', 'Dbar_NT', 'Dbar_NN', &
+      'Cc_TT', 'Cc_TN', 'Cc_NT', 'Cc_NN', 'Tc_T', 'Tc_N', 'Sc_T', 'Sc_N', 'Cf_T', 'Cf_N', 'Tf', &
+      'Sf', 'ufbar']
+   integer, parameter :: COL_A = 1, COL_D = 2, COL_C_TT = 3, COL_C_TN = 4, COL_C_NT = 5, &
+      COL_C_NN = 6, COL_DBAR_TT = 7, COL_DBAR_TN = 8, COL_DBAR_NT = 9, COL_DBAR_NN = 10, &
+      COL_CC_TT = 11, COL_CC_TN = 12, COL_CC_NT = 13, COL_CC_NN = 14, COL_TC_T = 15, &
+      COL_TC_N = 16, COL_SC_T = 17, COL_SC_N = 18, COL_CF_T = 19, COL_CF_N = 20, COL_TF = 21, &
+      COL_SF = 22, COL_UFBAR = 23
+
+   !> Interpolated columns, in interface units (per unit separation; docs/theory.md): the
+   !> members of `coefficient_set_type`, in this order.
+   integer, parameter, public :: N_COEFFICIENTS = 11
+   integer, parameter, public :: IC_K_N = 1, IC_K_T = 2, IC_KC_N = 3, IC_KC_T = 4, &
+      IC_DBAR_N = 5, IC_DBAR_T = 6, IC_TC_T = 7, IC_SC_N = 8, IC_CF_T = 9, IC_TF = 10, IC_UFBAR = 11
+
+   !> Relative tolerance of the identity checks: the FreeFEM tables satisfy them to ~1e-11.
+   real(dp), parameter, public :: IDENTITY_TOL = 1.0e-8_dp
+
+   !> A table as read from its file.
+   type :: rve_table_type
+      character(len=:), allocatable :: source     !! file it came from (for messages)
+      real(dp) :: b = 0.0_dp                      !! RVE half-length (mm)
+      real(dp) :: h = 0.0_dp                      !! RVE height h = h_m + h_b (mm)
+      integer :: variable = VARIABLE_LOG_LIGAMENT !! VARIABLE_* of the interpolation
+      real(dp), allocatable :: rows(:, :)         !! rows(i, column) in the file's units
+      integer, allocatable :: line(:)             !! file line of each row (for messages)
+   end type rve_table_type
+
+contains
+
+   !> Read a table file: header `# key = value` lines (keys b and h required), the
+   !> `# columns:` line (every documented column, any order), then one row per a.
+   !> Errors name the file and line. The identities are checked separately (`check_rve_table`).
+   subroutine read_rve_table(path, table, status, message)
+      character(len=*), intent(in) :: path                 !! table file
+      type(rve_table_type), intent(out) :: table
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+
+      integer, parameter :: LINE_LEN = 8192, MAX_FIELDS = 64
+      character(len=LINE_LEN) :: line
+      character(len=256) :: iomsg
+      character(len=64) :: fields(MAX_FIELDS)
+      integer :: unit, ios, lineno, nfields, position(N_TABLE_COLUMNS), ncols, nrows, j
+      real(dp) :: values(MAX_FIELDS), b, h
+      real(dp), allocatable :: rows(:, :)
+      integer, allocatable :: lines(:)
+      logical :: have_columns, have_b, have_h
+
+      status = STATUS_OK
+      table%source = path
+      open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
+      if (ios /= 0) then
+         status = STATUS_TABLE_UNREADABLE
+         message = trim(path)//': cannot open: '//trim(iomsg)
+         return
+      end if
+      have_columns = .false.
+      have_b = .false.
+      have_h = .false.
+      position = 0
+      ncols = 0
+      nrows = 0
+      b = 0.0_dp
+      h = 0.0_dp
+      allocate (rows(N_TABLE_COLUMNS, 64), lines(64))
+      lineno = 0
+      do
+         read (unit, '(a)', iostat=ios, iomsg=iomsg) line
+         if (is_iostat_end(ios)) exit
+         lineno = lineno + 1
+         if (ios /= 0) then
+            call fail(STATUS_TABLE_UNREADABLE, 'read error: '//trim(iomsg))
+            return
+         end if
+         if (len_trim(line) == 0) cycle
+         line = adjustl(line)
+         if (line(1:1) == '#') then
+            if (have_columns) cycle                      ! comments after the header
+            line = adjustl(line(2:))
+            if (line(1:8) == 'columns:') then
+               call split(line(9:), fields, nfields)
+               if (nfields > MAX_FIELDS) then
+                  call fail(STATUS_TABLE_BAD_HEADER, 'too many columns on the "# columns:" line')
+                  return
+               end if
+               ncols = nfields
+               do j = 1, N_TABLE_COLUMNS
+                  position(j) = findloc_name(fields(1:nfields), TABLE_COLUMNS(j))
+                  if (position(j) == 0) then
+                     call fail(STATUS_TABLE_MISSING_COLUMN, 'the "# columns:" line lacks column '// &
+                        trim(TABLE_COLUMNS(j)))
+                     return
+                  end if
+               end do
+               if (.not. (have_b .and. have_h)) then
+                  call fail(STATUS_TABLE_MISSING_KEY, 'the header before "# columns:" must give '// &
+                     '"b = ..." and "h = ..." (mm)')
+                  return
+               end if
+               have_columns = .true.
+               cycle
+            end if
+            j = index(line, ' = ')
+            if (j < 2) then
+               call fail(STATUS_TABLE_BAD_HEADER, 'line reads: '// &
+                  trim(line(1:80)))
+               return
+            end if
+            select case (trim(line(1:j - 1)))
+            case ('b')
+               call header_number(line(j + 3:), b, have_b)
+               if (status /= STATUS_OK) return
+            case ('h')
+               call header_number(line(j + 3:), h, have_h)
+               if (status /= STATUS_OK) return
+            case ('interpolation_variable')
+               select case (trim(adjustl(line(j + 3:))))
+               case ('w')
+                  table%variable = VARIABLE_LOG_LIGAMENT
+               case ('D')
+                  table%variable = VARIABLE_DAMAGE
+               case default
+                  call fail(STATUS_TABLE_BAD_HEADER, 'interpolation_variable must be w or D: '// &
+                     trim(line(1:80)))
+                  return
+               end select
+            end select
+            cycle
+         end if
+         if (.not. have_columns) then
+            call fail(STATUS_TABLE_MISSING_COLUMN, 'data before the "# columns:" line')
+            return
+         end if
+         call split(line, fields, nfields)
+         if (nfields /= ncols) then
+            write (iomsg, '(i0,a,i0,a)') nfields, ' numbers where the "# columns:" line names ', ncols
+            call fail(STATUS_TABLE_BAD_ROW, trim(iomsg))
+            return
+         end if
+         do j = 1, nfields
+            read (fields(j), *, iostat=ios) values(j)
+            if (ios /= 0) then
+               write (iomsg, '(a,i0,a)') 'column ', j, ' is not a number: "'//trim(fields(j))//'"'
+               call fail(STATUS_TABLE_BAD_ROW, trim(iomsg))
+               return
+            end if
+            if (.not. is_finite(values(j))) then
+               write (iomsg, '(a,i0,a)') 'column ', j, ' is not finite: "'//trim(fields(j))//'"'
+               call fail(STATUS_TABLE_NONFINITE, trim(iomsg))
+               return
+            end if
+         end do
+         nrows = nrows + 1
+         if (nrows > size(lines)) call grow(rows, lines)
+         rows(:, nrows) = values(position)
+         lines(nrows) = lineno
+      end do
+      close (unit)
+      if (.not. have_columns) then
+         call fail(STATUS_TABLE_MISSING_COLUMN, 'no "# columns:" line')
+         return
+      end if
+      table%b = b
+      table%h = h
+      table%rows = transpose(rows(:, 1:nrows))
+      table%line = lines(1:nrows)
+
+   contains
+
+      subroutine fail(code, text)
+         integer, intent(in) :: code
+         character(len=*), intent(in) :: text
+         status = code
+         write (message, '(a,a,i0,a,a)') trim(path), ':', lineno, ': ', text
+         close (unit)
+      end subroutine fail
+
+      subroutine header_number(text, value, found)
+         character(len=*), intent(in) :: text
+         real(dp), intent(out) :: value
+         logical, intent(out) :: found
+         integer :: ios2
+         read (text, *, iostat=ios2) value
+         found = ios2 == 0
+         if (found) found = is_finite(value)
+         if (found) found = value > 0.0_dp
+         if (.not. found) call fail(STATUS_TABLE_BAD_HEADER, 'header value is not a positive number: '// &
+            trim(line(1:80)))
+      end subroutine header_number
+
+   end subroutine read_rve_table
+
+   !> Check a table against the exact facts of MODEL-NOTES section 6, to IDENTITY_TOL relative
+   !> (scales: C(0) for stiffnesses and crack stresses, h for jumps, C_TT(0)/h per unit slip):
+   !> a from 0 to b strictly increasing, D = a/b; the symmetry zeros; eq 52 C + C^c = C(0);
+   !> T^c_T = C_TT(0) and S^c_N = C_NN(0); at a = b C = 0 and Dbar = h I; T^f < 0,
+   !> 0 < ufbar <= 1, Dbar >= 0. The message names the identity, the file line and the value.
+   pure subroutine check_rve_table(table, status, message)
+      type(rve_table_type), intent(in) :: table
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+
+      real(dp) :: c0_t, c0_n, scale_c, scale_f
+      integer :: i, n, j
+      integer, parameter :: ZERO_STIFF(6) = [COL_C_TN, COL_C_NT, COL_CC_TN, COL_CC_NT, COL_TC_N, COL_SC_T]
+      integer, parameter :: ZERO_JUMP(2) = [COL_DBAR_TN, COL_DBAR_NT]
+      integer, parameter :: ZERO_SLIP(2) = [COL_CF_N, COL_SF]
+
+      status = STATUS_OK
+      n = size(table%rows, 1)
+      associate (r => table%rows, b => table%b, h => table%h)
+         if (n < 2) then
+            status = STATUS_TABLE_BAD_RANGE
+            message = trim(table%source)//': fewer than two rows'
+            return
+         end if
+         if (abs(r(1, COL_A)) > 0.0_dp .or. abs(r(n, COL_A) - b) > 1.0e-12_dp*b) then
+            status = STATUS_TABLE_BAD_RANGE
+            write (message, '(a,es12.5,a,es12.5,a,es12.5)') trim(table%source)//': a runs from ', &
+               r(1, COL_A), ' to ', r(n, COL_A), ' mm, not from 0 to b = ', b
+            return
+         end if
+         do i = 2, n
+            if (.not. (r(i, COL_A) > r(i - 1, COL_A))) then
+               status = STATUS_TABLE_NOT_INCREASING
+               write (message, '(a,a,i0,a,es24.16,a,es24.16)') trim(table%source), ':', table%line(i), &
+                  ': a = ', r(i, COL_A), ' does not exceed the previous a = ', r(i - 1, COL_A)
+               return
+            end if
+         end do
+         c0_t = r(1, COL_C_TT)
+         c0_n = r(1, COL_C_NN)
+         if (.not. (c0_t > 0.0_dp .and. c0_n > 0.0_dp)) then
+            call identity(1, 'C_TT(0) > 0 and C_NN(0) > 0', min(c0_t, c0_n), status, message)
+            return
+         end if
+         scale_c = max(c0_t, c0_n)
+         scale_f = c0_t/h
+         do i = 1, n
+            if (abs(r(i, COL_D) - r(i, COL_A)/b) > 1.0e-12_dp) then
+               call identity(i, 'D = a/b', r(i, COL_D), status, message)
+               return
+            end if
+            do j = 1, size(ZERO_STIFF)
+               if (abs(r(i, ZERO_STIFF(j))) > IDENTITY_TOL*scale_c) then
+                  call identity(i, trim(TABLE_COLUMNS(ZERO_STIFF(j)))//' = 0 (symmetry)', r(i, ZERO_STIFF(j)), status, message)
+                  return
+               end if
+            end do
+            do j = 1, size(ZERO_JUMP)
+               if (abs(r(i, ZERO_JUMP(j))) > IDENTITY_TOL*h) then
+                  call identity(i, trim(TABLE_COLUMNS(ZERO_JUMP(j)))//' = 0 (symmetry)', r(i, ZERO_JUMP(j)), status, message)
+                  return
+               end if
+            end do
+            do j = 1, size(ZERO_SLIP)
+               if (abs(r(i, ZERO_SLIP(j))) > IDENTITY_TOL*scale_f) then
+                  call identity(i, trim(TABLE_COLUMNS(ZERO_SLIP(j)))//' = 0 (symmetry)', r(i, ZERO_SLIP(j)), status, message)
+                  return
+               end if
+            end do
+            if (abs(r(i, COL_C_TT) + r(i, COL_CC_TT) - c0_t) > IDENTITY_TOL*scale_c) then
+               call identity(i, 'C_TT + Cc_TT = C_TT(0) (eq 52)', r(i, COL_C_TT) + r(i, COL_CC_TT), status, message)
+               return
+            end if
+            if (abs(r(i, COL_C_NN) + r(i, COL_CC_NN) - c0_n) > IDENTITY_TOL*scale_c) then
+               call identity(i, 'C_NN + Cc_NN = C_NN(0) (eq 52)', r(i, COL_C_NN) + r(i, COL_CC_NN), status, message)
+               return
+            end if
+            if (abs(r(i, COL_TC_T) - c0_t) > IDENTITY_TOL*scale_c) then
+               call identity(i, 'Tc_T = C_TT(0)', r(i, COL_TC_T), status, message)
+               return
+            end if
+            if (abs(r(i, COL_SC_N) - c0_n) > IDENTITY_TOL*scale_c) then
+               call identity(i, 'Sc_N = C_NN(0)', r(i, COL_SC_N), status, message)
+               return
+            end if
+            if (.not. (r(i, COL_TF) < 0.0_dp)) then
+               call identity(i, 'Tf < 0', r(i, COL_TF), status, message)
+               return
+            end if
+            if (.not. (r(i, COL_UFBAR) > 0.0_dp .and. r(i, COL_UFBAR) <= 1.0_dp + IDENTITY_TOL)) then
+               call identity(i, '0 < ufbar <= 1', r(i, COL_UFBAR), status, message)
+               return
+            end if
+            if (r(i, COL_DBAR_TT) < -IDENTITY_TOL*h .or. r(i, COL_DBAR_NN) < -IDENTITY_TOL*h) then
+               call identity(i, 'Dbar_TT >= 0 and Dbar_NN >= 0', min(r(i, COL_DBAR_TT), r(i, COL_DBAR_NN)), status, message)
+               return
+            end if
+         end do
+         if (max(abs(r(n, COL_C_TT)), abs(r(n, COL_C_NN))) > IDENTITY_TOL*scale_c) then
+            call identity(n, 'C = 0 at a = b', max(abs(r(n, COL_C_TT)), abs(r(n, COL_C_NN))), status, message)
+            return
+         end if
+         if (max(abs(r(n, COL_DBAR_TT) - h), abs(r(n, COL_DBAR_NN) - h)) > IDENTITY_TOL*h) then
+            call identity(n, 'Dbar = h I at a = b', r(n, COL_DBAR_TT), status, message)
+            return
+         end if
+      end associate
+
+   contains
+
+      pure subroutine identity(row, what, value, status, message)
+         integer, intent(in) :: row
+         character(len=*), intent(in) :: what
+         real(dp), intent(in) :: value
+         integer, intent(out) :: status
+         character(len=MESSAGE_LEN), intent(out) :: message
+         status = STATUS_TABLE_IDENTITY
+         write (message, '(a,a,i0,a,a,a,es24.16)') trim(table%source), ':', table%line(row), &
+            ': identity ', what, ' fails: value ', value
+      end subroutine identity
+
+   end subroutine check_rve_table
+
+   !> The knots (ascending values of the table's interpolation variable) and the interpolated
+   !> columns in interface units (divided by h where the paper's coefficient is per unit E).
+   pure subroutine interpolation_data(table, x, y)
+      type(rve_table_type), intent(in) :: table
+      real(dp), intent(out) :: x(:)                   !! x(n), ascending
+      real(dp), intent(out) :: y(:, :)                !! y(n, N_COEFFICIENTS)
+      integer :: i, k, n
+      real(dp) :: dx
+      n = size(table%rows, 1)
+      do i = 1, n
+         k = i                                        ! ascending D: the file's order
+         if (table%variable == VARIABLE_LOG_LIGAMENT) k = n + 1 - i   ! ascending w: descending D
+         associate (r => table%rows(k, :), h => table%h)
+            call crack_variable(table%variable, r(COL_D), x(i), dx)
+            y(i, IC_K_N) = r(COL_C_NN)/h
+            y(i, IC_K_T) = r(COL_C_TT)/h
+            y(i, IC_KC_N) = r(COL_CC_NN)/h
+            y(i, IC_KC_T) = r(COL_CC_TT)/h
+            y(i, IC_DBAR_N) = r(COL_DBAR_NN)/h
+            y(i, IC_DBAR_T) = r(COL_DBAR_TT)/h
+            y(i, IC_TC_T) = r(COL_TC_T)/h
+            y(i, IC_SC_N) = r(COL_SC_N)/h
+            y(i, IC_CF_T) = r(COL_CF_T)
+            y(i, IC_TF) = r(COL_TF)
+            y(i, IC_UFBAR) = r(COL_UFBAR)
+         end associate
+      end do
+   end subroutine interpolation_data
+
+   !> The interpolation variable x(D) and dx/dD: VARIABLE_DAMAGE x = D; VARIABLE_LOG_LIGAMENT
+   !> x = w = 1/(1 - ln(1 - D)), dw/dD = -w^2/(1 - D) (returned as 0 at D = 1, where it is
+   !> infinite and never used: damage no longer grows there).
+   elemental subroutine crack_variable(variable, d, x, dx_dd)
+      integer, intent(in) :: variable     !! VARIABLE_*
+      real(dp), intent(in) :: d           !! damage D = a/b, 0 <= D <= 1
+      real(dp), intent(out) :: x          !! the interpolation variable at D
+      real(dp), intent(out) :: dx_dd      !! dx/dD
+      if (variable == VARIABLE_DAMAGE) then
+         x = d
+         dx_dd = 1.0_dp
+      else if (d >= 1.0_dp) then
+         x = 0.0_dp
+         dx_dd = 0.0_dp
+      else
+         x = 1.0_dp/(1.0_dp - log(1.0_dp - d))
+         dx_dd = -x*x/(1.0_dp - d)
+      end if
+   end subroutine crack_variable
+
+   !> Split a line at blanks into at most size(fields) fields.
+   pure subroutine split(text, fields, nfields)
+      character(len=*), intent(in) :: text
+      character(len=*), intent(out) :: fields(:)
+      integer, intent(out) :: nfields
+      integer :: i, start
+      logical :: in_field
+      nfields = 0
+      in_field = .false.
+      start = 1
+      do i = 1, len_trim(text) + 1
+         if (i <= len_trim(text)) then
+            if (text(i:i) /= ' ' .and. text(i:i) /= char(9)) then
+               if (.not. in_field) start = i
+               in_field = .true.
+               cycle
+            end if
+         end if
+         if (in_field) then
+            nfields = nfields + 1
+            if (nfields > size(fields)) return
+            fields(nfields) = text(start:i - 1)
+            in_field = .false.
+         end if
+      end do
+   end subroutine split
+
+   !> Position of `name` in `names`, 0 when absent.
+   pure integer function findloc_name(names, name) result(pos)
+      character(len=*), intent(in) :: names(:), name
+      integer :: i
+      pos = 0
+      do i = 1, size(names)
+         if (trim(names(i)) == trim(name)) then
+            pos = i
+            return
+         end if
+      end do
+   end function findloc_name
+
+   !> Double the row capacity.
+   pure subroutine grow(rows, lines)
+      real(dp), allocatable, intent(inout) :: rows(:, :)
+      integer, allocatable, intent(inout) :: lines(:)
+      real(dp), allocatable :: new_rows(:, :)
+      integer, allocatable :: new_lines(:)
+      allocate (new_rows(size(rows, 1), 2*size(rows, 2)), new_lines(2*size(lines)))
+      new_rows(:, 1:size(rows, 2)) = rows
+      new_lines(1:size(lines)) = lines
+      call move_alloc(new_rows, rows)
+      call move_alloc(new_lines, lines)
+   end subroutine grow
+
+end module interphase_rve_table

@@ -1,0 +1,144 @@
+!> Benchmark of the VUMAT: nanoseconds per material-point update at nblock = 1, 136 and 4096
+!> (2-D cohesive points, the paper's mixed history with a different scaling per point), beside a
+!> plain copy of the same arrays (old -> new stress, state and energies, reading the strain
+!> increments): the memory-bound limit of any VUMAT on these arrays.
+!>
+!>   interphase-bench-vumat [points]      (default 65536 points; Release build recommended)
+program bench_vumat
+   use, intrinsic :: iso_fortran_env, only: int64, output_unit
+   use interphase_kinds, only: dp
+   use interphase_layout, only: NPROPS_SIMPLIFIED, NSTATV_VUMAT
+   use interphase_abaqus_interfaces, only: vumat
+   implicit none
+
+   !> Block sizes measured (136 is Abaqus/Explicit's usual vector length).
+   integer, parameter :: NBLOCK_SIZES(3) = [1, 136, 4096]
+   !> Increments per segment of the mixed history and sweeps (increments) timed.
+   integer, parameter :: NSUB = 20, NSWEEP = 7*NSUB
+
+   integer :: npoints, i, arg_len, arg_status
+   character(len=32) :: arg
+   real(dp) :: ns_vumat, ns_copy
+
+   npoints = 65536
+   if (command_argument_count() >= 1) then
+      call get_command_argument(1, arg, arg_len, arg_status)
+      if (arg_status == 0) read (arg, *) npoints
+   end if
+
+   write (output_unit, '(a,i0,a,i0,a)') 'VUMAT, 2-D cohesive points, mixed history: ', npoints, &
+      ' points x ', NSWEEP, ' increments per measurement'
+   write (output_unit, '(a)') '  nblock   ns/point (vumat)   ns/point (plain copy)   ratio'
+   do i = 1, size(NBLOCK_SIZES)
+      call measure(NBLOCK_SIZES(i), npoints, ns_vumat, ns_copy)
+      write (output_unit, '(i8,f19.1,f24.2,f8.1)') NBLOCK_SIZES(i), ns_vumat, ns_copy, ns_vumat/ns_copy
+   end do
+
+contains
+
+   subroutine measure(nb, npoints, ns_vumat, ns_copy)
+      integer, intent(in) :: nb, npoints
+      real(dp), intent(out) :: ns_vumat, ns_copy
+      real(dp), allocatable :: stress(:, :, :, :), state(:, :, :, :), ei(:, :, :), eie(:, :, :)
+      real(dp), allocatable :: strain_inc(:, :, :, :), density(:, :), coord(:, :), char_length(:)
+      real(dp), allocatable :: spin(:, :), temp(:), stretch(:, :), defgrad(:, :), field(:, :)
+      real(dp) :: props(NPROPS_SIMPLIFIED), checksum
+      character(len=80) :: cmname
+      integer :: nblocks, ib, sweep, cur, j
+      integer(int64) :: t0, t1, rate
+
+      nblocks = max(1, npoints/nb)
+      allocate (stress(nb, 2, nblocks, 0:1), state(nb, NSTATV_VUMAT, nblocks, 0:1))
+      allocate (ei(nb, nblocks, 0:1), eie(nb, nblocks, 0:1), density(nb, nblocks))
+      allocate (strain_inc(nb, 2, nblocks, NSWEEP), coord(nb, 3), char_length(nb), spin(nb, 1), temp(nb))
+      allocate (stretch(nb, 2), defgrad(nb, 3), field(nb, 1))
+      props = [1.0_dp, 1.0_dp, 0.75_dp, 0.00044_dp, 0.04_dp, 0.00072_dp, 0.06_dp, &
+         544000.0_dp/1127.0_dp, 32000.0_dp/161.0_dp]
+      cmname = 'BENCH'
+      coord = 0.0_dp
+      char_length = 1.0_dp
+      spin = 0.0_dp
+      temp = 0.0_dp
+      stretch = 1.0_dp
+      defgrad = 1.0_dp
+      field = 0.0_dp
+      density = 2.0e-9_dp
+      do sweep = 1, NSWEEP
+         do ib = 1, nblocks
+            do j = 1, nb
+               strain_inc(j, :, ib, sweep) = increment(sweep, real((ib - 1)*nb + j, dp)/real(nb*nblocks, dp))
+            end do
+         end do
+      end do
+
+      ! the VUMAT along the whole history (state restarted from zero)
+      stress = 0.0_dp
+      state = 0.0_dp
+      ei = 0.0_dp
+      eie = 0.0_dp
+      call system_clock(t0, rate)
+      cur = 0
+      do sweep = 1, NSWEEP
+         do ib = 1, nblocks
+            call vumat(nb, 1, 1, NSTATV_VUMAT, 1, NPROPS_SIMPLIFIED, 0, real(sweep, dp), real(sweep, dp), &
+               1.0_dp, cmname, coord, char_length, props, density(:, ib), strain_inc(:, :, ib, sweep), spin, &
+               temp, stretch, defgrad, field, stress(:, :, ib, cur), state(:, :, ib, cur), ei(:, ib, cur), &
+               eie(:, ib, cur), temp, stretch, defgrad, field, stress(:, :, ib, 1 - cur), &
+               state(:, :, ib, 1 - cur), ei(:, ib, 1 - cur), eie(:, ib, 1 - cur))
+         end do
+         cur = 1 - cur
+      end do
+      call system_clock(t1)
+      ns_vumat = 1.0e9_dp*real(t1 - t0, dp)/real(rate, dp)/(real(NSWEEP, dp)*real(nb*nblocks, dp))
+      checksum = sum(eie(:, :, cur))
+
+      ! a plain copy of the same arrays
+      stress = 0.0_dp
+      state = 0.0_dp
+      ei = 0.0_dp
+      eie = 0.0_dp
+      call system_clock(t0, rate)
+      cur = 0
+      do sweep = 1, NSWEEP
+         do ib = 1, nblocks
+            call plain_copy(nb, strain_inc(:, :, ib, sweep), stress(:, :, ib, cur), state(:, :, ib, cur), &
+               ei(:, ib, cur), eie(:, ib, cur), stress(:, :, ib, 1 - cur), state(:, :, ib, 1 - cur), &
+               ei(:, ib, 1 - cur), eie(:, ib, 1 - cur))
+         end do
+         cur = 1 - cur
+      end do
+      call system_clock(t1)
+      ns_copy = 1.0e9_dp*real(t1 - t0, dp)/real(rate, dp)/(real(NSWEEP, dp)*real(nb*nblocks, dp))
+      checksum = checksum + sum(stress(:, 1, :, cur))
+      if (.not. (checksum > -huge(1.0_dp))) write (output_unit, '(a)') 'checksum not finite'
+
+   end subroutine measure
+
+   !> Strain increment (normal, tensor shear) of the mixed history at increment `sweep` for a
+   !> point whose history is scaled by 0.5 + frac.
+   pure function increment(sweep, frac) result(inc)
+      integer, intent(in) :: sweep
+      real(dp), intent(in) :: frac
+      real(dp) :: inc(2)
+      real(dp), parameter :: S_T(0:7) = [0.0_dp, 0.0_dp, 0.0_dp, 0.05_dp, 0.0_dp, 0.08_dp, -0.05_dp, 0.0_dp]
+      integer :: seg
+      seg = (sweep - 1)/NSUB
+      inc(1) = 0.0_dp
+      if (seg == 0) inc(1) = -0.005_dp*(0.5_dp + frac)/real(NSUB, dp)
+      inc(2) = 0.5_dp*(0.5_dp + frac)*(S_T(seg + 1) - S_T(seg))/real(NSUB, dp)
+   end function increment
+
+   !> The memory traffic of a VUMAT without its arithmetic.
+   subroutine plain_copy(nb, strain_inc, stress_old, state_old, ei_old, eie_old, stress_new, state_new, &
+         ei_new, eie_new)
+      integer, intent(in) :: nb
+      real(dp), intent(in) :: strain_inc(nb, 2), stress_old(nb, 2), state_old(nb, NSTATV_VUMAT)
+      real(dp), intent(in) :: ei_old(nb), eie_old(nb)
+      real(dp), intent(out) :: stress_new(nb, 2), state_new(nb, NSTATV_VUMAT), ei_new(nb), eie_new(nb)
+      stress_new = stress_old + strain_inc
+      state_new = state_old
+      ei_new = ei_old
+      eie_new = eie_old
+   end subroutine plain_copy
+
+end program bench_vumat
