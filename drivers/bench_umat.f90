@@ -1,4 +1,4 @@
-!> `interphase-bench`: cost of one `umat` call, simplified model.
+!> `interphase-bench`: cost of one `umat` call, simplified and micromechanical (built-in table) models.
 !>
 !>     interphase-bench [CALLS_PER_RUN [RUNS]]      (defaults 1000000 and 5)
 !>
@@ -13,6 +13,7 @@ program bench_umat
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
+      MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, TABLE_DEFAULT_CODE, &
       DAMAGE_DISPLACEMENT, NSTATV_REQUIRED
    use interphase_abaqus_interfaces, only: umat
    implicit none
@@ -27,13 +28,14 @@ program bench_umat
    !> Rotation of the shear in 3-D (degrees).
    real(dp), parameter :: ANGLE_DEGREES = 30.0_dp
 
-   real(dp) :: props(NPROPS_SIMPLIFIED)
+   real(dp), allocatable :: props(:)
+   integer :: model
    real(dp), allocatable :: ns_per_call(:)
    real(dp) :: checksum
    integer :: calls_per_run, runs, increments, ntens, run
    integer(int64) :: count_rate
    character(len=32) :: argument
-   character(len=*), parameter :: ROW_FORMAT = '(a12, i6, i12, i6, 2f16.1, es24.15)'
+   character(len=*), parameter :: ROW_FORMAT = '(a16, a12, i6, i12, i6, 2f16.1, es24.15)'
 
    calls_per_run = 1000000
    runs = 5
@@ -47,39 +49,62 @@ program bench_umat
    end if
    increments = max(1, calls_per_run/NSEGMENTS)
 
-   ! Paper Table 1 (simplified model), mu = 0.75 (our assumption), K from MODEL-NOTES section 6.
-   props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
-   props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
-   props(PROP_MU) = 0.75_dp
-   props(PROP_S0_N) = 0.00044_dp
-   props(PROP_SF_N) = 0.04_dp
-   props(PROP_S0_T) = 0.00072_dp
-   props(PROP_SF_T) = 0.06_dp
-   props(PROP_K_N) = 544000.0_dp/1127.0_dp
-   props(PROP_K_T) = 32000.0_dp/161.0_dp
 
    call system_clock(count_rate=count_rate)
    allocate (ns_per_call(runs))
-   write (output_unit, '(a)') 'interphase-bench: umat, simplified model, paper mixed-mode history'
+   write (output_unit, '(a)') 'interphase-bench: umat, paper Table 1 data, mixed-mode history'
    write (output_unit, '(a, i0, a, i0, a, i0, a, i0, a)') 'increments per segment: ', increments, &
       ' (', NSEGMENTS*increments, ' calls per run), runs: ', runs, &
       ', clock resolution: ', count_rate, ' ticks/s'
-   write (output_unit, '(a12, a6, a12, a6, 2a16, a24)') 'history', 'NTENS', 'calls/run', &
+   write (output_unit, '(a16, a12, a6, a12, a6, 2a16, a24)') 'model', 'history', 'NTENS', 'calls/run', &
       'runs', 'best ns/call', 'median ns/call', 'checksum (MPa)'
+   do model = MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL
+   call set_props(model)
    do ntens = 2, 3
       do run = 1, runs
          call one_run(ntens, ns_per_call(run), checksum)
       end do
       if (ntens == 2) then
-         write (output_unit, ROW_FORMAT) 'mixed 2-D', ntens, NSEGMENTS*increments, runs, &
+         write (output_unit, ROW_FORMAT) model_name(model), 'mixed 2-D', ntens, NSEGMENTS*increments, runs, &
             minval(ns_per_call), median(ns_per_call), checksum
       else
-         write (output_unit, ROW_FORMAT) 'mixed 3-D', ntens, NSEGMENTS*increments, runs, &
+         write (output_unit, ROW_FORMAT) model_name(model), 'mixed 3-D', ntens, NSEGMENTS*increments, runs, &
             minval(ns_per_call), median(ns_per_call), checksum
       end if
    end do
+   end do
 
 contains
+
+   !> PROPS of the paper's Table 1 data, mu = 0.75 (our assumption): the simplified model with K
+   !> from the closed forms of MODEL-NOTES section 6, or the micromechanical model on the
+   !> built-in table.
+   subroutine set_props(which)
+      integer, intent(in) :: which
+      integer :: i
+      if (which == MODEL_SIMPLIFIED) then
+         props = [(0.0_dp, i = 1, NPROPS_SIMPLIFIED)]
+         props(PROP_K_N) = 544000.0_dp/1127.0_dp
+         props(PROP_K_T) = 32000.0_dp/161.0_dp
+      else
+         props = [(0.0_dp, i = 1, NPROPS_MICROMECHANICAL)]
+         props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
+      end if
+      props(PROP_MODEL) = real(which, dp)
+      props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+      props(PROP_MU) = 0.75_dp
+      props(PROP_S0_N) = 0.00044_dp
+      props(PROP_SF_N) = 0.04_dp
+      props(PROP_S0_T) = 0.00072_dp
+      props(PROP_SF_T) = 0.06_dp
+   end subroutine set_props
+
+   pure function model_name(which) result(name)
+      integer, intent(in) :: which
+      character(len=:), allocatable :: name
+      name = 'simplified'
+      if (which == MODEL_MICROMECHANICAL) name = 'micromechanical'
+   end function model_name
 
    !> Replay the history once from the virgin state; time per call (ns) and checksum (MPa).
    subroutine one_run(ntens, ns, checksum)
@@ -128,7 +153,7 @@ contains
       pnewdt = 1.0_dp
       call umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, &
          dstran, time, 0.0_dp, 0.0_dp, 0.0_dp, predef, dpred, CMNAME, 1, ntens - 1, ntens, &
-         NSTATV_REQUIRED, props, NPROPS_SIMPLIFIED, coords, drot, pnewdt, 1.0_dp, dfgrd, dfgrd, &
+         NSTATV_REQUIRED, props, size(props), coords, drot, pnewdt, 1.0_dp, dfgrd, dfgrd, &
          1, 1, 1, 1, [1, 0, 0, 0], kinc)
       call check(pnewdt, 0.0_dp)
       stran = s_new
@@ -146,7 +171,7 @@ contains
             pnewdt = 1.0_dp
             call umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, &
                stran, dstran, time, dtime, 0.0_dp, 0.0_dp, predef, dpred, CMNAME, 1, ntens - 1, &
-               ntens, NSTATV_REQUIRED, props, NPROPS_SIMPLIFIED, coords, drot, pnewdt, 1.0_dp, &
+               ntens, NSTATV_REQUIRED, props, size(props), coords, drot, pnewdt, 1.0_dp, &
                dfgrd, dfgrd, 1, 1, 1, 1, [1, 0, 0, 0], kinc)
             if (pnewdt < 1.0_dp) call check(pnewdt, time(2))
             stran = s_new

@@ -3,7 +3,9 @@
 # converged table, and the paper-resolution table for comparison) and with the simplified model
 # calibrated to the micromechanical fracture energies (the paper's procedure, computed by
 # interphase-calibrate), then Figs 17(a), 17(b), 18(a), 18(b) and 19 as PNGs with both models on
-# each plot and the mixed-mode branches O, A, ..., L marked.
+# each plot and the mixed-mode branches O, A, ..., L marked. A third micromechanical variant
+# interpolates the paper-resolution table in D (= a/b) instead of the log-ligament variable w,
+# as a spline over the paper's 1 mm crack-length steps does (docs/paper.md).
 # Usage: tools/paper-section5.sh BUILD_DIR OUT_DIR
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -22,22 +24,26 @@ loading_of() {  # the &loading group of a case file, history made absolute
 material_of() {  # the &material group of a case file
   sed -n '/^&material/,/^\//p' "$1"
 }
+sed '1a # interpolation_variable = D' "$here/tables/paper-resolution.dat" > "$out/cases/paper-resolution-D.dat"
 for h in h1I h2I h1II h2II mixed; do
   { material_of "$cases/micro/$h.nml"; echo; loading_of "$h" | sed "s|output = '.*'|output = 'micro_$h.csv'|"; } \
     > "$out/cases/micro_$h.nml"
   { material_of "$cases/micro/$h.nml" | sed "s|^/$|  table = '$here/tables/paper-resolution.dat'\n/|"; echo
     loading_of "$h" | sed "s|output = '.*'|output = 'microres_$h.csv'|"; } > "$out/cases/microres_$h.nml"
+  { material_of "$cases/micro/$h.nml" | sed "s|^/$|  table = 'paper-resolution-D.dat'\n/|"; echo
+    loading_of "$h" | sed "s|output = '.*'|output = 'microresD_$h.csv'|"; } > "$out/cases/microresD_$h.nml"
 done
 
 echo "== calibration of the simplified model (paper section 5.2)"
 "$calibrate" "$out/cases/micro_h1I.nml" --write "$out/cases/calibrated.nml" | tee "$out/calibration.txt"
-echo "== the same with the paper-resolution table"
+echo "== the same with the paper-resolution table (spline in w, then in D)"
 "$calibrate" "$out/cases/microres_h1I.nml" --write "$out/cases/calibrated_res.nml" | tee "$out/calibration-paper-resolution.txt"
+"$calibrate" "$out/cases/microresD_h1I.nml" --write "$out/cases/calibrated_resD.nml" | tee "$out/calibration-paper-resolution-D.txt"
 
 for h in h1I h2I h1II h2II mixed; do
   { material_of "$out/cases/calibrated.nml"; echo; loading_of "$h" | sed "s|output = '.*'|output = 'simplified_$h.csv'|"; } \
     > "$out/cases/simplified_$h.nml"
-  for m in micro microres simplified; do
+  for m in micro microres microresD simplified; do
     "$point" "$out/cases/${m}_$h.nml" --output-dir "$out" --no-plot
   done
 done
@@ -47,7 +53,7 @@ done
   printf '%-12s %-11s %14s %14s %14s\n' history model 'peak (MPa)' 'at s (mm)' 'W_dis (N/mm)'
   for h in h1I h1II; do
     col=5; scol=3; [ "$h" = h1II ] && { col=4; scol=2; }
-    for m in micro microres simplified; do
+    for m in micro microres microresD simplified; do
       awk -F, -v c=$col -v sc=$scol -v h=$h -v m=$m 'NR>1 { v=$c<0?-$c:$c; if (v>p) {p=v; s=$sc}; w=$10 }
         END { printf "%-12s %-11s %14.6g %14.6g %14.6g\n", h, m, p, s, w }' "$out/${m}_$h.csv"
     done
@@ -101,7 +107,8 @@ plot() {  # plot NAME TITLE XCOL YCOL XLABEL YLABEL HISTORY [labels-file]
       done < "$labels"
     fi
     echo "plot '$out/micro_$h.csv' every ::1 using $x:$y with lines lw 2 lc rgb '#2166ac' title 'micromechanical (converged table)', \\"
-    echo "     '$out/microres_$h.csv' every ::1 using $x:$y with lines lw 1.5 dt 2 lc rgb '#67a9cf' title 'micromechanical (paper-resolution table)', \\"
+    echo "     '$out/microres_$h.csv' every ::1 using $x:$y with lines lw 1.5 dt 2 lc rgb '#67a9cf' title 'micromechanical (paper-resolution table, spline in w)', \\"
+    echo "     '$out/microresD_$h.csv' every ::1 using $x:$y with lines lw 1.5 dt 4 lc rgb '#1b7837' title 'micromechanical (paper-resolution table, spline in D)', \\"
     echo "     '$out/simplified_$h.csv' every ::1 using $x:$y with lines lw 2 lc rgb '#d6604d' title 'simplified, calibrated to the same G_I, G_{II}'"
   } > "$out/$name.gp"
   gnuplot "$out/$name.gp"
