@@ -43,6 +43,30 @@ module interphase_layout
    integer, parameter, public :: MODEL_MICROMECHANICAL = 2
    !> PROPS(PROP_DAMAGE_LAW) value: the displacement-driven damage law, eqs 13-18.
    integer, parameter, public :: DAMAGE_DISPLACEMENT = 1
+   !> PROPS(PROP_DAMAGE_LAW) value: the fracture-mechanics law (Griffith criterion with R-curves,
+   !> eqs 20-24, 40-42, 49-50). Its four constants follow the model's block:
+   !> PROPS(nm + LFM_*) with nm = NPROPS_SIMPLIFIED or NPROPS_MICROMECHANICAL.
+   integer, parameter, public :: DAMAGE_FRACTURE = 2
+   !> Fracture-mechanics law, offset of the initial crack D0 = a0/b (-), 0 < D0 < 1.
+   integer, parameter, public :: LFM_D0 = 1
+   !> Fracture-mechanics law, offset of the R-curve selector: RCURVE_*.
+   integer, parameter, public :: LFM_RCURVE = 2
+   !> Fracture-mechanics law, offset of the constant mode-I toughness G_cI (N/mm, per unit
+   !> advance of the half-length a and unit width, eq 20); 0 unless RCURVE_CONSTANT.
+   integer, parameter, public :: LFM_GC_I = 3
+   !> Fracture-mechanics law, offset of the constant mode-II toughness G_cII (N/mm); 0 unless
+   !> RCURVE_CONSTANT.
+   integer, parameter, public :: LFM_GC_II = 4
+   !> Number of PROPS the fracture-mechanics law adds to the model's.
+   integer, parameter, public :: NPROPS_FRACTURE_EXTRA = 4
+   !> R-curve: constant G_cI, G_cII.
+   integer, parameter, public :: RCURVE_CONSTANT = 1
+   !> R-curve: the one equivalent to the displacement-driven law in pure mode I and mode II,
+   !> built from s0_N, sf_N, s0_T, sf_T (PROPS 4-7) and the provider's dC/dD.
+   integer, parameter, public :: RCURVE_EQUIVALENT = 2
+   !> R-curve: tabulated G_cI(D), G_cII(D), read from a file at start-up (UEXTERNALDB with the
+   !> environment variable INTERPHASE_RCURVE, or the driver's case file).
+   integer, parameter, public :: RCURVE_TABULATED = 3
 
    ! ---- STATEV (solution-dependent state, `*DEPVAR`) -----------------------------------------
    !> Damage D = a/b (-), history maximum, 0 <= D <= 1.

@@ -31,26 +31,28 @@ module interphase_micro_coefficients
 contains
 
    !> Coefficients at D from the selected table (TABLE_DEFAULT_CODE or TABLE_CUSTOM_CODE).
-   pure subroutine micro_coefficients(table, d, coef, dcoef_dd, status)
+   pure subroutine micro_coefficients(table, d, coef, dcoef_dd, status, d2coef_dd2)
       integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
       real(dp), intent(in) :: d                              !! damage D = a/b
       type(coefficient_set_type), intent(out) :: coef        !! coefficients at D
       type(coefficient_set_type), intent(out) :: dcoef_dd    !! their derivatives d/dD
       integer, intent(out) :: status
+      type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives
       if (table == TABLE_CUSTOM_CODE) then
          if (.not. allocated(custom_coef)) then
             status = STATUS_TABLE_NOT_LOADED
             return
          end if
-         call table_coefficients(custom_variable, custom_knots, custom_coef, d, coef, dcoef_dd, status)
+         call table_coefficients(custom_variable, custom_knots, custom_coef, d, coef, dcoef_dd, status, &
+            d2coef_dd2)
       else
          call table_coefficients(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, d, &
-            coef, dcoef_dd, status)
+            coef, dcoef_dd, status, d2coef_dd2)
       end if
    end subroutine micro_coefficients
 
    !> Coefficients at D from interpolation data (docs/theory.md).
-   pure subroutine table_coefficients(variable, knots, coef_table, d, coef, dcoef_dd, status)
+   pure subroutine table_coefficients(variable, knots, coef_table, d, coef, dcoef_dd, status, d2coef_dd2)
       integer, intent(in) :: variable                        !! VARIABLE_* of the knots
       real(dp), intent(in) :: knots(:)                       !! knots, ascending
       real(dp), intent(in) :: coef_table(:, 0:, :)           !! cubic coefficients (column, power, interval)
@@ -58,22 +60,35 @@ contains
       type(coefficient_set_type), intent(out) :: coef
       type(coefficient_set_type), intent(out) :: dcoef_dd
       integer, intent(out) :: status
+      type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives d2/dD2
 
-      real(dp) :: x, dx_dd, v(N_COEFFICIENTS), dv(N_COEFFICIENTS)
+      real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS), d2v(N_COEFFICIENTS)
       integer :: interval
 
-      call crack_variable(variable, d, x, dx_dd)
+      call crack_variable(variable, d, x, dx_dd, d2x_dd2)
       call cubic_locate(knots, x, interval, status)
       if (status /= STATUS_OK) return
-      call cubic_eval(knots, coef_table, interval, x, v, dv)
+      if (present(d2coef_dd2)) then
+         call cubic_eval(knots, coef_table, interval, x, v, dv, d2v)
+         ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
+         d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
+         d2coef_dd2 = as_set(d2v)
+      else
+         call cubic_eval(knots, coef_table, interval, x, v, dv)
+      end if
       dv = dv*dx_dd
-      coef = coefficient_set_type(k_n=v(IC_K_N), k_t=v(IC_K_T), kc_n=v(IC_KC_N), kc_t=v(IC_KC_T), &
+      coef = as_set(v)
+      dcoef_dd = as_set(dv)
+   end subroutine table_coefficients
+
+   !> The interpolated columns (IC_* order) as a coefficient set.
+   pure function as_set(v) result(c)
+      real(dp), intent(in) :: v(N_COEFFICIENTS)
+      type(coefficient_set_type) :: c
+      c = coefficient_set_type(k_n=v(IC_K_N), k_t=v(IC_K_T), kc_n=v(IC_KC_N), kc_t=v(IC_KC_T), &
          dbar_n=v(IC_DBAR_N), dbar_t=v(IC_DBAR_T), tc_t=v(IC_TC_T), sc_n=v(IC_SC_N), &
          cf_t=v(IC_CF_T), tf=v(IC_TF), ufbar=v(IC_UFBAR))
-      dcoef_dd = coefficient_set_type(k_n=dv(IC_K_N), k_t=dv(IC_K_T), kc_n=dv(IC_KC_N), &
-         kc_t=dv(IC_KC_T), dbar_n=dv(IC_DBAR_N), dbar_t=dv(IC_DBAR_T), tc_t=dv(IC_TC_T), &
-         sc_n=dv(IC_SC_N), cf_t=dv(IC_CF_T), tf=dv(IC_TF), ufbar=dv(IC_UFBAR))
-   end subroutine table_coefficients
+   end function as_set
 
    !> Read, check and interpolate a custom table; call once at start-up, before any update
    !> and from one thread (UEXTERNALDB at LOP = 0 does). A second call replaces the table and

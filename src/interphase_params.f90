@@ -7,13 +7,15 @@ module interphase_params
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
       MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, PROP_TABLE, NPROPS_MICROMECHANICAL, &
-      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE
+      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, LFM_D0, LFM_RCURVE, LFM_GC_I, LFM_GC_II, &
+      NPROPS_FRACTURE_EXTRA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED
    use interphase_status, only: STATUS_OK, STATUS_BAD_NPROPS, STATUS_BAD_MODEL, &
       STATUS_BAD_DAMAGE_LAW, STATUS_BAD_MU, STATUS_BAD_S0_N, STATUS_BAD_SF_N, STATUS_BAD_S0_T, &
-      STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_TABLE_SELECTOR, MESSAGE_LEN
+      STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_TABLE_SELECTOR, MESSAGE_LEN, &
+      STATUS_BAD_D0, STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II
    implicit none
    private
-   public :: law_params_type, from_props, params_from_values
+   public :: law_params_type, from_props, params_from_values, set_fracture_params
 
    !> Parameters of one interface material (immutable once decoded).
    type :: law_params_type
@@ -27,6 +29,10 @@ module interphase_params
       real(dp) :: k_n = 0.0_dp                       !! simplified model: K_N = C^_NN/h (MPa/mm)
       real(dp) :: k_t = 0.0_dp                       !! simplified model: K_T = C^_TT/h (MPa/mm)
       integer :: table = TABLE_DEFAULT_CODE          !! micromechanical model: TABLE_*_CODE
+      real(dp) :: d0 = 0.0_dp                        !! fracture law: initial crack D0 = a0/b (-)
+      integer :: rcurve = 0                          !! fracture law: RCURVE_*
+      real(dp) :: gc_i = 0.0_dp                      !! fracture law, constant R-curve: G_cI (N/mm, eq 20)
+      real(dp) :: gc_ii = 0.0_dp                     !! fracture law, constant R-curve: G_cII (N/mm, eq 20)
       real(dp) :: eta_n = 0.0_dp                     !! eta_N = s0_N/sf_N (-), eq 13
       real(dp) :: eta_t = 0.0_dp                     !! eta_T = s0_T/sf_T (-), eq 13
    end type law_params_type
@@ -41,7 +47,7 @@ contains
       integer, intent(out) :: status                    !! STATUS_OK or a STATUS_BAD_* code
       character(len=MESSAGE_LEN), intent(out) :: message   !! set only on failure
 
-      integer :: model, damage_law, table
+      integer :: model, damage_law, table, nm, nprops_needed
 
       status = STATUS_OK
       if (size(props) < PROP_DAMAGE_LAW) then
@@ -57,23 +63,25 @@ contains
             ' is not a model: use 1 (simplified spring model) or 2 (micromechanical)'
          return
       end if
-      if (model == MODEL_SIMPLIFIED .and. size(props) /= NPROPS_SIMPLIFIED) then
-         status = STATUS_BAD_NPROPS
-         write (message, '(a,i0,a,i0)') 'NPROPS = ', size(props), &
-            ' but the simplified model takes exactly ', NPROPS_SIMPLIFIED
-         return
-      end if
-      if (model == MODEL_MICROMECHANICAL .and. size(props) /= NPROPS_MICROMECHANICAL) then
-         status = STATUS_BAD_NPROPS
-         write (message, '(a,i0,a,i0)') 'NPROPS = ', size(props), &
-            ' but the micromechanical model takes exactly ', NPROPS_MICROMECHANICAL
-         return
-      end if
       damage_law = selector_code(props(PROP_DAMAGE_LAW))
-      if (damage_law /= DAMAGE_DISPLACEMENT) then
+      if (damage_law /= DAMAGE_DISPLACEMENT .and. damage_law /= DAMAGE_FRACTURE) then
          status = STATUS_BAD_DAMAGE_LAW
          write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_DAMAGE_LAW, ') damage law = ', &
-            props(PROP_DAMAGE_LAW), ' is not a damage law: use 1 (displacement-driven, eqs 13-18)'
+            props(PROP_DAMAGE_LAW), ' is not a damage law: use 1 (displacement-driven, eqs 13-18) '// &
+            'or 2 (fracture mechanics, eqs 20-24)'
+         return
+      end if
+      nm = NPROPS_SIMPLIFIED
+      if (model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
+      nprops_needed = nm
+      if (damage_law == DAMAGE_FRACTURE) nprops_needed = nm + NPROPS_FRACTURE_EXTRA
+      if (size(props) /= nprops_needed) then
+         status = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a,a,a,a,a,i0)') 'NPROPS = ', size(props), ' but the ', &
+            trim(merge('simplified     ', 'micromechanical', model == MODEL_SIMPLIFIED)), &
+            ' model with the ', &
+            trim(merge('displacement-driven', 'fracture-mechanics ', damage_law == DAMAGE_DISPLACEMENT)), &
+            ' damage law takes exactly ', nprops_needed
          return
       end if
 
@@ -93,6 +101,9 @@ contains
             props(PROP_SF_N), props(PROP_S0_T), props(PROP_SF_T), params, status, message, &
             table=table)
       end if
+      if (status /= STATUS_OK .or. damage_law /= DAMAGE_FRACTURE) return
+      call set_fracture_params(params, props(nm + LFM_D0), selector_code(props(nm + LFM_RCURVE)), &
+         props(nm + LFM_RCURVE), props(nm + LFM_GC_I), props(nm + LFM_GC_II), nm, status, message)
    end subroutine from_props
 
    !> Build and validate parameters from named values (the same checks as `from_props`; the
@@ -154,20 +165,68 @@ contains
       params%eta_n = s0_n/sf_n
       params%eta_t = s0_t/sf_t
 
-   contains
-
-      pure subroutine reject(code, index, symbol, value, rule, status, message)
-         integer, intent(in) :: code, index
-         character(len=*), intent(in) :: symbol, rule
-         real(dp), intent(in) :: value
-         integer, intent(out) :: status
-         character(len=MESSAGE_LEN), intent(out) :: message
-         status = code
-         write (message, '(a,i0,a,a,a,es12.5,a,a)') 'PROPS(', index, ') ', symbol, ' = ', value, &
-            ' is out of range: ', rule
-      end subroutine reject
 
    end subroutine params_from_values
+
+   !> Add and validate the fracture-mechanics law's constants; `base` is the PROPS index before
+   !> them (for the messages: D0 is PROPS(base + 1), ...).
+   pure subroutine set_fracture_params(params, d0, rcurve, rcurve_value, gc_i, gc_ii, base, status, message)
+      type(law_params_type), intent(inout) :: params
+      real(dp), intent(in) :: d0             !! initial crack D0 = a0/b (-)
+      integer, intent(in) :: rcurve          !! RCURVE_* (or -1: not a selector)
+      real(dp), intent(in) :: rcurve_value   !! the PROPS value of the selector (for messages)
+      real(dp), intent(in) :: gc_i, gc_ii    !! constant toughnesses (N/mm), 0 unless RCURVE_CONSTANT
+      integer, intent(in) :: base            !! PROPS index before the law's constants
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+
+      status = STATUS_OK
+      if (.not. (finite_above(d0, 0.0_dp) .and. finite_above(1.0_dp, d0))) then
+         call reject(STATUS_BAD_D0, base + LFM_D0, 'D0 = a0/b', d0, &
+            'must lie in (0, 1): the fracture-mechanics law needs an initial crack', status, message)
+         return
+      end if
+      if (rcurve /= RCURVE_CONSTANT .and. rcurve /= RCURVE_EQUIVALENT .and. rcurve /= RCURVE_TABULATED) then
+         call reject(STATUS_BAD_RCURVE, base + LFM_RCURVE, 'R-curve', rcurve_value, &
+            'use 1 (constant G_c), 2 (equivalent to the displacement law) or 3 (tabulated, from a file)', &
+            status, message)
+         return
+      end if
+      if (rcurve == RCURVE_CONSTANT) then
+         if (.not. finite_above(gc_i, 0.0_dp)) then
+            call reject(STATUS_BAD_GC_I, base + LFM_GC_I, 'G_cI', gc_i, 'must be finite and > 0 N/mm', &
+               status, message)
+         else if (.not. finite_above(gc_ii, 0.0_dp)) then
+            call reject(STATUS_BAD_GC_II, base + LFM_GC_II, 'G_cII', gc_ii, 'must be finite and > 0 N/mm', &
+               status, message)
+         end if
+      else
+         if (finite_above(gc_i, 0.0_dp) .or. .not. finite_at_least(gc_i, 0.0_dp)) then
+            call reject(STATUS_BAD_GC_I, base + LFM_GC_I, 'G_cI', gc_i, &
+               'is used by the constant R-curve only: set it to 0', status, message)
+         else if (finite_above(gc_ii, 0.0_dp) .or. .not. finite_at_least(gc_ii, 0.0_dp)) then
+            call reject(STATUS_BAD_GC_II, base + LFM_GC_II, 'G_cII', gc_ii, &
+               'is used by the constant R-curve only: set it to 0', status, message)
+         end if
+      end if
+      if (status /= STATUS_OK) return
+      params%d0 = d0
+      params%rcurve = rcurve
+      params%gc_i = gc_i
+      params%gc_ii = gc_ii
+   end subroutine set_fracture_params
+
+   !> Set a rejection status and its message: PROPS(index) symbol = value is out of range: rule.
+   pure subroutine reject(code, index, symbol, value, rule, status, message)
+      integer, intent(in) :: code, index
+      character(len=*), intent(in) :: symbol, rule
+      real(dp), intent(in) :: value
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+      status = code
+      write (message, '(a,i0,a,a,a,es12.5,a,a)') 'PROPS(', index, ') ', symbol, ' = ', value, &
+         ' is out of range: ', rule
+   end subroutine reject
 
    !> The selector code held by a PROPS value: its integer value when `x` is finite and exactly
    !> integral, else -1 (which no selector uses).

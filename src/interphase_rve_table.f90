@@ -361,13 +361,13 @@ contains
       real(dp), intent(out) :: x(:)                   !! x(n), ascending
       real(dp), intent(out) :: y(:, :)                !! y(n, N_COEFFICIENTS)
       integer :: i, k, n
-      real(dp) :: dx
+      real(dp) :: dx, d2x
       n = size(table%rows, 1)
       do i = 1, n
          k = i                                        ! ascending D: the file's order
          if (table%variable == VARIABLE_LOG_LIGAMENT) k = n + 1 - i   ! ascending w: descending D
          associate (r => table%rows(k, :), h => table%h)
-            call crack_variable(table%variable, r(COL_D), x(i), dx)
+            call crack_variable(table%variable, r(COL_D), x(i), dx, d2x)
             y(i, IC_K_N) = r(COL_C_NN)/h
             y(i, IC_K_T) = r(COL_C_TT)/h
             y(i, IC_KC_N) = r(COL_CC_NN)/h
@@ -383,23 +383,27 @@ contains
       end do
    end subroutine interpolation_data
 
-   !> The interpolation variable x(D) and dx/dD: VARIABLE_DAMAGE x = D; VARIABLE_LOG_LIGAMENT
-   !> x = w = 1/(1 - ln(1 - D)), dw/dD = -w^2/(1 - D) (returned as 0 at D = 1, where it is
-   !> infinite and never used: damage no longer grows there).
-   elemental subroutine crack_variable(variable, d, x, dx_dd)
+   !> The interpolation variable x(D), dx/dD and d2x/dD2: VARIABLE_DAMAGE x = D; VARIABLE_LOG_LIGAMENT
+   !> x = w = 1/(1 - ln(1 - D)), dw/dD = -w^2/(1 - D), d2w/dD2 = (2w^3 - w^2)/(1 - D)^2 (both
+   !> returned as 0 at D = 1, where they are infinite and never used: damage no longer grows).
+   elemental subroutine crack_variable(variable, d, x, dx_dd, d2x_dd2)
       integer, intent(in) :: variable     !! VARIABLE_*
       real(dp), intent(in) :: d           !! damage D = a/b, 0 <= D <= 1
       real(dp), intent(out) :: x          !! the interpolation variable at D
       real(dp), intent(out) :: dx_dd      !! dx/dD
+      real(dp), intent(out) :: d2x_dd2    !! d2x/dD2
       if (variable == VARIABLE_DAMAGE) then
          x = d
          dx_dd = 1.0_dp
+         d2x_dd2 = 0.0_dp
       else if (d >= 1.0_dp) then
          x = 0.0_dp
          dx_dd = 0.0_dp
+         d2x_dd2 = 0.0_dp
       else
          x = 1.0_dp/(1.0_dp - log(1.0_dp - d))
          dx_dd = -x*x/(1.0_dp - d)
+         d2x_dd2 = (2.0_dp*x - 1.0_dp)*x*x/(1.0_dp - d)**2
       end if
    end subroutine crack_variable
 

@@ -361,14 +361,16 @@ contains
       call cubic_eval(spline%x, spline%coef, interval, x, values, derivatives)
    end subroutine spline_eval
 
-   !> `spline_eval` on bare knots and coefficients coef(m, 0:3, n-1) (see the module header).
-   pure subroutine cubic_eval(knots, coef, interval, x, values, derivatives)
+   !> `spline_eval` on bare knots and coefficients coef(m, 0:3, n-1) (see the module header),
+   !> optionally with the second derivatives.
+   pure subroutine cubic_eval(knots, coef, interval, x, values, derivatives, second_derivatives)
       real(dp), intent(in) :: knots(:)          !! knots(n)
       real(dp), intent(in) :: coef(:, 0:, :)    !! coef(j, k, i): t**k coefficient of column j on interval i
       integer, intent(in) :: interval           !! from cubic_locate
       real(dp), intent(in) :: x                 !! argument
       real(dp), intent(out) :: values(:)        !! values(m)
       real(dp), intent(out) :: derivatives(:)   !! derivatives(m)
+      real(dp), intent(out), optional :: second_derivatives(:)   !! second derivatives(m)
 
       real(dp) :: t
       integer :: j
@@ -380,6 +382,11 @@ contains
          derivatives(j) = coef(j, 1, interval) + t*(2.0_dp*coef(j, 2, interval) &
             + 3.0_dp*t*coef(j, 3, interval))
       end do
+      if (present(second_derivatives)) then
+         do j = 1, size(coef, 1)
+            second_derivatives(j) = 2.0_dp*coef(j, 2, interval) + 6.0_dp*t*coef(j, 3, interval)
+         end do
+      end if
    end subroutine cubic_eval
 
    !> The knots x(n) and cubic coefficients coef(m, 0:3, n-1) of a built spline (both empty

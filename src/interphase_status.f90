@@ -24,10 +24,16 @@ module interphase_status
    integer, parameter, public :: STATUS_BAD_NSTATV = 12
    integer, parameter, public :: STATUS_MODEL_UNAVAILABLE = 13
    integer, parameter, public :: STATUS_BAD_TABLE_SELECTOR = 14
+   integer, parameter, public :: STATUS_BAD_D0 = 15
+   integer, parameter, public :: STATUS_BAD_RCURVE = 16
+   integer, parameter, public :: STATUS_BAD_GC_I = 17
+   integer, parameter, public :: STATUS_BAD_GC_II = 18
    ! ---- update failures (the increment may be retried smaller) ----
    integer, parameter, public :: STATUS_NONFINITE_SEPARATION = 20
    integer, parameter, public :: STATUS_BAD_STATE = 21
    integer, parameter, public :: STATUS_BAD_COEFFICIENTS = 22
+   integer, parameter, public :: STATUS_STAGGER_NOT_CONVERGED = 23
+   integer, parameter, public :: STATUS_RCURVE_NOT_LOADED = 24
    ! ---- interpolation tables (interphase_spline): construction, then evaluation ----
    integer, parameter, public :: STATUS_SPLINE_TOO_FEW_POINTS = 40
    integer, parameter, public :: STATUS_SPLINE_BAD_SHAPE = 41
@@ -49,6 +55,11 @@ module interphase_status
    integer, parameter, public :: STATUS_TABLE_BAD_RANGE = 57
    integer, parameter, public :: STATUS_TABLE_IDENTITY = 58
    integer, parameter, public :: STATUS_TABLE_NOT_LOADED = 59
+   ! ---- R-curve files (interphase_rcurve) ----
+   integer, parameter, public :: STATUS_RCURVE_UNREADABLE = 60
+   integer, parameter, public :: STATUS_RCURVE_MALFORMED = 61
+   integer, parameter, public :: STATUS_RCURVE_NEGATIVE = 62
+   integer, parameter, public :: STATUS_RCURVE_BAD_RANGE = 63
 
    !> Severity of a host message: information, warning (the increment is cut back), fatal.
    integer, parameter, public :: SEVERITY_INFO = 1
@@ -78,6 +89,16 @@ contains
       case (STATUS_BAD_NSTATV);            message = 'too few state variables (NSTATV)'
       case (STATUS_MODEL_UNAVAILABLE);     message = 'model not available in this build'
       case (STATUS_BAD_TABLE_SELECTOR);    message = 'unknown RVE table selector'
+      case (STATUS_BAD_D0);                message = 'initial crack D0 = a0/b out of range'
+      case (STATUS_BAD_RCURVE);            message = 'unknown R-curve selector'
+      case (STATUS_BAD_GC_I);              message = 'mode-I toughness G_cI out of range'
+      case (STATUS_BAD_GC_II);             message = 'mode-II toughness G_cII out of range'
+      case (STATUS_STAGGER_NOT_CONVERGED); message = 'staggered damage-friction iteration did not converge'
+      case (STATUS_RCURVE_NOT_LOADED);     message = 'tabulated R-curve selected but none loaded'
+      case (STATUS_RCURVE_UNREADABLE);     message = 'R-curve file cannot be opened or read'
+      case (STATUS_RCURVE_MALFORMED);      message = 'R-curve file line is not "D G_cI G_cII" (three finite numbers)'
+      case (STATUS_RCURVE_NEGATIVE);       message = 'R-curve toughness not positive'
+      case (STATUS_RCURVE_BAD_RANGE);      message = 'R-curve D values not strictly increasing within [0, 1], or too few'
       case (STATUS_NONFINITE_SEPARATION);  message = 'separation is not finite (NaN or Inf)'
       case (STATUS_BAD_STATE);             message = 'state variables out of range or not finite'
       case (STATUS_BAD_COEFFICIENTS);      message = 'coefficient set not admissible at this damage'

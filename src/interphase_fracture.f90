@@ -1,0 +1,212 @@
+!> The fracture-mechanics damage law (paper eqs 20-24, 40-42, 49-50): energy release rates of
+!> the RVE at fixed separation (and fixed slip when the crack is closed), the R-curves, the
+!> growth function g = G_I/G_cI + G_II/G_cII - 1 (eq 24) and the crack-growth solve.
+!>
+!> Conventions (docs/theory.md): energies per unit interface area; G per unit advance of the
+!> half-length a and unit RVE width, as in eq 20: G = -d(U/w)/da = -2 d(psi)/dD with
+!> U/w = 2b psi (V/w = 2b h). G per unit crack area (both tips advance, dA = 2 w da) is G/2.
+!> Open crack (eq 40): G_I = -k_n' s_N^2 (only while s_N > 0), G_II = -k_t' |s_T|^2.
+!> Closed crack: the RVE energy also holds the crack faces' share,
+!>   psi = 1/2 kk_n s_N^2 + 1/2 kk_t |s_T|^2 + C^f lambda.s_T - 1/2 q |lambda|^2,  q = D T^f ufbar,
+!> so G = -2 dpsi/dD = -(kk_n' s_N^2 + kk_t' |s_T|^2) - 2 C^f' lambda.s_T + q' |lambda|^2, all
+!> mode II (s_N <= 0). Eq 49 keeps only the first part of this (from 1/2 Sigma.E); the difference
+!> is the work of the crack-face tractions, without which the energy balance fails
+!> (docs/theory.md).
+module interphase_fracture
+   use interphase_kinds, only: dp
+   use interphase_params, only: law_params_type
+   use interphase_layout, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED
+   use interphase_status, only: STATUS_OK
+   use interphase_coefficients, only: coefficient_set_type
+   use interphase_provider, only: coefficients_at
+   use interphase_rcurve, only: tabulated_rcurve
+   implicit none
+   private
+   public :: crack_load_type, growth_function, grow_crack
+
+   !> What the crack sees at fixed separation: the separation, the slip, open or closed.
+   type :: crack_load_type
+      real(dp) :: s_n = 0.0_dp            !! normal separation (mm)
+      real(dp) :: st(2) = 0.0_dp          !! tangential separation (mm)
+      real(dp) :: slip(2) = 0.0_dp        !! frictional slip lambda (mm), used when closed
+      logical :: closed = .false.         !! crack closed (contact)
+   end type crack_load_type
+
+   !> Geometric scan towards D = 1 before the bracketed solve: points per run.
+   integer, parameter :: N_SCAN = 12
+   !> The scan's last point: 1 - D is reduced by this factor.
+   real(dp), parameter :: SCAN_DEPTH = 1.0e-7_dp
+   !> Root tolerance in D.
+   real(dp), parameter :: ROOT_TOL = 1.0e-15_dp
+
+contains
+
+   !> g(D) of eq 24 at fixed load; with `want_derivatives`, also dg/ds (Abaqus order, normal
+   !> first), dg/dlambda and dg/dD (these need the coefficients' second derivatives).
+   pure subroutine growth_function(params, d, load, ntens, g, status, want_derivatives, g_s, g_lam, g_d)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d
+      type(crack_load_type), intent(in) :: load
+      integer, intent(in) :: ntens
+      real(dp), intent(out) :: g
+      integer, intent(out) :: status
+      logical, intent(in) :: want_derivatives
+      real(dp), intent(out) :: g_s(3), g_lam(2), g_d
+
+      type(coefficient_set_type) :: c, dc, d2c
+      real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
+      real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, p1, p2, q1, q2, lam_s, lam2
+      integer :: nt
+
+      nt = ntens - 1
+      g_s = 0.0_dp
+      g_lam = 0.0_dp
+      g_d = 0.0_dp
+      if (want_derivatives) then
+         call coefficients_at(params, d, c, dc, status, d2c)
+      else
+         call coefficients_at(params, d, c, dc, status)
+         d2c = coefficient_set_type()
+      end if
+      if (status /= STATUS_OK) return
+      t2 = load%st(1)**2 + load%st(2)**2
+
+      if (params%rcurve == RCURVE_EQUIVALENT .and. .not. load%closed) then
+         ! G/G_c with G_c = -k' sigma(D)^2: the provider's k' cancels, g = sum (s/sigma(D))^2 - 1
+         call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
+         call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
+         gi = 0.0_dp
+         if (load%s_n > 0.0_dp) gi = (load%s_n/sig_n)**2
+         gii = t2/sig_t**2
+         g = gi + gii - 1.0_dp
+         if (want_derivatives) then
+            if (load%s_n > 0.0_dp) g_s(1) = 2.0_dp*load%s_n/sig_n**2
+            g_s(2:ntens) = 2.0_dp*load%st(1:nt)/sig_t**2
+            g_d = -2.0_dp*gi*dsig_n/sig_n - 2.0_dp*gii*dsig_t/sig_t
+         end if
+         return
+      end if
+
+      ! energy release rates (eq-20 convention) and their derivatives
+      gi_s = 0.0_dp
+      gii_s = 0.0_dp
+      gii_lam = 0.0_dp
+      gi_d = 0.0_dp
+      if (.not. load%closed) then
+         gi = 0.0_dp
+         if (load%s_n > 0.0_dp) then
+            gi = -dc%k_n*load%s_n**2
+            gi_s(1) = -2.0_dp*dc%k_n*load%s_n
+            gi_d = -d2c%k_n*load%s_n**2
+         end if
+         gii = -dc%k_t*t2
+         gii_s(2:ntens) = -2.0_dp*dc%k_t*load%st(1:nt)
+         gii_d = -d2c%k_t*t2
+      else
+         ! q = D T^f ufbar: q1 = q', q2 = q''
+         p1 = dc%tf*c%ufbar + c%tf*dc%ufbar
+         p2 = d2c%tf*c%ufbar + 2.0_dp*dc%tf*dc%ufbar + c%tf*d2c%ufbar
+         q1 = c%tf*c%ufbar + d*p1
+         q2 = 2.0_dp*p1 + d*p2
+         lam_s = load%slip(1)*load%st(1) + load%slip(2)*load%st(2)
+         lam2 = load%slip(1)**2 + load%slip(2)**2
+         gi = 0.0_dp
+         gii = -((dc%k_n + dc%kc_n)*load%s_n**2 + (dc%k_t + dc%kc_t)*t2) - 2.0_dp*dc%cf_t*lam_s + q1*lam2
+         gii_s(1) = -2.0_dp*(dc%k_n + dc%kc_n)*load%s_n
+         gii_s(2:ntens) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1:nt) - 2.0_dp*dc%cf_t*load%slip(1:nt)
+         gii_lam(1:nt) = -2.0_dp*dc%cf_t*load%st(1:nt) + 2.0_dp*q1*load%slip(1:nt)
+         gii_d = -((d2c%k_n + d2c%kc_n)*load%s_n**2 + (d2c%k_t + d2c%kc_t)*t2) - 2.0_dp*d2c%cf_t*lam_s &
+            + q2*lam2
+      end if
+
+      ! R-curve
+      select case (params%rcurve)
+      case (RCURVE_CONSTANT)
+         gc = [params%gc_i, params%gc_ii]
+         dgc = 0.0_dp
+      case (RCURVE_TABULATED)
+         call tabulated_rcurve(d, gc, dgc, status)
+         if (status /= STATUS_OK) return
+      case default     ! RCURVE_EQUIVALENT, closed crack
+         call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
+         call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
+         gc = [-dc%k_n*sig_n**2, -dc%k_t*sig_t**2]
+         dgc = [-d2c%k_n*sig_n**2 - 2.0_dp*dc%k_n*sig_n*dsig_n, -d2c%k_t*sig_t**2 - 2.0_dp*dc%k_t*sig_t*dsig_t]
+      end select
+
+      g = gi/gc(1) + gii/gc(2) - 1.0_dp
+      if (want_derivatives) then
+         g_s = gi_s/gc(1) + gii_s/gc(2)
+         g_lam = gii_lam/gc(2)
+         g_d = (gi_d*gc(1) - gi*dgc(1))/gc(1)**2 + (gii_d*gc(2) - gii*dgc(2))/gc(2)**2
+      end if
+   end subroutine growth_function
+
+   !> The separation at which the displacement-driven law reaches D in a pure mode,
+   !> sigma(D) = s0/(1 - D(1 - eta)), and its derivative: the R-curve equivalent to that law
+   !> is G_c(D) = -k'(D) sigma(D)^2 (the paper's remark after eq 24).
+   elemental subroutine equivalent_scale(s0, eta, d, sigma, dsigma_dd)
+      real(dp), intent(in) :: s0, eta, d
+      real(dp), intent(out) :: sigma, dsigma_dd
+      sigma = s0/(1.0_dp - d*(1.0_dp - eta))
+      dsigma_dd = (1.0_dp - eta)*sigma*sigma/s0
+   end subroutine equivalent_scale
+
+   !> Crack growth at fixed load from D_from (eqs 41-42): the predictor keeps D_from when
+   !> g(D_from) < 0; otherwise the first root of g in (D_from, 1] is bracketed by a geometric scan
+   !> towards D = 1 and refined by the Illinois (modified regula falsi) method; with no root the
+   !> crack runs to b (D = 1).
+   pure subroutine grow_crack(params, d_from, load, ntens, d_new, status)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d_from
+      type(crack_load_type), intent(in) :: load
+      integer, intent(in) :: ntens
+      real(dp), intent(out) :: d_new
+      integer, intent(out) :: status
+
+      real(dp) :: g_lo, g_hi, d_lo, d_hi, d_mid, g_mid, unused_s(3), unused_lam(2), unused_d
+      integer :: j, iter, side
+
+      d_new = d_from
+      call growth_function(params, d_from, load, ntens, g_lo, status, .false., unused_s, unused_lam, unused_d)
+      if (status /= STATUS_OK .or. g_lo < 0.0_dp .or. d_from >= 1.0_dp) return
+      d_lo = d_from
+      d_hi = 1.0_dp
+      g_hi = 0.0_dp
+      do j = 1, N_SCAN
+         d_hi = 1.0_dp - (1.0_dp - d_from)*SCAN_DEPTH**(real(j, dp)/real(N_SCAN, dp))
+         call growth_function(params, d_hi, load, ntens, g_hi, status, .false., unused_s, unused_lam, unused_d)
+         if (status /= STATUS_OK) return
+         if (g_hi < 0.0_dp) exit
+         d_lo = d_hi
+         g_lo = g_hi
+      end do
+      if (.not. (g_hi < 0.0_dp)) then
+         d_new = 1.0_dp                       ! no arrest: the crack runs to b
+         return
+      end if
+      ! Illinois: g(d_lo) >= 0 > g(d_hi)
+      side = 0
+      d_mid = d_lo
+      do iter = 1, 200
+         d_mid = (d_lo*g_hi - d_hi*g_lo)/(g_hi - g_lo)
+         if (.not. (d_mid > d_lo .and. d_mid < d_hi)) d_mid = 0.5_dp*(d_lo + d_hi)
+         call growth_function(params, d_mid, load, ntens, g_mid, status, .false., unused_s, unused_lam, unused_d)
+         if (status /= STATUS_OK) return
+         if (g_mid >= 0.0_dp) then
+            d_lo = d_mid
+            g_lo = g_mid
+            if (side == -1) g_hi = 0.5_dp*g_hi
+            side = -1
+         else
+            d_hi = d_mid
+            g_hi = g_mid
+            if (side == 1) g_lo = 0.5_dp*g_lo
+            side = 1
+         end if
+         if (d_hi - d_lo <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*d_hi) exit
+      end do
+      d_new = max(d_from, d_lo)
+   end subroutine grow_crack
+
+end module interphase_fracture
