@@ -18,7 +18,8 @@ module interphase_driver_case
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
-      DAMAGE_DISPLACEMENT, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
+      DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, NPROPS_FRACTURE_EXTRA, LFM_D0, LFM_RCURVE, LFM_GC_I, &
+      LFM_GC_II, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE
    use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
    implicit none
@@ -51,6 +52,9 @@ module interphase_driver_case
       !> Custom RVE table of the micromechanical model, resolved against the case file's
       !> directory; empty for the built-in table.
       character(len=:), allocatable :: table_path
+      !> Tabulated R-curve of the fracture-mechanics law, resolved against the case file's
+      !> directory; empty when not used.
+      character(len=:), allocatable :: rcurve_path
    end type case_type
 
 contains
@@ -88,9 +92,12 @@ contains
       type(case_type), intent(inout) :: run      !! receives props
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      character(len=ENTRY_LEN) :: model, damage_law, table
-      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t
-      namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table
+      character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file
+      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii
+      namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
+         rcurve_file, g_ci, g_cii
+      real(dp), allocatable :: extended(:)
+      integer :: nm
       character(len=:), allocatable :: missing, where
       integer :: ios
       character(len=512) :: iomsg
@@ -100,6 +107,12 @@ contains
       model = ''
       damage_law = ''
       table = ''
+      rcurve = ''
+      rcurve_file = ''
+      run%rcurve_path = ''
+      d0 = UNSET_REAL
+      g_ci = UNSET_REAL
+      g_cii = UNSET_REAL
       run%table_path = ''
       mu = UNSET_REAL
       s0_n = UNSET_REAL
@@ -172,9 +185,59 @@ contains
       select case (to_lower(trim(adjustl(damage_law))))
       case ('displacement')
          run%props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+         if (.not. (is_unset(d0) .and. is_unset(g_ci) .and. is_unset(g_cii)) .or. &
+            len_trim(rcurve) > 0 .or. len_trim(rcurve_file) > 0) then
+            message = where//"d0, rcurve, rcurve_file, g_ci and g_cii are entries of "// &
+               "damage_law = 'fracture' only"
+            return
+         end if
+      case ('fracture')
+         run%props(PROP_DAMAGE_LAW) = real(DAMAGE_FRACTURE, dp)
+         if (is_unset(d0)) then
+            message = where//"missing entry d0 (initial crack a0/b, needed by damage_law = 'fracture')"
+            return
+         end if
+         if (.not. finite_entry('d0', d0)) return
+         nm = size(run%props)
+         allocate (extended(nm + NPROPS_FRACTURE_EXTRA))
+         extended(1:nm) = run%props
+         extended(nm + LFM_D0) = d0
+         extended(nm + LFM_GC_I) = 0.0_dp
+         extended(nm + LFM_GC_II) = 0.0_dp
+         select case (to_lower(trim(adjustl(rcurve))))
+         case ('constant')
+            if (is_unset(g_ci) .or. is_unset(g_cii)) then
+               message = where//"rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)"
+               return
+            end if
+            if (.not. finite_entry('g_ci', g_ci)) return
+            if (.not. finite_entry('g_cii', g_cii)) return
+            extended(nm + LFM_RCURVE) = real(RCURVE_CONSTANT, dp)
+            extended(nm + LFM_GC_I) = g_ci
+            extended(nm + LFM_GC_II) = g_cii
+         case ('equivalent')
+            extended(nm + LFM_RCURVE) = real(RCURVE_EQUIVALENT, dp)
+         case ('tabulated')
+            if (len_trim(rcurve_file) == 0) then
+               message = where//"rcurve = 'tabulated' needs the entry rcurve_file"
+               return
+            end if
+            extended(nm + LFM_RCURVE) = real(RCURVE_TABULATED, dp)
+            run%rcurve_path = join_path(directory_of(run%path), trim(adjustl(rcurve_file)))
+         case default
+            message = where//"rcurve must be 'constant', 'equivalent' or 'tabulated', got '"// &
+               trim(adjustl(rcurve))//"'"
+            return
+         end select
+         if (to_lower(trim(adjustl(rcurve))) /= 'constant' .and. &
+            .not. (is_unset(g_ci) .and. is_unset(g_cii))) then
+            message = where//"g_ci and g_cii are entries of rcurve = 'constant' only"
+            return
+         end if
+         call move_alloc(extended, run%props)
       case default
          message = where//"unknown damage_law '"//trim(adjustl(damage_law))// &
-            "' (available: 'displacement')"
+            "' (available: 'displacement', 'fracture')"
          return
       end select
 

@@ -12,6 +12,7 @@ program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_driver_case, only: case_type, read_case
    use interphase_micro_coefficients, only: load_custom_table
+   use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_driver_history, only: history_type, read_history
    use interphase_driver_output, only: csv_header, write_plot_script
@@ -68,6 +69,10 @@ program interphase_point
    if (len(run%table_path) > 0) then
       ! start-up: the custom RVE table is read once, before any update (as UEXTERNALDB does)
       call load_custom_table(run%table_path, status, table_message)
+      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
+   end if
+   if (len(run%rcurve_path) > 0) then
+      call load_rcurve(run%rcurve_path, status, table_message)
       if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
    end if
 

@@ -16,33 +16,38 @@ module interphase_fracture
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
    use interphase_layout, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED
-   use interphase_status, only: STATUS_OK
+   use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
    use interphase_rcurve, only: tabulated_rcurve
+   use interphase_response, only: response_type, respond
    implicit none
    private
    public :: crack_load_type, growth_function, grow_crack
 
-   !> What the crack sees at fixed separation: the separation, the slip, open or closed.
+   !> What the crack sees in the increment: the separation at its end and the slip at its
+   !> start (the friction step at each trial D starts from it).
    type :: crack_load_type
       real(dp) :: s_n = 0.0_dp            !! normal separation (mm)
       real(dp) :: st(2) = 0.0_dp          !! tangential separation (mm)
-      real(dp) :: slip(2) = 0.0_dp        !! frictional slip lambda (mm), used when closed
-      logical :: closed = .false.         !! crack closed (contact)
+      real(dp) :: slip_old(2) = 0.0_dp    !! frictional slip lambda_n at the start (mm)
    end type crack_load_type
 
    !> Geometric scan towards D = 1 before the bracketed solve: points per run.
    integer, parameter :: N_SCAN = 12
    !> The scan's last point: 1 - D is reduced by this factor.
    real(dp), parameter :: SCAN_DEPTH = 1.0e-7_dp
-   !> Root tolerance in D.
+   !> Root tolerance in D and the largest number of Illinois steps.
    real(dp), parameter :: ROOT_TOL = 1.0e-15_dp
+   integer, parameter :: MAX_ROOT_ITERATIONS = 200
 
 contains
 
-   !> g(D) of eq 24 at fixed load; with `want_derivatives`, also dg/ds (Abaqus order, normal
-   !> first), dg/dlambda and dg/dD (these need the coefficients' second derivatives).
+   !> g(D) of eq 24 for the increment's separation: the friction step at D (D frozen) gives the
+   !> slip lambda(D), then the release rates at D with that slip (lambda frozen). With
+   !> `want_derivatives`, also the partial derivatives dg/ds (Abaqus order, normal first),
+   !> dg/dlambda and dg/dD at fixed lambda (these need the coefficients' second derivatives);
+   !> the caller adds the slip's dependence.
    pure subroutine growth_function(params, d, load, ntens, g, status, want_derivatives, g_s, g_lam, g_d)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d
@@ -54,8 +59,11 @@ contains
       real(dp), intent(out) :: g_s(3), g_lam(2), g_d
 
       type(coefficient_set_type) :: c, dc, d2c
+      type(response_type) :: r
+      real(dp) :: slip(2)
+      logical :: closed
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
-      real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, p1, p2, q1, q2, lam_s, lam2
+      real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, p1, p2, q1, q2, lam_s, lam2, kappa, dkappa
       integer :: nt
 
       nt = ntens - 1
@@ -70,8 +78,13 @@ contains
       end if
       if (status /= STATUS_OK) return
       t2 = load%st(1)**2 + load%st(2)**2
+      ! friction with D frozen
+      call respond(params, c, dc, d, load%slip_old, load%s_n, load%st, ntens, r, status)
+      if (status /= STATUS_OK) return
+      closed = r%closed
+      slip = r%slip
 
-      if (params%rcurve == RCURVE_EQUIVALENT .and. .not. load%closed) then
+      if (params%rcurve == RCURVE_EQUIVALENT .and. .not. closed) then
          ! G/G_c with G_c = -k' sigma(D)^2: the provider's k' cancels, g = sum (s/sigma(D))^2 - 1
          call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
          call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
@@ -92,7 +105,7 @@ contains
       gii_s = 0.0_dp
       gii_lam = 0.0_dp
       gi_d = 0.0_dp
-      if (.not. load%closed) then
+      if (.not. closed) then
          gi = 0.0_dp
          if (load%s_n > 0.0_dp) then
             gi = -dc%k_n*load%s_n**2
@@ -108,13 +121,13 @@ contains
          p2 = d2c%tf*c%ufbar + 2.0_dp*dc%tf*dc%ufbar + c%tf*d2c%ufbar
          q1 = c%tf*c%ufbar + d*p1
          q2 = 2.0_dp*p1 + d*p2
-         lam_s = load%slip(1)*load%st(1) + load%slip(2)*load%st(2)
-         lam2 = load%slip(1)**2 + load%slip(2)**2
+         lam_s = slip(1)*load%st(1) + slip(2)*load%st(2)
+         lam2 = slip(1)**2 + slip(2)**2
          gi = 0.0_dp
          gii = -((dc%k_n + dc%kc_n)*load%s_n**2 + (dc%k_t + dc%kc_t)*t2) - 2.0_dp*dc%cf_t*lam_s + q1*lam2
          gii_s(1) = -2.0_dp*(dc%k_n + dc%kc_n)*load%s_n
-         gii_s(2:ntens) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1:nt) - 2.0_dp*dc%cf_t*load%slip(1:nt)
-         gii_lam(1:nt) = -2.0_dp*dc%cf_t*load%st(1:nt) + 2.0_dp*q1*load%slip(1:nt)
+         gii_s(2:ntens) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1:nt) - 2.0_dp*dc%cf_t*slip(1:nt)
+         gii_lam(1:nt) = -2.0_dp*dc%cf_t*load%st(1:nt) + 2.0_dp*q1*slip(1:nt)
          gii_d = -((d2c%k_n + d2c%kc_n)*load%s_n**2 + (d2c%k_t + d2c%kc_t)*t2) - 2.0_dp*d2c%cf_t*lam_s &
             + q2*lam2
       end if
@@ -127,20 +140,47 @@ contains
       case (RCURVE_TABULATED)
          call tabulated_rcurve(d, gc, dgc, status)
          if (status /= STATUS_OK) return
-      case default     ! RCURVE_EQUIVALENT, closed crack
-         call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
+      case default     ! RCURVE_EQUIVALENT, closed crack (mode II only)
+         ! In pure mode II (s_N = 0) the closed crack slips without friction, tau = 0:
+         ! lambda = -(T^c_T/T^f) s_T, and G_II = kappa s_T^2 with
+         ! kappa = -kk_t' + 2 C^f' (T^c_T/T^f) + q' (T^c_T/T^f)^2. The equivalent R-curve of the
+         ! closed crack is therefore G_cII = kappa(D) sigma_T(D)^2 (for the simplified model
+         ! kappa = K_T = -k_t', the open crack's value).
          call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
-         gc = [-dc%k_n*sig_n**2, -dc%k_t*sig_t**2]
-         dgc = [-d2c%k_n*sig_n**2 - 2.0_dp*dc%k_n*sig_n*dsig_n, -d2c%k_t*sig_t**2 - 2.0_dp*dc%k_t*sig_t*dsig_t]
+         call closed_mode_two_stiffness(c, dc, d2c, d, kappa, dkappa)
+         gc = [1.0_dp, kappa*sig_t**2]
+         dgc = [0.0_dp, dkappa*sig_t**2 + 2.0_dp*kappa*sig_t*dsig_t]
       end select
 
-      g = gi/gc(1) + gii/gc(2) - 1.0_dp
+      ! gi = 0 when the crack is closed or s_N <= 0 (no mode-I term then)
+      g = gii/gc(2) - 1.0_dp
+      if (abs(gi) > 0.0_dp) g = g + gi/gc(1)
       if (want_derivatives) then
-         g_s = gi_s/gc(1) + gii_s/gc(2)
+         g_s = gii_s/gc(2)
          g_lam = gii_lam/gc(2)
-         g_d = (gi_d*gc(1) - gi*dgc(1))/gc(1)**2 + (gii_d*gc(2) - gii*dgc(2))/gc(2)**2
+         g_d = (gii_d*gc(2) - gii*dgc(2))/gc(2)**2
+         if (abs(gi) > 0.0_dp) then
+            g_s = g_s + gi_s/gc(1)
+            g_d = g_d + (gi_d*gc(1) - gi*dgc(1))/gc(1)**2
+         end if
       end if
    end subroutine growth_function
+
+   !> kappa(D) of the closed crack in pure mode II (see growth_function) and d kappa/dD.
+   pure subroutine closed_mode_two_stiffness(c, dc, d2c, d, kappa, dkappa)
+      type(coefficient_set_type), intent(in) :: c, dc, d2c
+      real(dp), intent(in) :: d
+      real(dp), intent(out) :: kappa, dkappa
+      real(dp) :: r, dr, p1, p2, q1, q2
+      r = c%tc_t/c%tf
+      dr = dc%tc_t/c%tf - c%tc_t*dc%tf/c%tf**2
+      p1 = dc%tf*c%ufbar + c%tf*dc%ufbar
+      p2 = d2c%tf*c%ufbar + 2.0_dp*dc%tf*dc%ufbar + c%tf*d2c%ufbar
+      q1 = c%tf*c%ufbar + d*p1
+      q2 = 2.0_dp*p1 + d*p2
+      kappa = -(dc%k_t + dc%kc_t) + 2.0_dp*dc%cf_t*r + q1*r*r
+      dkappa = -(d2c%k_t + d2c%kc_t) + 2.0_dp*(d2c%cf_t*r + dc%cf_t*dr) + q2*r*r + 2.0_dp*q1*r*dr
+   end subroutine closed_mode_two_stiffness
 
    !> The separation at which the displacement-driven law reaches D in a pure mode,
    !> sigma(D) = s0/(1 - D(1 - eta)), and its derivative: the R-curve equivalent to that law
@@ -152,10 +192,13 @@ contains
       dsigma_dd = (1.0_dp - eta)*sigma*sigma/s0
    end subroutine equivalent_scale
 
-   !> Crack growth at fixed load from D_from (eqs 41-42): the predictor keeps D_from when
+   !> Crack growth in the increment from D_from (eqs 41-42, 50): the predictor keeps D_from when
    !> g(D_from) < 0; otherwise the first root of g in (D_from, 1] is bracketed by a geometric scan
    !> towards D = 1 and refined by the Illinois (modified regula falsi) method; with no root the
-   !> crack runs to b (D = 1).
+   !> crack runs to b (D = 1). For a closed crack every evaluation of g alternates the two
+   !> sub-problems of the paper's staggered scheme (friction with D frozen, damage with lambda
+   !> frozen), so the root is the staggered scheme's fixed point; a bracket that does not shrink
+   !> to ROOT_TOL in MAX_ROOT_ITERATIONS is STATUS_STAGGER_NOT_CONVERGED.
    pure subroutine grow_crack(params, d_from, load, ntens, d_new, status)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d_from
@@ -188,7 +231,7 @@ contains
       ! Illinois: g(d_lo) >= 0 > g(d_hi)
       side = 0
       d_mid = d_lo
-      do iter = 1, 200
+      do iter = 1, MAX_ROOT_ITERATIONS
          d_mid = (d_lo*g_hi - d_hi*g_lo)/(g_hi - g_lo)
          if (.not. (d_mid > d_lo .and. d_mid < d_hi)) d_mid = 0.5_dp*(d_lo + d_hi)
          call growth_function(params, d_mid, load, ntens, g_mid, status, .false., unused_s, unused_lam, unused_d)
@@ -205,6 +248,10 @@ contains
             side = 1
          end if
          if (d_hi - d_lo <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*d_hi) exit
+         if (iter == MAX_ROOT_ITERATIONS) then
+            status = STATUS_STAGGER_NOT_CONVERGED
+            return
+         end if
       end do
       d_new = max(d_from, d_lo)
    end subroutine grow_crack

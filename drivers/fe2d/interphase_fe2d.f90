@@ -1,0 +1,182 @@
+!> `interphase-fe2d`: a small 2-D finite-element host of the interphase UMAT running the
+!> masonry shear test (brick couplet or triplet: precompression, then monotonic or cyclic
+!> shear).
+!>
+!>     interphase-fe2d CASE.nml [--output-dir DIR] [--no-plot]
+!>
+!> Bricks are linear elastic plane-strain Q4 elements; the mortar joints are zero-thickness
+!> 4-node interface elements whose integration points call `umat` as Abaqus/Standard would.
+!> Writes the load-displacement table (CSV), the Newton iteration log (.log) and, when gnuplot
+!> is on PATH and plotting is not disabled, a PNG of shear force against shear displacement.
+!> Every error is printed to standard error and ends the program with exit status 1.
+program interphase_fe2d
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use interphase_layout, only: PROP_MU
+   use interphase_micro_coefficients, only: load_custom_table
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
+   use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
+   use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
+   use interphase_fe2d_solver, only: fe2d_options_type, fe2d_result_type, run_analysis, &
+      CSV_COLUMNS, COL_SHEAR, COL_NORMAL, COL_STEP
+   use interphase_fe2d_output, only: write_curve_csv, write_curve_plot_script
+   use interphase_driver_text, only: int_to_string, real_to_string, directory_of, base_name, &
+      stem_of, join_path, shell_quote
+   implicit none
+
+   character(len=:), allocatable :: case_path, output_dir, csv_path, log_path, message, argument
+   type(fe2d_case_type) :: run
+   type(fe2d_mesh_type) :: mesh
+   type(fe2d_options_type) :: options
+   type(fe2d_result_type) :: result
+   logical :: no_plot, ok
+   integer :: i, nargs, ios, status, peak
+   character(len=512) :: iomsg
+   character(len=MESSAGE_LEN) :: table_message
+
+   no_plot = .false.
+   output_dir = ''
+   case_path = ''
+   nargs = command_argument_count()
+   i = 0
+   do while (i < nargs)
+      i = i + 1
+      call get_argument(i, argument)
+      select case (argument)
+      case ('-h', '--help')
+         call print_usage(output_unit)
+         stop
+      case ('--no-plot')
+         no_plot = .true.
+      case ('--output-dir')
+         if (i == nargs) call fail('--output-dir needs a directory', usage=.true.)
+         i = i + 1
+         call get_argument(i, output_dir)
+         if (len(output_dir) == 0) call fail('--output-dir needs a non-empty directory', usage=.true.)
+      case default
+         if (len(argument) > 0) then
+            if (argument(1:1) == '-') call fail('unknown option '//argument, usage=.true.)
+         end if
+         if (len(case_path) > 0) call fail('only one case file may be given (got '//case_path// &
+            ' and '//argument//')', usage=.true.)
+         case_path = argument
+      end select
+   end do
+   if (len(case_path) == 0) call fail('no case file given', usage=.true.)
+
+   call read_fe2d_case(case_path, run, ok, message)
+   if (.not. ok) call fail(message)
+   if (len(run%table_path) > 0) then
+      ! start-up: the custom RVE table is read once, before any update (as UEXTERNALDB does)
+      call load_custom_table(run%table_path, status, table_message)
+      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
+   end if
+   call build_mesh(run, mesh)
+
+   csv_path = join_path(output_dir, run%output)
+   call make_directory(directory_of(csv_path))
+   log_path = join_path(directory_of(csv_path), stem_of(csv_path)//'.log')
+   open (newunit=options%log_unit, file=log_path, status='replace', action='write', &
+      iostat=ios, iomsg=iomsg)
+   if (ios /= 0) call fail(log_path//': cannot write the log: '//trim(iomsg))
+   options%log = .true.
+   write (options%log_unit, '(a)') 'interphase-fe2d '//case_path//': '// &
+      int_to_string(run%bricks)//' bricks, '//int_to_string(run%nx)//' x '// &
+      int_to_string(run%ny)//' elements per brick, '//int_to_string(mesh%nfree)// &
+      ' free equations, half bandwidth '//int_to_string(mesh%bandwidth)
+   write (options%log_unit, '(a)') 'residual = ||R_free|| / max(||F_ext||, |shear reaction|); '// &
+      'correction = ||du|| / ||u_free||'
+   call run_analysis(run, mesh, options, result)
+   close (options%log_unit)
+
+   call write_curve_csv(csv_path, CSV_COLUMNS, result%rows(:, 1:result%nrows), ok, message)
+   if (.not. ok) call fail(message)
+   if (.not. result%ok) call fail(run%path//': '//result%message//' (the CSV '//csv_path// &
+      ' holds the converged increments; see '//log_path//')')
+   peak = maxloc(abs(result%rows(COL_SHEAR, 1:result%nrows)), 1)
+   write (output_unit, '(a)') run%name//': '//int_to_string(result%nrows)//' rows written to '// &
+      csv_path//' ('//int_to_string(result%nincrements)//' increments, '// &
+      int_to_string(result%iterations)//' iterations, '//int_to_string(result%cutbacks)// &
+      ' cut-backs; log '//log_path//')'
+   write (output_unit, '(a)') run%name//': peak |shear force| '// &
+      real_to_string(abs(result%rows(COL_SHEAR, peak)))//' N; final shear force '// &
+      real_to_string(result%rows(COL_SHEAR, result%nrows))//' N at normal force '// &
+      real_to_string(result%rows(COL_NORMAL, result%nrows))//' N (step '// &
+      int_to_string(nint(result%rows(COL_STEP, result%nrows)))//')'
+   if (run%plot .and. .not. no_plot) call plot_csv()
+
+contains
+
+   subroutine fail(text, usage)
+      character(len=*), intent(in) :: text        !! what went wrong
+      logical, intent(in), optional :: usage      !! also print the usage line
+
+      write (error_unit, '(a)') 'interphase-fe2d: error: '//text
+      if (present(usage)) then
+         if (usage) call print_usage(error_unit)
+      end if
+      stop 1
+   end subroutine fail
+
+   subroutine print_usage(unit)
+      integer, intent(in) :: unit                 !! where to print
+
+      write (unit, '(a)') 'usage: interphase-fe2d CASE.nml [--output-dir DIR] [--no-plot]', &
+         '  Runs the masonry shear test of CASE.nml (bricks: plane-strain Q4; joints: interface', &
+         '  elements calling the interphase UMAT) and writes the load-displacement CSV, the', &
+         '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).'
+   end subroutine print_usage
+
+   subroutine get_argument(n, value)
+      integer, intent(in) :: n                    !! argument number
+      character(len=:), allocatable, intent(out) :: value  !! its text
+      integer :: length
+
+      call get_command_argument(n, length=length)
+      allocate (character(len=length) :: value)
+      if (length > 0) call get_command_argument(n, value)
+   end subroutine get_argument
+
+   subroutine make_directory(directory)
+      character(len=*), intent(in) :: directory   !! may be '' (current directory)
+      integer :: exitstat, cmdstat
+      character(len=256) :: cmdmsg
+
+      if (len(directory) == 0) return
+      exitstat = 0
+      cmdmsg = ''
+      call execute_command_line('mkdir -p '//shell_quote(directory), exitstat=exitstat, &
+         cmdstat=cmdstat, cmdmsg=cmdmsg)
+      if (cmdstat /= 0) call fail('cannot run mkdir -p '//directory//': '//trim(cmdmsg))
+      if (exitstat /= 0) call fail('mkdir -p '//directory//' failed (exit status '// &
+         int_to_string(exitstat)//')')
+   end subroutine make_directory
+
+   subroutine plot_csv()
+      character(len=:), allocatable :: directory, stem, script_name
+      integer :: exitstat, cmdstat
+      character(len=256) :: cmdmsg
+
+      exitstat = 1
+      cmdmsg = ''
+      call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=exitstat, &
+         cmdstat=cmdstat, cmdmsg=cmdmsg)
+      if (cmdstat /= 0 .or. exitstat /= 0) then
+         write (output_unit, '(a)') 'gnuplot not found: PNG skipped (install Debian package gnuplot-nox)'
+         return
+      end if
+      directory = directory_of(csv_path)
+      stem = stem_of(csv_path)
+      script_name = stem//'.gp'
+      call write_curve_plot_script(join_path(directory, script_name), base_name(csv_path), &
+         stem//'.png', run%name, run%props(PROP_MU), ok, message)
+      if (.not. ok) call fail(message)
+      if (len(directory) == 0) directory = '.'
+      call execute_command_line('cd '//shell_quote(directory)//' && gnuplot '// &
+         shell_quote(script_name), exitstat=exitstat, cmdstat=cmdstat, cmdmsg=cmdmsg)
+      if (cmdstat /= 0) call fail('cannot run gnuplot: '//trim(cmdmsg))
+      if (exitstat /= 0) call fail('gnuplot failed on '//join_path(directory, script_name)// &
+         ' (exit status '//int_to_string(exitstat)//')')
+      write (output_unit, '(a)') run%name//': plot written to '//join_path(directory, stem//'.png')
+   end subroutine plot_csv
+
+end program interphase_fe2d

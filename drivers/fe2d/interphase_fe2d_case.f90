@@ -1,0 +1,548 @@
+!> Case files of the structural host `interphase-fe2d`: the namelist groups `&geometry`,
+!> `&mesh`, `&brick`, `&joint` and `&loading` (drivers/fe2d/README.md lists every entry).
+!> The interface material of `&joint` is packed into the UMAT's PROPS exactly as
+!> docs/abaqus.md documents; its ranges are checked by `umat` itself. Nothing is stopped here:
+!> errors come back as a message naming the case file and the group.
+module interphase_fe2d_case
+   use, intrinsic :: iso_fortran_env, only: iostat_end
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use interphase_kinds, only: dp
+   use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
+      PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
+      DAMAGE_DISPLACEMENT, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
+      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE
+   use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
+      stem_of, join_path, read_line, split_words
+   implicit none
+   private
+   public :: fe2d_case_type, read_fe2d_case, read_shear_history, SIDES_FREE, SIDES_PERIODIC, &
+      INTEGRATION_LOBATTO, INTEGRATION_GAUSS
+
+   integer, parameter :: ENTRY_LEN = 1024
+   real(dp), parameter :: UNSET_REAL = -huge(1.0_dp)
+   !> Lateral faces of the bricks: traction-free (the laboratory test).
+   integer, parameter :: SIDES_FREE = 1
+   !> Lateral faces tied periodically (left and right node at the same height share their
+   !> displacements): uniform states are then exact solutions (patch checks).
+   integer, parameter :: SIDES_PERIODIC = 2
+   !> Interface-element integration at the nodes (2-point Lobatto / Newton-Cotes).
+   integer, parameter :: INTEGRATION_LOBATTO = 1
+   !> Interface-element integration at the 2 Gauss points.
+   integer, parameter :: INTEGRATION_GAUSS = 2
+
+   !> Everything one analysis needs.
+   type :: fe2d_case_type
+      character(len=:), allocatable :: path            !! case file
+      character(len=:), allocatable :: name            !! case file stem
+      ! &geometry
+      integer :: bricks = 2                            !! 2 (couplet) or 3 (triplet)
+      real(dp) :: brick_length = 200.0_dp              !! L (mm), along the joint (x)
+      real(dp) :: brick_height = 50.0_dp               !! H (mm), across the joint (y)
+      real(dp) :: thickness = 100.0_dp                 !! out-of-plane thickness (mm)
+      integer :: sides = SIDES_FREE                    !! SIDES_FREE or SIDES_PERIODIC
+      ! &mesh
+      integer :: nx = 8                                !! elements per brick along x
+      integer :: ny = 2                                !! elements per brick along y
+      integer :: integration = INTEGRATION_LOBATTO     !! interface-element rule
+      ! &brick
+      real(dp) :: young = 16000.0_dp                   !! E_b (MPa)
+      real(dp) :: poisson = 0.15_dp                    !! nu_b (-)
+      ! &joint
+      real(dp), allocatable :: props(:)                !! UMAT PROPS (docs/abaqus.md)
+      character(len=:), allocatable :: table_path      !! custom RVE table or ''
+      ! &loading
+      real(dp) :: precompression = 0.0_dp              !! normal pressure on the top face (MPa)
+      integer :: precompression_increments = 1         !! increments of the precompression step
+      character(len=:), allocatable :: history_path    !! t / u_shear table
+      real(dp), allocatable :: history_t(:)            !! history times
+      real(dp), allocatable :: history_u(:)            !! prescribed shear displacement (mm)
+      integer :: increments = 10                       !! nominal increments per history segment
+      real(dp) :: tolerance = 1.0e-8_dp                !! relative residual norm
+      real(dp) :: displacement_tolerance = 1.0e-6_dp   !! relative correction norm
+      integer :: max_iterations = 15                   !! Newton iterations before a cut-back
+      real(dp) :: min_increment = 1.0e-6_dp            !! smallest increment / nominal one
+      character(len=:), allocatable :: output          !! CSV path (relative to --output-dir)
+      logical :: plot = .true.                         !! PNG wanted
+   end type fe2d_case_type
+
+contains
+
+   !> Read and check a case file and its shear history.
+   subroutine read_fe2d_case(path, run, ok, message)
+      character(len=*), intent(in) :: path        !! case file
+      type(fe2d_case_type), intent(out) :: run    !! the case, valid when ok
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      integer :: unit, ios
+      character(len=512) :: iomsg
+
+      ok = .false.
+      run%path = path
+      run%name = stem_of(path)
+      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
+         iostat=ios, iomsg=iomsg)
+      if (ios /= 0) then
+         message = path//': cannot open the case file: '//trim(iomsg)
+         return
+      end if
+      call read_geometry(unit, run, ok, message)
+      if (ok) call read_mesh(unit, run, ok, message)
+      if (ok) call read_brick(unit, run, ok, message)
+      if (ok) call read_joint(unit, run, ok, message)
+      if (ok) call read_loading(unit, run, ok, message)
+      close (unit)
+      if (ok) call read_shear_history(run%history_path, run%history_t, run%history_u, ok, message)
+   end subroutine read_fe2d_case
+
+   subroutine read_geometry(unit, run, ok, message)
+      integer, intent(in) :: unit                 !! open case file
+      type(fe2d_case_type), intent(inout) :: run  !! receives the geometry
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      integer :: bricks
+      real(dp) :: brick_length, brick_height, thickness
+      character(len=ENTRY_LEN) :: sides
+      namelist /geometry/ bricks, brick_length, brick_height, thickness, sides
+      character(len=:), allocatable :: where
+
+      where = run%path//': &geometry: '
+      bricks = run%bricks
+      brick_length = run%brick_length
+      brick_height = run%brick_height
+      thickness = run%thickness
+      sides = 'free'
+      call read_group(unit, 'geometry', ok, message)
+      if (.not. ok) return
+      ok = .false.
+      if (bricks /= 2 .and. bricks /= 3) then
+         message = where//'bricks must be 2 (couplet) or 3 (triplet), got '//int_to_string(bricks)
+         return
+      end if
+      if (.not. positive(brick_length, 'brick_length')) return
+      if (.not. positive(brick_height, 'brick_height')) return
+      if (.not. positive(thickness, 'thickness')) return
+      select case (to_lower(trim(adjustl(sides))))
+      case ('free')
+         run%sides = SIDES_FREE
+      case ('periodic')
+         run%sides = SIDES_PERIODIC
+      case default
+         message = where//"unknown sides '"//trim(adjustl(sides))//"' (available: 'free', 'periodic')"
+         return
+      end select
+      run%bricks = bricks
+      run%brick_length = brick_length
+      run%brick_height = brick_height
+      run%thickness = thickness
+      ok = .true.
+   contains
+      subroutine read_group(unit, group, ok, message)
+         integer, intent(in) :: unit
+         character(len=*), intent(in) :: group
+         logical, intent(out) :: ok
+         character(len=:), allocatable, intent(out) :: message
+         integer :: ios
+         character(len=512) :: iomsg
+         rewind (unit)
+         read (unit, nml=geometry, iostat=ios, iomsg=iomsg)
+         call group_status(run%path, group, ios, iomsg, ok, message)
+      end subroutine read_group
+      logical function positive(value, name)
+         real(dp), intent(in) :: value
+         character(len=*), intent(in) :: name
+         positive = check_positive(where, name, value, message)
+      end function positive
+   end subroutine read_geometry
+
+   subroutine read_mesh(unit, run, ok, message)
+      integer, intent(in) :: unit                 !! open case file
+      type(fe2d_case_type), intent(inout) :: run  !! receives the mesh density
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      integer :: nx, ny, ios
+      character(len=ENTRY_LEN) :: integration
+      character(len=512) :: iomsg
+      namelist /mesh/ nx, ny, integration
+      character(len=:), allocatable :: where
+
+      where = run%path//': &mesh: '
+      nx = run%nx
+      ny = run%ny
+      integration = 'lobatto'
+      rewind (unit)
+      read (unit, nml=mesh, iostat=ios, iomsg=iomsg)
+      call group_status(run%path, 'mesh', ios, iomsg, ok, message)
+      if (.not. ok) return
+      ok = .false.
+      if (nx < 1 .or. ny < 1) then
+         message = where//'nx and ny must be at least 1, got nx = '//int_to_string(nx)// &
+            ', ny = '//int_to_string(ny)
+         return
+      end if
+      if (nx > 400 .or. ny > 200) then
+         message = where//'nx <= 400 and ny <= 200 (dense enough for this host), got nx = '// &
+            int_to_string(nx)//', ny = '//int_to_string(ny)
+         return
+      end if
+      select case (to_lower(trim(adjustl(integration))))
+      case ('lobatto', 'newton-cotes')
+         run%integration = INTEGRATION_LOBATTO
+      case ('gauss')
+         run%integration = INTEGRATION_GAUSS
+      case default
+         message = where//"unknown integration '"//trim(adjustl(integration))// &
+            "' (available: 'lobatto', 'gauss')"
+         return
+      end select
+      run%nx = nx
+      run%ny = ny
+      ok = .true.
+   end subroutine read_mesh
+
+   subroutine read_brick(unit, run, ok, message)
+      integer, intent(in) :: unit                 !! open case file
+      type(fe2d_case_type), intent(inout) :: run  !! receives E and nu
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      real(dp) :: e, nu
+      integer :: ios
+      character(len=512) :: iomsg
+      namelist /brick/ e, nu
+      character(len=:), allocatable :: where
+
+      where = run%path//': &brick: '
+      e = run%young
+      nu = run%poisson
+      rewind (unit)
+      read (unit, nml=brick, iostat=ios, iomsg=iomsg)
+      call group_status(run%path, 'brick', ios, iomsg, ok, message)
+      if (.not. ok) return
+      ok = check_positive(where, 'e', e, message)
+      if (.not. ok) return
+      ok = .false.
+      if (.not. ieee_is_finite(nu)) then
+         message = where//'nu must be finite'
+         return
+      end if
+      if (.not. (nu > -1.0_dp .and. nu < 0.5_dp)) then
+         message = where//'nu must be in (-1, 0.5), got '//real_to_string(nu)
+         return
+      end if
+      run%young = e
+      run%poisson = nu
+      ok = .true.
+   end subroutine read_brick
+
+   !> `&joint`: the interface material, as the `&material` group of interphase-point.
+   subroutine read_joint(unit, run, ok, message)
+      integer, intent(in) :: unit                 !! open case file
+      type(fe2d_case_type), intent(inout) :: run  !! receives props
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      character(len=ENTRY_LEN) :: model, damage_law, table
+      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t
+      namelist /joint/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table
+      character(len=:), allocatable :: missing, where
+      integer :: ios
+      character(len=512) :: iomsg
+
+      where = run%path//': &joint: '
+      model = ''
+      damage_law = 'displacement'
+      table = ''
+      run%table_path = ''
+      mu = UNSET_REAL
+      s0_n = UNSET_REAL
+      sf_n = UNSET_REAL
+      s0_t = UNSET_REAL
+      sf_t = UNSET_REAL
+      k_n = UNSET_REAL
+      k_t = UNSET_REAL
+      rewind (unit)
+      read (unit, nml=joint, iostat=ios, iomsg=iomsg)
+      call group_status(run%path, 'joint', ios, iomsg, ok, message)
+      if (.not. ok) return
+      ok = .false.
+      missing = ''
+      if (len_trim(model) == 0) call add_name('model')
+      if (is_unset(mu)) call add_name('mu')
+      if (is_unset(s0_n)) call add_name('s0_n')
+      if (is_unset(sf_n)) call add_name('sf_n')
+      if (is_unset(s0_t)) call add_name('s0_t')
+      if (is_unset(sf_t)) call add_name('sf_t')
+      if (to_lower(trim(adjustl(model))) == 'simplified') then
+         if (is_unset(k_n)) call add_name('k_n')
+         if (is_unset(k_t)) call add_name('k_t')
+      end if
+      if (len(missing) > 0) then
+         if (index(missing, ',') > 0) then
+            message = where//'missing entries '//missing
+         else
+            message = where//'missing entry '//missing
+         end if
+         return
+      end if
+      select case (to_lower(trim(adjustl(model))))
+      case ('simplified')
+         if (len_trim(table) > 0) then
+            message = where//"table is an entry of model = 'micromechanical' only"
+            return
+         end if
+         allocate (run%props(NPROPS_SIMPLIFIED))
+         run%props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
+         run%props(PROP_K_N) = k_n
+         run%props(PROP_K_T) = k_t
+      case ('micromechanical')
+         if (.not. (is_unset(k_n) .and. is_unset(k_t))) then
+            message = where//"k_n and k_t are entries of model = 'simplified' only (the "// &
+               "micromechanical model takes its stiffness from the RVE table)"
+            return
+         end if
+         allocate (run%props(NPROPS_MICROMECHANICAL))
+         run%props(PROP_MODEL) = real(MODEL_MICROMECHANICAL, dp)
+         if (len_trim(table) == 0) then
+            run%props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
+         else
+            run%props(PROP_TABLE) = real(TABLE_CUSTOM_CODE, dp)
+            run%table_path = join_path(directory_of(run%path), trim(adjustl(table)))
+         end if
+      case default
+         message = where//"unknown model '"//trim(adjustl(model))// &
+            "' (available: 'simplified', 'micromechanical')"
+         return
+      end select
+      select case (to_lower(trim(adjustl(damage_law))))
+      case ('displacement')
+         run%props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+      case default
+         message = where//"unknown damage_law '"//trim(adjustl(damage_law))// &
+            "' (available: 'displacement')"
+         return
+      end select
+      run%props(PROP_MU) = mu
+      run%props(PROP_S0_N) = s0_n
+      run%props(PROP_SF_N) = sf_n
+      run%props(PROP_S0_T) = s0_t
+      run%props(PROP_SF_T) = sf_t
+      ok = .true.
+   contains
+      subroutine add_name(name)
+         character(len=*), intent(in) :: name
+         if (len(missing) > 0) missing = missing//', '
+         missing = missing//name
+      end subroutine add_name
+   end subroutine read_joint
+
+   subroutine read_loading(unit, run, ok, message)
+      integer, intent(in) :: unit                 !! open case file
+      type(fe2d_case_type), intent(inout) :: run  !! receives the loading and solver controls
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      real(dp) :: precompression, tolerance, displacement_tolerance, min_increment
+      integer :: precompression_increments, increments, max_iterations, ios
+      character(len=ENTRY_LEN) :: history, output
+      logical :: plot
+      character(len=512) :: iomsg
+      namelist /loading/ precompression, precompression_increments, history, increments, &
+         tolerance, displacement_tolerance, max_iterations, min_increment, output, plot
+      character(len=:), allocatable :: where
+
+      where = run%path//': &loading: '
+      precompression = run%precompression
+      precompression_increments = run%precompression_increments
+      history = ''
+      output = ''
+      increments = run%increments
+      tolerance = run%tolerance
+      displacement_tolerance = run%displacement_tolerance
+      max_iterations = run%max_iterations
+      min_increment = run%min_increment
+      plot = run%plot
+      rewind (unit)
+      read (unit, nml=loading, iostat=ios, iomsg=iomsg)
+      call group_status(run%path, 'loading', ios, iomsg, ok, message)
+      if (.not. ok) return
+      ok = .false.
+      if (len_trim(history) == 0) then
+         message = where//'missing entry history'
+         return
+      end if
+      if (.not. ieee_is_finite(precompression)) then
+         message = where//'precompression must be finite'
+         return
+      end if
+      if (precompression < 0.0_dp) then
+         message = where//'precompression is a compressive pressure and must be >= 0, got '// &
+            real_to_string(precompression)
+         return
+      end if
+      if (precompression_increments < 1) then
+         message = where//'precompression_increments must be at least 1, got '// &
+            int_to_string(precompression_increments)
+         return
+      end if
+      if (increments < 1) then
+         message = where//'increments must be at least 1, got '//int_to_string(increments)
+         return
+      end if
+      if (max_iterations < 1 .or. max_iterations > 50) then
+         message = where//'max_iterations must be in 1..50, got '//int_to_string(max_iterations)
+         return
+      end if
+      if (.not. check_positive(where, 'tolerance', tolerance, message)) return
+      if (.not. check_positive(where, 'displacement_tolerance', displacement_tolerance, message)) return
+      if (.not. check_positive(where, 'min_increment', min_increment, message)) return
+      if (min_increment > 1.0_dp) then
+         message = where//'min_increment is a fraction of the nominal increment and must be <= 1'
+         return
+      end if
+      run%precompression = precompression
+      run%precompression_increments = precompression_increments
+      run%history_path = join_path(directory_of(run%path), trim(adjustl(history)))
+      run%increments = increments
+      run%tolerance = tolerance
+      run%displacement_tolerance = displacement_tolerance
+      run%max_iterations = max_iterations
+      run%min_increment = min_increment
+      if (len_trim(output) == 0) then
+         run%output = run%name//'.csv'
+      else
+         run%output = trim(adjustl(output))
+      end if
+      run%plot = plot
+      ok = .true.
+   end subroutine read_loading
+
+   !> True when a real namelist entry kept its UNSET_REAL marker (NaN-safe, no real equality).
+   pure logical function is_unset(value)
+      real(dp), intent(in) :: value               !! the entry after the namelist read
+
+      if (ieee_is_nan(value)) then
+         is_unset = .false.
+      else
+         is_unset = value <= UNSET_REAL
+      end if
+   end function is_unset
+
+   !> Turn the iostat of a namelist read into ok/message. A missing group is an error.
+   subroutine group_status(path, group, ios, iomsg, ok, message)
+      character(len=*), intent(in) :: path, group, iomsg
+      integer, intent(in) :: ios
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+
+      ok = .false.
+      if (ios == iostat_end) then
+         message = path//': &'//group//': group not found (expected "&'//group//' ... /")'
+      else if (ios /= 0) then
+         message = path//': &'//group//': cannot read the group: '//trim(iomsg)
+      else
+         ok = .true.
+      end if
+   end subroutine group_status
+
+   !> True when value is finite and > 0; else false with a message.
+   logical function check_positive(where, name, value, message)
+      character(len=*), intent(in) :: where, name
+      real(dp), intent(in) :: value
+      character(len=:), allocatable, intent(inout) :: message
+
+      check_positive = .false.
+      if (.not. ieee_is_finite(value)) then
+         message = where//name//' must be finite'
+      else if (.not. (value > 0.0_dp)) then
+         message = where//name//' must be > 0, got '//real_to_string(value)
+      else
+         check_positive = .true.
+      end if
+   end function check_positive
+
+   !> Read a shear history: two columns `t u_shear` (mm), `#` comments and blank lines allowed,
+   !> time strictly increasing, at least two rows, first u_shear 0 (the precompression step
+   !> ends at u = 0). Errors name the file and line.
+   subroutine read_shear_history(path, t, u, ok, message)
+      character(len=*), intent(in) :: path        !! history file
+      real(dp), allocatable, intent(out) :: t(:)  !! times
+      real(dp), allocatable, intent(out) :: u(:)  !! shear displacements (mm)
+      logical, intent(out) :: ok                  !! true on success
+      character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      character(len=:), allocatable :: line
+      integer, allocatable :: starts(:), ends(:)
+      integer :: unit, ios, line_number, n, k
+      character(len=512) :: iomsg
+      real(dp) :: values(2)
+      real(dp), allocatable :: grow(:)
+
+      ok = .false.
+      allocate (t(0), u(0))
+      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
+         iostat=ios, iomsg=iomsg)
+      if (ios /= 0) then
+         message = path//': cannot open the shear history: '//trim(iomsg)
+         return
+      end if
+      line_number = 0
+      n = 0
+      do
+         call read_line(unit, line, ios, iomsg)
+         if (ios == iostat_end) exit
+         if (ios /= 0) then
+            message = path//': read error: '//trim(iomsg)
+            close (unit)
+            return
+         end if
+         line_number = line_number + 1
+         k = index(line, '#')
+         if (k > 0) line = line(1:k - 1)
+         call split_words(line, starts, ends)
+         if (size(starts) == 0) cycle
+         if (size(starts) /= 2) then
+            message = path//':'//int_to_string(line_number)//': found '// &
+               int_to_string(size(starts))//' columns; expected 2 (t u_shear)'
+            close (unit)
+            return
+         end if
+         do k = 1, 2
+            read (line(starts(k):ends(k)), *, iostat=ios) values(k)
+            if (ios /= 0) then
+               message = path//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
+                  ": cannot parse '"//line(starts(k):ends(k))//"' as a number"
+               close (unit)
+               return
+            end if
+            if (.not. ieee_is_finite(values(k))) then
+               message = path//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
+                  ": '"//line(starts(k):ends(k))//"' is not a finite number"
+               close (unit)
+               return
+            end if
+         end do
+         if (n > 0) then
+            if (.not. (values(1) > t(n))) then
+               message = path//':'//int_to_string(line_number)//': time '// &
+                  real_to_string(values(1))//' is not greater than the previous time '// &
+                  real_to_string(t(n))
+               close (unit)
+               return
+            end if
+         end if
+         n = n + 1
+         grow = [t, values(1)]
+         call move_alloc(grow, t)
+         grow = [u, values(2)]
+         call move_alloc(grow, u)
+      end do
+      close (unit)
+      if (n < 2) then
+         message = path//': needs at least 2 data rows, found '//int_to_string(n)
+         return
+      end if
+      if (abs(u(1)) > 0.0_dp) then
+         message = path//': the first row must have u_shear = 0 (the shear step starts '// &
+            'from the precompressed state), got '//real_to_string(u(1))
+         return
+      end if
+      ok = .true.
+   end subroutine read_shear_history
+
+end module interphase_fe2d_case

@@ -1,0 +1,129 @@
+!> The response of one interface point at a fixed damage D (the paper's section 4 for a given
+!> crack length): regime (intact, open, stick, slip), traction, tangent at fixed D, dt/dD, the
+!> slip with its sensitivities, and the stored energy. Used by the update for both damage laws.
+module interphase_response
+   use interphase_kinds, only: dp
+   use interphase_params, only: law_params_type
+   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+   use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
+   use interphase_coefficients, only: coefficient_set_type
+   implicit none
+   private
+   public :: response_type, respond
+
+   !> The response at fixed D.
+   type :: response_type
+      real(dp) :: traction(3) = 0.0_dp         !! t (MPa)
+      real(dp) :: tangent(3, 3) = 0.0_dp       !! dt/ds at fixed D (MPa/mm)
+      real(dp) :: dtrac_dd(3) = 0.0_dp         !! dt/dD at fixed s (MPa)
+      real(dp) :: slip(2) = 0.0_dp             !! lambda (mm)
+      real(dp) :: dlam_ds(2, 3) = 0.0_dp       !! d lambda/ds at fixed D (slip regime)
+      real(dp) :: dlam_dd(2) = 0.0_dp          !! d lambda/dD at fixed s (slip regime)
+      real(dp) :: psi = 0.0_dp                 !! stored energy (N/mm)
+      integer :: regime = REGIME_INTACT
+      logical :: closed = .false.
+   end type response_type
+
+contains
+
+   !> The response at a fixed damage D: regime, traction, tangent at fixed D, dt/dD, slip and
+   !> its sensitivities, stored energy.
+   pure subroutine respond(params, c, dc, d, slip_old, s_n, st, ntens, r, status)
+      type(law_params_type), intent(in) :: params
+      type(coefficient_set_type), intent(in) :: c, dc     !! coefficients at D and d/dD
+      real(dp), intent(in) :: d                           !! damage D
+      real(dp), intent(in) :: slip_old(2)                 !! slip at the start of the increment (mm)
+      real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
+      integer, intent(in) :: ntens
+      type(response_type), intent(out) :: r
+      integer, intent(out) :: status
+
+      real(dp) :: kk_n, kk_t, sigma, tau(2), tau_norm, phi, kf, nvec(2), dgamma, ratio
+      real(dp) :: dtau_dd(2), dphi_dd, proj_dtau(2), n_dot
+      integer :: nt, i, j
+
+      status = STATUS_OK
+      nt = ntens - 1
+      if (d <= 0.0_dp .or. c%dbar_n*s_n > 0.0_dp) then
+         ! intact, or open crack: Sigma = C E, crack faces traction-free
+         r%traction(1) = c%k_n*s_n
+         r%traction(2:ntens) = c%k_t*st(1:nt)
+         r%tangent(1, 1) = c%k_n
+         do i = 2, ntens
+            r%tangent(i, i) = c%k_t
+         end do
+         r%dtrac_dd(1) = dc%k_n*s_n
+         r%dtrac_dd(2:ntens) = dc%k_t*st(1:nt)
+         if (d <= 0.0_dp) then
+            r%slip = slip_old
+            r%regime = REGIME_INTACT
+         else
+            r%slip = 0.0_dp
+            r%slip(1:nt) = c%dbar_t*st(1:nt)/c%ufbar
+            r%regime = REGIME_OPEN
+         end if
+         r%psi = 0.5_dp*sum(r%traction(1:ntens)*[s_n, st(1:nt)])
+         return
+      end if
+
+      ! closed crack: trial stick state, eq 43
+      r%closed = .true.
+      kk_n = c%k_n + c%kc_n
+      kk_t = c%k_t + c%kc_t
+      sigma = c%sc_n*s_n
+      tau = c%tc_t*st + c%tf*slip_old
+      tau_norm = sqrt(tau(1)**2 + tau(2)**2)
+      phi = params%mu*sigma + tau_norm
+      r%traction(1) = kk_n*s_n
+      r%tangent(1, 1) = kk_n
+      r%dtrac_dd(1) = (dc%k_n + dc%kc_n)*s_n
+      if (phi > 0.0_dp .and. tau_norm > 0.0_dp) then
+         ! slip: return mapping along the trial crack shear stress, eqs 44-48
+         kf = -c%tf
+         if (.not. (kf > 0.0_dp)) then
+            status = STATUS_BAD_COEFFICIENTS
+            return
+         end if
+         nvec = tau/tau_norm
+         dgamma = phi/kf
+         r%slip = slip_old + dgamma*nvec
+         r%regime = REGIME_SLIP
+         ! d lambda/d s_T = (T^c_T/kf) [I + (mu sigma/|tau|)(I - n n)], d lambda/d s_N = (mu S^c_N/kf) n
+         ratio = params%mu*sigma/tau_norm
+         do j = 1, nt
+            do i = 1, nt
+               r%dlam_ds(i, 1 + j) = (c%tc_t/kf)*(merge(1.0_dp, 0.0_dp, i == j)*(1.0_dp + ratio) &
+                  - ratio*nvec(i)*nvec(j))
+            end do
+            r%dlam_ds(j, 1) = params%mu*c%sc_n/kf*nvec(j)
+         end do
+         ! d lambda/dD at fixed s
+         dtau_dd = dc%tc_t*st + dc%tf*slip_old
+         n_dot = nvec(1)*dtau_dd(1) + nvec(2)*dtau_dd(2)
+         dphi_dd = params%mu*dc%sc_n*s_n + n_dot
+         proj_dtau = dtau_dd - n_dot*nvec
+         r%dlam_dd = (nvec*dphi_dd + (phi/tau_norm)*proj_dtau)/kf + dgamma*nvec*dc%tf/kf
+         r%traction(2:ntens) = kk_t*st(1:nt) + c%cf_t*r%slip(1:nt)
+         do j = 1, ntens
+            r%tangent(2:ntens, j) = c%cf_t*r%dlam_ds(1:nt, j)
+         end do
+         do i = 2, ntens
+            r%tangent(i, i) = r%tangent(i, i) + kk_t
+         end do
+         r%dtrac_dd(2:ntens) = (dc%k_t + dc%kc_t)*st(1:nt) + dc%cf_t*r%slip(1:nt) + c%cf_t*r%dlam_dd(1:nt)
+      else
+         ! stick
+         r%slip = slip_old
+         r%regime = REGIME_STICK
+         r%traction(2:ntens) = kk_t*st(1:nt) + c%cf_t*slip_old(1:nt)
+         do i = 2, ntens
+            r%tangent(i, i) = kk_t
+         end do
+         r%dtrac_dd(2:ntens) = (dc%k_t + dc%kc_t)*st(1:nt) + dc%cf_t*slip_old(1:nt)
+      end if
+      r%psi = 0.5_dp*sum(r%traction(1:ntens)*[s_n, st(1:nt)]) &
+         + 0.5_dp*c%cf_t*(r%slip(1)*st(1) + r%slip(2)*st(2)) &
+         - 0.5_dp*d*c%tf*c%ufbar*(r%slip(1)**2 + r%slip(2)**2)
+   end subroutine respond
+
+end module interphase_response
