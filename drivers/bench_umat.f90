@@ -14,6 +14,7 @@ program bench_umat
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
       MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, TABLE_DEFAULT_CODE, &
+      DAMAGE_FRACTURE, NPROPS_FRACTURE_EXTRA, LFM_D0, LFM_RCURVE, RCURVE_EQUIVALENT, &
       DAMAGE_DISPLACEMENT, NSTATV_REQUIRED
    use interphase_abaqus_interfaces, only: umat
    implicit none
@@ -29,13 +30,13 @@ program bench_umat
    real(dp), parameter :: ANGLE_DEGREES = 30.0_dp
 
    real(dp), allocatable :: props(:)
-   integer :: model
+   integer :: model, law, variant
    real(dp), allocatable :: ns_per_call(:)
    real(dp) :: checksum
    integer :: calls_per_run, runs, increments, ntens, run
    integer(int64) :: count_rate
    character(len=32) :: argument
-   character(len=*), parameter :: ROW_FORMAT = '(a16, a12, i6, i12, i6, 2f16.1, es24.15)'
+   character(len=*), parameter :: ROW_FORMAT = '(a20, a12, i6, i12, i6, 2f16.1, es24.15)'
 
    calls_per_run = 1000000
    runs = 5
@@ -56,19 +57,21 @@ program bench_umat
    write (output_unit, '(a, i0, a, i0, a, i0, a, i0, a)') 'increments per segment: ', increments, &
       ' (', NSEGMENTS*increments, ' calls per run), runs: ', runs, &
       ', clock resolution: ', count_rate, ' ticks/s'
-   write (output_unit, '(a16, a12, a6, a12, a6, 2a16, a24)') 'model', 'history', 'NTENS', 'calls/run', &
+   write (output_unit, '(a20, a12, a6, a12, a6, 2a16, a24)') 'model + damage law', 'history', 'NTENS', 'calls/run', &
       'runs', 'best ns/call', 'median ns/call', 'checksum (MPa)'
-   do model = MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL
-   call set_props(model)
+   do variant = 1, 4
+   model = merge(MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, variant == 1 .or. variant == 3)
+   law = merge(DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, variant <= 2)
+   call set_props(model, law)
    do ntens = 2, 3
       do run = 1, runs
          call one_run(ntens, ns_per_call(run), checksum)
       end do
       if (ntens == 2) then
-         write (output_unit, ROW_FORMAT) model_name(model), 'mixed 2-D', ntens, NSEGMENTS*increments, runs, &
+         write (output_unit, ROW_FORMAT) model_name(model, law), 'mixed 2-D', ntens, NSEGMENTS*increments, runs, &
             minval(ns_per_call), median(ns_per_call), checksum
       else
-         write (output_unit, ROW_FORMAT) model_name(model), 'mixed 3-D', ntens, NSEGMENTS*increments, runs, &
+         write (output_unit, ROW_FORMAT) model_name(model, law), 'mixed 3-D', ntens, NSEGMENTS*increments, runs, &
             minval(ns_per_call), median(ns_per_call), checksum
       end if
    end do
@@ -79,19 +82,26 @@ contains
    !> PROPS of the paper's Table 1 data, mu = 0.75 (our assumption): the simplified model with K
    !> from the closed forms of MODEL-NOTES section 6, or the micromechanical model on the
    !> built-in table.
-   subroutine set_props(which)
-      integer, intent(in) :: which
-      integer :: i
+   subroutine set_props(which, damage_law)
+      integer, intent(in) :: which, damage_law
+      integer :: i, nm
+      nm = merge(NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, which == MODEL_SIMPLIFIED)
+      if (damage_law == DAMAGE_FRACTURE) then
+         props = [(0.0_dp, i = 1, nm + NPROPS_FRACTURE_EXTRA)]
+         ! initial crack D0 = 0.02, the R-curve equivalent to the displacement law
+         props(nm + LFM_D0) = 0.02_dp
+         props(nm + LFM_RCURVE) = real(RCURVE_EQUIVALENT, dp)
+      else
+         props = [(0.0_dp, i = 1, nm)]
+      end if
       if (which == MODEL_SIMPLIFIED) then
-         props = [(0.0_dp, i = 1, NPROPS_SIMPLIFIED)]
          props(PROP_K_N) = 544000.0_dp/1127.0_dp
          props(PROP_K_T) = 32000.0_dp/161.0_dp
       else
-         props = [(0.0_dp, i = 1, NPROPS_MICROMECHANICAL)]
          props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
       end if
       props(PROP_MODEL) = real(which, dp)
-      props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+      props(PROP_DAMAGE_LAW) = real(damage_law, dp)
       props(PROP_MU) = 0.75_dp
       props(PROP_S0_N) = 0.00044_dp
       props(PROP_SF_N) = 0.04_dp
@@ -99,11 +109,16 @@ contains
       props(PROP_SF_T) = 0.06_dp
    end subroutine set_props
 
-   pure function model_name(which) result(name)
-      integer, intent(in) :: which
+   pure function model_name(which, damage_law) result(name)
+      integer, intent(in) :: which, damage_law
       character(len=:), allocatable :: name
       name = 'simplified'
-      if (which == MODEL_MICROMECHANICAL) name = 'micromechanical'
+      if (which == MODEL_MICROMECHANICAL) name = 'micromech.'
+      if (damage_law == DAMAGE_FRACTURE) then
+         name = name//' + LFM'
+      else
+         name = name//' + disp.'
+      end if
    end function model_name
 
    !> Replay the history once from the virgin state; time per call (ns) and checksum (MPa).

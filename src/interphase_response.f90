@@ -11,17 +11,18 @@ module interphase_response
    private
    public :: response_type, respond
 
-   !> The response at fixed D.
+   !> The response at fixed D. No default initialisation (this is on the hot path): `respond`
+   !> sets the components 1:ntens of every field it returns.
    type :: response_type
-      real(dp) :: traction(3) = 0.0_dp         !! t (MPa)
-      real(dp) :: tangent(3, 3) = 0.0_dp       !! dt/ds at fixed D (MPa/mm)
-      real(dp) :: dtrac_dd(3) = 0.0_dp         !! dt/dD at fixed s (MPa)
-      real(dp) :: slip(2) = 0.0_dp             !! lambda (mm)
-      real(dp) :: dlam_ds(2, 3) = 0.0_dp       !! d lambda/ds at fixed D (slip regime)
-      real(dp) :: dlam_dd(2) = 0.0_dp          !! d lambda/dD at fixed s (slip regime)
-      real(dp) :: psi = 0.0_dp                 !! stored energy (N/mm)
-      integer :: regime = REGIME_INTACT
-      logical :: closed = .false.
+      real(dp) :: traction(3)          !! t (MPa)
+      real(dp) :: tangent(3, 3)        !! dt/ds at fixed D (MPa/mm)
+      real(dp) :: dtrac_dd(3)          !! dt/dD at fixed s (MPa)
+      real(dp) :: slip(2)              !! lambda (mm)
+      real(dp) :: dlam_ds(2, 3)        !! d lambda/ds at fixed D (zero unless slipping)
+      real(dp) :: dlam_dd(2)           !! d lambda/dD at fixed s (zero unless slipping)
+      real(dp) :: psi                  !! stored energy (N/mm)
+      integer :: regime                !! REGIME_*
+      logical :: closed                !! crack closed (contact)
    end type response_type
 
 contains
@@ -44,6 +45,10 @@ contains
 
       status = STATUS_OK
       nt = ntens - 1
+      r%tangent(1:ntens, 1:ntens) = 0.0_dp
+      r%dlam_ds = 0.0_dp
+      r%dlam_dd = 0.0_dp
+      r%closed = .false.
       if (d <= 0.0_dp .or. c%dbar_n*s_n > 0.0_dp) then
          ! intact, or open crack: Sigma = C E, crack faces traction-free
          r%traction(1) = c%k_n*s_n
@@ -62,7 +67,7 @@ contains
             r%slip(1:nt) = c%dbar_t*st(1:nt)/c%ufbar
             r%regime = REGIME_OPEN
          end if
-         r%psi = 0.5_dp*sum(r%traction(1:ntens)*[s_n, st(1:nt)])
+         r%psi = 0.5_dp*(r%traction(1)*s_n + sum(r%traction(2:ntens)*st(1:nt)))
          return
       end if
 
@@ -121,7 +126,7 @@ contains
          end do
          r%dtrac_dd(2:ntens) = (dc%k_t + dc%kc_t)*st(1:nt) + dc%cf_t*slip_old(1:nt)
       end if
-      r%psi = 0.5_dp*sum(r%traction(1:ntens)*[s_n, st(1:nt)]) &
+      r%psi = 0.5_dp*(r%traction(1)*s_n + sum(r%traction(2:ntens)*st(1:nt))) &
          + 0.5_dp*c%cf_t*(r%slip(1)*st(1) + r%slip(2)*st(2)) &
          - 0.5_dp*d*c%tf*c%ufbar*(r%slip(1)**2 + r%slip(2)**2)
    end subroutine respond

@@ -15,7 +15,7 @@ bash "$here/tools/ensure-packages.sh" gnuplot
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$build" -j "$jobs" --target interphase-point interphase-calibrate
 mkdir -p "$out"
-for case in "$here"/drivers/cases/*.nml "$here"/drivers/cases/micro/*.nml; do
+for case in "$here"/drivers/cases/*.nml "$here"/drivers/cases/micro/*.nml "$here"/drivers/cases/fracture/*.nml; do
   echo "== $(basename "$case")"
   "$build/drivers/interphase-point" "$case" --output-dir "$out"
 done
