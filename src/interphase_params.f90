@@ -2,6 +2,7 @@
 !> Every value is range-checked here, once, with a message that names the PROPS index, the
 !> symbol, the value and the admissible range; nothing is clamped.
 module interphase_params
+   use, intrinsic :: iso_fortran_env, only: int64
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
@@ -228,15 +229,18 @@ contains
          ' is out of range: ', rule
    end subroutine reject
 
-   !> The selector code held by a PROPS value: its integer value when `x` is finite and exactly
-   !> integral, else -1 (which no selector uses).
+   !> The selector code held by a PROPS value: c when `x` is exactly the real number c for a code
+   !> 0 <= c <= MAX_SELECTOR, else -1 (which no selector uses). The test compares bit patterns,
+   !> so NaN, Inf or a fractional value can raise no floating-point exception (a conversion
+   !> int(x) of a NaN would, even when guarded: the optimiser may hoist it).
    pure integer function selector_code(x) result(code)
       real(dp), intent(in) :: x
+      integer, parameter :: MAX_SELECTOR = 9
+      integer :: candidate
       code = -1
-      if (.not. is_finite(x)) return
-      if (abs(x) > 1.0e6_dp) return
-      code = int(x)
-      if (abs(x - real(code, dp)) > 0.0_dp) code = -1
+      do candidate = 0, MAX_SELECTOR
+         if (transfer(x, 0_int64) == transfer(real(candidate, dp), 0_int64)) code = candidate
+      end do
    end function selector_code
 
    !> x is finite and x > lower (false for NaN and Inf, without an invalid-operation exception).

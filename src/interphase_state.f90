@@ -1,5 +1,6 @@
 !> The history state of one interface point and its one load/store pair with Abaqus STATEV.
 module interphase_state
+   use, intrinsic :: iso_fortran_env, only: int64
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED, &
@@ -26,7 +27,7 @@ contains
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
 
-      integer :: regime
+      integer :: regime, candidate
 
       status = STATUS_OK
       if (size(statev) < NSTATV_REQUIRED) then
@@ -39,10 +40,11 @@ contains
       state%slip(1) = statev(SV_SLIP_1)
       state%slip(2) = 0.0_dp
       if (ntens == 3) state%slip(2) = statev(SV_SLIP_2)
+      ! the regime code, by bit pattern (no floating-point exception for NaN or a fraction)
       regime = -1
-      if (is_finite(statev(SV_REGIME))) then
-         if (abs(statev(SV_REGIME)) < 10.0_dp) regime = int(statev(SV_REGIME))
-      end if
+      do candidate = REGIME_INTACT, REGIME_SLIP
+         if (transfer(statev(SV_REGIME), 0_int64) == transfer(real(candidate, dp), 0_int64)) regime = candidate
+      end do
       state%regime = regime
       if (.not. in_unit_interval(state%d)) then
          status = STATUS_BAD_STATE
@@ -52,7 +54,7 @@ contains
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,i0,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
             ') slip is not finite'
-      else if (regime < REGIME_INTACT .or. regime > REGIME_SLIP .or. abs(real(regime, dp) - statev(SV_REGIME)) > 0.0_dp) then
+      else if (regime < REGIME_INTACT) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_REGIME, ') regime = ', &
             statev(SV_REGIME), ' is not a regime code 0..3'
