@@ -57,7 +57,8 @@ extern "C" {
  * the separation @p separation, starting from the state @p state_old.
  *
  * @param props          material constants, @p nprops doubles (docs/abaqus.md, PROPS table)
- * @param nprops         number of PROPS (9 for the simplified model)
+ * @param nprops         number of PROPS (9 simplified, 8 micromechanical; 4 more with the
+ *                       fracture-mechanics damage law: docs/abaqus.md)
  * @param ntens          2 (2-D: s_N, s_T) or 3 (3-D: s_N, s_T1, s_T2)
  * @param state_old      INTERPHASE_NSTATE doubles: the state at the start of the increment
  * @param separation     @p ntens doubles: total separation at the end of the increment (mm)

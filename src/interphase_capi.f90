@@ -28,7 +28,7 @@ contains
    !> when `detail` is not NULL, it receives the detailed message (which value, which range).
    function interphase_update_c(props, nprops, ntens, state_old, separation, traction, tangent, &
          state_new, stored_energy, detail, detail_len) result(status) bind(C, name="interphase_update")
-      integer(c_int), value, intent(in) :: nprops          !! number of PROPS (9)
+      integer(c_int), value, intent(in) :: nprops          !! number of PROPS (docs/abaqus.md)
       real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
       integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
       real(c_double), intent(in) :: state_old(*)           !! NSTATV_REQUIRED doubles

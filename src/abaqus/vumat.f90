@@ -43,7 +43,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    integer, intent(in) :: nshr                      !! shear components: 1 (2-D) or 2 (3-D)
    integer, intent(in) :: nstatev                   !! state variables per point, >= NSTATV_VUMAT
    integer, intent(in) :: nfieldv                   !! field variables (unused)
-   integer, intent(in) :: nprops                    !! material constants (9)
+   integer, intent(in) :: nprops                    !! number of PROPS (docs/abaqus.md)
    integer, intent(in) :: lanneal                   !! 1: annealing call
    real(dp), intent(in) :: steptime, totaltime, dt  !! step time, total time, time increment
    character(len=80), intent(in) :: cmname          !! material name
