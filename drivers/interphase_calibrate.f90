@@ -22,6 +22,7 @@ program interphase_calibrate
    use interphase_driver_case, only: case_type, read_case
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
    use interphase_driver_text, only: int_to_string
+   use interphase_driver_cli, only: get_argument
    implicit none
 
    type(case_type) :: run
@@ -134,15 +135,6 @@ contains
       end do
       energy = point%spd
    end subroutine monotonic
-
-   subroutine get_argument(index, value)
-      integer, intent(in) :: index
-      character(len=:), allocatable, intent(out) :: value
-      integer :: length
-      call get_command_argument(index, length=length)
-      allocate (character(len=length) :: value)
-      if (length > 0) call get_command_argument(index, value)
-   end subroutine get_argument
 
    subroutine fail(text)
       character(len=*), intent(in) :: text

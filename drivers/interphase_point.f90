@@ -11,6 +11,7 @@
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_driver_case, only: case_type, read_case
+   use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
@@ -21,45 +22,26 @@ program interphase_point
       join_path, shell_quote
    implicit none
 
-   character(len=:), allocatable :: case_path, output_dir, csv_path, message, argument
+   character(len=:), allocatable :: case_path, output_dir, csv_path, message
+   type(run_arguments_type) :: cli
    type(case_type) :: run
    type(history_type) :: history
    logical :: no_plot, ok
-   integer :: i, nargs, unit, ios, nrows
+   integer :: unit, ios, nrows
    character(len=512) :: iomsg
    character(len=MESSAGE_LEN) :: table_message
    integer :: status
 
    ! ---- command line ----
-   no_plot = .false.
-   output_dir = ''
-   case_path = ''
-   nargs = command_argument_count()
-   i = 0
-   do while (i < nargs)
-      i = i + 1
-      call get_argument(i, argument)
-      select case (argument)
-      case ('-h', '--help')
-         call print_usage(output_unit)
-         stop
-      case ('--no-plot')
-         no_plot = .true.
-      case ('--output-dir')
-         if (i == nargs) call fail('--output-dir needs a directory', usage=.true.)
-         i = i + 1
-         call get_argument(i, output_dir)
-         if (len(output_dir) == 0) call fail('--output-dir needs a non-empty directory', usage=.true.)
-      case default
-         if (len(argument) > 0) then
-            if (argument(1:1) == '-') call fail('unknown option '//argument, usage=.true.)
-         end if
-         if (len(case_path) > 0) call fail('only one case file may be given (got '//case_path// &
-            ' and '//argument//')', usage=.true.)
-         case_path = argument
-      end select
-   end do
-   if (len(case_path) == 0) call fail('no case file given', usage=.true.)
+   call parse_run_arguments(cli, ok, message)
+   if (cli%help) then
+      call print_usage(output_unit)
+      stop
+   end if
+   if (.not. ok) call fail(message, usage=.true.)
+   case_path = cli%case_path
+   output_dir = cli%output_dir
+   no_plot = cli%no_plot
 
    ! ---- inputs ----
    call read_case(case_path, run, ok, message)
@@ -78,7 +60,7 @@ program interphase_point
 
    ! ---- replay into the CSV ----
    csv_path = join_path(output_dir, run%output)
-   call make_directory(directory_of(csv_path))
+   call ensure_directory(directory_of(csv_path))
    open (newunit=unit, file=csv_path, status='replace', action='write', form='formatted', &
       iostat=ios, iomsg=iomsg)
    if (ios /= 0) call fail(csv_path//': cannot write the CSV file: '//trim(iomsg))
@@ -115,32 +97,14 @@ contains
          '  a CSV table (and a PNG of the traction-separation curves if gnuplot is on PATH).'
    end subroutine print_usage
 
-   !> Command-line argument number n, of any length.
-   subroutine get_argument(n, value)
-      integer, intent(in) :: n                    !! argument number
-      character(len=:), allocatable, intent(out) :: value  !! its text
-      integer :: length
-
-      call get_command_argument(n, length=length)
-      allocate (character(len=length) :: value)
-      if (length > 0) call get_command_argument(n, value)
-   end subroutine get_argument
-
-   !> Create a directory and its parents (`mkdir -p`) unless it is '' (current directory).
-   subroutine make_directory(directory)
-      character(len=*), intent(in) :: directory   !! directory path, may end in '/'
-      integer :: exitstat, cmdstat
-      character(len=256) :: cmdmsg
-
-      if (len(directory) == 0) return
-      exitstat = 0
-      cmdmsg = ''
-      call execute_command_line('mkdir -p '//shell_quote(directory), exitstat=exitstat, &
-         cmdstat=cmdstat, cmdmsg=cmdmsg)
-      if (cmdstat /= 0) call fail('cannot run mkdir -p '//directory//': '//trim(cmdmsg))
-      if (exitstat /= 0) call fail('mkdir -p '//directory//' failed (exit status '// &
-         int_to_string(exitstat)//')')
-   end subroutine make_directory
+   !> Create the output folder or stop with the reason.
+   subroutine ensure_directory(directory)
+      character(len=*), intent(in) :: directory
+      logical :: created
+      character(len=:), allocatable :: why
+      call make_directory(directory, created, why)
+      if (.not. created) call fail(why)
+   end subroutine ensure_directory
 
    !> Write the gnuplot script next to the CSV and run it, or say why not.
    subroutine plot_csv()

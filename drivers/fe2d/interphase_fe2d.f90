@@ -15,6 +15,7 @@ program interphase_fe2d
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
+   use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory
    use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
    use interphase_fe2d_solver, only: fe2d_options_type, fe2d_result_type, run_analysis, &
       CSV_COLUMNS, COL_SHEAR, COL_NORMAL, COL_STEP
@@ -23,45 +24,26 @@ program interphase_fe2d
       stem_of, join_path, shell_quote
    implicit none
 
-   character(len=:), allocatable :: case_path, output_dir, csv_path, log_path, message, argument
+   character(len=:), allocatable :: case_path, output_dir, csv_path, log_path, message
+   type(run_arguments_type) :: cli
    type(fe2d_case_type) :: run
    type(fe2d_mesh_type) :: mesh
    type(fe2d_options_type) :: options
    type(fe2d_result_type) :: result
    logical :: no_plot, ok
-   integer :: i, nargs, ios, status, peak
+   integer :: ios, status, peak
    character(len=512) :: iomsg
    character(len=MESSAGE_LEN) :: table_message
 
-   no_plot = .false.
-   output_dir = ''
-   case_path = ''
-   nargs = command_argument_count()
-   i = 0
-   do while (i < nargs)
-      i = i + 1
-      call get_argument(i, argument)
-      select case (argument)
-      case ('-h', '--help')
-         call print_usage(output_unit)
-         stop
-      case ('--no-plot')
-         no_plot = .true.
-      case ('--output-dir')
-         if (i == nargs) call fail('--output-dir needs a directory', usage=.true.)
-         i = i + 1
-         call get_argument(i, output_dir)
-         if (len(output_dir) == 0) call fail('--output-dir needs a non-empty directory', usage=.true.)
-      case default
-         if (len(argument) > 0) then
-            if (argument(1:1) == '-') call fail('unknown option '//argument, usage=.true.)
-         end if
-         if (len(case_path) > 0) call fail('only one case file may be given (got '//case_path// &
-            ' and '//argument//')', usage=.true.)
-         case_path = argument
-      end select
-   end do
-   if (len(case_path) == 0) call fail('no case file given', usage=.true.)
+   call parse_run_arguments(cli, ok, message)
+   if (cli%help) then
+      call print_usage(output_unit)
+      stop
+   end if
+   if (.not. ok) call fail(message, usage=.true.)
+   case_path = cli%case_path
+   output_dir = cli%output_dir
+   no_plot = cli%no_plot
 
    call read_fe2d_case(case_path, run, ok, message)
    if (.not. ok) call fail(message)
@@ -73,7 +55,7 @@ program interphase_fe2d
    call build_mesh(run, mesh)
 
    csv_path = join_path(output_dir, run%output)
-   call make_directory(directory_of(csv_path))
+   call ensure_directory(directory_of(csv_path))
    log_path = join_path(directory_of(csv_path), stem_of(csv_path)//'.log')
    open (newunit=options%log_unit, file=log_path, status='replace', action='write', &
       iostat=ios, iomsg=iomsg)
@@ -126,30 +108,14 @@ contains
          '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).'
    end subroutine print_usage
 
-   subroutine get_argument(n, value)
-      integer, intent(in) :: n                    !! argument number
-      character(len=:), allocatable, intent(out) :: value  !! its text
-      integer :: length
-
-      call get_command_argument(n, length=length)
-      allocate (character(len=length) :: value)
-      if (length > 0) call get_command_argument(n, value)
-   end subroutine get_argument
-
-   subroutine make_directory(directory)
-      character(len=*), intent(in) :: directory   !! may be '' (current directory)
-      integer :: exitstat, cmdstat
-      character(len=256) :: cmdmsg
-
-      if (len(directory) == 0) return
-      exitstat = 0
-      cmdmsg = ''
-      call execute_command_line('mkdir -p '//shell_quote(directory), exitstat=exitstat, &
-         cmdstat=cmdstat, cmdmsg=cmdmsg)
-      if (cmdstat /= 0) call fail('cannot run mkdir -p '//directory//': '//trim(cmdmsg))
-      if (exitstat /= 0) call fail('mkdir -p '//directory//' failed (exit status '// &
-         int_to_string(exitstat)//')')
-   end subroutine make_directory
+   !> Create the output folder or stop with the reason.
+   subroutine ensure_directory(directory)
+      character(len=*), intent(in) :: directory
+      logical :: created
+      character(len=:), allocatable :: why
+      call make_directory(directory, created, why)
+      if (.not. created) call fail(why)
+   end subroutine ensure_directory
 
    subroutine plot_csv()
       character(len=:), allocatable :: directory, stem, script_name

@@ -1,0 +1,111 @@
+!> Command line of the stand-alone programs (`interphase-point`, `interphase-fe2d`,
+!> `interphase-calibrate`): arguments of any length, the common `CASE.nml [--output-dir DIR]
+!> [--no-plot]` form, and creating an output folder.
+module interphase_driver_cli
+   use interphase_driver_text, only: int_to_string, shell_quote
+   implicit none
+   private
+   public :: run_arguments_type, parse_run_arguments, get_argument, make_directory
+
+   !> `PROGRAM CASE.nml [--output-dir DIR] [--no-plot]` (or `-h`/`--help`).
+   type :: run_arguments_type
+      character(len=:), allocatable :: case_path     !! the case file
+      character(len=:), allocatable :: output_dir    !! '' = current directory
+      logical :: no_plot = .false.                   !! --no-plot given
+      logical :: help = .false.                      !! -h or --help given
+   end type run_arguments_type
+
+contains
+
+   !> Parse the command line; on failure `ok` is false and `message` says why.
+   subroutine parse_run_arguments(args, ok, message)
+      type(run_arguments_type), intent(out) :: args
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+      character(len=:), allocatable :: argument
+      integer :: i, nargs
+
+      ok = .false.
+      message = ''
+      args%case_path = ''
+      args%output_dir = ''
+      nargs = command_argument_count()
+      i = 0
+      do while (i < nargs)
+         i = i + 1
+         call get_argument(i, argument)
+         select case (argument)
+         case ('-h', '--help')
+            args%help = .true.
+            ok = .true.
+            return
+         case ('--no-plot')
+            args%no_plot = .true.
+         case ('--output-dir')
+            if (i == nargs) then
+               message = '--output-dir needs a directory'
+               return
+            end if
+            i = i + 1
+            call get_argument(i, args%output_dir)
+            if (len(args%output_dir) == 0) then
+               message = '--output-dir needs a non-empty directory'
+               return
+            end if
+         case default
+            if (len(argument) > 0) then
+               if (argument(1:1) == '-') then
+                  message = 'unknown option '//argument
+                  return
+               end if
+            end if
+            if (len(args%case_path) > 0) then
+               message = 'only one case file may be given (got '//args%case_path//' and '//argument//')'
+               return
+            end if
+            args%case_path = argument
+         end select
+      end do
+      if (len(args%case_path) == 0) then
+         message = 'no case file given'
+         return
+      end if
+      ok = .true.
+   end subroutine parse_run_arguments
+
+   !> Command-line argument number n, of any length.
+   subroutine get_argument(n, value)
+      integer, intent(in) :: n                    !! argument number
+      character(len=:), allocatable, intent(out) :: value  !! its text
+      integer :: length
+
+      call get_command_argument(n, length=length)
+      allocate (character(len=length) :: value)
+      if (length > 0) call get_command_argument(n, value)
+   end subroutine get_argument
+
+   !> Create a directory and its parents (`mkdir -p`) unless it is '' (current directory).
+   subroutine make_directory(directory, ok, message)
+      character(len=*), intent(in) :: directory   !! directory path, may end in '/'
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+      integer :: exitstat, cmdstat
+      character(len=256) :: cmdmsg
+
+      ok = .true.
+      message = ''
+      if (len(directory) == 0) return
+      exitstat = 0
+      cmdmsg = ''
+      call execute_command_line('mkdir -p '//shell_quote(directory), exitstat=exitstat, &
+         cmdstat=cmdstat, cmdmsg=cmdmsg)
+      if (cmdstat /= 0) then
+         ok = .false.
+         message = 'cannot run mkdir -p '//directory//': '//trim(cmdmsg)
+      else if (exitstat /= 0) then
+         ok = .false.
+         message = 'mkdir -p '//directory//' failed (exit status '//int_to_string(exitstat)//')'
+      end if
+   end subroutine make_directory
+
+end module interphase_driver_cli
