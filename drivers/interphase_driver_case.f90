@@ -24,7 +24,8 @@ module interphase_driver_case
    use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
    implicit none
    private
-   public :: case_type, read_case
+   public :: case_type, read_case, material_entries_type, material_props, unpack_entries, &
+      ENTRY_LEN, UNSET_REAL, is_unset
 
    !> Length of the character entries of the namelists (model names, paths).
    integer, parameter :: ENTRY_LEN = 1024
@@ -32,6 +33,22 @@ module interphase_driver_case
    real(dp), parameter :: UNSET_REAL = -huge(1.0_dp)
    !> Marks an integer entry the case file did not set.
    integer, parameter :: UNSET_INTEGER = -huge(1)
+
+   !> The entries of a material group (`&material` of interphase-point, `&joint` of
+   !> interphase-fe2d) as read, before `material_props` checks them and packs PROPS.
+   type :: material_entries_type
+      character(len=ENTRY_LEN) :: model = ''         !! 'simplified' or 'micromechanical'
+      character(len=ENTRY_LEN) :: damage_law = ''    !! 'displacement' or 'fracture'
+      character(len=ENTRY_LEN) :: table = ''         !! custom RVE table (micromechanical)
+      character(len=ENTRY_LEN) :: rcurve = ''        !! 'constant', 'equivalent', 'tabulated'
+      character(len=ENTRY_LEN) :: rcurve_file = ''   !! tabulated R-curve file
+      real(dp) :: mu = UNSET_REAL                    !! friction coefficient (-)
+      real(dp) :: s0_n = UNSET_REAL, sf_n = UNSET_REAL   !! mm
+      real(dp) :: s0_t = UNSET_REAL, sf_t = UNSET_REAL   !! mm
+      real(dp) :: k_n = UNSET_REAL, k_t = UNSET_REAL     !! MPa/mm (simplified)
+      real(dp) :: d0 = UNSET_REAL                    !! initial crack a0/b (fracture law)
+      real(dp) :: g_ci = UNSET_REAL, g_cii = UNSET_REAL  !! N/mm (constant R-curve)
+   end type material_entries_type
 
    !> Everything the driver needs from one case file.
    type :: case_type
@@ -89,38 +106,22 @@ contains
    !> Read the `&material` group and pack it into PROPS.
    subroutine read_material(unit, run, ok, message)
       integer, intent(in) :: unit                 !! open case file
-      type(case_type), intent(inout) :: run      !! receives props
+      type(case_type), intent(inout) :: run      !! receives props, table_path, rcurve_path
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      type(material_entries_type) :: e
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file
       real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii
       namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
          rcurve_file, g_ci, g_cii
-      real(dp), allocatable :: extended(:)
-      integer :: nm
-      character(len=:), allocatable :: missing, where
+      character(len=:), allocatable :: where
       integer :: ios
       character(len=512) :: iomsg
 
       ok = .false.
       where = run%path//': &material: '
-      model = ''
-      damage_law = ''
-      table = ''
-      rcurve = ''
-      rcurve_file = ''
-      run%rcurve_path = ''
-      d0 = UNSET_REAL
-      g_ci = UNSET_REAL
-      g_cii = UNSET_REAL
-      run%table_path = ''
-      mu = UNSET_REAL
-      s0_n = UNSET_REAL
-      sf_n = UNSET_REAL
-      s0_t = UNSET_REAL
-      sf_t = UNSET_REAL
-      k_n = UNSET_REAL
-      k_t = UNSET_REAL
+      call unpack_entries(e, model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, sf_t, &
+         k_n, k_t, d0, g_ci, g_cii)
       read (unit, nml=material, iostat=ios, iomsg=iomsg)
       if (ios == iostat_end) then
          message = where//'group not found (expected "&material ... /")'
@@ -129,18 +130,69 @@ contains
          message = where//'cannot read the group: '//trim(iomsg)
          return
       end if
+      e = material_entries_type(model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, &
+         sf_t, k_n, k_t, d0, g_ci, g_cii)
+      call material_props(e, where, directory_of(run%path), run%props, run%table_path, run%rcurve_path, &
+         ok, message)
+   end subroutine read_material
 
+   !> Copy the defaults of `e` into the variables of a material namelist (before the read).
+   pure subroutine unpack_entries(e, model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, &
+         s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii)
+      type(material_entries_type), intent(in) :: e
+      character(len=ENTRY_LEN), intent(out) :: model, damage_law, table, rcurve, rcurve_file
+      real(dp), intent(out) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii
+      model = e%model
+      damage_law = e%damage_law
+      table = e%table
+      rcurve = e%rcurve
+      rcurve_file = e%rcurve_file
+      mu = e%mu
+      s0_n = e%s0_n
+      sf_n = e%sf_n
+      s0_t = e%s0_t
+      sf_t = e%sf_t
+      k_n = e%k_n
+      k_t = e%k_t
+      d0 = e%d0
+      g_ci = e%g_ci
+      g_cii = e%g_cii
+   end subroutine unpack_entries
+
+   !> Check the entries of a material group and pack them into PROPS (interphase_layout): the
+   !> one decoder of interphase-point's `&material` and interphase-fe2d's `&joint`. Paths of a
+   !> custom RVE table and of a tabulated R-curve are resolved against `base_dir`.
+   subroutine material_props(e, where, base_dir, props, table_path, rcurve_path, ok, message)
+      type(material_entries_type), intent(in) :: e   !! the entries as read
+      character(len=*), intent(in) :: where          !! message prefix: 'file: &group: '
+      character(len=*), intent(in) :: base_dir       !! folder of the case file
+      real(dp), allocatable, intent(out) :: props(:)
+      character(len=:), allocatable, intent(out) :: table_path, rcurve_path   !! '' when unused
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+
+      character(len=:), allocatable :: missing, model, law, rcurve
+      real(dp), allocatable :: extended(:)
+      integer :: nm
+
+      ok = .false.
+      message = ''
+      table_path = ''
+      rcurve_path = ''
+      model = to_lower(trim(adjustl(e%model)))
+      law = to_lower(trim(adjustl(e%damage_law)))
+      rcurve = to_lower(trim(adjustl(e%rcurve)))
       missing = ''
-      if (len_trim(model) == 0) call add_name(missing, 'model')
-      if (len_trim(damage_law) == 0) call add_name(missing, 'damage_law')
-      if (is_unset(mu)) call add_name(missing, 'mu')
-      if (is_unset(s0_n)) call add_name(missing, 's0_n')
-      if (is_unset(sf_n)) call add_name(missing, 'sf_n')
-      if (is_unset(s0_t)) call add_name(missing, 's0_t')
-      if (is_unset(sf_t)) call add_name(missing, 'sf_t')
-      if (to_lower(trim(adjustl(model))) == 'simplified') then
-         if (is_unset(k_n)) call add_name(missing, 'k_n')
-         if (is_unset(k_t)) call add_name(missing, 'k_t')
+      if (len(model) == 0) call add_name(missing, 'model')
+      if (len(law) == 0) call add_name(missing, 'damage_law')
+      if (is_unset(e%mu)) call add_name(missing, 'mu')
+      if (is_unset(e%s0_n)) call add_name(missing, 's0_n')
+      if (is_unset(e%sf_n)) call add_name(missing, 'sf_n')
+      if (is_unset(e%s0_t)) call add_name(missing, 's0_t')
+      if (is_unset(e%sf_t)) call add_name(missing, 'sf_t')
+      if (model == 'simplified') then
+         if (is_unset(e%k_n)) call add_name(missing, 'k_n')
+         if (is_unset(e%k_t)) call add_name(missing, 'k_t')
       end if
       if (len(missing) > 0) then
          if (index(missing, ',') > 0) then
@@ -151,106 +203,105 @@ contains
          return
       end if
 
-      select case (to_lower(trim(adjustl(model))))
+      select case (model)
       case ('simplified')
-         if (len_trim(table) > 0) then
+         if (len_trim(e%table) > 0) then
             message = where//"table is an entry of model = 'micromechanical' only"
             return
          end if
-         allocate (run%props(NPROPS_SIMPLIFIED))
-         run%props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
-         if (.not. finite_entry('k_n', k_n)) return
-         if (.not. finite_entry('k_t', k_t)) return
-         run%props(PROP_K_N) = k_n
-         run%props(PROP_K_T) = k_t
+         allocate (props(NPROPS_SIMPLIFIED))
+         props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
+         if (.not. finite_entry('k_n', e%k_n)) return
+         if (.not. finite_entry('k_t', e%k_t)) return
+         props(PROP_K_N) = e%k_n
+         props(PROP_K_T) = e%k_t
       case ('micromechanical')
-         if (.not. (is_unset(k_n) .and. is_unset(k_t))) then
+         if (.not. (is_unset(e%k_n) .and. is_unset(e%k_t))) then
             message = where//"k_n and k_t are entries of model = 'simplified' only (the "// &
                "micromechanical model takes its stiffness from the RVE table)"
             return
          end if
-         allocate (run%props(NPROPS_MICROMECHANICAL))
-         run%props(PROP_MODEL) = real(MODEL_MICROMECHANICAL, dp)
-         if (len_trim(table) == 0) then
-            run%props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
+         allocate (props(NPROPS_MICROMECHANICAL))
+         props(PROP_MODEL) = real(MODEL_MICROMECHANICAL, dp)
+         if (len_trim(e%table) == 0) then
+            props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
          else
-            run%props(PROP_TABLE) = real(TABLE_CUSTOM_CODE, dp)
-            run%table_path = join_path(directory_of(run%path), trim(adjustl(table)))
+            props(PROP_TABLE) = real(TABLE_CUSTOM_CODE, dp)
+            table_path = join_path(base_dir, trim(adjustl(e%table)))
          end if
       case default
-         message = where//"unknown model '"//trim(adjustl(model))// &
+         message = where//"unknown model '"//trim(adjustl(e%model))// &
             "' (available: 'simplified', 'micromechanical')"
          return
       end select
-      select case (to_lower(trim(adjustl(damage_law))))
+      select case (law)
       case ('displacement')
-         run%props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
-         if (.not. (is_unset(d0) .and. is_unset(g_ci) .and. is_unset(g_cii)) .or. &
-            len_trim(rcurve) > 0 .or. len_trim(rcurve_file) > 0) then
+         props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+         if (.not. (is_unset(e%d0) .and. is_unset(e%g_ci) .and. is_unset(e%g_cii)) .or. &
+            len(rcurve) > 0 .or. len_trim(e%rcurve_file) > 0) then
             message = where//"d0, rcurve, rcurve_file, g_ci and g_cii are entries of "// &
                "damage_law = 'fracture' only"
             return
          end if
       case ('fracture')
-         run%props(PROP_DAMAGE_LAW) = real(DAMAGE_FRACTURE, dp)
-         if (is_unset(d0)) then
+         props(PROP_DAMAGE_LAW) = real(DAMAGE_FRACTURE, dp)
+         if (is_unset(e%d0)) then
             message = where//"missing entry d0 (initial crack a0/b, needed by damage_law = 'fracture')"
             return
          end if
-         if (.not. finite_entry('d0', d0)) return
-         nm = size(run%props)
+         if (.not. finite_entry('d0', e%d0)) return
+         nm = size(props)
          allocate (extended(nm + NPROPS_FRACTURE_EXTRA))
-         extended(1:nm) = run%props
-         extended(nm + LFM_D0) = d0
+         extended(1:nm) = props
+         extended(nm + LFM_D0) = e%d0
          extended(nm + LFM_GC_I) = 0.0_dp
          extended(nm + LFM_GC_II) = 0.0_dp
-         select case (to_lower(trim(adjustl(rcurve))))
+         select case (rcurve)
          case ('constant')
-            if (is_unset(g_ci) .or. is_unset(g_cii)) then
+            if (is_unset(e%g_ci) .or. is_unset(e%g_cii)) then
                message = where//"rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)"
                return
             end if
-            if (.not. finite_entry('g_ci', g_ci)) return
-            if (.not. finite_entry('g_cii', g_cii)) return
+            if (.not. finite_entry('g_ci', e%g_ci)) return
+            if (.not. finite_entry('g_cii', e%g_cii)) return
             extended(nm + LFM_RCURVE) = real(RCURVE_CONSTANT, dp)
-            extended(nm + LFM_GC_I) = g_ci
-            extended(nm + LFM_GC_II) = g_cii
+            extended(nm + LFM_GC_I) = e%g_ci
+            extended(nm + LFM_GC_II) = e%g_cii
          case ('equivalent')
             extended(nm + LFM_RCURVE) = real(RCURVE_EQUIVALENT, dp)
          case ('tabulated')
-            if (len_trim(rcurve_file) == 0) then
+            if (len_trim(e%rcurve_file) == 0) then
                message = where//"rcurve = 'tabulated' needs the entry rcurve_file"
                return
             end if
             extended(nm + LFM_RCURVE) = real(RCURVE_TABULATED, dp)
-            run%rcurve_path = join_path(directory_of(run%path), trim(adjustl(rcurve_file)))
+            rcurve_path = join_path(base_dir, trim(adjustl(e%rcurve_file)))
          case default
             message = where//"rcurve must be 'constant', 'equivalent' or 'tabulated', got '"// &
-               trim(adjustl(rcurve))//"'"
+               trim(adjustl(e%rcurve))//"'"
             return
          end select
-         if (to_lower(trim(adjustl(rcurve))) /= 'constant' .and. &
-            .not. (is_unset(g_ci) .and. is_unset(g_cii))) then
+         if (rcurve /= 'constant' .and. .not. (is_unset(e%g_ci) .and. is_unset(e%g_cii))) then
             message = where//"g_ci and g_cii are entries of rcurve = 'constant' only"
             return
          end if
-         call move_alloc(extended, run%props)
+         call move_alloc(extended, props)
       case default
-         message = where//"unknown damage_law '"//trim(adjustl(damage_law))// &
+         message = where//"unknown damage_law '"//trim(adjustl(e%damage_law))// &
             "' (available: 'displacement', 'fracture')"
          return
       end select
 
-      if (.not. finite_entry('mu', mu)) return
-      if (.not. finite_entry('s0_n', s0_n)) return
-      if (.not. finite_entry('sf_n', sf_n)) return
-      if (.not. finite_entry('s0_t', s0_t)) return
-      if (.not. finite_entry('sf_t', sf_t)) return
-      run%props(PROP_MU) = mu
-      run%props(PROP_S0_N) = s0_n
-      run%props(PROP_SF_N) = sf_n
-      run%props(PROP_S0_T) = s0_t
-      run%props(PROP_SF_T) = sf_t
+      if (.not. finite_entry('mu', e%mu)) return
+      if (.not. finite_entry('s0_n', e%s0_n)) return
+      if (.not. finite_entry('sf_n', e%sf_n)) return
+      if (.not. finite_entry('s0_t', e%s0_t)) return
+      if (.not. finite_entry('sf_t', e%sf_t)) return
+      props(PROP_MU) = e%mu
+      props(PROP_S0_N) = e%s0_n
+      props(PROP_SF_N) = e%sf_n
+      props(PROP_S0_T) = e%s0_t
+      props(PROP_SF_T) = e%sf_t
       ok = .true.
 
    contains
@@ -264,7 +315,7 @@ contains
          if (.not. finite_entry) message = where//name//' is not a finite number'
       end function finite_entry
 
-   end subroutine read_material
+   end subroutine material_props
 
    !> Read the `&loading` group.
    subroutine read_loading(unit, run, ok, message)

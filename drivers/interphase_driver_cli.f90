@@ -1,11 +1,12 @@
 !> Command line of the stand-alone programs (`interphase-point`, `interphase-fe2d`,
 !> `interphase-calibrate`): arguments of any length, the common `CASE.nml [--output-dir DIR]
-!> [--no-plot]` form, and creating an output folder.
+!> [--no-plot]` form, creating an output folder, and running gnuplot when it is there.
 module interphase_driver_cli
    use interphase_driver_text, only: int_to_string, shell_quote
    implicit none
    private
-   public :: run_arguments_type, parse_run_arguments, get_argument, make_directory
+   public :: run_arguments_type, parse_run_arguments, get_argument, make_directory, gnuplot_available, &
+      run_gnuplot
 
    !> `PROGRAM CASE.nml [--output-dir DIR] [--no-plot]` (or `-h`/`--help`).
    type :: run_arguments_type
@@ -107,5 +108,42 @@ contains
          message = 'mkdir -p '//directory//' failed (exit status '//int_to_string(exitstat)//')'
       end if
    end subroutine make_directory
+
+   !> True when `gnuplot` is on PATH.
+   logical function gnuplot_available()
+      integer :: exitstat, cmdstat
+      character(len=256) :: cmdmsg
+      exitstat = 1
+      cmdmsg = ''
+      call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=exitstat, &
+         cmdstat=cmdstat, cmdmsg=cmdmsg)
+      gnuplot_available = cmdstat == 0 .and. exitstat == 0
+   end function gnuplot_available
+
+   !> Run gnuplot on a script inside `directory` ('' = current directory).
+   subroutine run_gnuplot(directory, script_name, ok, message)
+      character(len=*), intent(in) :: directory, script_name
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+      character(len=:), allocatable :: folder
+      integer :: exitstat, cmdstat
+      character(len=256) :: cmdmsg
+      ok = .false.
+      message = ''
+      folder = directory
+      if (len(folder) == 0) folder = '.'
+      exitstat = 0
+      cmdmsg = ''
+      call execute_command_line('cd '//shell_quote(folder)//' && gnuplot '//shell_quote(script_name), &
+         exitstat=exitstat, cmdstat=cmdstat, cmdmsg=cmdmsg)
+      if (cmdstat /= 0) then
+         message = 'cannot run gnuplot: '//trim(cmdmsg)
+      else if (exitstat /= 0) then
+         message = 'gnuplot failed on '//folder//'/'//script_name//' (exit status '// &
+            int_to_string(exitstat)//')'
+      else
+         ok = .true.
+      end if
+   end subroutine run_gnuplot
 
 end module interphase_driver_cli

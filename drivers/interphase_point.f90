@@ -11,7 +11,8 @@
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_driver_case, only: case_type, read_case
-   use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory
+   use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
+      gnuplot_available, run_gnuplot
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
@@ -19,7 +20,7 @@ program interphase_point
    use interphase_driver_output, only: csv_header, write_plot_script
    use interphase_driver_replay, only: replay_history
    use interphase_driver_text, only: int_to_string, directory_of, base_name, stem_of, &
-      join_path, shell_quote
+      join_path
    implicit none
 
    character(len=:), allocatable :: case_path, output_dir, csv_path, message
@@ -109,14 +110,8 @@ contains
    !> Write the gnuplot script next to the CSV and run it, or say why not.
    subroutine plot_csv()
       character(len=:), allocatable :: directory, stem, script_name
-      integer :: exitstat, cmdstat
-      character(len=256) :: cmdmsg
 
-      exitstat = 1
-      cmdmsg = ''
-      call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=exitstat, &
-         cmdstat=cmdstat, cmdmsg=cmdmsg)
-      if (cmdstat /= 0 .or. exitstat /= 0) then
+      if (.not. gnuplot_available()) then
          write (output_unit, '(a)') 'gnuplot not found: PNG skipped (install Debian package gnuplot-nox)'
          return
       end if
@@ -126,12 +121,8 @@ contains
       call write_plot_script(join_path(directory, script_name), base_name(csv_path), &
          stem//'.png', run%name, history%ntens, ok, message)
       if (.not. ok) call fail(message)
-      if (len(directory) == 0) directory = '.'
-      call execute_command_line('cd '//shell_quote(directory)//' && gnuplot '// &
-         shell_quote(script_name), exitstat=exitstat, cmdstat=cmdstat, cmdmsg=cmdmsg)
-      if (cmdstat /= 0) call fail('cannot run gnuplot: '//trim(cmdmsg))
-      if (exitstat /= 0) call fail('gnuplot failed on '//join_path(directory, script_name)// &
-         ' (exit status '//int_to_string(exitstat)//')')
+      call run_gnuplot(directory, script_name, ok, message)
+      if (.not. ok) call fail(message)
       write (output_unit, '(a)') run%name//': plot written to '//join_path(directory, stem//'.png')
    end subroutine plot_csv
 

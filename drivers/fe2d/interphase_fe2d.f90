@@ -13,15 +13,17 @@ program interphase_fe2d
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_layout, only: PROP_MU
    use interphase_micro_coefficients, only: load_custom_table
+   use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
-   use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory
+   use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
+      gnuplot_available, run_gnuplot
    use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
    use interphase_fe2d_solver, only: fe2d_options_type, fe2d_result_type, run_analysis, &
       CSV_COLUMNS, COL_SHEAR, COL_NORMAL, COL_STEP
    use interphase_fe2d_output, only: write_curve_csv, write_curve_plot_script
    use interphase_driver_text, only: int_to_string, real_to_string, directory_of, base_name, &
-      stem_of, join_path, shell_quote
+      stem_of, join_path
    implicit none
 
    character(len=:), allocatable :: case_path, output_dir, csv_path, log_path, message
@@ -50,6 +52,10 @@ program interphase_fe2d
    if (len(run%table_path) > 0) then
       ! start-up: the custom RVE table is read once, before any update (as UEXTERNALDB does)
       call load_custom_table(run%table_path, status, table_message)
+      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
+   end if
+   if (len(run%rcurve_path) > 0) then
+      call load_rcurve(run%rcurve_path, status, table_message)
       if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
    end if
    call build_mesh(run, mesh)
@@ -119,14 +125,8 @@ contains
 
    subroutine plot_csv()
       character(len=:), allocatable :: directory, stem, script_name
-      integer :: exitstat, cmdstat
-      character(len=256) :: cmdmsg
 
-      exitstat = 1
-      cmdmsg = ''
-      call execute_command_line('command -v gnuplot > /dev/null 2>&1', exitstat=exitstat, &
-         cmdstat=cmdstat, cmdmsg=cmdmsg)
-      if (cmdstat /= 0 .or. exitstat /= 0) then
+      if (.not. gnuplot_available()) then
          write (output_unit, '(a)') 'gnuplot not found: PNG skipped (install Debian package gnuplot-nox)'
          return
       end if
@@ -136,12 +136,8 @@ contains
       call write_curve_plot_script(join_path(directory, script_name), base_name(csv_path), &
          stem//'.png', run%name, run%props(PROP_MU), ok, message)
       if (.not. ok) call fail(message)
-      if (len(directory) == 0) directory = '.'
-      call execute_command_line('cd '//shell_quote(directory)//' && gnuplot '// &
-         shell_quote(script_name), exitstat=exitstat, cmdstat=cmdstat, cmdmsg=cmdmsg)
-      if (cmdstat /= 0) call fail('cannot run gnuplot: '//trim(cmdmsg))
-      if (exitstat /= 0) call fail('gnuplot failed on '//join_path(directory, script_name)// &
-         ' (exit status '//int_to_string(exitstat)//')')
+      call run_gnuplot(directory, script_name, ok, message)
+      if (.not. ok) call fail(message)
       write (output_unit, '(a)') run%name//': plot written to '//join_path(directory, stem//'.png')
    end subroutine plot_csv
 

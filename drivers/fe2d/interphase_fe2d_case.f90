@@ -5,12 +5,10 @@
 !> errors come back as a message naming the case file and the group.
 module interphase_fe2d_case
    use, intrinsic :: iso_fortran_env, only: iostat_end
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
-   use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
-      PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
-      DAMAGE_DISPLACEMENT, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
-      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE
+   use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
+      ENTRY_LEN
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words
    implicit none
@@ -18,8 +16,6 @@ module interphase_fe2d_case
    public :: fe2d_case_type, read_fe2d_case, read_shear_history, SIDES_FREE, SIDES_PERIODIC, &
       INTEGRATION_LOBATTO, INTEGRATION_GAUSS
 
-   integer, parameter :: ENTRY_LEN = 1024
-   real(dp), parameter :: UNSET_REAL = -huge(1.0_dp)
    !> Lateral faces of the bricks: traction-free (the laboratory test).
    integer, parameter :: SIDES_FREE = 1
    !> Lateral faces tied periodically (left and right node at the same height share their
@@ -50,6 +46,7 @@ module interphase_fe2d_case
       ! &joint
       real(dp), allocatable :: props(:)                !! UMAT PROPS (docs/abaqus.md)
       character(len=:), allocatable :: table_path      !! custom RVE table or ''
+      character(len=:), allocatable :: rcurve_path     !! tabulated R-curve or ''
       ! &loading
       real(dp) :: precompression = 0.0_dp              !! normal pressure on the top face (MPa)
       integer :: precompression_increments = 1         !! increments of the precompression step
@@ -233,104 +230,32 @@ contains
       ok = .true.
    end subroutine read_brick
 
-   !> `&joint`: the interface material, as the `&material` group of interphase-point.
+   !> `&joint`: the interface material, as the `&material` group of interphase-point (the same
+   !> entries and the same decoder, `material_props`); damage_law defaults to 'displacement'.
    subroutine read_joint(unit, run, ok, message)
       integer, intent(in) :: unit                 !! open case file
-      type(fe2d_case_type), intent(inout) :: run  !! receives props
+      type(fe2d_case_type), intent(inout) :: run  !! receives props, table_path, rcurve_path
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      character(len=ENTRY_LEN) :: model, damage_law, table
-      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t
-      namelist /joint/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table
-      character(len=:), allocatable :: missing, where
+      type(material_entries_type) :: e
+      character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file
+      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii
+      namelist /joint/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
+         rcurve_file, g_ci, g_cii
       integer :: ios
       character(len=512) :: iomsg
 
-      where = run%path//': &joint: '
-      model = ''
-      damage_law = 'displacement'
-      table = ''
-      run%table_path = ''
-      mu = UNSET_REAL
-      s0_n = UNSET_REAL
-      sf_n = UNSET_REAL
-      s0_t = UNSET_REAL
-      sf_t = UNSET_REAL
-      k_n = UNSET_REAL
-      k_t = UNSET_REAL
+      e%damage_law = 'displacement'
+      call unpack_entries(e, model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, sf_t, &
+         k_n, k_t, d0, g_ci, g_cii)
       rewind (unit)
       read (unit, nml=joint, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'joint', ios, iomsg, ok, message)
       if (.not. ok) return
-      ok = .false.
-      missing = ''
-      if (len_trim(model) == 0) call add_name('model')
-      if (is_unset(mu)) call add_name('mu')
-      if (is_unset(s0_n)) call add_name('s0_n')
-      if (is_unset(sf_n)) call add_name('sf_n')
-      if (is_unset(s0_t)) call add_name('s0_t')
-      if (is_unset(sf_t)) call add_name('sf_t')
-      if (to_lower(trim(adjustl(model))) == 'simplified') then
-         if (is_unset(k_n)) call add_name('k_n')
-         if (is_unset(k_t)) call add_name('k_t')
-      end if
-      if (len(missing) > 0) then
-         if (index(missing, ',') > 0) then
-            message = where//'missing entries '//missing
-         else
-            message = where//'missing entry '//missing
-         end if
-         return
-      end if
-      select case (to_lower(trim(adjustl(model))))
-      case ('simplified')
-         if (len_trim(table) > 0) then
-            message = where//"table is an entry of model = 'micromechanical' only"
-            return
-         end if
-         allocate (run%props(NPROPS_SIMPLIFIED))
-         run%props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
-         run%props(PROP_K_N) = k_n
-         run%props(PROP_K_T) = k_t
-      case ('micromechanical')
-         if (.not. (is_unset(k_n) .and. is_unset(k_t))) then
-            message = where//"k_n and k_t are entries of model = 'simplified' only (the "// &
-               "micromechanical model takes its stiffness from the RVE table)"
-            return
-         end if
-         allocate (run%props(NPROPS_MICROMECHANICAL))
-         run%props(PROP_MODEL) = real(MODEL_MICROMECHANICAL, dp)
-         if (len_trim(table) == 0) then
-            run%props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
-         else
-            run%props(PROP_TABLE) = real(TABLE_CUSTOM_CODE, dp)
-            run%table_path = join_path(directory_of(run%path), trim(adjustl(table)))
-         end if
-      case default
-         message = where//"unknown model '"//trim(adjustl(model))// &
-            "' (available: 'simplified', 'micromechanical')"
-         return
-      end select
-      select case (to_lower(trim(adjustl(damage_law))))
-      case ('displacement')
-         run%props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
-      case default
-         message = where//"unknown damage_law '"//trim(adjustl(damage_law))// &
-            "' (available: 'displacement')"
-         return
-      end select
-      run%props(PROP_MU) = mu
-      run%props(PROP_S0_N) = s0_n
-      run%props(PROP_SF_N) = sf_n
-      run%props(PROP_S0_T) = s0_t
-      run%props(PROP_SF_T) = sf_t
-      ok = .true.
-   contains
-      subroutine add_name(name)
-         character(len=*), intent(in) :: name
-         if (len(missing) > 0) missing = missing//', '
-         missing = missing//name
-      end subroutine add_name
+      e = material_entries_type(model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, &
+         sf_t, k_n, k_t, d0, g_ci, g_cii)
+      call material_props(e, run%path//': &joint: ', directory_of(run%path), run%props, run%table_path, &
+         run%rcurve_path, ok, message)
    end subroutine read_joint
 
    subroutine read_loading(unit, run, ok, message)
@@ -412,17 +337,6 @@ contains
       run%plot = plot
       ok = .true.
    end subroutine read_loading
-
-   !> True when a real namelist entry kept its UNSET_REAL marker (NaN-safe, no real equality).
-   pure logical function is_unset(value)
-      real(dp), intent(in) :: value               !! the entry after the namelist read
-
-      if (ieee_is_nan(value)) then
-         is_unset = .false.
-      else
-         is_unset = value <= UNSET_REAL
-      end if
-   end function is_unset
 
    !> Turn the iostat of a namelist read into ok/message. A missing group is an error.
    subroutine group_status(path, group, ios, iomsg, ok, message)
