@@ -57,7 +57,7 @@ contains
 
       type(coefficient_set_type) :: c, dc
       type(response_type) :: r
-      real(dp) :: s_n, st(2), t, d_hat, dd_dsn, dd_dt, d, dd_ds(3)
+      real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3)
       integer :: ntens, nt, j
 
       ntens = size(s)
@@ -76,12 +76,13 @@ contains
 
       if (params%damage_law == DAMAGE_DISPLACEMENT) then
          ! damage first (eq 39), then the response at that damage
-         t = sqrt(st(1)**2 + st(2)**2)
-         call displacement_damage(params, s_n, t, d_hat, dd_dsn, dd_dt)
+         t_sq = st(1)**2 + st(2)**2
+         call displacement_damage(params, s_n, t_sq, d_hat, dd_dsn, dd_dt)
          d = max(old%d, min(1.0_dp, d_hat))
          dd_ds = 0.0_dp
          if (d_hat > old%d .and. d_hat < 1.0_dp) then
             dd_ds(1) = dd_dsn
+            t = sqrt(t_sq)
             if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
          end if
          call coefficients_at(params, d, c, dc, status)

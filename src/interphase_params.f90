@@ -36,6 +36,8 @@ module interphase_params
       real(dp) :: gc_ii = 0.0_dp                     !! fracture law, constant R-curve: G_cII (N/mm, eq 20)
       real(dp) :: eta_n = 0.0_dp                     !! eta_N = s0_N/sf_N (-), eq 13
       real(dp) :: eta_t = 0.0_dp                     !! eta_T = s0_T/sf_T (-), eq 13
+      real(dp) :: inv_s0_n = 0.0_dp                  !! 1/s0_N (1/mm), for the damage law
+      real(dp) :: inv_s0_t_sq = 0.0_dp               !! 1/s0_T^2 (1/mm^2), for the damage law
    end type law_params_type
 
 contains
@@ -165,8 +167,8 @@ contains
       if (present(table)) params%table = table
       params%eta_n = s0_n/sf_n
       params%eta_t = s0_t/sf_t
-
-
+      params%inv_s0_n = 1.0_dp/s0_n
+      params%inv_s0_t_sq = (1.0_dp/s0_t)**2
    end subroutine params_from_values
 
    !> Add and validate the fracture-mechanics law's constants; `base` is the PROPS index before

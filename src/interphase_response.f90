@@ -77,7 +77,11 @@ contains
       kk_t = c%k_t + c%kc_t
       sigma = c%sc_n*s_n
       tau = c%tc_t*st + c%tf*slip_old
-      tau_norm = sqrt(tau(1)**2 + tau(2)**2)
+      if (nt == 1) then
+         tau_norm = abs(tau(1))
+      else
+         tau_norm = sqrt(tau(1)**2 + tau(2)**2)
+      end if
       phi = params%mu*sigma + tau_norm
       r%traction(1) = kk_n*s_n
       r%tangent(1, 1) = kk_n
@@ -89,8 +93,13 @@ contains
             status = STATUS_BAD_COEFFICIENTS
             return
          end if
-         nvec = tau/tau_norm
-         dgamma = phi/kf
+         ! (interphase_block forms the same products, bit for bit)
+         if (nt == 1) then
+            nvec = [sign(1.0_dp, tau(1)), 0.0_dp]
+         else
+            nvec = tau*(1.0_dp/tau_norm)
+         end if
+         dgamma = phi*(1.0_dp/kf)
          r%slip = slip_old + dgamma*nvec
          r%regime = REGIME_SLIP
          ! d lambda/d s_T = (T^c_T/kf) [I + (mu sigma/|tau|)(I - n n)], d lambda/d s_N = (mu S^c_N/kf) n

@@ -29,13 +29,14 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       tempnew, stretchnew, defgradnew, fieldnew, stressnew, statenew, enerinternnew, &
       enerinelasnew)
    use interphase_kinds, only: dp
-   use interphase_finite, only: is_finite
-   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, SV_SEP_N, SV_FAILED
+   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
+      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
-      SEVERITY_WARNING, SEVERITY_FATAL, status_message
+      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, status_message
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
+   use interphase_block, only: simplified_block_update, count_invalid_states, count_nonpositive
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
    integer, intent(in) :: nblock                    !! number of material points in this call
@@ -69,14 +70,19 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    !> Separation per tensor shear strain: engineering shear = 2 x tensor shear.
    real(dp), parameter :: SHEAR_FACTOR = 2.0_dp
 
+   !> Points updated per pass: the chunk's working arrays live on the stack and in L1/L2.
+   integer, parameter :: CHUNK = 256
+
    type(law_params_type) :: params
    type(interface_state_type) :: old, new
-   real(dp) :: sv(NSTATV_VUMAT), s(3), ds(3), traction(3), tangent(3, 3), psi, psi_old
-   real(dp) :: rho_t, dissipated
-   integer :: ntens, km, status, nfailed, first_failed, first_status
+   real(dp) :: ds(CHUNK, 3), psi(CHUNK), traction_t2(CHUNK), traction(3), tangent(3, 3)
+   real(dp) :: work, rho_t, inv_rho, psi_old, energy_inelas
+   logical :: ok(CHUNK), blocked
+   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, status, nfailed, first_failed, first_status
    character(len=MESSAGE_LEN) :: message, first_message
 
    ntens = ndir + nshr
+   nt = nshr
 
    ! ---- setup checks: fatal, the whole block is held ----------------------------------------
    if (ndir /= 1 .or. (nshr /= 1 .and. nshr /= 2)) then
@@ -96,14 +102,27 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       call fail_block(status)
       return
    end if
-   do km = 1, nblock
-      if (.not. positive_finite(density(km))) then
-         write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
-            ': the VUMAT needs *Density > 0 on the material (its energies are per unit mass)'
-         call fail_block(-1)
-         return
-      end if
-   end do
+   ! densities and incoming states: one branch-free pass each, the culprit searched only on error
+   if (count_nonpositive(nblock, density) > 0) then
+      do km = 1, nblock
+         if (count_nonpositive(1, density(km:km)) > 0) exit
+      end do
+      write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
+         ': the VUMAT needs *Density > 0 on the material (its energies are per unit mass)'
+      call fail_block(-1)
+      return
+   end if
+   if (count_invalid_states(nblock, nt, stateold(:, SV_DAMAGE), stateold(:, SV_SLIP_1), &
+         stateold(:, SV_SLIP_2), stateold(:, SV_REGIME)) > 0) then
+      do km = 1, nblock
+         call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
+         if (status /= STATUS_OK) exit
+      end do
+      write (first_message, '(a,i0,a,a)') 'block point ', km, ': ', trim(message)
+      message = first_message
+      call fail_block(status)
+      return
+   end if
 
    ! user slots beyond interphase's are carried over
    if (nstatev > NSTATV_VUMAT) then
@@ -112,9 +131,10 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
 
    ! ---- packaging call (time zero) and annealing: no state change ---------------------------
    if (lanneal == 1 .or. (totaltime <= 0.0_dp .and. steptime <= 0.0_dp)) then
-      do km = 1, nblock
-         call hold_point(km)
-      end do
+      stressnew = stressold
+      statenew(:, 1:NSTATV_VUMAT) = stateold(:, 1:NSTATV_VUMAT)
+      enerinternnew = enerinternold
+      enerinelasnew = enerinelasold
       if (lanneal /= 1) then
          ! elastic response of the intact interface, for Abaqus's stable-time-increment estimate
          stressnew(:, 1) = stressold(:, 1) + params%k_n*THICKNESS*straininc(:, 1)
@@ -123,47 +143,96 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       return
    end if
 
-   ! ---- the update, point by point ----------------------------------------------------------
+   ! ---- the update, CHUNK points at a time --------------------------------------------------
+   ! The simplified model with the displacement-driven law runs the vectorised block update
+   ! (interphase_block); the other models and laws run the point update (interphase_kernel).
+   ! Both give the same numbers for the simplified model (bit for bit). Results go straight into
+   ! the new arrays; a failed point is put back to its old values afterwards.
+   blocked = params%model == MODEL_SIMPLIFIED .and. params%damage_law == DAMAGE_DISPLACEMENT
    nfailed = 0
    first_failed = 0
    first_status = STATUS_OK
    first_message = ''
-   do km = 1, nblock
-      sv = stateold(km, 1:NSTATV_VUMAT)
-      call state_unpack(sv(1:NSTATV_REQUIRED), ntens, old, status, message)
-      if (status /= STATUS_OK) then
-         write (first_message, '(a,i0,a,a)') 'block point ', km, ': ', trim(message)
-         message = first_message
-         call fail_block(status)
-         return
-      end if
-      ds(1) = THICKNESS*straininc(km, 1)
-      ds(2:ntens) = SHEAR_FACTOR*THICKNESS*straininc(km, 2:ntens)
-      s(1:ntens) = sv(SV_SEP_N:SV_SEP_N + ntens - 1) + ds(1:ntens)
-      call interface_update(params, old, s(1:ntens), traction(1:ntens), &
-         tangent(1:ntens, 1:ntens), new, psi, status)
-      if (status /= STATUS_OK) then
-         nfailed = nfailed + 1
-         if (nfailed == 1) then
-            first_failed = km
-            first_status = status
-            write (first_message, '(a,3es12.4)') 'separation (mm) ', s(1:ntens)
-         end if
-         call hold_point(km)
-         statenew(km, SV_FAILED) = 1.0_dp
-         cycle
+   do k0 = 1, nblock, CHUNK
+      n = min(CHUNK, nblock - k0 + 1)
+      k1 = k0 + n - 1
+      ! separation increments ds = T0 strainInc (x 2 for the tensor shears) and the separations
+      ! at the end of the increment, s = s_old + ds, stored in STATEV
+      do j = 1, ntens
+         ds(1:n, j) = merge(1.0_dp, SHEAR_FACTOR, j == 1)*THICKNESS*straininc(k0:k1, j)
+         statenew(k0:k1, SV_SEP_N + j - 1) = stateold(k0:k1, SV_SEP_N + j - 1) + ds(1:n, j)
+      end do
+      if (ntens == 2) statenew(k0:k1, SV_SEP_T2) = 0.0_dp
+      statenew(k0:k1, SV_FAILED) = stateold(k0:k1, SV_FAILED)
+
+      if (blocked) then
+         call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
+            statenew(k0:k1, SV_SEP_T1), statenew(k0:k1, SV_SEP_T2), stateold(k0:k1, SV_DAMAGE), &
+            stateold(k0:k1, SV_SLIP_1), stateold(k0:k1, SV_SLIP_2), stressnew(k0:k1, 1), &
+            stressnew(k0:k1, 2), traction_t2(1:n), statenew(k0:k1, SV_DAMAGE), &
+            statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
+            psi(1:n), ok(1:n), nbad)
+         if (ntens == 3) stressnew(k0:k1, 3) = traction_t2(1:n)
+         if (nbad > 0 .and. first_status == STATUS_OK) first_status = STATUS_NONFINITE_SEPARATION
+      else
+         nbad = 0
+         do k = 1, n
+            km = k0 + k - 1
+            ! checked above, cannot fail here
+            call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
+            call interface_update(params, old, statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1), &
+               traction, tangent(1:ntens, 1:ntens), new, psi(k), status)
+            ok(k) = status == STATUS_OK
+            if (.not. ok(k)) then
+               nbad = nbad + 1
+               if (first_status == STATUS_OK) first_status = status
+               traction = 0.0_dp
+               new = interface_state_type()
+               psi(k) = 0.0_dp
+            end if
+            stressnew(km, 1:ntens) = traction(1:ntens)
+            call state_pack(new, statenew(km, 1:NSTATV_REQUIRED))
+         end do
       end if
 
-      rho_t = density(km)*THICKNESS
-      psi_old = (enerinternold(km) - enerinelasold(km))*rho_t
-      dissipated = 0.5_dp*sum((stressold(km, 1:ntens) + traction(1:ntens))*ds(1:ntens)) - (psi - psi_old)
-      enerinelasnew(km) = enerinelasold(km) + dissipated/rho_t
-      enerinternnew(km) = enerinelasnew(km) + psi/rho_t
-      stressnew(km, 1:ntens) = traction(1:ntens)
-      call state_pack(new, sv(1:NSTATV_REQUIRED))
-      sv(SV_SEP_N:SV_SEP_N + 2) = 0.0_dp
-      sv(SV_SEP_N:SV_SEP_N + ntens - 1) = s(1:ntens)
-      statenew(km, 1:NSTATV_VUMAT) = sv
+      if (nbad > 0) then
+         if (first_failed == 0) then
+            first_failed = k0 - 1 + findloc(ok(1:n), .false., dim=1)
+            write (first_message, '(a,3es12.4)') 'separation (mm) ', &
+               statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
+         end if
+         nfailed = nfailed + nbad
+         ! a failed point's increment may not be finite: no work is counted on it
+         do j = 1, ntens
+            ds(1:n, j) = merge(ds(1:n, j), 0.0_dp, ok(1:n))
+         end do
+      end if
+
+      ! energies (one vectorised pass, no selection)
+      do k = 1, n
+         km = k0 + k - 1
+         work = (stressold(km, 1) + stressnew(km, 1))*ds(k, 1) + (stressold(km, 2) + stressnew(km, 2))*ds(k, 2)
+         if (ntens == 3) work = work + (stressold(km, 3) + stressnew(km, 3))*ds(k, 3)
+         rho_t = density(km)*THICKNESS
+         inv_rho = 1.0_dp/rho_t
+         psi_old = (enerinternold(km) - enerinelasold(km))*rho_t
+         energy_inelas = enerinelasold(km) + (0.5_dp*work - (psi(k) - psi_old))*inv_rho
+         enerinelasnew(km) = energy_inelas
+         enerinternnew(km) = energy_inelas + psi(k)*inv_rho
+      end do
+
+      ! a failed point is held at its old values and flagged
+      if (nbad > 0) then
+         do k = 1, n
+            if (ok(k)) cycle
+            km = k0 + k - 1
+            stressnew(km, :) = stressold(km, :)
+            statenew(km, 1:NSTATV_VUMAT) = stateold(km, 1:NSTATV_VUMAT)
+            statenew(km, SV_FAILED) = 1.0_dp
+            enerinternnew(km) = enerinternold(km)
+            enerinelasnew(km) = enerinelasold(km)
+         end do
+      end if
    end do
 
    if (nfailed > 0) then
@@ -177,15 +246,6 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    end if
 
 contains
-
-   !> Copy stress, interphase's state slots and energies of point k unchanged.
-   subroutine hold_point(k)
-      integer, intent(in) :: k
-      stressnew(k, :) = stressold(k, :)
-      statenew(k, 1:NSTATV_VUMAT) = stateold(k, 1:NSTATV_VUMAT)
-      enerinternnew(k) = enerinternold(k)
-      enerinelasnew(k) = enerinelasold(k)
-   end subroutine hold_point
 
    !> Setup error: hold the whole block at its old values and report a fatal message.
    subroutine fail_block(code)
@@ -202,12 +262,5 @@ contains
       end if
       call interphase_host_message(SEVERITY_FATAL, trim(full))
    end subroutine fail_block
-
-   !> x is finite and > 0 (false for NaN without an invalid-operation exception).
-   pure logical function positive_finite(x)
-      real(dp), intent(in) :: x
-      positive_finite = .false.
-      if (is_finite(x)) positive_finite = x > 0.0_dp
-   end function positive_finite
 
 end subroutine vumat

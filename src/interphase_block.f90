@@ -1,0 +1,254 @@
+!> The update of a whole block of interface points at once, for hosts that pass many points per
+!> call (Abaqus/Explicit's VUMAT, a vectorised FE assembly): the simplified model with the
+!> displacement-driven damage law, written so that the compiler vectorises the loop over the
+!> points (SIMD). The points are stored component by component (structure of arrays), as
+!> Abaqus/Explicit lays out its block arrays, so every column is read and written contiguously.
+!>
+!> Same law, same arithmetic, same results as `interface_update` (`interphase_kernel`) point by
+!> point, bit for bit (tests/test_vumat.pf checks it on the paper's mixed history in 2-D and
+!> 3-D): every branch of the scalar update becomes a selection (`merge`) between the branches,
+!> both evaluated on guarded operands so that no branch can raise a floating-point exception.
+!> No tangent is formed (explicit hosts do not use one).
+!>
+!> Also here: the checks of a block's incoming state and densities as branch-free counts, so
+!> that a host can validate a block in one vectorised pass and look for the culprit only when
+!> the count is not zero.
+module interphase_block
+   use, intrinsic :: iso_fortran_env, only: int64
+   use interphase_kinds, only: dp
+   use interphase_params, only: law_params_type
+   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+   implicit none
+   private
+   public :: simplified_block_update, count_invalid_states, count_nonpositive
+
+   !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
+   integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
+   !> Bit pattern of 1.0_dp.
+   integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
+   !> Bit patterns of the regime codes 0..3 stored as reals.
+   integer(int64), parameter :: REGIME_BITS(4) = [transfer(real(REGIME_INTACT, dp), 0_int64), &
+      transfer(real(REGIME_OPEN, dp), 0_int64), transfer(real(REGIME_STICK, dp), 0_int64), &
+      transfer(real(REGIME_SLIP, dp), 0_int64)]
+   !> Position of the sign bit of an IEEE binary64 number.
+   integer, parameter :: SIGN_BIT = 63
+
+contains
+
+   !> Update n points of the simplified model (displacement-driven damage law) from their
+   !> separations at the end of the increment and their state at its start.
+   !>
+   !> A point whose separation is not finite gets ok = .false.; its outputs are then finite but
+   !> meaningless (the caller holds the point at its old values). The other points are updated
+   !> exactly as `interface_update` does. In 2-D (nt = 1) the values of s_t2 and lam2_old are
+   !> not used (the arrays must exist) and t_t2 = lam2 = 0 on return.
+   pure subroutine simplified_block_update(params, n, nt, s_n, s_t1, s_t2, d_old, lam1_old, &
+         lam2_old, t_n, t_t1, t_t2, d, lam1, lam2, regime, psi, ok, nfailed)
+      type(law_params_type), intent(in) :: params    !! the simplified model, displacement law
+      integer, intent(in) :: n                       !! number of points
+      integer, intent(in) :: nt                      !! tangential components: 1 (2-D) or 2 (3-D)
+      real(dp), intent(in) :: s_n(n)                 !! normal separation at the end (mm)
+      real(dp), intent(in) :: s_t1(n), s_t2(n)       !! tangential separations at the end (mm)
+      real(dp), intent(in) :: d_old(n)               !! damage D at the start (-), in [0, 1]
+      real(dp), intent(in) :: lam1_old(n), lam2_old(n)  !! slip lambda at the start (mm)
+      real(dp), intent(out) :: t_n(n)                !! normal traction (MPa)
+      real(dp), intent(out) :: t_t1(n), t_t2(n)      !! tangential tractions (MPa)
+      real(dp), intent(out) :: d(n)                  !! damage D at the end (-)
+      real(dp), intent(out) :: lam1(n), lam2(n)      !! slip lambda at the end (mm)
+      real(dp), intent(out) :: regime(n)             !! REGIME_* code, as a real (STATEV form)
+      real(dp), intent(out) :: psi(n)                !! stored energy per unit area (N/mm)
+      logical, intent(out) :: ok(n)                  !! the separation was finite
+      integer, intent(out) :: nfailed                !! number of points with ok = .false.
+
+      !> Points per pass: the passes' working arrays stay in the L1 cache.
+      integer, parameter :: SUB = 64
+      real(dp) :: sn_w(SUB), st1_w(SUB), st2_w(SUB), lam2_w(SUB), t_sq_w(SUB), tau_norm_w(SUB)
+      real(dp) :: dir1_w(SUB), dir2_w(SUB)
+      logical :: ok_w(SUB)
+      real(dp) :: inv_kf, s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
+      real(dp) :: d_hat, d_k, num, den, kn_open, kt_open, kk_n, kk_t, cf_t, sigma, tau1, tau2
+      real(dp) :: tau_norm, phi, inv_norm, dgamma, lam1_closed, lam2_closed
+      real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
+      real(dp) :: lam1_open, lam2_open, regime_open, regime_closed
+      integer(int64) :: keep
+      logical :: ok_k, growing, open, slipping
+      integer :: c0, m, i, k
+
+      ! Two passes over SUB points at a time, each a loop without control flow (every input
+      ! loaded unconditionally, every branch computed and then selected) so that it vectorises:
+      ! pass 1, one loop for 2-D and one for 3-D: finiteness, |s_T|^2 and the trial crack shear
+      ! stress's norm and direction (2-D: |tau| and its sign, no square root or division);
+      ! pass 2, common: damage, the simplified coefficients, open/stick/slip, energy.
+      ! the return mapping divides by kf = -T^f = K_T (the scalar update forms the same 1/kf)
+      inv_kf = 1.0_dp/params%k_t
+      nfailed = 0
+      do c0 = 1, n, SUB
+         m = min(SUB, n - c0 + 1)
+
+         ! ---- pass 1: a point with a non-finite separation computes on zeros (its results are
+         ! not used); bit masks, not branches
+         if (nt == 1) then
+            do i = 1, m
+               k = c0 + i - 1
+               s_n_k = s_n(k)
+               st1 = s_t1(k)
+               ok_k = max(iand(transfer(s_n_k, 0_int64), EXPONENT_MASK), &
+                  iand(transfer(st1, 0_int64), EXPONENT_MASK)) /= EXPONENT_MASK
+               keep = merge(-1_int64, 0_int64, ok_k)
+               s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
+               st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
+               tau1 = params%k_t*st1 + (-params%k_t)*lam1_old(k)
+               ok_w(i) = ok_k
+               nfailed = nfailed + merge(0, 1, ok_k)
+               sn_w(i) = s_n_k
+               st1_w(i) = st1
+               st2_w(i) = 0.0_dp
+               lam2_w(i) = 0.0_dp
+               t_sq_w(i) = st1**2
+               tau_norm_w(i) = abs(tau1)
+               dir1_w(i) = sign(1.0_dp, tau1)
+               dir2_w(i) = 0.0_dp
+            end do
+         else
+            do i = 1, m
+               k = c0 + i - 1
+               s_n_k = s_n(k)
+               st1 = s_t1(k)
+               st2 = s_t2(k)
+               ok_k = max(iand(transfer(s_n_k, 0_int64), EXPONENT_MASK), &
+                  iand(transfer(st1, 0_int64), EXPONENT_MASK), &
+                  iand(transfer(st2, 0_int64), EXPONENT_MASK)) /= EXPONENT_MASK
+               keep = merge(-1_int64, 0_int64, ok_k)
+               s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
+               st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
+               st2 = transfer(iand(transfer(st2, 0_int64), keep), 0.0_dp)
+               lam2_k = lam2_old(k)
+               tau1 = params%k_t*st1 + (-params%k_t)*lam1_old(k)
+               tau2 = params%k_t*st2 + (-params%k_t)*lam2_k
+               tau_norm = sqrt(tau1**2 + tau2**2)
+               inv_norm = 1.0_dp/merge(tau_norm, 1.0_dp, tau_norm > 0.0_dp)
+               ok_w(i) = ok_k
+               nfailed = nfailed + merge(0, 1, ok_k)
+               sn_w(i) = s_n_k
+               st1_w(i) = st1
+               st2_w(i) = st2
+               lam2_w(i) = lam2_k
+               t_sq_w(i) = st1**2 + st2**2
+               tau_norm_w(i) = tau_norm
+               dir1_w(i) = tau1*inv_norm
+               dir2_w(i) = tau2*inv_norm
+            end do
+         end if
+
+         ! ---- pass 2
+         do i = 1, m
+            k = c0 + i - 1
+            s_n_k = sn_w(i)
+            st1 = st1_w(i)
+            st2 = st2_w(i)
+            lam1_k = lam1_old(k)
+            lam2_k = lam2_w(i)
+            t_sq = t_sq_w(i)
+            tau_norm = tau_norm_w(i)
+
+            ! damage, eqs 13-18 (interphase_damage): D^ = beta/(eta (1 + beta)), r = 1 + beta
+            sn_pos = max(s_n_k, 0.0_dp)
+            x = sn_pos*params%inv_s0_n
+            r = sqrt(x*x + t_sq*params%inv_s0_t_sq)
+            growing = r > 1.0_dp
+            alpha2 = sn_pos*sn_pos + t_sq
+            weighted = params%eta_n*sn_pos*sn_pos + params%eta_t*t_sq
+            num = (r - 1.0_dp)*alpha2
+            den = r*(alpha2 - weighted)
+            d_hat = merge(num, 0.0_dp, growing)/merge(den, 1.0_dp, growing)
+            d_k = d_old(k)
+            d_k = max(d_k, min(1.0_dp, d_hat))
+
+            ! the simplified model's coefficients at D (eqs 31-35)
+            kn_open = (1.0_dp - d_k)*params%k_n
+            kt_open = (1.0_dp - d_k)*params%k_t
+            kk_n = kn_open + d_k*params%k_n
+            kk_t = kt_open + d_k*params%k_t
+            cf_t = -d_k*params%k_t
+
+            ! intact or open crack: t = k s, crack faces free, slip = mean sliding = s_T
+            tn_open = kn_open*s_n_k
+            tt1_open = kt_open*st1
+            tt2_open = kt_open*st2
+            psi_open = 0.5_dp*(tn_open*s_n_k + (tt1_open*st1 + tt2_open*st2))
+            lam1_open = merge(lam1_k, st1, d_k <= 0.0_dp)
+            lam2_open = merge(lam2_k, st2, d_k <= 0.0_dp)
+            regime_open = merge(real(REGIME_INTACT, dp), real(REGIME_OPEN, dp), d_k <= 0.0_dp)
+
+            ! closed crack: trial stick state (eq 43), return mapping (eqs 44-48)
+            sigma = params%k_n*s_n_k
+            phi = params%mu*sigma + tau_norm
+            slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+            dgamma = phi*inv_kf
+            lam1_closed = merge(lam1_k + dgamma*dir1_w(i), lam1_k, slipping)
+            lam2_closed = merge(lam2_k + dgamma*dir2_w(i), lam2_k, slipping)
+            tn_closed = kk_n*s_n_k
+            tt1_closed = kk_t*st1 + cf_t*lam1_closed
+            tt2_closed = kk_t*st2 + cf_t*lam2_closed
+            psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + tt2_closed*st2)) &
+               + 0.5_dp*cf_t*(lam1_closed*st1 + lam2_closed*st2) &
+               - 0.5_dp*d_k*(-params%k_t)*(lam1_closed**2 + lam2_closed**2)
+            regime_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
+
+            ! select the regime's values
+            open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
+            ok(k) = ok_w(i)
+            d(k) = d_k
+            t_n(k) = merge(tn_open, tn_closed, open)
+            t_t1(k) = merge(tt1_open, tt1_closed, open)
+            t_t2(k) = merge(tt2_open, tt2_closed, open)
+            lam1(k) = merge(lam1_open, lam1_closed, open)
+            lam2(k) = merge(lam2_open, lam2_closed, open)
+            psi(k) = merge(psi_open, psi_closed, open)
+            regime(k) = merge(regime_open, regime_closed, open)
+         end do
+      end do
+   end subroutine simplified_block_update
+
+   !> Number of points whose incoming state is not admissible (D outside [0, 1], a slip that is
+   !> not finite, a regime code that is not 0..3); the check `state_unpack` makes, point by
+   !> point, as integer operations on the bit patterns (no floating-point exception for NaN).
+   !> In 2-D (nt = 1) lam2 is not read.
+   pure integer function count_invalid_states(n, nt, d, lam1, lam2, regime) result(nbad)
+      integer, intent(in) :: n, nt
+      real(dp), intent(in) :: d(n), lam1(n), lam2(n), regime(n)
+      integer(int64) :: bd, bl1, bl2, br, lam2_mask
+      integer :: k, d_ok, lam_ok, regime_ok
+      ! lambda_2 is checked in 3-D only (a mask, so that the loop has no branch)
+      lam2_mask = merge(0_int64, EXPONENT_MASK, nt == 1)
+      nbad = 0
+      do k = 1, n
+         ! every value loaded first: a load behind a short-circuit would be a branch
+         bd = transfer(d(k), 0_int64)
+         bl1 = transfer(lam1(k), 0_int64)
+         bl2 = transfer(lam2(k), 0_int64)
+         br = transfer(regime(k), 0_int64)
+         ! (each condition a 0/1 integer: logical operators may short-circuit into branches)
+         d_ok = max(merge(1, 0, bd >= 0_int64 .and. bd <= ONE_BITS), merge(1, 0, ibclr(bd, SIGN_BIT) == 0_int64))
+         lam_ok = merge(1, 0, iand(bl1, EXPONENT_MASK) /= EXPONENT_MASK) &
+            *merge(1, 0, iand(bl2, lam2_mask) /= EXPONENT_MASK)
+         regime_ok = merge(1, 0, br == REGIME_BITS(1)) + merge(1, 0, br == REGIME_BITS(2)) &
+            + merge(1, 0, br == REGIME_BITS(3)) + merge(1, 0, br == REGIME_BITS(4))
+         nbad = nbad + 1 - d_ok*lam_ok*regime_ok
+      end do
+   end function count_invalid_states
+
+   !> Number of values that are not finite and > 0 (bit patterns; no exception for NaN).
+   pure integer function count_nonpositive(n, x) result(nbad)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: x(n)
+      integer(int64) :: b
+      integer :: k
+      nbad = 0
+      do k = 1, n
+         b = transfer(x(k), 0_int64)
+         nbad = nbad + merge(0, 1, b > 0_int64 .and. b < EXPONENT_MASK)
+      end do
+   end function count_nonpositive
+
+end module interphase_block
