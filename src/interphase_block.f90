@@ -69,13 +69,15 @@ contains
       real(dp) :: d_hat, d_k, num, den, kn_open, kt_open, kk_n, kk_t, cf_t, sigma, tau1, tau2
       real(dp) :: tau_norm, phi, inv_norm, dgamma, lam1_closed, lam2_closed
       real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
-      real(dp) :: lam1_open, lam2_open, regime_open, regime_closed
+      real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed
       integer(int64) :: keep
       logical :: ok_k, growing, open, slipping
       integer :: c0, m, i, k
 
       ! Two passes over SUB points at a time, each a loop without control flow (every input
-      ! loaded unconditionally, every branch computed and then selected) so that it vectorises:
+      ! loaded unconditionally, every branch computed and then selected) so that it vectorises;
+      ! every operand is guarded so that no lane can raise a floating-point exception, whatever
+      ! the compiler evaluates speculatively (hosts may run with traps enabled):
       ! pass 1, one loop for 2-D and one for 3-D: finiteness, |s_T|^2 and the trial crack shear
       ! stress's norm and direction (2-D: |tau| and its sign, no square root or division);
       ! pass 2, common: damage, the simplified coefficients, open/stick/slip, energy.
@@ -126,7 +128,7 @@ contains
                tau1 = params%k_t*st1 + (-params%k_t)*lam1_old(k)
                tau2 = params%k_t*st2 + (-params%k_t)*lam2_k
                tau_norm = sqrt(tau1**2 + tau2**2)
-               inv_norm = 1.0_dp/merge(tau_norm, 1.0_dp, tau_norm > 0.0_dp)
+               inv_norm = 1.0_dp/max(tau_norm, tiny(1.0_dp))
                ok_w(i) = ok_k
                nfailed = nfailed + merge(0, 1, ok_k)
                sn_w(i) = s_n_k
@@ -160,7 +162,9 @@ contains
             weighted = params%eta_n*sn_pos*sn_pos + params%eta_t*t_sq
             num = (r - 1.0_dp)*alpha2
             den = r*(alpha2 - weighted)
-            d_hat = merge(num, 0.0_dp, growing)/merge(den, 1.0_dp, growing)
+            ! the guard keeps 0/0 (s = 0) out of the lanes that are not growing: the compiler may
+            ! divide first and select afterwards; den > tiny wherever D grows, so it changes no result
+            d_hat = merge(num/max(den, tiny(1.0_dp)), 0.0_dp, growing)
             d_k = d_old(k)
             d_k = max(d_k, min(1.0_dp, d_hat))
 
@@ -178,7 +182,7 @@ contains
             psi_open = 0.5_dp*(tn_open*s_n_k + (tt1_open*st1 + tt2_open*st2))
             lam1_open = merge(lam1_k, st1, d_k <= 0.0_dp)
             lam2_open = merge(lam2_k, st2, d_k <= 0.0_dp)
-            regime_open = merge(real(REGIME_INTACT, dp), real(REGIME_OPEN, dp), d_k <= 0.0_dp)
+            regime_if_open = merge(real(REGIME_INTACT, dp), real(REGIME_OPEN, dp), d_k <= 0.0_dp)
 
             ! closed crack: trial stick state (eq 43), return mapping (eqs 44-48)
             sigma = params%k_n*s_n_k
@@ -193,7 +197,7 @@ contains
             psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + tt2_closed*st2)) &
                + 0.5_dp*cf_t*(lam1_closed*st1 + lam2_closed*st2) &
                - 0.5_dp*d_k*(-params%k_t)*(lam1_closed**2 + lam2_closed**2)
-            regime_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
+            regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
             ! select the regime's values
             open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
@@ -205,7 +209,7 @@ contains
             lam1(k) = merge(lam1_open, lam1_closed, open)
             lam2(k) = merge(lam2_open, lam2_closed, open)
             psi(k) = merge(psi_open, psi_closed, open)
-            regime(k) = merge(regime_open, regime_closed, open)
+            regime(k) = merge(regime_if_open, regime_if_closed, open)
          end do
       end do
    end subroutine simplified_block_update

@@ -97,7 +97,7 @@ contains
          if (nt == 1) then
             nvec = [sign(1.0_dp, tau(1)), 0.0_dp]
          else
-            nvec = tau*(1.0_dp/tau_norm)
+            nvec = tau*(1.0_dp/max(tau_norm, tiny(1.0_dp)))
          end if
          dgamma = phi*(1.0_dp/kf)
          r%slip = slip_old + dgamma*nvec
