@@ -36,6 +36,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
+   use interphase_coefficients, only: coefficient_set_type
+   use interphase_provider, only: coefficients_at
    use interphase_block, only: simplified_block_update, count_invalid_states, count_nonpositive
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
@@ -75,192 +77,206 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
 
    type(law_params_type) :: params
    type(interface_state_type) :: old, new
+   type(coefficient_set_type) :: intact, intact_rate
    real(dp) :: ds(CHUNK, 3), psi(CHUNK), traction_t2(CHUNK), traction(3), tangent(3, 3)
-   real(dp) :: work, rho_t, inv_rho, psi_old, energy_inelas
+   real(dp) :: work(CHUNK), rho_t, inv_rho, psi_old, energy_inelas
    logical :: ok(CHUNK), blocked
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, status, nfailed, first_failed, first_status
+   integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    character(len=MESSAGE_LEN) :: message, first_message
 
    ntens = ndir + nshr
    nt = nshr
 
-   ! ---- setup checks: fatal, the whole block is held ----------------------------------------
-   if (ndir /= 1 .or. (nshr /= 1 .and. nshr /= 2)) then
-      write (message, '(a,i0,a,i0,a)') 'ndir = ', ndir, ', nshr = ', nshr, &
-         ': interphase needs a cohesive element with ndir = 1 and nshr = 1 (2-D) or 2 (3-D)'
-      call fail_block(STATUS_BAD_NTENS)
-      return
-   end if
-   if (nstatev < NSTATV_VUMAT) then
-      write (message, '(a,i0,a,i0,a)') 'nstatev = ', nstatev, ' but the VUMAT needs at least ', &
-         NSTATV_VUMAT, ' (*DEPVAR)'
-      call fail_block(STATUS_BAD_NSTATV)
-      return
-   end if
-   call from_props(props, params, status, message)
-   if (status /= STATUS_OK) then
-      call fail_block(status)
-      return
-   end if
-   ! densities and incoming states: one branch-free pass each, the culprit searched only on error
-   if (count_nonpositive(nblock, density) > 0) then
-      do km = 1, nblock
-         if (count_nonpositive(1, density(km:km)) > 0) exit
-      end do
-      write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
-         ': the VUMAT needs *Density > 0 on the material (its energies are per unit mass)'
-      call fail_block(-1)
-      return
-   end if
-   if (count_invalid_states(nblock, nt, stateold(:, SV_DAMAGE), stateold(:, SV_SLIP_1), &
-         stateold(:, SV_SLIP_2), stateold(:, SV_REGIME)) > 0) then
-      do km = 1, nblock
-         call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
-         if (status /= STATUS_OK) exit
-      end do
-      write (first_message, '(a,i0,a,a)') 'block point ', km, ': ', trim(message)
-      message = first_message
-      call fail_block(status)
-      return
-   end if
-
-   ! user slots beyond interphase's are carried over
-   if (nstatev > NSTATV_VUMAT) then
-      statenew(:, NSTATV_VUMAT + 1:nstatev) = stateold(:, NSTATV_VUMAT + 1:nstatev)
-   end if
-
-   ! ---- packaging call (time zero) and annealing: no state change ---------------------------
-   if (lanneal == 1 .or. (totaltime <= 0.0_dp .and. steptime <= 0.0_dp)) then
-      stressnew = stressold
-      statenew(:, 1:NSTATV_VUMAT) = stateold(:, 1:NSTATV_VUMAT)
-      enerinternnew = enerinternold
-      enerinelasnew = enerinelasold
-      if (lanneal /= 1) then
-         ! elastic response of the intact interface, for Abaqus's stable-time-increment estimate
-         stressnew(:, 1) = stressold(:, 1) + params%k_n*THICKNESS*straininc(:, 1)
-         stressnew(:, 2:ntens) = stressold(:, 2:ntens) + params%k_t*SHEAR_FACTOR*THICKNESS*straininc(:, 2:ntens)
+   ! Setup errors leave the block construct with fatal_code set: the whole block is then held
+   ! at its old values and a fatal message is reported (no internal procedure: host-associated
+   ! arrays cost the vectorised loops ~2.5 ns per point with gfortran, docs/performance.md).
+   update: block
+      ! ---- setup checks: fatal, the whole block is held ----------------------------------------
+      if (ndir /= 1 .or. (nshr /= 1 .and. nshr /= 2)) then
+         write (message, '(a,i0,a,i0,a)') 'ndir = ', ndir, ', nshr = ', nshr, &
+            ': interphase needs a cohesive element with ndir = 1 and nshr = 1 (2-D) or 2 (3-D)'
+         fatal_code = STATUS_BAD_NTENS
+         exit update
       end if
-      return
-   end if
-
-   ! ---- the update, CHUNK points at a time --------------------------------------------------
-   ! The simplified model with the displacement-driven law runs the vectorised block update
-   ! (interphase_block); the other models and laws run the point update (interphase_kernel).
-   ! Both give the same numbers for the simplified model (bit for bit). Results go straight into
-   ! the new arrays; a failed point is put back to its old values afterwards.
-   blocked = params%model == MODEL_SIMPLIFIED .and. params%damage_law == DAMAGE_DISPLACEMENT
-   nfailed = 0
-   first_failed = 0
-   first_status = STATUS_OK
-   first_message = ''
-   do k0 = 1, nblock, CHUNK
-      n = min(CHUNK, nblock - k0 + 1)
-      k1 = k0 + n - 1
-      ! separation increments ds = T0 strainInc (x 2 for the tensor shears) and the separations
-      ! at the end of the increment, s = s_old + ds, stored in STATEV
-      do j = 1, ntens
-         ds(1:n, j) = merge(1.0_dp, SHEAR_FACTOR, j == 1)*THICKNESS*straininc(k0:k1, j)
-         statenew(k0:k1, SV_SEP_N + j - 1) = stateold(k0:k1, SV_SEP_N + j - 1) + ds(1:n, j)
-      end do
-      if (ntens == 2) statenew(k0:k1, SV_SEP_T2) = 0.0_dp
-      statenew(k0:k1, SV_FAILED) = stateold(k0:k1, SV_FAILED)
-
-      if (blocked) then
-         call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
-            statenew(k0:k1, SV_SEP_T1), statenew(k0:k1, SV_SEP_T2), stateold(k0:k1, SV_DAMAGE), &
-            stateold(k0:k1, SV_SLIP_1), stateold(k0:k1, SV_SLIP_2), stressnew(k0:k1, 1), &
-            stressnew(k0:k1, 2), traction_t2(1:n), statenew(k0:k1, SV_DAMAGE), &
-            statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
-            psi(1:n), ok(1:n), nbad)
-         if (ntens == 3) stressnew(k0:k1, 3) = traction_t2(1:n)
-         if (nbad > 0 .and. first_status == STATUS_OK) first_status = STATUS_NONFINITE_SEPARATION
-      else
-         nbad = 0
-         do k = 1, n
-            km = k0 + k - 1
-            ! checked above, cannot fail here
+      if (nstatev < NSTATV_VUMAT) then
+         write (message, '(a,i0,a,i0,a)') 'nstatev = ', nstatev, ' but the VUMAT needs at least ', &
+            NSTATV_VUMAT, ' (*DEPVAR)'
+         fatal_code = STATUS_BAD_NSTATV
+         exit update
+      end if
+      call from_props(props, params, status, message)
+      if (status /= STATUS_OK) then
+         fatal_code = status
+         exit update
+      end if
+      ! densities and incoming states: one branch-free pass each, the culprit searched only on error
+      if (count_nonpositive(nblock, density) > 0) then
+         do km = 1, nblock
+            if (count_nonpositive(1, density(km:km)) > 0) exit
+         end do
+         write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
+            ': the VUMAT needs *Density > 0 on the material (its energies are per unit mass)'
+         fatal_code = -1
+         exit update
+      end if
+      if (count_invalid_states(nblock, nt, stateold(:, SV_DAMAGE), stateold(:, SV_SLIP_1), &
+            stateold(:, SV_SLIP_2), stateold(:, SV_REGIME)) > 0) then
+         do km = 1, nblock
             call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
-            call interface_update(params, old, statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1), &
-               traction, tangent(1:ntens, 1:ntens), new, psi(k), status)
-            ok(k) = status == STATUS_OK
-            if (.not. ok(k)) then
-               nbad = nbad + 1
-               if (first_status == STATUS_OK) first_status = status
-               traction = 0.0_dp
-               new = interface_state_type()
-               psi(k) = 0.0_dp
+            if (status /= STATUS_OK) exit
+         end do
+         write (first_message, '(a,i0,a,a)') 'block point ', km, ': ', trim(message)
+         message = first_message
+         fatal_code = status
+         exit update
+      end if
+
+      ! user slots beyond interphase's are carried over
+      if (nstatev > NSTATV_VUMAT) then
+         statenew(:, NSTATV_VUMAT + 1:nstatev) = stateold(:, NSTATV_VUMAT + 1:nstatev)
+      end if
+
+      ! ---- packaging call (time zero) and annealing: no state change ---------------------------
+      if (lanneal == 1 .or. (totaltime <= 0.0_dp .and. steptime <= 0.0_dp)) then
+         stressnew = stressold
+         statenew(:, 1:NSTATV_VUMAT) = stateold(:, 1:NSTATV_VUMAT)
+         enerinternnew = enerinternold
+         enerinelasnew = enerinelasold
+         if (lanneal /= 1) then
+            ! elastic response of the intact interface (either model: its coefficients at D = 0),
+            ! for Abaqus's stable-time-increment estimate
+            call coefficients_at(params, 0.0_dp, intact, intact_rate, status)
+            if (status /= STATUS_OK) then
+               message = 'the intact coefficients (D = 0) could not be evaluated'
+               fatal_code = status
+               exit update
             end if
-            stressnew(km, 1:ntens) = traction(1:ntens)
-            call state_pack(new, statenew(km, 1:NSTATV_REQUIRED))
-         end do
-      end if
-
-      if (nbad > 0) then
-         if (first_failed == 0) then
-            first_failed = k0 - 1 + findloc(ok(1:n), .false., dim=1)
-            write (first_message, '(a,3es12.4)') 'separation (mm) ', &
-               statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
+            stressnew(:, 1) = stressold(:, 1) + intact%k_n*THICKNESS*straininc(:, 1)
+            stressnew(:, 2:ntens) = stressold(:, 2:ntens) + intact%k_t*SHEAR_FACTOR*THICKNESS*straininc(:, 2:ntens)
          end if
-         nfailed = nfailed + nbad
-         ! a failed point's increment may not be finite: no work is counted on it
-         do j = 1, ntens
-            ds(1:n, j) = merge(ds(1:n, j), 0.0_dp, ok(1:n))
-         end do
+         return
       end if
 
-      ! energies (one vectorised pass, no selection)
-      do k = 1, n
-         km = k0 + k - 1
-         work = (stressold(km, 1) + stressnew(km, 1))*ds(k, 1) + (stressold(km, 2) + stressnew(km, 2))*ds(k, 2)
-         if (ntens == 3) work = work + (stressold(km, 3) + stressnew(km, 3))*ds(k, 3)
-         rho_t = density(km)*THICKNESS
-         inv_rho = 1.0_dp/rho_t
-         psi_old = (enerinternold(km) - enerinelasold(km))*rho_t
-         energy_inelas = enerinelasold(km) + (0.5_dp*work - (psi(k) - psi_old))*inv_rho
-         enerinelasnew(km) = energy_inelas
-         enerinternnew(km) = energy_inelas + psi(k)*inv_rho
+      ! ---- the update, CHUNK points at a time --------------------------------------------------
+      ! The simplified model with the displacement-driven law runs the vectorised block update
+      ! (interphase_block); the other models and laws run the point update (interphase_kernel).
+      ! Both give the same numbers for the simplified model (bit for bit). Results go straight into
+      ! the new arrays; a failed point is put back to its old values afterwards.
+      blocked = params%model == MODEL_SIMPLIFIED .and. params%damage_law == DAMAGE_DISPLACEMENT
+      nfailed = 0
+      first_failed = 0
+      first_status = STATUS_OK
+      first_message = ''
+      do k0 = 1, nblock, CHUNK
+         n = min(CHUNK, nblock - k0 + 1)
+         k1 = k0 + n - 1
+         ! separation increments ds = T0 strainInc (x 2 for the tensor shears) and the separations
+         ! at the end of the increment, s = s_old + ds, stored in STATEV
+         do j = 1, ntens
+            ds(1:n, j) = merge(1.0_dp, SHEAR_FACTOR, j == 1)*THICKNESS*straininc(k0:k1, j)
+            statenew(k0:k1, SV_SEP_N + j - 1) = stateold(k0:k1, SV_SEP_N + j - 1) + ds(1:n, j)
+         end do
+         if (ntens == 2) statenew(k0:k1, SV_SEP_T2) = 0.0_dp
+         statenew(k0:k1, SV_FAILED) = stateold(k0:k1, SV_FAILED)
+
+         if (blocked) then
+            call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
+               statenew(k0:k1, SV_SEP_T1), statenew(k0:k1, SV_SEP_T2), stateold(k0:k1, SV_DAMAGE), &
+               stateold(k0:k1, SV_SLIP_1), stateold(k0:k1, SV_SLIP_2), stressnew(k0:k1, 1), &
+               stressnew(k0:k1, 2), traction_t2(1:n), statenew(k0:k1, SV_DAMAGE), &
+               statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
+               psi(1:n), ok(1:n), nbad)
+            if (ntens == 3) stressnew(k0:k1, 3) = traction_t2(1:n)
+            if (nbad > 0 .and. first_status == STATUS_OK) first_status = STATUS_NONFINITE_SEPARATION
+         else
+            nbad = 0
+            do k = 1, n
+               km = k0 + k - 1
+               ! checked above, cannot fail here
+               call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
+               call interface_update(params, old, statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1), &
+                  traction, tangent(1:ntens, 1:ntens), new, psi(k), status)
+               ok(k) = status == STATUS_OK
+               if (.not. ok(k)) then
+                  nbad = nbad + 1
+                  if (first_status == STATUS_OK) first_status = status
+                  traction = 0.0_dp
+                  new = interface_state_type()
+                  psi(k) = 0.0_dp
+               end if
+               stressnew(km, 1:ntens) = traction(1:ntens)
+               call state_pack(new, statenew(km, 1:NSTATV_REQUIRED))
+            end do
+         end if
+
+         if (nbad > 0) then
+            if (first_failed == 0) then
+               first_failed = k0 - 1 + findloc(ok(1:n), .false., dim=1)
+               write (first_message, '(a,3es12.4)') 'separation (mm) ', &
+                  statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
+            end if
+            nfailed = nfailed + nbad
+            ! a failed point's increment may not be finite: no work is counted on it
+            do j = 1, ntens
+               ds(1:n, j) = merge(ds(1:n, j), 0.0_dp, ok(1:n))
+            end do
+         end if
+
+         ! energies (vectorised passes without branches): the work 1/2 (t_old + t).ds, then
+         ! per unit mass
+         work(1:n) = (stressold(k0:k1, 1) + stressnew(k0:k1, 1))*ds(1:n, 1) &
+            + (stressold(k0:k1, 2) + stressnew(k0:k1, 2))*ds(1:n, 2)
+         if (ntens == 3) work(1:n) = work(1:n) + (stressold(k0:k1, 3) + stressnew(k0:k1, 3))*ds(1:n, 3)
+         do k = 1, n
+            km = k0 + k - 1
+            rho_t = density(km)*THICKNESS
+            inv_rho = 1.0_dp/rho_t
+            psi_old = (enerinternold(km) - enerinelasold(km))*rho_t
+            energy_inelas = enerinelasold(km) + (0.5_dp*work(k) - (psi(k) - psi_old))*inv_rho
+            enerinelasnew(km) = energy_inelas
+            enerinternnew(km) = energy_inelas + psi(k)*inv_rho
+         end do
+
+         ! a failed point is held at its old values and flagged
+         if (nbad > 0) then
+            do k = 1, n
+               if (ok(k)) cycle
+               km = k0 + k - 1
+               stressnew(km, :) = stressold(km, :)
+               statenew(km, 1:NSTATV_VUMAT) = stateold(km, 1:NSTATV_VUMAT)
+               statenew(km, SV_FAILED) = 1.0_dp
+               enerinternnew(km) = enerinternold(km)
+               enerinelasnew(km) = enerinelasold(km)
+            end do
+         end if
       end do
 
-      ! a failed point is held at its old values and flagged
-      if (nbad > 0) then
-         do k = 1, n
-            if (ok(k)) cycle
-            km = k0 + k - 1
-            stressnew(km, :) = stressold(km, :)
-            statenew(km, 1:NSTATV_VUMAT) = stateold(km, 1:NSTATV_VUMAT)
-            statenew(km, SV_FAILED) = 1.0_dp
-            enerinternnew(km) = enerinternold(km)
-            enerinelasnew(km) = enerinelasold(km)
-         end do
+      if (nfailed > 0) then
+         block
+            character(len=2*MESSAGE_LEN) :: full
+            write (full, '(a,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
+               ' points failed and were held at their old stress and state (STATEV(8) = 1); first at block point ', &
+               first_failed, ': ', status_message(first_status), ': ', trim(first_message)
+            call interphase_host_message(SEVERITY_WARNING, trim(full))
+         end block
       end if
-   end do
+      return
+   end block update
 
-   if (nfailed > 0) then
-      block
-         character(len=2*MESSAGE_LEN) :: full
-         write (full, '(a,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
-            ' points failed and were held at their old stress and state (STATEV(8) = 1); first at block point ', &
-            first_failed, ': ', status_message(first_status), ': ', trim(first_message)
-         call interphase_host_message(SEVERITY_WARNING, trim(full))
-      end block
-   end if
-
-contains
-
-   !> Setup error: hold the whole block at its old values and report a fatal message.
-   subroutine fail_block(code)
-      integer, intent(in) :: code     !! a STATUS_* code, or < 0 when `message` says it all
+   ! ---- setup error: hold the whole block at its old values and report ------------------
+   stressnew = stressold
+   statenew = stateold
+   enerinternnew = enerinternold
+   enerinelasnew = enerinelasold
+   block
       character(len=2*MESSAGE_LEN) :: full
-      stressnew = stressold
-      statenew = stateold
-      enerinternnew = enerinternold
-      enerinelasnew = enerinelasold
-      if (code >= 0) then
-         write (full, '(a,a,a,a,a)') trim(cmname), ': ', status_message(code), ': ', trim(message)
+      if (fatal_code >= 0) then
+         write (full, '(a,a,a,a,a)') trim(cmname), ': ', status_message(fatal_code), ': ', trim(message)
       else
          write (full, '(a,a,a)') trim(cmname), ': ', trim(message)
       end if
       call interphase_host_message(SEVERITY_FATAL, trim(full))
-   end subroutine fail_block
+   end block
 
 end subroutine vumat
