@@ -1,13 +1,15 @@
 !> Benchmark of the VUMAT: nanoseconds per material-point update at nblock = 1, 136 and 4096
-!> (2-D cohesive points, the paper's mixed history with a different scaling per point), beside a
-!> plain copy of the same arrays (old -> new stress, state and energies, reading the strain
-!> increments): the memory-bound limit of any VUMAT on these arrays.
+!> (the paper's mixed history with a different scaling per point), beside a plain copy of the
+!> same arrays (old -> new stress, state and energies, reading the strain increments): the
+!> memory-bound limit of any VUMAT on these arrays. Three cases: the simplified model in 2-D
+!> (the vectorised block update; the figure of issue 5) and 3-D, and the micromechanical model
+!> in 2-D (built-in table; the point update, point by point).
 !>
 !>   interphase-bench-vumat [points]      (default 65536 points; Release build recommended)
 program bench_vumat
    use, intrinsic :: iso_fortran_env, only: int64, output_unit
    use interphase_kinds, only: dp
-   use interphase_layout, only: NPROPS_SIMPLIFIED, NSTATV_VUMAT
+   use interphase_layout, only: NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, NSTATV_VUMAT
    use interphase_abaqus_interfaces, only: vumat
    implicit none
 
@@ -16,9 +18,14 @@ program bench_vumat
    !> Increments per segment of the mixed history and sweeps (increments) timed.
    integer, parameter :: NSUB = 20, NSWEEP = 7*NSUB
 
-   integer :: npoints, i, arg_len, arg_status
+   !> The paper's Table 1 data (simplified model: K_N, K_T of the paper's RVE).
+   real(dp), parameter :: SIMPLIFIED_PROPS(NPROPS_SIMPLIFIED) = [1.0_dp, 1.0_dp, 0.75_dp, 0.00044_dp, &
+      0.04_dp, 0.00072_dp, 0.06_dp, 544000.0_dp/1127.0_dp, 32000.0_dp/161.0_dp]
+   real(dp), parameter :: MICRO_PROPS(NPROPS_MICROMECHANICAL) = [2.0_dp, 1.0_dp, 0.75_dp, 0.00044_dp, &
+      0.04_dp, 0.00072_dp, 0.06_dp, 0.0_dp]
+
+   integer :: npoints, arg_len, arg_status
    character(len=32) :: arg
-   real(dp) :: ns_vumat, ns_copy
 
    npoints = 65536
    if (command_argument_count() >= 1) then
@@ -26,34 +33,45 @@ program bench_vumat
       if (arg_status == 0) read (arg, *) npoints
    end if
 
-   write (output_unit, '(a,i0,a,i0,a)') 'VUMAT, 2-D cohesive points, mixed history: ', npoints, &
-      ' points x ', NSWEEP, ' increments per measurement'
-   write (output_unit, '(a)') '  nblock   ns/point (vumat)   ns/point (plain copy)   ratio'
-   do i = 1, size(NBLOCK_SIZES)
-      call measure(NBLOCK_SIZES(i), npoints, ns_vumat, ns_copy)
-      write (output_unit, '(i8,f19.1,f24.2,f8.1)') NBLOCK_SIZES(i), ns_vumat, ns_copy, ns_vumat/ns_copy
-   end do
+   call run_case('simplified model, 2-D', 1, SIMPLIFIED_PROPS)
+   call run_case('simplified model, 3-D', 2, SIMPLIFIED_PROPS)
+   call run_case('micromechanical model (built-in table), 2-D', 1, MICRO_PROPS)
 
 contains
 
-   subroutine measure(nb, npoints, ns_vumat, ns_copy)
-      integer, intent(in) :: nb, npoints
+   subroutine run_case(title, nshr, props)
+      character(len=*), intent(in) :: title
+      integer, intent(in) :: nshr
+      real(dp), intent(in) :: props(:)
+      real(dp) :: ns_vumat, ns_copy
+      integer :: i
+      write (output_unit, '(a,a,a,i0,a,i0,a)') 'VUMAT, ', title, ', mixed history: ', npoints, &
+         ' points x ', NSWEEP, ' increments per measurement'
+      write (output_unit, '(a)') '  nblock   ns/point (vumat)   ns/point (plain copy)   ratio'
+      do i = 1, size(NBLOCK_SIZES)
+         call measure(NBLOCK_SIZES(i), npoints, nshr, props, ns_vumat, ns_copy)
+         write (output_unit, '(i8,f19.1,f24.2,f8.1)') NBLOCK_SIZES(i), ns_vumat, ns_copy, ns_vumat/ns_copy
+      end do
+   end subroutine run_case
+
+   subroutine measure(nb, npoints, nshr, props, ns_vumat, ns_copy)
+      integer, intent(in) :: nb, npoints, nshr
+      real(dp), intent(in) :: props(:)
       real(dp), intent(out) :: ns_vumat, ns_copy
       real(dp), allocatable :: stress(:, :, :, :), state(:, :, :, :), ei(:, :, :), eie(:, :, :)
       real(dp), allocatable :: strain_inc(:, :, :, :), density(:, :), coord(:, :), char_length(:)
       real(dp), allocatable :: spin(:, :), temp(:), stretch(:, :), defgrad(:, :), field(:, :)
-      real(dp) :: props(NPROPS_SIMPLIFIED), checksum
+      real(dp) :: checksum, inc(2), angle
       character(len=80) :: cmname
-      integer :: nblocks, ib, sweep, cur, j
+      integer :: nblocks, ib, sweep, cur, j, ntens
       integer(int64) :: t0, t1, rate
 
+      ntens = 1 + nshr
       nblocks = max(1, npoints/nb)
-      allocate (stress(nb, 2, nblocks, 0:1), state(nb, NSTATV_VUMAT, nblocks, 0:1))
+      allocate (stress(nb, ntens, nblocks, 0:1), state(nb, NSTATV_VUMAT, nblocks, 0:1))
       allocate (ei(nb, nblocks, 0:1), eie(nb, nblocks, 0:1), density(nb, nblocks))
-      allocate (strain_inc(nb, 2, nblocks, NSWEEP), coord(nb, 3), char_length(nb), spin(nb, 1), temp(nb))
-      allocate (stretch(nb, 2), defgrad(nb, 3), field(nb, 1))
-      props = [1.0_dp, 1.0_dp, 0.75_dp, 0.00044_dp, 0.04_dp, 0.00072_dp, 0.06_dp, &
-         544000.0_dp/1127.0_dp, 32000.0_dp/161.0_dp]
+      allocate (strain_inc(nb, ntens, nblocks, NSWEEP), coord(nb, 3), char_length(nb), spin(nb, nshr))
+      allocate (temp(nb), stretch(nb, ntens), defgrad(nb, ntens + nshr), field(nb, 1))
       cmname = 'BENCH'
       coord = 0.0_dp
       char_length = 1.0_dp
@@ -66,7 +84,15 @@ contains
       do sweep = 1, NSWEEP
          do ib = 1, nblocks
             do j = 1, nb
-               strain_inc(j, :, ib, sweep) = increment(sweep, real((ib - 1)*nb + j, dp)/real(nb*nblocks, dp))
+               inc = increment(sweep, real((ib - 1)*nb + j, dp)/real(nb*nblocks, dp))
+               ! in 3-D the shear of each point in its own direction
+               angle = 0.001_dp*real(j, dp)
+               strain_inc(j, 1, ib, sweep) = inc(1)
+               if (nshr == 1) then
+                  strain_inc(j, 2, ib, sweep) = inc(2)
+               else
+                  strain_inc(j, 2:3, ib, sweep) = inc(2)*[cos(angle), sin(angle)]
+               end if
             end do
          end do
       end do
@@ -80,7 +106,7 @@ contains
       cur = 0
       do sweep = 1, NSWEEP
          do ib = 1, nblocks
-            call vumat(nb, 1, 1, NSTATV_VUMAT, 1, NPROPS_SIMPLIFIED, 0, real(sweep, dp), real(sweep, dp), &
+            call vumat(nb, 1, nshr, NSTATV_VUMAT, 1, size(props), 0, real(sweep, dp), real(sweep, dp), &
                1.0_dp, cmname, coord, char_length, props, density(:, ib), strain_inc(:, :, ib, sweep), spin, &
                temp, stretch, defgrad, field, stress(:, :, ib, cur), state(:, :, ib, cur), ei(:, ib, cur), &
                eie(:, ib, cur), temp, stretch, defgrad, field, stress(:, :, ib, 1 - cur), &
@@ -101,7 +127,7 @@ contains
       cur = 0
       do sweep = 1, NSWEEP
          do ib = 1, nblocks
-            call plain_copy(nb, strain_inc(:, :, ib, sweep), stress(:, :, ib, cur), state(:, :, ib, cur), &
+            call plain_copy(nb, ntens, strain_inc(:, :, ib, sweep), stress(:, :, ib, cur), state(:, :, ib, cur), &
                ei(:, ib, cur), eie(:, ib, cur), stress(:, :, ib, 1 - cur), state(:, :, ib, 1 - cur), &
                ei(:, ib, 1 - cur), eie(:, ib, 1 - cur))
          end do
@@ -129,12 +155,12 @@ contains
    end function increment
 
    !> The memory traffic of a VUMAT without its arithmetic.
-   subroutine plain_copy(nb, strain_inc, stress_old, state_old, ei_old, eie_old, stress_new, state_new, &
-         ei_new, eie_new)
-      integer, intent(in) :: nb
-      real(dp), intent(in) :: strain_inc(nb, 2), stress_old(nb, 2), state_old(nb, NSTATV_VUMAT)
+   subroutine plain_copy(nb, ntens, strain_inc, stress_old, state_old, ei_old, eie_old, stress_new, &
+         state_new, ei_new, eie_new)
+      integer, intent(in) :: nb, ntens
+      real(dp), intent(in) :: strain_inc(nb, ntens), stress_old(nb, ntens), state_old(nb, NSTATV_VUMAT)
       real(dp), intent(in) :: ei_old(nb), eie_old(nb)
-      real(dp), intent(out) :: stress_new(nb, 2), state_new(nb, NSTATV_VUMAT), ei_new(nb), eie_new(nb)
+      real(dp), intent(out) :: stress_new(nb, ntens), state_new(nb, NSTATV_VUMAT), ei_new(nb), eie_new(nb)
       stress_new = stress_old + strain_inc
       state_new = state_old
       ei_new = ei_old
