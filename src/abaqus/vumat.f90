@@ -14,8 +14,13 @@
 !>   by density * THICKNESS; (enerInternNew - enerInelasNew) * density is the stored energy psi
 !>   of the kernel (the UMAT's SSE) and enerInelasNew * density the UMAT's SPD.
 !> - Packaging call (totalTime = 0 and stepTime = 0): the elastic response
-!>   stressNew = stressOld + K ds, state and energies copied unchanged. An annealing call
-!>   (lanneal = 1) copies stress, state and energies unchanged.
+!>   stressNew = stressOld + K ds with K the model's coefficients at D = 0, state and energies
+!>   copied unchanged. An annealing call (lanneal = 1) copies stress, state and energies
+!>   unchanged.
+!>
+!> The simplified model with the displacement-driven law runs the vectorised block update
+!> (interphase_block, column by column); the other models and laws the point update
+!> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
 !> Failures: bad sizes, PROPS, density or incoming STATEV are fatal (the whole block is held at
 !> its old values and the host hook is called with SEVERITY_FATAL; Abaqus then stops). A point
