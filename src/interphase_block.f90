@@ -24,6 +24,8 @@ module interphase_block
 
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
    integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
+   !> Bit pattern of the smallest positive normal number, tiny(1.0_dp).
+   integer(int64), parameter :: SMALLEST_NORMAL_BITS = int(z'0010000000000000', int64)
    !> Bit pattern of 1.0_dp.
    integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
    !> Bit patterns of the regime codes 0..3 stored as reals.
@@ -163,10 +165,12 @@ contains
             num = (r - 1.0_dp)*alpha2
             den = r*(alpha2 - weighted)
             ! the guard keeps 0/0 (s = 0) out of the lanes that are not growing: the compiler may
-            ! divide first and select afterwards; den > tiny wherever D grows, so it changes no result
+            ! divide first and select afterwards; where D grows den >= r alpha^2 (1 - max(eta)) is
+            ! far above tiny (unless sf = s0 to round-off), so it changes no result
             d_hat = merge(num/max(den, tiny(1.0_dp)), 0.0_dp, growing)
             d_k = d_old(k)
-            d_k = max(d_k, min(1.0_dp, d_hat))
+            ! + 0: an incoming D = -0 leaves as +0 whichever operand max picks (as in the kernel)
+            d_k = max(d_k, min(1.0_dp, d_hat)) + 0.0_dp
 
             ! the simplified model's coefficients at D (eqs 31-35)
             kn_open = (1.0_dp - d_k)*params%k_n
@@ -217,7 +221,7 @@ contains
    !> Number of points whose incoming state is not admissible (D outside [0, 1], a slip that is
    !> not finite, a regime code that is not 0..3); the check `state_unpack` makes, point by
    !> point, as integer operations on the bit patterns (no floating-point exception for NaN).
-   !> In 2-D (nt = 1) lam2 is not read.
+   !> In 2-D (nt = 1) the values of lam2 are not used (the array must exist).
    pure integer function count_invalid_states(n, nt, d, lam1, lam2, regime) result(nbad)
       integer, intent(in) :: n, nt
       real(dp), intent(in) :: d(n), lam1(n), lam2(n), regime(n)
@@ -242,7 +246,8 @@ contains
       end do
    end function count_invalid_states
 
-   !> Number of values that are not finite and > 0 (bit patterns; no exception for NaN).
+   !> Number of values that are not finite, > 0 and normal (bit patterns; no exception for NaN;
+   !> a subnormal value would overflow its reciprocal).
    pure integer function count_nonpositive(n, x) result(nbad)
       integer, intent(in) :: n
       real(dp), intent(in) :: x(n)
@@ -251,7 +256,7 @@ contains
       nbad = 0
       do k = 1, n
          b = transfer(x(k), 0_int64)
-         nbad = nbad + merge(0, 1, b > 0_int64 .and. b < EXPONENT_MASK)
+         nbad = nbad + merge(0, 1, b >= SMALLEST_NORMAL_BITS .and. b < EXPONENT_MASK)
       end do
    end function count_nonpositive
 

@@ -78,7 +78,9 @@ contains
          ! damage first (eq 39), then the response at that damage
          t_sq = st(1)**2 + st(2)**2
          call displacement_damage(params, s_n, t_sq, d_hat, dd_dsn, dd_dt)
-         d = max(old%d, min(1.0_dp, d_hat))
+         ! + 0: an incoming D = -0 leaves as +0 whichever operand max picks (the block update
+         ! of interphase_block does the same, so both agree bit for bit)
+         d = max(old%d, min(1.0_dp, d_hat)) + 0.0_dp
          dd_ds = 0.0_dp
          if (d_hat > old%d .and. d_hat < 1.0_dp) then
             dd_ds(1) = dd_dsn

@@ -157,7 +157,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                if (count_nonpositive(1, density(km:km)) > 0) exit
             end do
             write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
-               ': the VUMAT needs *Density > 0 on the material (its energies are per unit mass)'
+               ': the VUMAT needs *Density > 0 (a normal number) on the material (its energies are per unit mass)'
             fatal_code = -1
             exit update
          end if
