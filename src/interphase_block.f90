@@ -5,10 +5,16 @@
 !> Abaqus/Explicit lays out its block arrays, so every column is read and written contiguously.
 !>
 !> Same law, same arithmetic, same results as `interface_update` (`interphase_kernel`) point by
-!> point, bit for bit (tests/test_vumat.pf checks it on the paper's mixed history in 2-D and
-!> 3-D): every branch of the scalar update becomes a selection (`merge`) between the branches,
-!> both evaluated on guarded operands so that no branch can raise a floating-point exception.
-!> No tangent is formed (explicit hosts do not use one).
+!> point, bit for bit (tests/test_vumat.pf checks 2101 points over histories that reach every
+!> regime, in 2-D and 3-D): every branch of the scalar update becomes a selection (`merge`)
+!> between the branches, both evaluated on guarded operands so that no branch can raise a
+!> floating-point exception. No tangent is formed (explicit hosts do not use one).
+!>
+!> Compiler notes (gfortran 12; docs/performance.md): the file needs -fno-trapping-math to
+!> vectorise (CMakeLists.txt sets it); `merge` is evaluated lazily, so a load inside one is a
+!> branch (every value is loaded first); a local name must not repeat a use-associated one in
+!> another case (Fortran names are case-insensitive: a local `regime_open` silently took the
+!> place of REGIME_OPEN).
 !>
 !> Also here: the checks of a block's incoming state and densities as branch-free counts, so
 !> that a host can validate a block in one vectorised pass and look for the culprit only when
