@@ -1,0 +1,346 @@
+!> interphase-check-deck: check an Abaqus input deck's use of interphase before running it.
+!>
+!>   interphase-check-deck deck.inp [more.inp ...]
+!>
+!> For every *COHESIVE SECTION it checks what interphase requires (docs/abaqus.md):
+!> RESPONSE=TRACTION SEPARATION, THICKNESS=SPECIFIED with constitutive thickness 1, a material
+!> with *USER MATERIAL whose constants decode as interphase PROPS (the library's own decoder:
+!> the same messages the UMAT would give at the first increment), *DEPVAR at least 4 (UMAT) or 8
+!> (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for Abaqus/Standard and a
+!> *DENSITY > 0 for Abaqus/Explicit. It reads keywords and their data lines only (no *INCLUDE,
+!> no parts/assemblies resolution) and prints one line per cohesive section; the exit status is 0
+!> when every check passes, 1 otherwise, 2 when a file cannot be read.
+program interphase_check_deck
+   use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use interphase_kinds, only: dp
+   use interphase_finite, only: is_finite
+   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN
+   use interphase_params, only: law_params_type, from_props
+   use interphase_driver_cli, only: get_argument
+   implicit none
+
+   !> Longest deck line read (Abaqus allows 256 characters).
+   integer, parameter :: LINE_LEN = 1024
+   !> Most constants of one *USER MATERIAL.
+   integer, parameter :: MAX_CONSTANTS = 64
+
+   !> What the deck says about one material.
+   type :: material_type
+      character(len=80) :: name = ''
+      integer :: user_line = 0                 !! line of *USER MATERIAL (0: none)
+      integer :: nconstants = -1               !! CONSTANTS=
+      integer :: nread = 0                     !! constants read from the data lines
+      real(dp) :: constants(MAX_CONSTANTS) = 0.0_dp
+      logical :: unsymm = .false.
+      integer :: depvar = -1                   !! *DEPVAR (-1: none)
+      real(dp) :: density = -1.0_dp            !! *DENSITY (-1: none)
+   end type material_type
+
+   !> One *COHESIVE SECTION.
+   type :: section_type
+      integer :: line = 0
+      character(len=80) :: elset = '', material = '', response = '', thickness_mode = ''
+      real(dp) :: thickness = -1.0_dp
+   end type section_type
+
+   character(len=:), allocatable :: path
+   integer :: iarg, nfail, status
+
+   if (command_argument_count() < 1) then
+      write (error_unit, '(a)') 'interphase-check-deck: usage: interphase-check-deck deck.inp [more.inp ...]'
+      error stop 2
+   end if
+   nfail = 0
+   do iarg = 1, command_argument_count()
+      call get_argument(iarg, path)
+      call check_deck(path, nfail, status)
+      if (status /= 0) error stop 2
+   end do
+   if (nfail > 0) then
+      write (error_unit, '(a,i0,a)') 'interphase-check-deck: ', nfail, ' check(s) failed'
+      error stop 1
+   end if
+
+contains
+
+   !> Read one deck and check its cohesive sections; nfail counts the failed checks.
+   subroutine check_deck(path, nfail, status)
+      character(len=*), intent(in) :: path
+      integer, intent(inout) :: nfail
+      integer, intent(out) :: status     !! 0, or 2 when the file cannot be read
+
+      type(material_type), allocatable :: materials(:)
+      type(section_type), allocatable :: sections(:)
+      character(len=LINE_LEN) :: line, message
+      character(len=80) :: keyword, field
+      real(dp) :: values(16)
+      integer :: unit, ios, lineno, nvalues, k, current, data_lines, i
+      logical :: explicit
+
+      allocate (materials(0), sections(0))
+      open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=message)
+      if (ios /= 0) then
+         write (error_unit, '(a)') 'interphase-check-deck: '//path//': cannot open: '//trim(message)
+         status = 2
+         return
+      end if
+      status = 0
+      explicit = .false.
+      keyword = ''
+      current = 0
+      data_lines = 0
+      lineno = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         lineno = lineno + 1
+         line = adjustl(line)
+         if (len_trim(line) == 0 .or. line(1:min(2, len(line))) == '**') cycle
+         if (line(1:1) == '*') then
+            keyword = upper_compact(before_comma(line(2:)))
+            data_lines = 0
+            select case (trim(keyword))
+            case ('MATERIAL')
+               materials = [materials, material_type(name=upper_compact(parameter_value(line, 'NAME')))]
+               current = size(materials)
+            case ('USERMATERIAL')
+               if (current > 0) then
+                  materials(current)%user_line = lineno
+                  materials(current)%unsymm = has_parameter(line, 'UNSYMM')
+                  field = parameter_value(line, 'CONSTANTS')
+                  read (field, *, iostat=ios) materials(current)%nconstants
+                  if (ios /= 0) materials(current)%nconstants = -1
+               end if
+            case ('COHESIVESECTION')
+               sections = [sections, section_type(line=lineno, &
+                  elset=upper_compact(parameter_value(line, 'ELSET')), &
+                  material=upper_compact(parameter_value(line, 'MATERIAL')), &
+                  response=upper_compact(parameter_value(line, 'RESPONSE')), &
+                  thickness_mode=upper_compact(parameter_value(line, 'THICKNESS')))]
+            case ('DYNAMIC')
+               if (has_parameter(line, 'EXPLICIT')) explicit = .true.
+            case ('STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION')
+               current = 0
+            end select
+            cycle
+         end if
+         ! a data line of the current keyword
+         data_lines = data_lines + 1
+         call parse_numbers(line, values, nvalues)
+         select case (trim(keyword))
+         case ('USERMATERIAL')
+            if (current > 0) then
+               do k = 1, nvalues
+                  if (materials(current)%nread < MAX_CONSTANTS) then
+                     materials(current)%nread = materials(current)%nread + 1
+                     materials(current)%constants(materials(current)%nread) = values(k)
+                  end if
+               end do
+            end if
+         case ('DEPVAR')
+            if (current > 0 .and. data_lines == 1 .and. nvalues >= 1) materials(current)%depvar = nint(values(1))
+         case ('DENSITY')
+            if (current > 0 .and. data_lines == 1 .and. nvalues >= 1) materials(current)%density = values(1)
+         case ('COHESIVESECTION')
+            if (data_lines == 1 .and. nvalues >= 1) sections(size(sections))%thickness = values(1)
+         end select
+      end do
+      close (unit)
+
+      if (size(sections) == 0) then
+         write (output_unit, '(a)') path//': no *COHESIVE SECTION: nothing for interphase to check'
+         return
+      end if
+      do i = 1, size(sections)
+         call check_section(path, sections(i), materials, explicit, nfail)
+      end do
+   end subroutine check_deck
+
+   !> The checks of one cohesive section and its material; one line of output, plus one line per
+   !> failed check.
+   subroutine check_section(path, section, materials, explicit, nfail)
+      character(len=*), intent(in) :: path
+      type(section_type), intent(in) :: section
+      type(material_type), intent(in) :: materials(:)
+      logical, intent(in) :: explicit
+      integer, intent(inout) :: nfail
+
+      type(law_params_type) :: params
+      character(len=MESSAGE_LEN) :: message
+      character(len=:), allocatable :: where, solver, summary
+      integer :: m, k, status, nfail_before, depvar_needed
+
+      nfail_before = nfail
+      solver = merge('Abaqus/Explicit (VUMAT)', 'Abaqus/Standard (UMAT) ', explicit)
+      where = path//':'//itoa(section%line)//': *COHESIVE SECTION, ELSET='//trim(section%elset)
+      if (section%response /= 'TRACTIONSEPARATION') &
+         call record_failure(where//': RESPONSE='//trim(section%response)//' but interphase is a traction-separation '// &
+            'law: RESPONSE=TRACTION SEPARATION', nfail)
+      if (section%thickness_mode /= 'SPECIFIED') &
+         call record_failure(where//': THICKNESS='//trim(section%thickness_mode)//' but interphase needs '// &
+            'THICKNESS=SPECIFIED with constitutive thickness 1 (strain = separation in mm)', nfail)
+      if (.not. is_finite(section%thickness) .or. abs(section%thickness - 1.0_dp) > 1.0e-12_dp) &
+         call record_failure(where//': constitutive thickness '//rtoa(section%thickness)//' but interphase needs 1', nfail)
+      m = 0
+      do k = 1, size(materials)
+         if (materials(k)%name == section%material) m = k
+      end do
+      summary = ''
+      if (m == 0) then
+         call record_failure(where//': material '//trim(section%material)//' is not defined in this deck', nfail)
+      else if (materials(m)%user_line == 0) then
+         call record_failure(where//': material '//trim(section%material)//' has no *USER MATERIAL', nfail)
+      else
+         associate (mat => materials(m))
+            where = path//':'//itoa(mat%user_line)//': *USER MATERIAL of '//trim(mat%name)
+            if (mat%nconstants /= mat%nread) then
+               call record_failure(where//': CONSTANTS='//itoa(mat%nconstants)//' but '//itoa(mat%nread)// &
+                  ' values follow', nfail)
+            else
+               call from_props(mat%constants(1:mat%nread), params, status, message)
+               if (status /= STATUS_OK) then
+                  call record_failure(where//': '//trim(message), nfail)
+               else
+                  summary = trim(merge('simplified     ', 'micromechanical', params%model == MODEL_SIMPLIFIED))// &
+                     ' model, '//trim(merge('displacement-driven', 'fracture-mechanics ', &
+                     params%damage_law == DAMAGE_DISPLACEMENT))//' damage law'
+               end if
+            end if
+            depvar_needed = merge(NSTATV_VUMAT, NSTATV_REQUIRED, explicit)
+            if (mat%depvar < 0) then
+               call record_failure(where//': no *DEPVAR: '//trim(solver)//' needs at least '//itoa(depvar_needed), nfail)
+            else if (mat%depvar < depvar_needed) then
+               call record_failure(where//': *DEPVAR '//itoa(mat%depvar)//' but '//trim(solver)//' needs at least '// &
+                  itoa(depvar_needed), nfail)
+            end if
+            if (.not. explicit .and. .not. mat%unsymm) &
+               call record_failure(where//': no UNSYMM: the tangent DDSDDE is unsymmetric (friction, damage)', nfail)
+            if (explicit .and. .not. (is_finite(mat%density) .and. mat%density > 0.0_dp)) &
+               call record_failure(where//': no *DENSITY > 0: the VUMAT energies are per unit mass', nfail)
+         end associate
+      end if
+      if (nfail == nfail_before) then
+         write (output_unit, '(a)') path//': ELSET='//trim(section%elset)//', material '// &
+            trim(section%material)//', '//trim(solver)//': '//summary//': ok'
+      end if
+   end subroutine check_section
+
+   !> Print a failed check and count it.
+   subroutine record_failure(text, nfail)
+      character(len=*), intent(in) :: text
+      integer, intent(inout) :: nfail
+      write (output_unit, '(a)') text
+      nfail = nfail + 1
+   end subroutine record_failure
+
+   !> The part of s before its first comma.
+   pure function before_comma(s) result(head)
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: head
+      integer :: i
+      i = index(s, ',')
+      if (i == 0) then
+         head = s
+      else
+         head = s(1:i - 1)
+      end if
+   end function before_comma
+
+   !> Upper case without blanks (Abaqus ignores blanks and case in keywords and parameters).
+   pure function upper_compact(s) result(t)
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: t
+      integer :: i, n, c
+      t = ''
+      n = 0
+      do i = 1, len_trim(s)
+         if (s(i:i) == ' ') cycle
+         c = iachar(s(i:i))
+         n = n + 1
+         t(n:n) = s(i:i)
+         if (c >= iachar('a') .and. c <= iachar('z')) t(n:n) = achar(c - 32)
+      end do
+   end function upper_compact
+
+   !> The value of parameter `name` on a keyword line ('' when absent).
+   function parameter_value(line, name) result(value)
+      character(len=*), intent(in) :: line, name
+      character(len=:), allocatable :: value
+      character(len=len(line)) :: rest, item
+      integer :: i, eq
+      value = ''
+      rest = line
+      i = index(rest, ',')
+      do while (i > 0)
+         rest = rest(i + 1:)
+         i = index(rest, ',')
+         if (i > 0) then
+            item = rest(1:i - 1)
+         else
+            item = rest
+         end if
+         eq = index(item, '=')
+         if (eq > 0) then
+            if (trim(upper_compact(item(1:eq - 1))) == name) then
+               value = trim(adjustl(item(eq + 1:)))
+               return
+            end if
+         end if
+      end do
+   end function parameter_value
+
+   !> The keyword line has the parameter `name` (with or without a value).
+   logical function has_parameter(line, name)
+      character(len=*), intent(in) :: line, name
+      character(len=len(line)) :: compact
+      compact = upper_compact(line)
+      has_parameter = index(compact, ','//name//',') > 0 .or. index(compact, ','//name//'=') > 0 &
+         .or. compact(max(1, len_trim(compact) - len(name)):len_trim(compact)) == ','//name
+   end function has_parameter
+
+   !> The numbers of a comma-separated data line (empty fields skipped, text fields stop).
+   subroutine parse_numbers(line, values, n)
+      character(len=*), intent(in) :: line
+      real(dp), intent(out) :: values(:)
+      integer, intent(out) :: n
+      character(len=len(line)) :: rest, item
+      integer :: i, ios
+      real(dp) :: x
+      n = 0
+      values = 0.0_dp
+      rest = line
+      do while (len_trim(rest) > 0 .and. n < size(values))
+         i = index(rest, ',')
+         if (i > 0) then
+            item = rest(1:i - 1)
+            rest = rest(i + 1:)
+         else
+            item = rest
+            rest = ''
+         end if
+         if (len_trim(item) == 0) cycle
+         read (item, *, iostat=ios) x
+         if (ios /= 0) exit
+         n = n + 1
+         values(n) = x
+      end do
+   end subroutine parse_numbers
+
+   pure function itoa(i) result(s)
+      integer, intent(in) :: i
+      character(len=:), allocatable :: s
+      character(len=16) :: buffer
+      write (buffer, '(i0)') i
+      s = trim(buffer)
+   end function itoa
+
+   function rtoa(x) result(s)
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=32) :: buffer
+      write (buffer, '(g0)') x
+      s = trim(buffer)
+   end function rtoa
+
+end program interphase_check_deck
