@@ -18,6 +18,7 @@ program interphase_check_deck
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props
    use interphase_driver_cli, only: get_argument
+   use interphase_driver_text, only: int_to_string, real_to_string
    implicit none
 
    !> Longest deck line read (Abaqus allows 256 characters).
@@ -173,7 +174,7 @@ contains
 
       nfail_before = nfail
       solver = merge('Abaqus/Explicit (VUMAT)', 'Abaqus/Standard (UMAT) ', explicit)
-      where = path//':'//itoa(section%line)//': *COHESIVE SECTION, ELSET='//trim(section%elset)
+      where = path//':'//int_to_string(section%line)//': *COHESIVE SECTION, ELSET='//trim(section%elset)
       if (section%response /= 'TRACTIONSEPARATION') &
          call record_failure(where//': RESPONSE='//trim(section%response)//' but interphase is a traction-separation '// &
             'law: RESPONSE=TRACTION SEPARATION', nfail)
@@ -181,7 +182,8 @@ contains
          call record_failure(where//': THICKNESS='//trim(section%thickness_mode)//' but interphase needs '// &
             'THICKNESS=SPECIFIED with constitutive thickness 1 (strain = separation in mm)', nfail)
       if (.not. is_finite(section%thickness) .or. abs(section%thickness - 1.0_dp) > 1.0e-12_dp) &
-         call record_failure(where//': constitutive thickness '//rtoa(section%thickness)//' but interphase needs 1', nfail)
+         call record_failure(where//': constitutive thickness '//real_to_string(section%thickness)// &
+            ' but interphase needs 1', nfail)
       m = 0
       do k = 1, size(materials)
          if (materials(k)%name == section%material) m = k
@@ -193,9 +195,9 @@ contains
          call record_failure(where//': material '//trim(section%material)//' has no *USER MATERIAL', nfail)
       else
          associate (mat => materials(m))
-            where = path//':'//itoa(mat%user_line)//': *USER MATERIAL of '//trim(mat%name)
+            where = path//':'//int_to_string(mat%user_line)//': *USER MATERIAL of '//trim(mat%name)
             if (mat%nconstants /= mat%nread) then
-               call record_failure(where//': CONSTANTS='//itoa(mat%nconstants)//' but '//itoa(mat%nread)// &
+               call record_failure(where//': CONSTANTS='//int_to_string(mat%nconstants)//' but '//int_to_string(mat%nread)// &
                   ' values follow', nfail)
             else
                call from_props(mat%constants(1:mat%nread), params, status, message)
@@ -209,10 +211,10 @@ contains
             end if
             depvar_needed = merge(NSTATV_VUMAT, NSTATV_REQUIRED, explicit)
             if (mat%depvar < 0) then
-               call record_failure(where//': no *DEPVAR: '//trim(solver)//' needs at least '//itoa(depvar_needed), nfail)
+               call record_failure(where//': no *DEPVAR: '//trim(solver)//' needs at least '//int_to_string(depvar_needed), nfail)
             else if (mat%depvar < depvar_needed) then
-               call record_failure(where//': *DEPVAR '//itoa(mat%depvar)//' but '//trim(solver)//' needs at least '// &
-                  itoa(depvar_needed), nfail)
+               call record_failure(where//': *DEPVAR '//int_to_string(mat%depvar)//' but '//trim(solver)//' needs at least '// &
+                  int_to_string(depvar_needed), nfail)
             end if
             if (.not. explicit .and. .not. mat%unsymm) &
                call record_failure(where//': no UNSYMM: the tangent DDSDDE is unsymmetric (friction, damage)', nfail)
@@ -326,21 +328,5 @@ contains
          values(n) = x
       end do
    end subroutine parse_numbers
-
-   pure function itoa(i) result(s)
-      integer, intent(in) :: i
-      character(len=:), allocatable :: s
-      character(len=16) :: buffer
-      write (buffer, '(i0)') i
-      s = trim(buffer)
-   end function itoa
-
-   function rtoa(x) result(s)
-      real(dp), intent(in) :: x
-      character(len=:), allocatable :: s
-      character(len=32) :: buffer
-      write (buffer, '(g0)') x
-      s = trim(buffer)
-   end function rtoa
 
 end program interphase_check_deck
