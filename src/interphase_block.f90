@@ -16,30 +16,21 @@
 !> another case (Fortran names are case-insensitive: a local `regime_open` silently took the
 !> place of REGIME_OPEN).
 !>
-!> Also here: the checks of a block's incoming state and densities as branch-free counts, so
-!> that a host can validate a block in one vectorised pass and look for the culprit only when
-!> the count is not zero.
+!> Also here: the check of a block's densities as a branch-free count (the incoming states are
+!> counted by `count_invalid_states` of interphase_state, beside the STATEV decoder), so that a
+!> host can validate a block in one vectorised pass and look for the culprit only on error.
 module interphase_block
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
+   use interphase_finite, only: EXPONENT_MASK
    use interphase_params, only: law_params_type
    use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    implicit none
    private
-   public :: simplified_block_update, count_invalid_states, count_nonpositive
+   public :: simplified_block_update, count_nonpositive
 
-   !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
-   integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
    !> Bit pattern of the smallest positive normal number, tiny(1.0_dp).
    integer(int64), parameter :: SMALLEST_NORMAL_BITS = int(z'0010000000000000', int64)
-   !> Bit pattern of 1.0_dp.
-   integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
-   !> Bit patterns of the regime codes 0..3 stored as reals.
-   integer(int64), parameter :: REGIME_BITS(4) = [transfer(real(REGIME_INTACT, dp), 0_int64), &
-      transfer(real(REGIME_OPEN, dp), 0_int64), transfer(real(REGIME_STICK, dp), 0_int64), &
-      transfer(real(REGIME_SLIP, dp), 0_int64)]
-   !> Position of the sign bit of an IEEE binary64 number.
-   integer, parameter :: SIGN_BIT = 63
 
 contains
 
@@ -223,34 +214,6 @@ contains
          end do
       end do
    end subroutine simplified_block_update
-
-   !> Number of points whose incoming state is not admissible (D outside [0, 1], a slip that is
-   !> not finite, a regime code that is not 0..3); the check `state_unpack` makes, point by
-   !> point, as integer operations on the bit patterns (no floating-point exception for NaN).
-   !> In 2-D (nt = 1) the values of lam2 are not used (the array must exist).
-   pure integer function count_invalid_states(n, nt, d, lam1, lam2, regime) result(nbad)
-      integer, intent(in) :: n, nt
-      real(dp), intent(in) :: d(n), lam1(n), lam2(n), regime(n)
-      integer(int64) :: bd, bl1, bl2, br, lam2_mask
-      integer :: k, d_ok, lam_ok, regime_ok
-      ! lambda_2 is checked in 3-D only (a mask, so that the loop has no branch)
-      lam2_mask = merge(0_int64, EXPONENT_MASK, nt == 1)
-      nbad = 0
-      do k = 1, n
-         ! every value loaded first: a load behind a short-circuit would be a branch
-         bd = transfer(d(k), 0_int64)
-         bl1 = transfer(lam1(k), 0_int64)
-         bl2 = transfer(lam2(k), 0_int64)
-         br = transfer(regime(k), 0_int64)
-         ! (each condition a 0/1 integer: logical operators may short-circuit into branches)
-         d_ok = max(merge(1, 0, bd >= 0_int64 .and. bd <= ONE_BITS), merge(1, 0, ibclr(bd, SIGN_BIT) == 0_int64))
-         lam_ok = merge(1, 0, iand(bl1, EXPONENT_MASK) /= EXPONENT_MASK) &
-            *merge(1, 0, iand(bl2, lam2_mask) /= EXPONENT_MASK)
-         regime_ok = merge(1, 0, br == REGIME_BITS(1)) + merge(1, 0, br == REGIME_BITS(2)) &
-            + merge(1, 0, br == REGIME_BITS(3)) + merge(1, 0, br == REGIME_BITS(4))
-         nbad = nbad + 1 - d_ok*lam_ok*regime_ok
-      end do
-   end function count_invalid_states
 
    !> Number of values that are not finite, > 0 and normal (bit patterns; no exception for NaN;
    !> a subnormal value would overflow its reciprocal).

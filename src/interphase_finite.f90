@@ -7,7 +7,7 @@ module interphase_finite
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: is_finite
+   public :: is_finite, EXPONENT_MASK
 
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
    integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)

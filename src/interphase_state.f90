@@ -1,14 +1,19 @@
 !> The history state of one interface point and its one load/store pair with Abaqus STATEV.
 module interphase_state
    use, intrinsic :: iso_fortran_env, only: int64
-   use interphase_finite, only: is_finite
+   use interphase_finite, only: EXPONENT_MASK
    use interphase_kinds, only: dp
    use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED, &
       REGIME_INTACT, REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_BAD_STATE, STATUS_BAD_NSTATV, MESSAGE_LEN
    implicit none
    private
-   public :: interface_state_type, state_unpack, state_pack
+   public :: interface_state_type, state_unpack, state_pack, count_invalid_states
+
+   !> Bit pattern of 1.0_dp.
+   integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
+   !> Position of the sign bit of an IEEE binary64 number.
+   integer, parameter :: SIGN_BIT = 63
 
    !> History variables of one interface point.
    type :: interface_state_type
@@ -27,8 +32,6 @@ contains
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
 
-      integer :: regime, candidate
-
       status = STATUS_OK
       if (size(statev) < NSTATV_REQUIRED) then
          status = STATUS_BAD_NSTATV
@@ -40,33 +43,72 @@ contains
       state%slip(1) = statev(SV_SLIP_1)
       state%slip(2) = 0.0_dp
       if (ntens == 3) state%slip(2) = statev(SV_SLIP_2)
-      ! the regime code, by bit pattern (no floating-point exception for NaN or a fraction)
-      regime = -1
-      do candidate = REGIME_INTACT, REGIME_SLIP
-         if (transfer(statev(SV_REGIME), 0_int64) == transfer(real(candidate, dp), 0_int64)) regime = candidate
-      end do
-      state%regime = regime
-      if (.not. in_unit_interval(state%d)) then
+      state%regime = regime_code(transfer(statev(SV_REGIME), 0_int64))
+      if (damage_admissible(transfer(state%d, 0_int64)) == 0) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE, ') D = ', state%d, &
             ' must lie in [0, 1]'
-      else if (.not. all(is_finite(state%slip))) then
+      else if (finite_bits(transfer(state%slip(1), 0_int64))*finite_bits(transfer(state%slip(2), 0_int64)) == 0) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,i0,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
             ') slip is not finite'
-      else if (regime < REGIME_INTACT) then
+      else if (state%regime < REGIME_INTACT) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_REGIME, ') regime = ', &
             statev(SV_REGIME), ' is not a regime code 0..3'
       end if
    end subroutine state_unpack
 
-   !> 0 <= x <= 1 (false for NaN without an invalid-operation exception).
-   pure logical function in_unit_interval(x)
-      real(dp), intent(in) :: x
-      in_unit_interval = .false.
-      if (is_finite(x)) in_unit_interval = x >= 0.0_dp .and. x <= 1.0_dp
-   end function in_unit_interval
+   !> Number of points whose incoming state `state_unpack` would refuse, for a host that holds a
+   !> block of points column by column (the VUMAT): one branch-free pass that vectorises, so the
+   !> culprit need be looked for only when the count is not zero. In 2-D (nt = 1) the values of
+   !> lam2 are not used (the array must exist).
+   pure integer function count_invalid_states(n, nt, d, lam1, lam2, regime) result(nbad)
+      integer, intent(in) :: n, nt
+      real(dp), intent(in) :: d(n), lam1(n), lam2(n), regime(n)
+      integer(int64) :: bd, bl1, bl2, br
+      integer :: k, lam2_checked, d_ok, lam_ok, regime_ok
+      lam2_checked = merge(0, 1, nt == 1)
+      nbad = 0
+      do k = 1, n
+         ! every value loaded first and every test a 0/1 integer on the bit patterns: a load or a
+         ! logical operator behind a short-circuit would be a branch, and the loop would not
+         ! vectorise
+         bd = transfer(d(k), 0_int64)
+         bl1 = transfer(lam1(k), 0_int64)
+         bl2 = transfer(lam2(k), 0_int64)
+         br = transfer(regime(k), 0_int64)
+         d_ok = damage_admissible(bd)
+         lam_ok = finite_bits(bl1)*max(1 - lam2_checked, finite_bits(bl2))
+         regime_ok = regime_code(br) + 1     ! 0 for no code, else 1..4
+         nbad = nbad + 1 - d_ok*lam_ok*min(1, regime_ok)
+      end do
+   end function count_invalid_states
+
+   !> 1 when the binary64 number of bit pattern b lies in [0, 1] (-0 included), else 0 (integer
+   !> operations only: no exception for NaN).
+   elemental integer function damage_admissible(b)
+      integer(int64), intent(in) :: b
+      damage_admissible = max(merge(1, 0, b >= 0_int64 .and. b <= ONE_BITS), &
+         merge(1, 0, ibclr(b, SIGN_BIT) == 0_int64))
+   end function damage_admissible
+
+   !> 1 when the binary64 number of bit pattern b is finite, else 0 (exponent bits).
+   elemental integer function finite_bits(b)
+      integer(int64), intent(in) :: b
+      finite_bits = merge(1, 0, iand(b, EXPONENT_MASK) /= EXPONENT_MASK)
+   end function finite_bits
+
+   !> The regime code c when bit pattern b is exactly the real number c of a REGIME_* code, else
+   !> -1 (no exception for NaN or a fraction, no branch).
+   elemental integer function regime_code(b) result(code)
+      integer(int64), intent(in) :: b
+      integer :: candidate
+      code = -1
+      do candidate = REGIME_INTACT, REGIME_SLIP
+         code = code + merge(candidate + 1, 0, b == transfer(real(candidate, dp), 0_int64))
+      end do
+   end function regime_code
 
    !> Store the state into STATEV (slots beyond NSTATV_REQUIRED are left alone).
    pure subroutine state_pack(state, statev)

@@ -39,11 +39,11 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, status_message
    use interphase_params, only: law_params_type, from_props
-   use interphase_state, only: interface_state_type, state_unpack, state_pack
+   use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
-   use interphase_block, only: simplified_block_update, count_invalid_states, count_nonpositive
+   use interphase_block, only: simplified_block_update, count_nonpositive
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
    integer, intent(in) :: nblock                    !! number of material points in this call
