@@ -16,10 +16,9 @@ program interphase_calibrate
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, PROP_SF_T, &
       MODEL_MICROMECHANICAL
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
-   use interphase_micro_coefficients, only: load_custom_table, custom_table_source
+   use interphase_micro_coefficients, only: custom_table_source
    use interphase_layout, only: PROP_TABLE
-   use interphase_driver_case, only: case_type, read_case
+   use interphase_driver_case, only: case_type, read_case, load_start_up_data
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
    use interphase_driver_text, only: int_to_string
    use interphase_driver_cli, only: get_argument
@@ -27,8 +26,7 @@ program interphase_calibrate
 
    type(case_type) :: run
    character(len=:), allocatable :: case_path, write_path, message, argument
-   character(len=MESSAGE_LEN) :: table_message
-   integer :: increments, i, nargs, status, unit, ios
+   integer :: increments, i, nargs, unit, ios
    logical :: ok
    real(dp) :: g_i, g_ii, k_n, k_t, peak_n, peak_t, s_peak_n, s_peak_t, s0_n, s0_t
 
@@ -61,10 +59,8 @@ program interphase_calibrate
    if (.not. ok) call fail(message)
    if (nint(run%props(PROP_MODEL)) /= MODEL_MICROMECHANICAL) &
       call fail(case_path//": the case must use model = 'micromechanical'")
-   if (len(run%table_path) > 0) then
-      call load_custom_table(run%table_path, status, table_message)
-      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
-   end if
+   call load_start_up_data(run%table_path, '', ok, message)
+   if (.not. ok) call fail(message)
 
    call monotonic(1, run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)
    call monotonic(2, run%props(PROP_SF_T), g_ii, k_t, peak_t, s_peak_t)

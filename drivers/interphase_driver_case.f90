@@ -22,10 +22,13 @@ module interphase_driver_case
       LFM_GC_II, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE
    use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
+   use interphase_micro_coefficients, only: load_custom_table
+   use interphase_rcurve, only: load_rcurve
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    implicit none
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, &
-      ENTRY_LEN, UNSET_REAL, is_unset
+      load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset
 
    !> Length of the character entries of the namelists (model names, paths).
    integer, parameter :: ENTRY_LEN = 1024
@@ -392,5 +395,26 @@ contains
          list = list//', '//name
       end if
    end subroutine add_name
+
+   !> Start-up, as UEXTERNALDB does in Abaqus: read the custom RVE table and the tabulated R-curve
+   !> a case names (empty path: none), once, before any update.
+   subroutine load_start_up_data(table_path, rcurve_path, ok, message)
+      character(len=*), intent(in) :: table_path   !! custom RVE table, or ''
+      character(len=*), intent(in) :: rcurve_path  !! tabulated R-curve, or ''
+      logical, intent(out) :: ok                   !! true when everything named was read
+      character(len=:), allocatable, intent(out) :: message  !! the reason when not ok
+      integer :: status
+      character(len=MESSAGE_LEN) :: text
+
+      ok = .true.
+      message = ''
+      status = STATUS_OK
+      if (len(table_path) > 0) call load_custom_table(table_path, status, text)
+      if (status == STATUS_OK .and. len(rcurve_path) > 0) call load_rcurve(rcurve_path, status, text)
+      if (status /= STATUS_OK) then
+         ok = .false.
+         message = status_message(status)//': '//trim(text)
+      end if
+   end subroutine load_start_up_data
 
 end module interphase_driver_case

@@ -10,12 +10,9 @@
 !> Every error is printed to standard error and ends the program with exit status 1 (`stop 1`).
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-   use interphase_driver_case, only: case_type, read_case
+   use interphase_driver_case, only: case_type, read_case, load_start_up_data
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot
-   use interphase_micro_coefficients, only: load_custom_table
-   use interphase_rcurve, only: load_rcurve
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_driver_history, only: history_type, read_history
    use interphase_driver_output, only: csv_header, write_plot_script
    use interphase_driver_replay, only: replay_history
@@ -30,8 +27,6 @@ program interphase_point
    logical :: no_plot, ok
    integer :: unit, ios, nrows
    character(len=512) :: iomsg
-   character(len=MESSAGE_LEN) :: table_message
-   integer :: status
 
    ! ---- command line ----
    call parse_run_arguments(cli, ok, message)
@@ -49,15 +44,9 @@ program interphase_point
    if (.not. ok) call fail(message)
    call read_history(run%history_path, history, ok, message)
    if (.not. ok) call fail(message)
-   if (len(run%table_path) > 0) then
-      ! start-up: the custom RVE table is read once, before any update (as UEXTERNALDB does)
-      call load_custom_table(run%table_path, status, table_message)
-      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
-   end if
-   if (len(run%rcurve_path) > 0) then
-      call load_rcurve(run%rcurve_path, status, table_message)
-      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
-   end if
+   ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does)
+   call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
+   if (.not. ok) call fail(message)
 
    ! ---- replay into the CSV ----
    csv_path = join_path(output_dir, run%output)

@@ -12,10 +12,8 @@
 program interphase_fe2d
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_layout, only: PROP_MU
-   use interphase_micro_coefficients, only: load_custom_table
-   use interphase_rcurve, only: load_rcurve
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
+   use interphase_driver_case, only: load_start_up_data
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot
    use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
@@ -33,9 +31,8 @@ program interphase_fe2d
    type(fe2d_options_type) :: options
    type(fe2d_result_type) :: result
    logical :: no_plot, ok
-   integer :: ios, status, peak
+   integer :: ios, peak
    character(len=512) :: iomsg
-   character(len=MESSAGE_LEN) :: table_message
 
    call parse_run_arguments(cli, ok, message)
    if (cli%help) then
@@ -49,15 +46,9 @@ program interphase_fe2d
 
    call read_fe2d_case(case_path, run, ok, message)
    if (.not. ok) call fail(message)
-   if (len(run%table_path) > 0) then
-      ! start-up: the custom RVE table is read once, before any update (as UEXTERNALDB does)
-      call load_custom_table(run%table_path, status, table_message)
-      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
-   end if
-   if (len(run%rcurve_path) > 0) then
-      call load_rcurve(run%rcurve_path, status, table_message)
-      if (status /= STATUS_OK) call fail(status_message(status)//': '//trim(table_message))
-   end if
+   ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does)
+   call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
+   if (.not. ok) call fail(message)
    call build_mesh(run, mesh)
 
    csv_path = join_path(output_dir, run%output)
