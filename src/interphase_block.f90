@@ -27,7 +27,7 @@ module interphase_block
    use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    implicit none
    private
-   public :: simplified_block_update, count_nonpositive
+   public :: simplified_block_update, count_nonpositive, count_differing
 
    !> Bit pattern of the smallest positive normal number, tiny(1.0_dp).
    integer(int64), parameter :: SMALLEST_NORMAL_BITS = int(z'0010000000000000', int64)
@@ -62,15 +62,16 @@ contains
       !> Points per pass: the passes' working arrays stay in the L1 cache.
       integer, parameter :: SUB = 64
       real(dp) :: sn_w(SUB), st1_w(SUB), st2_w(SUB), lam2_w(SUB), t_sq_w(SUB), tau_norm_w(SUB)
-      real(dp) :: dir1_w(SUB), dir2_w(SUB)
+      real(dp) :: dir1_w(SUB), dir2_w(SUB), d_w(SUB)
       logical :: ok_w(SUB)
       real(dp) :: inv_kf, s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
       real(dp) :: d_hat, d_k, num, den, kn_open, kt_open, kk_n, kk_t, cf_t, sigma, tau1, tau2
       real(dp) :: tau_norm, phi, inv_norm, dgamma, lam1_closed, lam2_closed
       real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
       real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed
-      integer(int64) :: keep
+      integer(int64) :: keep, nfailed_count
       logical :: ok_k, growing, open, slipping
+      integer(int64) :: ngrow
       integer :: c0, m, i, k
 
       ! Two passes over SUB points at a time, each a loop without control flow (every input
@@ -82,7 +83,7 @@ contains
       ! pass 2, common: damage, the simplified coefficients, open/stick/slip, energy.
       ! the return mapping divides by kf = -T^f = K_T (the scalar update forms the same 1/kf)
       inv_kf = 1.0_dp/params%k_t
-      nfailed = 0
+      nfailed_count = 0
       do c0 = 1, n, SUB
          m = min(SUB, n - c0 + 1)
 
@@ -100,7 +101,7 @@ contains
                st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
                tau1 = params%k_t*st1 + (-params%k_t)*lam1_old(k)
                ok_w(i) = ok_k
-               nfailed = nfailed + merge(0, 1, ok_k)
+               nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
                sn_w(i) = s_n_k
                st1_w(i) = st1
                st2_w(i) = 0.0_dp
@@ -129,7 +130,7 @@ contains
                tau_norm = sqrt(tau1**2 + tau2**2)
                inv_norm = 1.0_dp/max(tau_norm, tiny(1.0_dp))
                ok_w(i) = ok_k
-               nfailed = nfailed + merge(0, 1, ok_k)
+               nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
                sn_w(i) = s_n_k
                st1_w(i) = st1
                st2_w(i) = st2
@@ -138,6 +139,44 @@ contains
                tau_norm_w(i) = tau_norm
                dir1_w(i) = tau1*inv_norm
                dir2_w(i) = tau2*inv_norm
+            end do
+         end if
+
+         ! ---- damage, eqs 13-18 (interphase_damage): D^ = beta/(eta (1 + beta)), r = 1 + beta.
+         ! Its square root and division are the costliest operations of the update, and in most
+         ! increments no point of a pass is on its damage surface (r > 1 with D < 1): such a pass
+         ! skips them (D^ = 0 then, as in the formula).
+         ngrow = 0
+         do i = 1, m
+            k = c0 + i - 1
+            d_k = d_old(k)
+            x = max(sn_w(i), 0.0_dp)*params%inv_s0_n
+            ngrow = ngrow + merge(1_int64, 0_int64, x*x + t_sq_w(i)*params%inv_s0_t_sq > 1.0_dp .and. d_k < 1.0_dp)
+         end do
+         if (ngrow > 0) then
+            do i = 1, m
+               k = c0 + i - 1
+               d_k = d_old(k)
+               t_sq = t_sq_w(i)
+               sn_pos = max(sn_w(i), 0.0_dp)
+               x = sn_pos*params%inv_s0_n
+               r = sqrt(x*x + t_sq*params%inv_s0_t_sq)
+               growing = r > 1.0_dp
+               alpha2 = sn_pos*sn_pos + t_sq
+               weighted = params%eta_n*sn_pos*sn_pos + params%eta_t*t_sq
+               num = (r - 1.0_dp)*alpha2
+               den = r*(alpha2 - weighted)
+               ! the guard keeps 0/0 (s = 0) out of the lanes that are not growing: the compiler may
+               ! divide first and select afterwards; where D grows den >= r alpha^2 (1 - max(eta)) is
+               ! far above tiny (unless sf = s0 to round-off), so it changes no result
+               d_hat = merge(num/max(den, tiny(1.0_dp)), 0.0_dp, growing)
+               ! + 0: an incoming D = -0 leaves as +0 whichever operand max picks (as in the kernel)
+               d_w(i) = max(d_k, min(1.0_dp, d_hat)) + 0.0_dp
+            end do
+         else
+            do i = 1, m
+               k = c0 + i - 1
+               d_w(i) = max(d_old(k), min(1.0_dp, 0.0_dp)) + 0.0_dp
             end do
          end if
 
@@ -152,22 +191,7 @@ contains
             t_sq = t_sq_w(i)
             tau_norm = tau_norm_w(i)
 
-            ! damage, eqs 13-18 (interphase_damage): D^ = beta/(eta (1 + beta)), r = 1 + beta
-            sn_pos = max(s_n_k, 0.0_dp)
-            x = sn_pos*params%inv_s0_n
-            r = sqrt(x*x + t_sq*params%inv_s0_t_sq)
-            growing = r > 1.0_dp
-            alpha2 = sn_pos*sn_pos + t_sq
-            weighted = params%eta_n*sn_pos*sn_pos + params%eta_t*t_sq
-            num = (r - 1.0_dp)*alpha2
-            den = r*(alpha2 - weighted)
-            ! the guard keeps 0/0 (s = 0) out of the lanes that are not growing: the compiler may
-            ! divide first and select afterwards; where D grows den >= r alpha^2 (1 - max(eta)) is
-            ! far above tiny (unless sf = s0 to round-off), so it changes no result
-            d_hat = merge(num/max(den, tiny(1.0_dp)), 0.0_dp, growing)
-            d_k = d_old(k)
-            ! + 0: an incoming D = -0 leaves as +0 whichever operand max picks (as in the kernel)
-            d_k = max(d_k, min(1.0_dp, d_hat)) + 0.0_dp
+            d_k = d_w(i)
 
             ! the simplified model's coefficients at D (eqs 31-35)
             kn_open = (1.0_dp - d_k)*params%k_n
@@ -213,6 +237,7 @@ contains
             regime(k) = merge(regime_if_open, regime_if_closed, open)
          end do
       end do
+      nfailed = int(nfailed_count)
    end subroutine simplified_block_update
 
    !> Number of values that are not finite, > 0 and normal (bit patterns; no exception for NaN;
@@ -228,5 +253,18 @@ contains
          nbad = nbad + merge(0, 1, b >= SMALLEST_NORMAL_BITS .and. b < EXPONENT_MASK)
       end do
    end function count_nonpositive
+
+   !> Number of values whose bit pattern differs from that of x0.
+   pure integer function count_differing(n, x, x0) result(ndiff)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: x(n), x0
+      integer(int64) :: b0
+      integer :: k
+      b0 = transfer(x0, 0_int64)
+      ndiff = 0
+      do k = 1, n
+         ndiff = ndiff + merge(1, 0, transfer(x(k), 0_int64) /= b0)
+      end do
+   end function count_differing
 
 end module interphase_block

@@ -66,38 +66,47 @@ contains
    pure integer function count_invalid_states(n, nt, d, lam1, lam2, regime) result(nbad)
       integer, intent(in) :: n, nt
       real(dp), intent(in) :: d(n), lam1(n), lam2(n), regime(n)
-      integer(int64) :: bd, bl1, bl2, br
-      integer :: k, lam2_checked, d_ok, lam_ok, regime_ok
-      lam2_checked = merge(0, 1, nt == 1)
-      nbad = 0
+      integer(int64) :: bd, bl1, bl2, br, lam2_ignored, nbad_bits
+      integer :: k
+      lam2_ignored = merge(1_int64, 0_int64, nt == 1)
+      nbad_bits = 0
       do k = 1, n
-         ! every value loaded first and every test a 0/1 integer on the bit patterns: a load or a
-         ! logical operator behind a short-circuit would be a branch, and the loop would not
-         ! vectorise
+         ! every value loaded first and every test a 0/1 integer of the bit patterns' kind: a
+         ! load or a logical operator behind a short-circuit would be a branch, and the loop would
+         ! not vectorise; integers of another kind would cost conversions in every lane
          bd = transfer(d(k), 0_int64)
          bl1 = transfer(lam1(k), 0_int64)
          bl2 = transfer(lam2(k), 0_int64)
          br = transfer(regime(k), 0_int64)
-         d_ok = damage_admissible(bd)
-         lam_ok = finite_bits(bl1)*max(1 - lam2_checked, finite_bits(bl2))
-         regime_ok = regime_code(br) + 1     ! 0 for no code, else 1..4
-         nbad = nbad + 1 - d_ok*lam_ok*min(1, regime_ok)
+         nbad_bits = nbad_bits + 1 - damage_admissible(bd)*finite_bits(bl1) &
+            *max(lam2_ignored, finite_bits(bl2))*regime_known(br)
       end do
+      nbad = int(nbad_bits)
    end function count_invalid_states
 
    !> 1 when the binary64 number of bit pattern b lies in [0, 1] (-0 included), else 0 (integer
    !> operations only: no exception for NaN).
-   elemental integer function damage_admissible(b)
+   elemental integer(int64) function damage_admissible(b)
       integer(int64), intent(in) :: b
-      damage_admissible = max(merge(1, 0, b >= 0_int64 .and. b <= ONE_BITS), &
-         merge(1, 0, ibclr(b, SIGN_BIT) == 0_int64))
+      damage_admissible = max(merge(1_int64, 0_int64, b >= 0_int64 .and. b <= ONE_BITS), &
+         merge(1_int64, 0_int64, ibclr(b, SIGN_BIT) == 0_int64))
    end function damage_admissible
 
    !> 1 when the binary64 number of bit pattern b is finite, else 0 (exponent bits).
-   elemental integer function finite_bits(b)
+   elemental integer(int64) function finite_bits(b)
       integer(int64), intent(in) :: b
-      finite_bits = merge(1, 0, iand(b, EXPONENT_MASK) /= EXPONENT_MASK)
+      finite_bits = merge(1_int64, 0_int64, iand(b, EXPONENT_MASK) /= EXPONENT_MASK)
    end function finite_bits
+
+   !> 1 when bit pattern b is exactly the real number of a REGIME_* code, else 0.
+   elemental integer(int64) function regime_known(b)
+      integer(int64), intent(in) :: b
+      integer :: candidate
+      regime_known = 0
+      do candidate = REGIME_INTACT, REGIME_SLIP
+         regime_known = regime_known + merge(1_int64, 0_int64, b == transfer(real(candidate, dp), 0_int64))
+      end do
+   end function regime_known
 
    !> The regime code c when bit pattern b is exactly the real number c of a REGIME_* code, else
    !> -1 (no exception for NaN or a fraction, no branch).

@@ -43,7 +43,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
-   use interphase_block, only: simplified_block_update, count_nonpositive
+   use interphase_block, only: simplified_block_update, count_nonpositive, count_differing
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
    integer, intent(in) :: nblock                    !! number of material points in this call
@@ -88,8 +88,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    type(coefficient_set_type) :: intact, intact_rate
    real(dp) :: ds(CHUNK, 3), psi(CHUNK), traction_t2(CHUNK), work(CHUNK)
    logical :: ok(CHUNK)
-   real(dp) :: traction(3), tangent(3, 3), rho_t, inv_rho, psi_old, energy_inelas
-   logical :: blocked, packaging
+   real(dp) :: traction(3), tangent(3, 3), rho_t, inv_rho, inv_rho_uniform, psi_old, energy_inelas
+   logical :: blocked, packaging, uniform_density
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, status, nfailed, first_failed, first_status
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    character(len=MESSAGE_LEN) :: message, first_message
@@ -187,13 +187,30 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          end if
 
          ! separation increments ds = T0 strainInc (x 2 for the tensor shears) and the separations
-         ! at the end of the increment, s = s_old + ds, stored in STATEV
-         do j = 1, ntens
-            ds(1:n, j) = merge(1.0_dp, SHEAR_FACTOR, j == 1)*THICKNESS*straininc(k0:k1, j)
-            statenew(k0:k1, SV_SEP_N + j - 1) = stateold(k0:k1, SV_SEP_N + j - 1) + ds(1:n, j)
-         end do
-         if (ntens == 2) statenew(k0:k1, SV_SEP_T2) = 0.0_dp
-         statenew(k0:k1, SV_FAILED) = stateold(k0:k1, SV_FAILED)
+         ! at the end of the increment, s = s_old + ds, stored in STATEV (one pass per dimension,
+         ! every column read and written once)
+         if (ntens == 2) then
+            do k = 1, n
+               km = k0 + k - 1
+               ds(k, 1) = THICKNESS*straininc(km, 1)
+               ds(k, 2) = SHEAR_FACTOR*THICKNESS*straininc(km, 2)
+               statenew(km, SV_SEP_N) = stateold(km, SV_SEP_N) + ds(k, 1)
+               statenew(km, SV_SEP_T1) = stateold(km, SV_SEP_T1) + ds(k, 2)
+               statenew(km, SV_SEP_T2) = 0.0_dp
+               statenew(km, SV_FAILED) = stateold(km, SV_FAILED)
+            end do
+         else
+            do k = 1, n
+               km = k0 + k - 1
+               ds(k, 1) = THICKNESS*straininc(km, 1)
+               ds(k, 2) = SHEAR_FACTOR*THICKNESS*straininc(km, 2)
+               ds(k, 3) = SHEAR_FACTOR*THICKNESS*straininc(km, 3)
+               statenew(km, SV_SEP_N) = stateold(km, SV_SEP_N) + ds(k, 1)
+               statenew(km, SV_SEP_T1) = stateold(km, SV_SEP_T1) + ds(k, 2)
+               statenew(km, SV_SEP_T2) = stateold(km, SV_SEP_T2) + ds(k, 3)
+               statenew(km, SV_FAILED) = stateold(km, SV_FAILED)
+            end do
+         end if
 
          if (blocked) then
             call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
@@ -243,10 +260,19 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          work(1:n) = (stressold(k0:k1, 1) + stressnew(k0:k1, 1))*ds(1:n, 1) &
             + (stressold(k0:k1, 2) + stressnew(k0:k1, 2))*ds(1:n, 2)
          if (ntens == 3) work(1:n) = work(1:n) + (stressold(k0:k1, 3) + stressnew(k0:k1, 3))*ds(1:n, 3)
+         ! 1/(rho T0): one division for the chunk when its density is uniform (one material, the
+         ! usual case), else one per point (the compiler makes two loops of this one); the same
+         ! numbers either way
+         uniform_density = count_differing(n, density(k0:k1), density(k0)) == 0
+         inv_rho_uniform = 1.0_dp/(density(k0)*THICKNESS)
          do k = 1, n
             km = k0 + k - 1
             rho_t = density(km)*THICKNESS
-            inv_rho = 1.0_dp/rho_t
+            if (uniform_density) then
+               inv_rho = inv_rho_uniform
+            else
+               inv_rho = 1.0_dp/rho_t
+            end if
             psi_old = (enerinternold(km) - enerinelasold(km))*rho_t
             energy_inelas = enerinelasold(km) + (0.5_dp*work(k) - (psi(k) - psi_old))*inv_rho
             enerinelasnew(km) = energy_inelas
