@@ -9,6 +9,8 @@
 !> regime, in 2-D and 3-D): every branch of the scalar update becomes a selection (`merge`)
 !> between the branches, both evaluated on guarded operands so that no branch can raise a
 !> floating-point exception. No tangent is formed (explicit hosts do not use one).
+!> The one branch kept is per group of 64 points: D^ (a square root and a division, the costliest
+!> operations of the update) is evaluated only for a group in which some point can grow.
 !>
 !> Compiler notes (gfortran 12; docs/performance.md): the file needs -fno-trapping-math to
 !> vectorise (CMakeLists.txt sets it); `merge` is evaluated lazily, so a load inside one is a
