@@ -50,7 +50,8 @@ program interphase_point
 
    ! ---- replay into the CSV ----
    csv_path = join_path(output_dir, run%output)
-   call ensure_directory(directory_of(csv_path))
+   call make_directory(directory_of(csv_path), ok, message)
+   if (.not. ok) call fail(message)
    open (newunit=unit, file=csv_path, status='replace', action='write', form='formatted', &
       iostat=ios, iomsg=iomsg)
    if (ios /= 0) call fail(csv_path//': cannot write the CSV file: '//trim(iomsg))
@@ -86,15 +87,6 @@ contains
          '  Replays the separation history of CASE.nml through the interphase UMAT and writes', &
          '  a CSV table (and a PNG of the traction-separation curves if gnuplot is on PATH).'
    end subroutine print_usage
-
-   !> Create the output folder or stop with the reason.
-   subroutine ensure_directory(directory)
-      character(len=*), intent(in) :: directory
-      logical :: created
-      character(len=:), allocatable :: why
-      call make_directory(directory, created, why)
-      if (.not. created) call fail(why)
-   end subroutine ensure_directory
 
    !> Write the gnuplot script next to the CSV and run it, or say why not.
    subroutine plot_csv()

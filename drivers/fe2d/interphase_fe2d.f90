@@ -52,7 +52,8 @@ program interphase_fe2d
    call build_mesh(run, mesh)
 
    csv_path = join_path(output_dir, run%output)
-   call ensure_directory(directory_of(csv_path))
+   call make_directory(directory_of(csv_path), ok, message)
+   if (.not. ok) call fail(message)
    log_path = join_path(directory_of(csv_path), stem_of(csv_path)//'.log')
    open (newunit=options%log_unit, file=log_path, status='replace', action='write', &
       iostat=ios, iomsg=iomsg)
@@ -104,15 +105,6 @@ contains
          '  elements calling the interphase UMAT) and writes the load-displacement CSV, the', &
          '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).'
    end subroutine print_usage
-
-   !> Create the output folder or stop with the reason.
-   subroutine ensure_directory(directory)
-      character(len=*), intent(in) :: directory
-      logical :: created
-      character(len=:), allocatable :: why
-      call make_directory(directory, created, why)
-      if (.not. created) call fail(why)
-   end subroutine ensure_directory
 
    subroutine plot_csv()
       character(len=:), allocatable :: directory, stem, script_name
