@@ -18,9 +18,10 @@
 !> another case (Fortran names are case-insensitive: a local `regime_open` silently took the
 !> place of REGIME_OPEN).
 !>
-!> Also here: the check of a block's densities as a branch-free count (the incoming states are
-!> counted by `count_invalid_states` of interphase_state, beside the STATEV decoder), so that a
-!> host can validate a block in one vectorised pass and look for the culprit only on error.
+!> Also here: the check of a block's densities, and whether it has just one, as branch-free
+!> counts (the incoming states are counted by `count_invalid_states` of interphase_state, beside
+!> the STATEV decoder), so that a host can validate a block in one vectorised pass and look for
+!> the culprit only on error.
 module interphase_block
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
@@ -29,7 +30,7 @@ module interphase_block
    use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    implicit none
    private
-   public :: simplified_block_update, count_nonpositive, count_differing
+   public :: simplified_block_update, density_counts
 
    !> Bit pattern of the smallest positive normal number, tiny(1.0_dp).
    integer(int64), parameter :: SMALLEST_NORMAL_BITS = int(z'0010000000000000', int64)
@@ -242,31 +243,25 @@ contains
       nfailed = int(nfailed_count)
    end subroutine simplified_block_update
 
-   !> Number of values that are not finite, > 0 and normal (bit patterns; no exception for NaN;
-   !> a subnormal value would overflow its reciprocal).
-   pure integer function count_nonpositive(n, x) result(nbad)
+   !> The densities of a block in one branch-free pass: nbad values that are not finite, > 0 and
+   !> normal (bit patterns: no exception for NaN; a subnormal value would overflow its
+   !> reciprocal), and ndiff values whose bit pattern differs from rho(1) (0: one density).
+   pure subroutine density_counts(n, rho, nbad, ndiff)
       integer, intent(in) :: n
-      real(dp), intent(in) :: x(n)
-      integer(int64) :: b
+      real(dp), intent(in) :: rho(n)
+      integer, intent(out) :: nbad, ndiff
+      integer(int64) :: b, b1, nbad_bits, ndiff_bits
       integer :: k
-      nbad = 0
+      b1 = transfer(rho(1), 0_int64)
+      nbad_bits = 0
+      ndiff_bits = 0
       do k = 1, n
-         b = transfer(x(k), 0_int64)
-         nbad = nbad + merge(0, 1, b >= SMALLEST_NORMAL_BITS .and. b < EXPONENT_MASK)
+         b = transfer(rho(k), 0_int64)
+         nbad_bits = nbad_bits + merge(0_int64, 1_int64, b >= SMALLEST_NORMAL_BITS .and. b < EXPONENT_MASK)
+         ndiff_bits = ndiff_bits + merge(1_int64, 0_int64, b /= b1)
       end do
-   end function count_nonpositive
-
-   !> Number of values whose bit pattern differs from that of x0.
-   pure integer function count_differing(n, x, x0) result(ndiff)
-      integer, intent(in) :: n
-      real(dp), intent(in) :: x(n), x0
-      integer(int64) :: b0
-      integer :: k
-      b0 = transfer(x0, 0_int64)
-      ndiff = 0
-      do k = 1, n
-         ndiff = ndiff + merge(1, 0, transfer(x(k), 0_int64) /= b0)
-      end do
-   end function count_differing
+      nbad = int(nbad_bits)
+      ndiff = int(ndiff_bits)
+   end subroutine density_counts
 
 end module interphase_block

@@ -43,7 +43,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
-   use interphase_block, only: simplified_block_update, count_nonpositive, count_differing
+   use interphase_block, only: simplified_block_update, density_counts
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
    integer, intent(in) :: nblock                    !! number of material points in this call
@@ -90,7 +90,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    logical :: ok(CHUNK)
    real(dp) :: traction(3), tangent(3, 3), rho_t, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density
-   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, status, nfailed, first_failed, first_status
+   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    character(len=MESSAGE_LEN) :: message, first_message
 
@@ -152,9 +152,11 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          k1 = k0 + n - 1
          ! densities and incoming states of the chunk: one branch-free pass each, the culprit
          ! searched for only on error (then the whole block is held, the chunks before too)
-         if (count_nonpositive(n, density(k0:k1)) > 0) then
+         call density_counts(n, density(k0:k1), nbad, ndiff)
+         if (nbad > 0) then
             do km = k0, k1
-               if (count_nonpositive(1, density(km:km)) > 0) exit
+               call density_counts(1, density(km:km), nbad, ndiff)
+               if (nbad > 0) exit
             end do
             write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
                ': the VUMAT needs *Density > 0 (a normal number) on the material (its energies are per unit mass)'
@@ -263,7 +265,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          ! 1/(rho T0): one division for the chunk when its density is uniform (one material, the
          ! usual case), else one per point (the compiler makes two loops of this one); the same
          ! numbers either way
-         uniform_density = count_differing(n, density(k0:k1), density(k0)) == 0
+         uniform_density = ndiff == 0
          inv_rho_uniform = 1.0_dp/(density(k0)*THICKNESS)
          do k = 1, n
             km = k0 + k - 1
