@@ -81,14 +81,14 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    !> automatic array sized by nblock would be allocated on the heap per call). Long passes let
    !> the hardware prefetchers follow the ~25 columns a VUMAT reads and writes: at nblock = 4096,
    !> 6.0 ns per point with 2048, 7.0 with 256 (docs/performance.md).
-   integer, parameter :: CHUNK = 2048
+   integer, parameter :: CHUNK = 4096
 
    type(law_params_type) :: params
    type(interface_state_type) :: old, new
    type(coefficient_set_type) :: intact, intact_rate
-   real(dp) :: ds(CHUNK, 3), psi(CHUNK), traction_t2(CHUNK), work(CHUNK)
+   real(dp) :: ds(CHUNK, 3), psi(CHUNK), traction_t2(CHUNK)
    logical :: ok(CHUNK)
-   real(dp) :: traction(3), tangent(3, 3), rho_t, inv_rho, inv_rho_uniform, psi_old, energy_inelas
+   real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
@@ -163,8 +163,9 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             fatal_code = -1
             exit update
          end if
+         ! (in 2-D the slip-2 column is not looked at: slip 1 stands in, so that it is not read)
          if (count_invalid_states(n, nt, stateold(k0:k1, SV_DAMAGE), stateold(k0:k1, SV_SLIP_1), &
-               stateold(k0:k1, SV_SLIP_2), stateold(k0:k1, SV_REGIME)) > 0) then
+               stateold(k0:k1, SV_SLIP_1 + nt - 1), stateold(k0:k1, SV_REGIME)) > 0) then
             do km = k0, k1
                call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
                if (status /= STATUS_OK) exit
@@ -257,26 +258,26 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             end do
          end if
 
-         ! energies (vectorised passes without branches): the work 1/2 (t_old + t).ds, then
-         ! per unit mass
-         work(1:n) = (stressold(k0:k1, 1) + stressnew(k0:k1, 1))*ds(1:n, 1) &
-            + (stressold(k0:k1, 2) + stressnew(k0:k1, 2))*ds(1:n, 2)
-         if (ntens == 3) work(1:n) = work(1:n) + (stressold(k0:k1, 3) + stressnew(k0:k1, 3))*ds(1:n, 3)
-         ! 1/(rho T0): one division for the chunk when its density is uniform (one material, the
-         ! usual case), else one per point (the compiler makes two loops of this one); the same
-         ! numbers either way
+         ! energies, one pass without branches: the work 1/2 (t_old + t).ds, then per unit mass;
+         ! 1/(rho T0) once for the chunk when its density is uniform (one material, the usual
+         ! case), else per point (the compiler makes one loop of each case and dimension out of
+         ! this one); the same numbers either way
          uniform_density = ndiff == 0
-         inv_rho_uniform = 1.0_dp/(density(k0)*THICKNESS)
+         rho_t_uniform = density(k0)*THICKNESS
+         inv_rho_uniform = 1.0_dp/rho_t_uniform
          do k = 1, n
             km = k0 + k - 1
-            rho_t = density(km)*THICKNESS
+            work_k = (stressold(km, 1) + stressnew(km, 1))*ds(k, 1) + (stressold(km, 2) + stressnew(km, 2))*ds(k, 2)
+            if (ntens == 3) work_k = work_k + (stressold(km, 3) + stressnew(km, 3))*ds(k, 3)
             if (uniform_density) then
+               rho_t = rho_t_uniform
                inv_rho = inv_rho_uniform
             else
+               rho_t = density(km)*THICKNESS
                inv_rho = 1.0_dp/rho_t
             end if
             psi_old = (enerinternold(km) - enerinelasold(km))*rho_t
-            energy_inelas = enerinelasold(km) + (0.5_dp*work(k) - (psi(k) - psi_old))*inv_rho
+            energy_inelas = enerinelasold(km) + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
             enerinelasnew(km) = energy_inelas
             enerinternnew(km) = energy_inelas + psi(k)*inv_rho
          end do

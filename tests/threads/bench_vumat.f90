@@ -3,7 +3,8 @@
 !> same arrays (old -> new stress, state and energies, reading the strain increments): the
 !> memory-bound limit of any VUMAT on these arrays. Three cases: the simplified model in 2-D
 !> (the vectorised block update; the figure of issue 5) and 3-D, and the micromechanical model
-!> in 2-D (built-in table; the point update, point by point).
+!> in 2-D (built-in table; the point update, point by point). Each figure is the best of
+!> NREPEAT measurements (each a fresh start of the whole history).
 !>
 !>   interphase-bench-vumat [points]      (default 65536 points; Release build recommended)
 program bench_vumat
@@ -17,6 +18,8 @@ program bench_vumat
    integer, parameter :: NBLOCK_SIZES(3) = [1, 136, 4096]
    !> Increments per segment of the mixed history and sweeps (increments) timed.
    integer, parameter :: NSUB = 20, NSWEEP = 7*NSUB
+   !> Measurements per figure; the best one is printed.
+   integer, parameter :: NREPEAT = 5
 
    !> The paper's Table 1 data (simplified model: K_N, K_T of the paper's RVE).
    real(dp), parameter :: SIMPLIFIED_PROPS(NPROPS_SIMPLIFIED) = [1.0_dp, 1.0_dp, 0.75_dp, 0.00044_dp, &
@@ -43,14 +46,21 @@ contains
       character(len=*), intent(in) :: title
       integer, intent(in) :: nshr
       real(dp), intent(in) :: props(:)
-      real(dp) :: ns_vumat, ns_copy
-      integer :: i
-      write (output_unit, '(a,a,a,i0,a,i0,a)') 'VUMAT, ', title, ', mixed history: ', npoints, &
-         ' points x ', NSWEEP, ' increments per measurement'
+      real(dp) :: ns_vumat, ns_copy, best_vumat, best_copy
+      integer :: i, rep
+      write (output_unit, '(a,a,a,i0,a,i0,a,i0,a)') 'VUMAT, ', title, ', mixed history: ', npoints, &
+         ' points x ', NSWEEP, ' increments per measurement, best of ', NREPEAT
       write (output_unit, '(a)') '  nblock   ns/point (vumat)   ns/point (plain copy)   ratio'
       do i = 1, size(NBLOCK_SIZES)
-         call measure(NBLOCK_SIZES(i), npoints, nshr, props, ns_vumat, ns_copy)
-         write (output_unit, '(i8,f19.1,f24.2,f8.1)') NBLOCK_SIZES(i), ns_vumat, ns_copy, ns_vumat/ns_copy
+         ! the best of NREPEAT measurements of each (the machine's other work only adds time)
+         best_vumat = huge(1.0_dp)
+         best_copy = huge(1.0_dp)
+         do rep = 1, NREPEAT
+            call measure(NBLOCK_SIZES(i), npoints, nshr, props, ns_vumat, ns_copy)
+            best_vumat = min(best_vumat, ns_vumat)
+            best_copy = min(best_copy, ns_copy)
+         end do
+         write (output_unit, '(i8,f19.2,f24.2,f8.2)') NBLOCK_SIZES(i), best_vumat, best_copy, best_vumat/best_copy
       end do
    end subroutine run_case
 
