@@ -77,16 +77,16 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    !> Separation per tensor shear strain: engineering shear = 2 x tensor shear.
    real(dp), parameter :: SHEAR_FACTOR = 2.0_dp
 
-   !> Points updated per pass. The passes' working arrays are local (on the stack, 104 KB; an
+   !> Points updated per pass. The passes' working arrays are local (on the stack, 144 KB; an
    !> automatic array sized by nblock would be allocated on the heap per call). Long passes let
    !> the hardware prefetchers follow the ~25 columns a VUMAT reads and writes: at nblock = 4096,
-   !> 6.0 ns per point with 2048, 7.0 with 256 (docs/performance.md).
+   !> 7.0 ns per point with passes of 256, 6.0 with 2048, 5.1 with 4096 (docs/performance.md).
    integer, parameter :: CHUNK = 4096
 
    type(law_params_type) :: params
    type(interface_state_type) :: old, new
    type(coefficient_set_type) :: intact, intact_rate
-   real(dp) :: ds(CHUNK, 3), psi(CHUNK), traction_t2(CHUNK)
+   real(dp) :: ds(CHUNK, 3), psi(CHUNK)
    logical :: ok(CHUNK)
    real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density
@@ -199,7 +199,6 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                ds(k, 2) = SHEAR_FACTOR*THICKNESS*straininc(km, 2)
                statenew(km, SV_SEP_N) = stateold(km, SV_SEP_N) + ds(k, 1)
                statenew(km, SV_SEP_T1) = stateold(km, SV_SEP_T1) + ds(k, 2)
-               statenew(km, SV_SEP_T2) = 0.0_dp
                statenew(km, SV_FAILED) = stateold(km, SV_FAILED)
             end do
          else
@@ -216,15 +215,27 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          end if
 
          if (blocked) then
-            call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
-               statenew(k0:k1, SV_SEP_T1), statenew(k0:k1, SV_SEP_T2), stateold(k0:k1, SV_DAMAGE), &
-               stateold(k0:k1, SV_SLIP_1), stateold(k0:k1, SV_SLIP_2), stressnew(k0:k1, 1), &
-               stressnew(k0:k1, 2), traction_t2(1:n), statenew(k0:k1, SV_DAMAGE), &
-               statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
-               psi(1:n), ok(1:n), nbad)
-            if (ntens == 3) stressnew(k0:k1, 3) = traction_t2(1:n)
+            ! the outputs go straight into stressNew and stateNew; in 2-D the block's zero second
+            ! tangential traction fills STATEV(SV_SEP_T2), which is 0 in 2-D (and its unused
+            ! second tangential inputs are the first ones: no column is read for nothing)
+            if (ntens == 3) then
+               call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
+                  statenew(k0:k1, SV_SEP_T1), statenew(k0:k1, SV_SEP_T2), stateold(k0:k1, SV_DAMAGE), &
+                  stateold(k0:k1, SV_SLIP_1), stateold(k0:k1, SV_SLIP_2), stressnew(k0:k1, 1), &
+                  stressnew(k0:k1, 2), stressnew(k0:k1, 3), statenew(k0:k1, SV_DAMAGE), &
+                  statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
+                  psi(1:n), ok(1:n), nbad)
+            else
+               call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
+                  statenew(k0:k1, SV_SEP_T1), statenew(k0:k1, SV_SEP_T1), stateold(k0:k1, SV_DAMAGE), &
+                  stateold(k0:k1, SV_SLIP_1), stateold(k0:k1, SV_SLIP_1), stressnew(k0:k1, 1), &
+                  stressnew(k0:k1, 2), statenew(k0:k1, SV_SEP_T2), statenew(k0:k1, SV_DAMAGE), &
+                  statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
+                  psi(1:n), ok(1:n), nbad)
+            end if
             if (nbad > 0 .and. first_status == STATUS_OK) first_status = STATUS_NONFINITE_SEPARATION
          else
+            if (ntens == 2) statenew(k0:k1, SV_SEP_T2) = 0.0_dp
             nbad = 0
             do k = 1, n
                km = k0 + k - 1
