@@ -107,12 +107,9 @@ contains
                nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
                sn_w(i) = s_n_k
                st1_w(i) = st1
-               st2_w(i) = 0.0_dp
-               lam2_w(i) = 0.0_dp
                t_sq_w(i) = st1**2
                tau_norm_w(i) = abs(tau1)
                dir1_w(i) = sign(1.0_dp, tau1)
-               dir2_w(i) = 0.0_dp
             end do
          else
             do i = 1, m
@@ -183,7 +180,59 @@ contains
             end do
          end if
 
-         ! ---- pass 2
+         ! ---- pass 2, in 2-D: the general form below with s_T2 = lambda_2 = 0, written out so
+         ! that no arithmetic is spent on those zeros. Bit for bit the same numbers: there
+         ! t_T2 = +0 and lambda_2 = +0 in every regime (k_T (1 - D) +0 = +0, and
+         ! +0 + (-D K_T) (+0) = +0), so each product with s_T2 or lambda_2 is +0 and the sums
+         ! keep a "+ 0" (which turns a -0 into +0, as the general form does)
+         if (nt == 1) then
+            do i = 1, m
+               k = c0 + i - 1
+               s_n_k = sn_w(i)
+               st1 = st1_w(i)
+               lam1_k = lam1_old(k)
+               tau_norm = tau_norm_w(i)
+               d_k = d_w(i)
+
+               kn_open = (1.0_dp - d_k)*params%k_n
+               kt_open = (1.0_dp - d_k)*params%k_t
+               kk_n = kn_open + d_k*params%k_n
+               kk_t = kt_open + d_k*params%k_t
+               cf_t = -d_k*params%k_t
+
+               tn_open = kn_open*s_n_k
+               tt1_open = kt_open*st1
+               psi_open = 0.5_dp*(tn_open*s_n_k + (tt1_open*st1 + 0.0_dp))
+               lam1_open = merge(lam1_k, st1, d_k <= 0.0_dp)
+               regime_if_open = merge(real(REGIME_INTACT, dp), real(REGIME_OPEN, dp), d_k <= 0.0_dp)
+
+               sigma = params%k_n*s_n_k
+               phi = params%mu*sigma + tau_norm
+               slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+               dgamma = phi*inv_kf
+               lam1_closed = merge(lam1_k + dgamma*dir1_w(i), lam1_k, slipping)
+               tn_closed = kk_n*s_n_k
+               tt1_closed = kk_t*st1 + cf_t*lam1_closed
+               psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + 0.0_dp)) &
+                  + 0.5_dp*cf_t*(lam1_closed*st1 + 0.0_dp) &
+                  - 0.5_dp*d_k*(-params%k_t)*lam1_closed**2
+               regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
+
+               open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
+               ok(k) = ok_w(i)
+               d(k) = d_k
+               t_n(k) = merge(tn_open, tn_closed, open)
+               t_t1(k) = merge(tt1_open, tt1_closed, open)
+               t_t2(k) = 0.0_dp
+               lam1(k) = merge(lam1_open, lam1_closed, open)
+               lam2(k) = 0.0_dp
+               psi(k) = merge(psi_open, psi_closed, open)
+               regime(k) = merge(regime_if_open, regime_if_closed, open)
+            end do
+            cycle
+         end if
+
+         ! ---- pass 2 (3-D)
          do i = 1, m
             k = c0 + i - 1
             s_n_k = sn_w(i)
