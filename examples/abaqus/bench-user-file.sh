@@ -1,0 +1,49 @@
+#!/bin/bash
+# bench-user-file.sh: how fast is the one-file Abaqus/Explicit source with given compiler flags?
+#
+#   examples/abaqus/bench-user-file.sh [--build-dir DIR] [--work-dir DIR] ["FLAGS" ...]
+#
+# Writes the one-file source with make-user-file.sh --explicit, compiles it ALONE with each set of
+# flags (as Abaqus compiles a user subroutine; gfortran, or $FC), links it with the driver
+# bench_user_file.f90 (one block of 4096 points in the L2 cache, 2000 increments of a cyclic shear
+# under compression, best of 5 runs) and LAPACK, and prints ns per point update for each set.
+# Default flag sets: the recommended one (docs/abaqus.md), -O3 -march=native without
+# -fno-trapping-math, and -O2. --build-dir: a configured and built interphase build directory
+# (default ./build/release), for the generated sources of the built-in table.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+build_dir=$PWD/build/release
+work=${TMPDIR:-/tmp}/interphase-bench-user-file
+fc=${FC:-gfortran}
+flag_sets=()
+while [ $# -gt 0 ]; do
+   case "$1" in
+      --build-dir) build_dir=$2; shift ;;
+      --work-dir) work=$2; shift ;;
+      -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
+      *) flag_sets+=("$1") ;;
+   esac
+   shift
+done
+if [ ${#flag_sets[@]} -eq 0 ]; then
+   flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive"
+              "-O3 -march=native -frecursive"
+              "-O2 -frecursive")
+fi
+if [ ! -d "$build_dir/generated" ]; then
+   echo "bench-user-file.sh: $build_dir is not a built interphase build directory (no generated/);" \
+        "build one first: cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release && cmake --build build/release" >&2
+   exit 2
+fi
+rm -rf "$work"
+mkdir -p "$work"
+"$here/make-user-file.sh" --explicit --build-dir "$build_dir" -o "$work/interphase_abaqus_explicit.f90" >/dev/null
+"$fc" -O2 -c "$here/bench_user_file.f90" -o "$work/driver.o"
+for flags in "${flag_sets[@]}"; do
+   mkdir -p "$work/obj"
+   # shellcheck disable=SC2086  # the flags are meant to split
+   (cd "$work/obj" && "$fc" $flags -c ../interphase_abaqus_explicit.f90 -o user.o)
+   "$fc" "$work/driver.o" "$work/obj/user.o" -llapack -lblas -o "$work/bench"
+   printf '%-72s %s\n' "$flags" "$("$work/bench")"
+   rm -rf "$work/obj"
+done
