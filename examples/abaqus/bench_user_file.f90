@@ -4,30 +4,13 @@
 !> cyclic shear (4 increments forward, 4 back, a different amplitude per point), the block's arrays
 !> (~0.7 MB) held in the L2 cache; 250 cycles (2000 increments), the best of 5 runs.
 !> Prints ns per point update and a few state figures to check that the run did something.
-!> Built and run by bench-user-file.sh; XPLB_ABQERR (Abaqus's message utility) is stubbed below.
+!> Built and run by bench-user-file.sh, after the one-file source (whose modules it uses);
+!> XPLB_ABQERR (Abaqus's message utility) is stubbed below.
 program bench_user_file
-   use, intrinsic :: iso_fortran_env, only: int64, output_unit, dp => real64
+   use, intrinsic :: iso_fortran_env, only: int64, output_unit
+   use interphase_kinds, only: dp
+   use interphase_abaqus_interfaces, only: vumat
    implicit none
-   interface
-      subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime, totaltime, &
-            dt, cmname, coordmp, charlength, props, density, straininc, relspininc, tempold, &
-            stretchold, defgradold, fieldold, stressold, stateold, enerinternold, enerinelasold, &
-            tempnew, stretchnew, defgradnew, fieldnew, stressnew, statenew, enerinternnew, enerinelasnew)
-         import :: dp
-         integer, intent(in) :: nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal
-         real(dp), intent(in) :: steptime, totaltime, dt
-         character(len=80), intent(in) :: cmname
-         real(dp), intent(in) :: coordmp(nblock, *), charlength(nblock), props(nprops), density(nblock)
-         real(dp), intent(in) :: straininc(nblock, ndir + nshr), relspininc(nblock, nshr), tempold(nblock)
-         real(dp), intent(in) :: stretchold(nblock, ndir + nshr), defgradold(nblock, ndir + nshr + nshr)
-         real(dp), intent(in) :: fieldold(nblock, nfieldv), stressold(nblock, ndir + nshr)
-         real(dp), intent(in) :: stateold(nblock, nstatev), enerinternold(nblock), enerinelasold(nblock)
-         real(dp), intent(in) :: tempnew(nblock), stretchnew(nblock, ndir + nshr)
-         real(dp), intent(in) :: defgradnew(nblock, ndir + nshr + nshr), fieldnew(nblock, nfieldv)
-         real(dp), intent(out) :: stressnew(nblock, ndir + nshr), statenew(nblock, nstatev)
-         real(dp), intent(out) :: enerinternnew(nblock), enerinelasnew(nblock)
-      end subroutine vumat
-   end interface
 
    !> Points per block, state variables (docs/abaqus.md), increments per cycle, cycles, runs.
    integer, parameter :: NB = 4096, NSV = 8, NINC = 8, NCYCLE = 250, NRUN = 5
