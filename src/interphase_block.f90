@@ -5,7 +5,7 @@
 !> Abaqus/Explicit lays out its block arrays, so every column is read and written contiguously.
 !>
 !> Same law, same arithmetic, same results as `interface_update` (`interphase_kernel`) point by
-!> point, bit for bit (tests/test_vumat.pf checks 2101 points over histories that reach every
+!> point, bit for bit (tests/test_vumat.pf checks 4237 points over histories that reach every
 !> regime, in 2-D and 3-D): every branch of the scalar update becomes a selection (`merge`)
 !> between the branches, both evaluated on guarded operands so that no branch can raise a
 !> floating-point exception. No tangent is formed (explicit hosts do not use one).
