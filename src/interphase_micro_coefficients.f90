@@ -20,7 +20,7 @@ module interphase_micro_coefficients
       DEFAULT_TABLE_VARIABLE
    implicit none
    private
-   public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients
+   public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded
 
    !> The custom table: written once by `load_custom_table` before any update, then read only.
    integer, protected :: custom_variable = 0
@@ -119,6 +119,11 @@ contains
       custom_variable = table%variable
       custom_source = path
    end subroutine load_custom_table
+
+   !> Whether a custom table has been loaded (the micromechanical model with PROPS(8) = 1 needs one).
+   pure logical function custom_table_loaded()
+      custom_table_loaded = allocated(custom_coef)
+   end function custom_table_loaded
 
    !> Where the table selected by `table` came from (for messages and output headers).
    function custom_table_source(table) result(source)

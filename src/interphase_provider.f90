@@ -1,15 +1,20 @@
 !> The coefficient set at a damage D from the model's provider (simplified formulas or the
-!> micromechanical RVE table), with its first and, on request, second D-derivatives.
+!> micromechanical RVE table), with its first and, on request, second D-derivatives; and the
+!> check that the data a material needs at run time (a custom RVE table, a tabulated R-curve)
+!> has been loaded, for hosts to make its absence a setup error rather than a failed update.
 module interphase_provider
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL
-   use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE
+   use interphase_layout, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, PROP_TABLE, &
+      DAMAGE_FRACTURE, RCURVE_TABULATED
+   use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
+      STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN
    use interphase_coefficients, only: coefficient_set_type, simplified_coefficients
-   use interphase_micro_coefficients, only: micro_coefficients
+   use interphase_micro_coefficients, only: micro_coefficients, custom_table_loaded
+   use interphase_rcurve, only: rcurve_loaded
    implicit none
    private
-   public :: coefficients_at
+   public :: coefficients_at, check_run_time_data
 
 contains
 
@@ -31,5 +36,33 @@ contains
          status = STATUS_MODEL_UNAVAILABLE
       end select
    end subroutine coefficients_at
+
+   !> STATUS_OK when the data `params` needs at run time is loaded; else STATUS_TABLE_NOT_LOADED
+   !> (micromechanical model on the custom table) or STATUS_RCURVE_NOT_LOADED (fracture law with
+   !> the tabulated R-curve), with a message that says how to load it.
+   pure subroutine check_run_time_data(params, status, message)
+      type(law_params_type), intent(in) :: params
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+      status = STATUS_OK
+      message = ''
+      if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_CUSTOM_CODE) then
+         if (.not. custom_table_loaded()) then
+            status = STATUS_TABLE_NOT_LOADED
+            write (message, '(a,i0,a)') 'PROPS(', PROP_TABLE, ') = 1 selects the custom RVE table, but none was '// &
+               'loaded at start-up: set INTERPHASE_TABLE to the table file and link uexternaldb (Abaqus/Standard) '// &
+               'or vexternaldb (Abaqus/Explicit), docs/abaqus.md'
+            return
+         end if
+      end if
+      if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) then
+         if (.not. rcurve_loaded()) then
+            status = STATUS_RCURVE_NOT_LOADED
+            message = 'the R-curve selector 3 selects the tabulated R-curve, but none was loaded at start-up: '// &
+               'set INTERPHASE_RCURVE to the R-curve file and link uexternaldb (Abaqus/Standard) or vexternaldb '// &
+               '(Abaqus/Explicit), docs/abaqus.md'
+         end if
+      end if
+   end subroutine check_run_time_data
 
 end module interphase_provider

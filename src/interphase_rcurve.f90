@@ -17,7 +17,7 @@ module interphase_rcurve
       SPLINE_MONOTONE
    implicit none
    private
-   public :: load_rcurve, tabulated_rcurve, rcurve_source
+   public :: load_rcurve, tabulated_rcurve, rcurve_source, rcurve_loaded
 
    real(dp), allocatable, protected :: rcurve_knots(:)          !! D of the rows
    real(dp), allocatable, protected :: rcurve_coef(:, :, :)     !! monotone cubic, 2 columns
@@ -137,6 +137,11 @@ contains
       if (status /= STATUS_OK) return
       call cubic_eval(rcurve_knots, rcurve_coef, interval, d, gc, dgc_dd)
    end subroutine tabulated_rcurve
+
+   !> Whether a tabulated R-curve has been loaded (R-curve selector 3 needs one).
+   pure logical function rcurve_loaded()
+      rcurve_loaded = allocated(rcurve_coef)
+   end function rcurve_loaded
 
    !> The file the tabulated R-curve came from ('' when none is loaded).
    function rcurve_source() result(source)

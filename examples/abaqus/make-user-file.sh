@@ -5,8 +5,9 @@
 #
 #   (default)      Abaqus/Standard: umat + the STDB_ABQERR message hook
 #   --explicit     Abaqus/Explicit: vumat + the XPLB_ABQERR message hook
-#   --uexternaldb  Abaqus/Standard: also src/abaqus/uexternaldb.f90 (custom RVE tables read at
-#                  the start of the analysis)
+#   --uexternaldb  also the start-of-analysis hook that loads a custom RVE table or R-curve
+#                  (INTERPHASE_TABLE, INTERPHASE_RCURVE): src/abaqus/uexternaldb.f90 for
+#                  Abaqus/Standard, src/abaqus/vexternaldb.f90 with --explicit
 #   --build-dir    a configured and built interphase build directory, for the sources generated at
 #                  build time (the compiled-in RVE table, generated/*.f90); default ./build
 #   -o FILE        output file (default interphase_abaqus_standard.f90 / _explicit.f90)
@@ -32,7 +33,7 @@ while [ $# -gt 0 ]; do
       --uexternaldb) with_uexternaldb=yes ;;
       --build-dir) build_dir=$2; shift ;;
       -o) output=$2; shift ;;
-      -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+      -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
       *) echo "make-user-file.sh: unknown argument '$1' (try --help)" >&2; exit 2 ;;
    esac
    shift
@@ -43,6 +44,7 @@ if [ $solver = standard ]; then
    if [ $with_uexternaldb = yes ]; then roots+=("$root/src/abaqus/uexternaldb.f90"); fi
 else
    roots=("$root/src/abaqus/vumat.f90" "$root/src/abaqus/host_abaqus_explicit.f90")
+   if [ $with_uexternaldb = yes ]; then roots+=("$root/src/abaqus/vexternaldb.f90"); fi
 fi
 
 # module name -> file that defines it

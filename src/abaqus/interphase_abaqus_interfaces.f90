@@ -4,7 +4,7 @@ module interphase_abaqus_interfaces
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: umat, vumat, uexternaldb, interphase_host_message
+   public :: umat, vumat, uexternaldb, vexternaldb, interphase_host_message
 
    interface
       !> Abaqus/Standard UMAT (cohesive elements, RESPONSE=TRACTION SEPARATION).
@@ -46,12 +46,21 @@ module interphase_abaqus_interfaces
          real(dp), intent(out) :: enerinternnew(nblock), enerinelasnew(nblock)
       end subroutine vumat
 
-      !> Abaqus UEXTERNALDB: loads the custom RVE table (INTERPHASE_TABLE) at LOP = 0 and 4.
+      !> Abaqus/Standard UEXTERNALDB: loads the custom RVE table (INTERPHASE_TABLE) and the
+      !> R-curve (INTERPHASE_RCURVE) at LOP = 0 and 4.
       subroutine uexternaldb(lop, lrestart, time, dtime, kstep, kinc)
          import :: dp
          integer, intent(in) :: lop, lrestart, kstep, kinc
          real(dp), intent(in) :: time(2), dtime
       end subroutine uexternaldb
+
+      !> Abaqus/Explicit VEXTERNALDB: the same loads at lOp = 0 (start of the analysis).
+      subroutine vexternaldb(lop, i_array, niarray, r_array, nrarray)
+         import :: dp
+         integer, intent(in) :: lop, niarray, nrarray
+         integer, intent(in) :: i_array(niarray)
+         real(dp), intent(in) :: r_array(nrarray)
+      end subroutine vexternaldb
 
       !> Message hook every adapter calls on failure; each host links exactly one
       !> implementation (Abaqus: its error routine; the driver: standard error; tests: a

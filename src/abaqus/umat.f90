@@ -18,6 +18,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
+   use interphase_provider, only: check_run_time_data
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
    integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, layer, kspt, kinc
@@ -46,6 +47,12 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       return
    end if
    call from_props(props, params, status, message)
+   if (status /= STATUS_OK) then
+      call fail(status, SEVERITY_FATAL)
+      return
+   end if
+   ! a custom table or R-curve that was not loaded at start-up: no smaller increment can help
+   call check_run_time_data(params, status, message)
    if (status /= STATUS_OK) then
       call fail(status, SEVERITY_FATAL)
       return

@@ -22,7 +22,8 @@
 !> (interphase_block, column by column); the other models and laws the point update
 !> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
-!> Failures: bad sizes, PROPS, density or incoming STATEV are fatal (the whole block is held at
+!> Failures: bad sizes, PROPS, density or incoming STATEV, and a custom RVE table or R-curve
+!> selected but not loaded (VEXTERNALDB), are fatal (the whole block is held at
 !> its old values and the host hook is called with SEVERITY_FATAL; Abaqus then stops). A point
 !> whose update fails (e.g. a non-finite increment) keeps its old stress, state and energies,
 !> gets STATEV(SV_FAILED) = 1, and one warning per call names the number of failed points and
@@ -42,7 +43,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
-   use interphase_provider, only: coefficients_at
+   use interphase_provider, only: coefficients_at, check_run_time_data
    use interphase_block, only: simplified_block_update, density_counts
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
@@ -115,6 +116,12 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          exit update
       end if
       call from_props(props, params, status, message)
+      if (status /= STATUS_OK) then
+         fatal_code = status
+         exit update
+      end if
+      ! a custom table or R-curve that was not loaded at start-up (VEXTERNALDB)
+      call check_run_time_data(params, status, message)
       if (status /= STATUS_OK) then
          fatal_code = status
          exit update

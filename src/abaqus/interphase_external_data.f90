@@ -1,0 +1,97 @@
+!> The start-up loads of the Abaqus start-of-analysis hooks (UEXTERNALDB for Abaqus/Standard,
+!> VEXTERNALDB for Abaqus/Explicit), in one place: the custom RVE table named by the environment
+!> variable INTERPHASE_TABLE (the micromechanical model uses it where PROPS(8) = 1) and the
+!> tabulated R-curve named by INTERPHASE_RCURVE (the fracture-mechanics law, R-curve selector 3).
+!> Without a variable nothing is loaded (the built-in table serves).
+!>
+!> Loading writes the library's only shared data (`protected` module data that the updates only
+!> read), so it must happen before any material point is updated and never while updates run:
+!> Abaqus calls these hooks at the start of the analysis, before any UMAT or VUMAT call. A file
+!> that is already loaded (same path) is not read again, so that a repeated start-of-analysis
+!> call (a restart, or a hook called once per thread) never rewrites data that updates may be
+!> reading. A file that cannot be read or fails its checks is a fatal error naming the variable,
+!> the file, the line and the failed check.
+module interphase_external_data
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_FATAL, status_message
+   use interphase_layout, only: TABLE_CUSTOM_CODE
+   use interphase_micro_coefficients, only: load_custom_table, custom_table_source
+   use interphase_rcurve, only: load_rcurve, rcurve_source
+   use interphase_abaqus_interfaces, only: interphase_host_message
+   implicit none
+   private
+   public :: load_external_data, load_table_file, load_rcurve_file
+   public :: TABLE_VARIABLE, RCURVE_VARIABLE
+
+   !> Environment variables naming the files.
+   character(len=*), parameter :: TABLE_VARIABLE = 'INTERPHASE_TABLE'
+   character(len=*), parameter :: RCURVE_VARIABLE = 'INTERPHASE_RCURVE'
+
+contains
+
+   !> Load what the environment names; `caller` ('UEXTERNALDB', 'VEXTERNALDB') heads the messages.
+   !> ok = .false. after a fatal error (already reported to the host).
+   subroutine load_external_data(caller, ok)
+      character(len=*), intent(in) :: caller
+      logical, intent(out) :: ok
+      character(len=:), allocatable :: path
+      ok = .true.
+      if (environment(TABLE_VARIABLE, path)) call load_table_file(caller, path, ok)
+      if (.not. ok) return
+      if (environment(RCURVE_VARIABLE, path)) call load_rcurve_file(caller, path, ok)
+   end subroutine load_external_data
+
+   !> Load the custom RVE table from `path` (unless that file is loaded already) and report.
+   subroutine load_table_file(caller, path, ok)
+      character(len=*), intent(in) :: caller, path
+      logical, intent(out) :: ok
+      character(len=MESSAGE_LEN) :: message
+      integer :: status
+      ok = .true.
+      if (custom_table_source(TABLE_CUSTOM_CODE) == path) then
+         call interphase_host_message(SEVERITY_INFO, caller//': custom RVE table '//path//' already loaded')
+         return
+      end if
+      call load_custom_table(path, status, message)
+      ok = status == STATUS_OK
+      if (.not. ok) then
+         call interphase_host_message(SEVERITY_FATAL, caller//': '//TABLE_VARIABLE//' = '//path//': '// &
+            status_message(status)//': '//trim(message))
+         return
+      end if
+      call interphase_host_message(SEVERITY_INFO, caller//': custom RVE table loaded from '//path)
+   end subroutine load_table_file
+
+   !> Load the tabulated R-curve from `path` (unless that file is loaded already) and report.
+   subroutine load_rcurve_file(caller, path, ok)
+      character(len=*), intent(in) :: caller, path
+      logical, intent(out) :: ok
+      character(len=MESSAGE_LEN) :: message
+      integer :: status
+      ok = .true.
+      if (rcurve_source() == path) then
+         call interphase_host_message(SEVERITY_INFO, caller//': R-curve '//path//' already loaded')
+         return
+      end if
+      call load_rcurve(path, status, message)
+      ok = status == STATUS_OK
+      if (.not. ok) then
+         call interphase_host_message(SEVERITY_FATAL, caller//': '//RCURVE_VARIABLE//' = '//path//': '// &
+            status_message(status)//': '//trim(message))
+         return
+      end if
+      call interphase_host_message(SEVERITY_INFO, caller//': R-curve loaded from '//path)
+   end subroutine load_rcurve_file
+
+   !> The value of a non-empty environment variable.
+   logical function environment(name, value)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable, intent(out) :: value
+      integer :: length, stat
+      call get_environment_variable(name, length=length, status=stat)
+      environment = stat == 0 .and. length > 0
+      if (.not. environment) return
+      allocate (character(len=length) :: value)
+      call get_environment_variable(name, value)
+   end function environment
+
+end module interphase_external_data
