@@ -5,8 +5,12 @@
  *
  * Link with the core library `libinterphase` (CMake: `find_package(interphase)` and
  * `target_link_libraries(app PRIVATE interphase::interphase)`), plus the Fortran runtime
- * (`-lgfortran`) and LAPACK when linking by hand. The functions are re-entrant and thread-safe:
- * they keep no state; the caller owns every array.
+ * (`-lgfortran`) and LAPACK when linking by hand. interphase_update and
+ * interphase_status_message are re-entrant and thread-safe: they keep no state; the caller owns
+ * every array. The loaders interphase_load_table and interphase_load_rcurve are not: they write
+ * library-wide data (the custom RVE table, the tabulated R-curve) that every later update reads.
+ * Call them once, from one thread, before any thread calls interphase_update (and never while
+ * an update runs).
  *
  * Units: separations mm, tractions MPa, stiffness MPa/mm, energy per unit area N/mm.
  * Component order: normal first, then the shear(s): (s_N, s_T) in 2-D, (s_N, s_T1, s_T2) in
@@ -34,23 +38,60 @@ extern "C" {
 /** Number of PROPS of the simplified (spring) model. */
 #define INTERPHASE_NPROPS_SIMPLIFIED 9
 
-/* Status codes (the values of interphase_status in src/interphase_status.f90). */
-#define INTERPHASE_STATUS_OK 0                   /**< success */
-#define INTERPHASE_STATUS_BAD_NPROPS 1           /**< wrong number of PROPS */
-#define INTERPHASE_STATUS_BAD_MODEL 2            /**< PROPS[0]: unknown model */
-#define INTERPHASE_STATUS_BAD_DAMAGE_LAW 3       /**< PROPS[1]: unknown damage law */
-#define INTERPHASE_STATUS_BAD_MU 4               /**< PROPS[2]: mu out of range */
-#define INTERPHASE_STATUS_BAD_S0_N 5             /**< PROPS[3]: s0_N out of range */
-#define INTERPHASE_STATUS_BAD_SF_N 6             /**< PROPS[4]: sf_N out of range */
-#define INTERPHASE_STATUS_BAD_S0_T 7             /**< PROPS[5]: s0_T out of range */
-#define INTERPHASE_STATUS_BAD_SF_T 8             /**< PROPS[6]: sf_T out of range */
-#define INTERPHASE_STATUS_BAD_K_N 9              /**< PROPS[7]: K_N out of range */
-#define INTERPHASE_STATUS_BAD_K_T 10             /**< PROPS[8]: K_T out of range */
-#define INTERPHASE_STATUS_BAD_NTENS 11           /**< ntens is not 2 or 3 */
-#define INTERPHASE_STATUS_MODEL_UNAVAILABLE 13   /**< model not available in this build */
-#define INTERPHASE_STATUS_NONFINITE_SEPARATION 20 /**< separation NaN or Inf */
-#define INTERPHASE_STATUS_BAD_STATE 21           /**< state_old out of range or not finite */
-#define INTERPHASE_STATUS_BAD_COEFFICIENTS 22    /**< coefficient set not admissible */
+/* Status codes: every STATUS_* of src/interphase_status.f90, same names and values (the ctest
+ * capi_status_codes_match fails if they ever differ). interphase_status_message gives the text. */
+#define INTERPHASE_STATUS_OK 0                           /**< success */
+/* PROPS and size validation (setup errors) */
+#define INTERPHASE_STATUS_BAD_NPROPS 1                   /**< wrong number of PROPS */
+#define INTERPHASE_STATUS_BAD_MODEL 2                    /**< PROPS[0]: unknown model */
+#define INTERPHASE_STATUS_BAD_DAMAGE_LAW 3               /**< PROPS[1]: unknown damage law */
+#define INTERPHASE_STATUS_BAD_MU 4                       /**< PROPS[2]: mu out of range */
+#define INTERPHASE_STATUS_BAD_S0_N 5                     /**< PROPS[3]: s0_N out of range */
+#define INTERPHASE_STATUS_BAD_SF_N 6                     /**< PROPS[4]: sf_N out of range */
+#define INTERPHASE_STATUS_BAD_S0_T 7                     /**< PROPS[5]: s0_T out of range */
+#define INTERPHASE_STATUS_BAD_SF_T 8                     /**< PROPS[6]: sf_T out of range */
+#define INTERPHASE_STATUS_BAD_K_N 9                      /**< PROPS[7]: K_N out of range */
+#define INTERPHASE_STATUS_BAD_K_T 10                     /**< PROPS[8]: K_T out of range */
+#define INTERPHASE_STATUS_BAD_NTENS 11                   /**< ntens is not 2 or 3 */
+#define INTERPHASE_STATUS_BAD_NSTATV 12                  /**< too few state variables (NSTATV, adapters) */
+#define INTERPHASE_STATUS_MODEL_UNAVAILABLE 13           /**< model not available in this build */
+#define INTERPHASE_STATUS_BAD_TABLE_SELECTOR 14          /**< micromechanical PROPS[7]: table not 0 or 1 */
+#define INTERPHASE_STATUS_BAD_D0 15                      /**< fracture law: initial crack D0 out of (0, 1) */
+#define INTERPHASE_STATUS_BAD_RCURVE 16                  /**< fracture law: R-curve selector not 1, 2 or 3 */
+#define INTERPHASE_STATUS_BAD_GC_I 17                    /**< fracture law: G_cI out of range */
+#define INTERPHASE_STATUS_BAD_GC_II 18                   /**< fracture law: G_cII out of range */
+/* update failures (the increment may be retried smaller) */
+#define INTERPHASE_STATUS_NONFINITE_SEPARATION 20        /**< separation NaN or Inf */
+#define INTERPHASE_STATUS_BAD_STATE 21                   /**< state_old out of range or not finite */
+#define INTERPHASE_STATUS_BAD_COEFFICIENTS 22            /**< coefficient set not admissible */
+#define INTERPHASE_STATUS_STAGGER_NOT_CONVERGED 23       /**< damage-friction iteration did not converge */
+#define INTERPHASE_STATUS_RCURVE_NOT_LOADED 24           /**< tabulated R-curve selected, none loaded */
+/* interpolation tables: construction, then evaluation */
+#define INTERPHASE_STATUS_SPLINE_TOO_FEW_POINTS 40       /**< too few table points */
+#define INTERPHASE_STATUS_SPLINE_BAD_SHAPE 41            /**< table values do not match the knots */
+#define INTERPHASE_STATUS_SPLINE_BAD_METHOD 42           /**< unknown interpolation method */
+#define INTERPHASE_STATUS_SPLINE_NONFINITE_DATA 43       /**< table knots or values NaN or Inf */
+#define INTERPHASE_STATUS_SPLINE_BAD_KNOTS 44            /**< table knots not strictly increasing */
+#define INTERPHASE_STATUS_SPLINE_SOLVER_FAILED 45        /**< spline system not solved (LAPACK) */
+#define INTERPHASE_STATUS_SPLINE_NOT_BUILT 46            /**< interpolation table not built */
+#define INTERPHASE_STATUS_SPLINE_OUT_OF_RANGE 47         /**< argument outside the table */
+#define INTERPHASE_STATUS_SPLINE_NONFINITE_ARGUMENT 48   /**< interpolation argument NaN or Inf */
+/* RVE coefficient tables (interphase_load_table): reading and checking */
+#define INTERPHASE_STATUS_TABLE_UNREADABLE 50            /**< table file cannot be opened or read */
+#define INTERPHASE_STATUS_TABLE_BAD_HEADER 51            /**< header line is not "# key = value" */
+#define INTERPHASE_STATUS_TABLE_MISSING_COLUMN 52        /**< table lacks a required column */
+#define INTERPHASE_STATUS_TABLE_MISSING_KEY 53           /**< header lacks a required key (b, h) */
+#define INTERPHASE_STATUS_TABLE_BAD_ROW 54               /**< row does not hold one number per column */
+#define INTERPHASE_STATUS_TABLE_NONFINITE 55             /**< table value NaN or Inf */
+#define INTERPHASE_STATUS_TABLE_NOT_INCREASING 56        /**< crack half-lengths a not increasing */
+#define INTERPHASE_STATUS_TABLE_BAD_RANGE 57             /**< table does not run from a = 0 to a = b */
+#define INTERPHASE_STATUS_TABLE_IDENTITY 58              /**< table violates an exact RVE identity */
+#define INTERPHASE_STATUS_TABLE_NOT_LOADED 59            /**< custom RVE table selected, none loaded */
+/* R-curve files (interphase_load_rcurve) */
+#define INTERPHASE_STATUS_RCURVE_UNREADABLE 60           /**< R-curve file cannot be opened or read */
+#define INTERPHASE_STATUS_RCURVE_MALFORMED 61            /**< line is not "D G_cI G_cII" */
+#define INTERPHASE_STATUS_RCURVE_NEGATIVE 62             /**< toughness not positive */
+#define INTERPHASE_STATUS_RCURVE_BAD_RANGE 63            /**< D not increasing in [0, 1], or too few rows */
 
 /**
  * Update one interface point: traction, consistent tangent, new state and stored energy at
@@ -68,7 +109,7 @@ extern "C" {
  * @param stored_energy  out: recoverable energy per unit area (N/mm)
  * @param detail         out, may be NULL: on failure, a NUL-terminated message naming the bad
  *                       value (e.g. "PROPS(5) sf_N = 1.00000E-04 is out of range: ...")
- * @param detail_len     size of @p detail in bytes (256 is always enough)
+ * @param detail_len     size of @p detail in bytes (257 holds any message: at most 256 characters)
  * @return INTERPHASE_STATUS_OK (0), or a status code; on failure traction, tangent, state_new
  *         and stored_energy are left untouched.
  */
@@ -77,9 +118,47 @@ int interphase_update(const double *props, int nprops, int ntens, const double *
                       double *state_new, double *stored_energy, char *detail, size_t detail_len);
 
 /**
+ * Load the custom RVE table that the micromechanical model uses where PROPS[7] = 1 (what
+ * UEXTERNALDB does with INTERPHASE_TABLE in Abaqus). Reads the file (format: tables/README.md),
+ * checks it (header, columns, numbers, a from 0 to b, the exact identities of the RVE problems)
+ * and builds its interpolant. Until a table is loaded, such an update returns
+ * INTERPHASE_STATUS_TABLE_NOT_LOADED.
+ *
+ * NOT thread-safe: it writes library-wide data. Call it once, from one thread, before any thread
+ * calls interphase_update; a later call replaces the table and must not overlap any update.
+ *
+ * @param path        NUL-terminated file name (at most 4096 bytes)
+ * @param detail      out, may be NULL: on failure, a NUL-terminated message naming the file, the
+ *                    line and the failed check (e.g. "bad.dat:5: 2 numbers where the ...")
+ * @param detail_len  size of @p detail in bytes (257 holds any message: at most 256 characters)
+ * @return INTERPHASE_STATUS_OK (0), or INTERPHASE_STATUS_TABLE_* (50-58) or
+ *         INTERPHASE_STATUS_SPLINE_* (40-48); on failure the table loaded before (if any) stays.
+ */
+int interphase_load_table(const char *path, char *detail, size_t detail_len);
+
+/**
+ * Load the tabulated R-curve of the fracture-mechanics damage law, used where the R-curve
+ * selector (PROPS[nm + 1]) is 3 (what UEXTERNALDB does with INTERPHASE_RCURVE in Abaqus). The
+ * file holds rows "D G_cI G_cII" (D strictly increasing in [0, 1], at least two rows, toughness
+ * > 0 in N/mm; `#` comments and blank lines allowed). Until one is loaded, such an update
+ * returns INTERPHASE_STATUS_RCURVE_NOT_LOADED.
+ *
+ * NOT thread-safe: it writes library-wide data. Call it once, from one thread, before any thread
+ * calls interphase_update; a later call replaces the R-curve and must not overlap any update.
+ *
+ * @param path        NUL-terminated file name (at most 4096 bytes)
+ * @param detail      out, may be NULL: on failure, a NUL-terminated message naming the file, the
+ *                    line and the failed check
+ * @param detail_len  size of @p detail in bytes (257 holds any message: at most 256 characters)
+ * @return INTERPHASE_STATUS_OK (0), or INTERPHASE_STATUS_RCURVE_* (60-63) or
+ *         INTERPHASE_STATUS_SPLINE_* (40-48); on failure the R-curve loaded before (if any) stays.
+ */
+int interphase_load_rcurve(const char *path, char *detail, size_t detail_len);
+
+/**
  * The generic message of a status code (e.g. "full-crack normal separation sf_N out of range").
  *
- * @param status  a status code returned by interphase_update
+ * @param status  a status code returned by interphase_update or a loader
  * @param buf     out, may be NULL: receives at most @p len - 1 characters and a NUL
  * @param len     size of @p buf in bytes
  * @return the length of the full message (without the NUL), as snprintf does

@@ -1,6 +1,9 @@
 !> C entry points of interphase (declared in include/interphase.h): one interface update from a
 !> PROPS array, the old state and the separation, with an integer status, and the message of a
-!> status. Part of the core library: no I/O, no host hook, no module data; re-entrant.
+!> status (no I/O, no module data; re-entrant); and the start-up loaders of the custom RVE table
+!> and of the tabulated R-curve (they read a file and write the loaders' `protected` data, so a
+!> host calls them once, from one thread, before any update). Part of the core library, no host
+!> hook.
 !>
 !> Array conventions for C: separation and traction in the order (s_N, s_T[, s_T2]); the
 !> tangent is returned **row-major**, tangent[i*ntens + j] = d traction[i] / d separation[j];
@@ -11,13 +14,19 @@ module interphase_capi
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_REQUIRED
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
-      status_message
+      STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, status_message
+   use interphase_micro_coefficients, only: load_custom_table
+   use interphase_rcurve, only: load_rcurve
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
    implicit none
    private
-   public :: interphase_update_c, interphase_status_message_c
+   public :: interphase_update_c, interphase_status_message_c, interphase_load_table_c, &
+      interphase_load_rcurve_c
+
+   !> Longest path (bytes, without the NUL) the loaders accept from C.
+   integer, parameter :: MAX_PATH_LEN = 4096
 
 contains
 
@@ -114,6 +123,93 @@ contains
       full_len = int(len_trim(text), c_size_t)
       call copy_to_c(trim(text), buf, len)
    end function interphase_status_message_c
+
+   !> C: `int interphase_load_table(const char *path, char *detail, size_t detail_len)`. Reads,
+   !> checks and stores the custom RVE table (tables/README.md format) that the micromechanical
+   !> model uses where PROPS[7] = 1, as UEXTERNALDB does with INTERPHASE_TABLE. Writes shared data:
+   !> call once, from one thread, before any update. Returns STATUS_OK or a STATUS_TABLE_* /
+   !> STATUS_SPLINE_* code; on failure `detail` (may be NULL) names the file, the line and the
+   !> failed check, and the table loaded before (if any) stays in use.
+   function interphase_load_table_c(path, detail, detail_len) result(status) &
+         bind(C, name="interphase_load_table")
+      type(c_ptr), value, intent(in) :: path               !! NUL-terminated file name
+      type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
+      integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
+      integer(c_int) :: status
+      status = load_file(path, 'RVE table', STATUS_TABLE_UNREADABLE, load_custom_table, detail, detail_len)
+   end function interphase_load_table_c
+
+   !> C: `int interphase_load_rcurve(const char *path, char *detail, size_t detail_len)`. Reads,
+   !> checks and stores the tabulated R-curve ("D G_cI G_cII" rows) of the fracture-mechanics law
+   !> where the R-curve selector is 3, as UEXTERNALDB does with INTERPHASE_RCURVE. Writes shared
+   !> data: call once, from one thread, before any update. Returns STATUS_OK or a STATUS_RCURVE_*
+   !> / STATUS_SPLINE_* code; on failure `detail` (may be NULL) names the file, the line and the
+   !> failed check, and the R-curve loaded before (if any) stays in use.
+   function interphase_load_rcurve_c(path, detail, detail_len) result(status) &
+         bind(C, name="interphase_load_rcurve")
+      type(c_ptr), value, intent(in) :: path               !! NUL-terminated file name
+      type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
+      integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
+      integer(c_int) :: status
+      status = load_file(path, 'R-curve', STATUS_RCURVE_UNREADABLE, load_rcurve, detail, detail_len)
+   end function interphase_load_rcurve_c
+
+   !> Convert the C path, call `loader` on it and copy its message to `detail` on failure. A NULL,
+   !> empty or over-long path is `unreadable` with a message that says so.
+   function load_file(path, what, unreadable, loader, detail, detail_len) result(status)
+      type(c_ptr), intent(in) :: path                      !! NUL-terminated file name or NULL
+      character(len=*), intent(in) :: what                 !! kind of file, for messages
+      integer, intent(in) :: unreadable                    !! status of a path that cannot be used
+      interface
+         subroutine loader(path, status, message)
+            import :: MESSAGE_LEN
+            implicit none
+            character(len=*), intent(in) :: path
+            integer, intent(out) :: status
+            character(len=MESSAGE_LEN), intent(out) :: message
+         end subroutine loader
+      end interface
+      type(c_ptr), intent(in) :: detail                    !! char buffer or NULL
+      integer(c_size_t), intent(in) :: detail_len          !! its size in bytes
+      integer(c_int) :: status
+
+      character(kind=c_char), pointer :: chars(:)
+      character(len=:), allocatable :: fpath
+      character(len=MESSAGE_LEN) :: message
+      integer :: code, i, n
+
+      if (.not. c_associated(path)) then
+         status = int(unreadable, c_int)
+         call copy_to_c(what//' path is NULL', detail, detail_len)
+         return
+      end if
+      ! the C string is read byte by byte up to its NUL, never past it
+      call c_f_pointer(path, chars, [MAX_PATH_LEN + 1])
+      n = 0
+      do while (n <= MAX_PATH_LEN)
+         if (chars(n + 1) == c_null_char) exit
+         n = n + 1
+      end do
+      if (n == 0) then
+         status = int(unreadable, c_int)
+         call copy_to_c(what//' path is empty', detail, detail_len)
+         return
+      end if
+      if (n > MAX_PATH_LEN) then
+         status = int(unreadable, c_int)
+         write (message, '(a,i0,a)') what//' path is longer than ', MAX_PATH_LEN, &
+            ' bytes (or not NUL-terminated)'
+         call copy_to_c(trim(message), detail, detail_len)
+         return
+      end if
+      allocate (character(len=n) :: fpath)
+      do i = 1, n
+         fpath(i:i) = chars(i)
+      end do
+      call loader(fpath, code, message)
+      status = int(code, c_int)
+      if (code /= STATUS_OK) call copy_to_c(trim(message), detail, detail_len)
+   end function load_file
 
    !> Copy `text` into the C buffer `buf` of `len` bytes, truncated, NUL-terminated.
    subroutine copy_to_c(text, buf, len)

@@ -11,7 +11,18 @@
  * 3. The row-major tangent equals a finite-difference tangent of interphase_update (on a
  *    slipping row, where it is unsymmetric, so a transposed matrix would fail).
  * 4. Failures: a bad PROPS value, a bad ntens and a NaN separation return the right status and
- *    message and leave the outputs untouched; interphase_status_message truncates like snprintf.
+ *    message and leave the outputs untouched; interphase_status_message truncates like snprintf;
+ *    every status code of the header has a message of its own.
+ *
+ *   test_capi --load <tables/paper.dat> <tables/paper-resolution.dat>
+ *
+ * 5. The loaders (interphase_load_table, interphase_load_rcurve), in a fresh process: before a
+ *    load the custom table / tabulated R-curve is "not loaded"; a missing file, a malformed file
+ *    (written into the working directory), a NULL and an empty path fail with the right status
+ *    and a message naming the file (and the line); paper.dat loaded as the custom table gives the
+ *    built-in table's update (the library's default is compiled from that same file); a failed
+ *    load keeps the table loaded before; paper-resolution.dat then gives a different response.
+ *    A tabulated constant R-curve gives the constant R-curve's update.
  *
  * Exits 0 when every check passes, 1 otherwise, printing each failed check.
  */
@@ -204,26 +215,219 @@ static void test_failures(void) {
   CHECK(n == strlen("separation is not finite (NaN or Inf)"), "length of message 20: %zu", n);
   interphase_status_message(9999, msg, sizeof msg);
   CHECK(strcmp(msg, "unknown status code") == 0, "status 9999: \"%s\"", msg);
-  /* every status the header names has a message of its own */
-  const int codes[] = {INTERPHASE_STATUS_BAD_NPROPS, INTERPHASE_STATUS_BAD_MODEL, INTERPHASE_STATUS_BAD_DAMAGE_LAW,
-                       INTERPHASE_STATUS_BAD_MU, INTERPHASE_STATUS_BAD_S0_N, INTERPHASE_STATUS_BAD_SF_N,
-                       INTERPHASE_STATUS_BAD_S0_T, INTERPHASE_STATUS_BAD_SF_T, INTERPHASE_STATUS_BAD_K_N,
-                       INTERPHASE_STATUS_BAD_K_T, INTERPHASE_STATUS_BAD_NTENS, INTERPHASE_STATUS_MODEL_UNAVAILABLE,
-                       INTERPHASE_STATUS_NONFINITE_SEPARATION, INTERPHASE_STATUS_BAD_STATE,
-                       INTERPHASE_STATUS_BAD_COEFFICIENTS};
+  /* every status the header names has a message of its own (ctest capi_status_codes_match checks
+     that the header names every code of src/interphase_status.f90, with the same values) */
+  const int codes[] = {
+      INTERPHASE_STATUS_BAD_NPROPS, INTERPHASE_STATUS_BAD_MODEL, INTERPHASE_STATUS_BAD_DAMAGE_LAW,
+      INTERPHASE_STATUS_BAD_MU, INTERPHASE_STATUS_BAD_S0_N, INTERPHASE_STATUS_BAD_SF_N, INTERPHASE_STATUS_BAD_S0_T,
+      INTERPHASE_STATUS_BAD_SF_T, INTERPHASE_STATUS_BAD_K_N, INTERPHASE_STATUS_BAD_K_T, INTERPHASE_STATUS_BAD_NTENS,
+      INTERPHASE_STATUS_BAD_NSTATV, INTERPHASE_STATUS_MODEL_UNAVAILABLE, INTERPHASE_STATUS_BAD_TABLE_SELECTOR,
+      INTERPHASE_STATUS_BAD_D0, INTERPHASE_STATUS_BAD_RCURVE, INTERPHASE_STATUS_BAD_GC_I, INTERPHASE_STATUS_BAD_GC_II,
+      INTERPHASE_STATUS_NONFINITE_SEPARATION, INTERPHASE_STATUS_BAD_STATE, INTERPHASE_STATUS_BAD_COEFFICIENTS,
+      INTERPHASE_STATUS_STAGGER_NOT_CONVERGED, INTERPHASE_STATUS_RCURVE_NOT_LOADED,
+      INTERPHASE_STATUS_SPLINE_TOO_FEW_POINTS, INTERPHASE_STATUS_SPLINE_BAD_SHAPE, INTERPHASE_STATUS_SPLINE_BAD_METHOD,
+      INTERPHASE_STATUS_SPLINE_NONFINITE_DATA, INTERPHASE_STATUS_SPLINE_BAD_KNOTS,
+      INTERPHASE_STATUS_SPLINE_SOLVER_FAILED, INTERPHASE_STATUS_SPLINE_NOT_BUILT,
+      INTERPHASE_STATUS_SPLINE_OUT_OF_RANGE, INTERPHASE_STATUS_SPLINE_NONFINITE_ARGUMENT,
+      INTERPHASE_STATUS_TABLE_UNREADABLE, INTERPHASE_STATUS_TABLE_BAD_HEADER, INTERPHASE_STATUS_TABLE_MISSING_COLUMN,
+      INTERPHASE_STATUS_TABLE_MISSING_KEY, INTERPHASE_STATUS_TABLE_BAD_ROW, INTERPHASE_STATUS_TABLE_NONFINITE,
+      INTERPHASE_STATUS_TABLE_NOT_INCREASING, INTERPHASE_STATUS_TABLE_BAD_RANGE, INTERPHASE_STATUS_TABLE_IDENTITY,
+      INTERPHASE_STATUS_TABLE_NOT_LOADED, INTERPHASE_STATUS_RCURVE_UNREADABLE, INTERPHASE_STATUS_RCURVE_MALFORMED,
+      INTERPHASE_STATUS_RCURVE_NEGATIVE, INTERPHASE_STATUS_RCURVE_BAD_RANGE};
   for (size_t i = 0; i < sizeof codes / sizeof codes[0]; ++i) {
     interphase_status_message(codes[i], msg, sizeof msg);
     CHECK(strcmp(msg, "unknown status code") != 0, "status %d has no message", codes[i]);
+    for (size_t j = 0; j < i; ++j) CHECK(codes[i] != codes[j], "status %d named twice", codes[i]);
   }
 }
 
+/* ---- 5. the loaders ------------------------------------------------------------------------ */
+
+/* Micromechanical model (docs/abaqus.md): PROPS[0] = 2, damage law 1, mu, s0/sf, PROPS[7] = table. */
+#define NPROPS_MICRO 8
+static void micro_props(double props[NPROPS_MICRO], double table) {
+  const double p[NPROPS_MICRO] = {2.0, 1.0, MU, 0.00044, 0.04, 0.00072, 0.06, table};
+  memcpy(props, p, sizeof p);
+}
+
+/* Simplified model with the fracture-mechanics law (PROPS[1] = 2): PROPS[9..12] = D0, R-curve,
+   G_cI, G_cII. */
+#define NPROPS_FRACTURE (INTERPHASE_NPROPS_SIMPLIFIED + 4)
+static void fracture_props(double props[NPROPS_FRACTURE], double rcurve, double gc_i, double gc_ii) {
+  paper_props(props);
+  props[1] = 2.0;
+  props[9] = 0.05;
+  props[10] = rcurve;
+  props[11] = gc_i;
+  props[12] = gc_ii;
+}
+
+static void write_file(const char *path, const char *text) {
+  FILE *f = fopen(path, "w");
+  CHECK(f != NULL, "cannot write %s", path);
+  if (f == NULL) return;
+  fputs(text, f);
+  fclose(f);
+}
+
+/* One point of a 2-D history: separation (s_N, s_T) at step i of n, opening then shearing. */
+static void history_point(int i, int n, double s[2]) {
+  const double u = (double)i / (double)n;
+  s[0] = 0.02 * (u < 0.5 ? 2.0 * u : 2.0 - 2.0 * u) - 0.001 * u; /* open, close, press */
+  s[1] = 0.03 * u;                                               /* shear */
+}
+
+/* Runs the history with two PROPS sets side by side; returns the largest relative difference of
+   traction, tangent, state and stored energy, or -1 if an update failed. */
+static double compare_histories(const double *props_a, const double *props_b, int nprops, const char *what,
+                                double *d_final) {
+  double state_a[INTERPHASE_NSTATE] = {0.0}, state_b[INTERPHASE_NSTATE] = {0.0};
+  double largest = 0.0;
+  const int n = 200;
+  for (int i = 1; i <= n; ++i) {
+    double s[2], ta[2], tb[2], ka[4], kb[4], na[INTERPHASE_NSTATE], nb[INTERPHASE_NSTATE], pa, pb;
+    char detail[257] = "";
+    history_point(i, n, s);
+    int status = interphase_update(props_a, nprops, 2, state_a, s, ta, ka, na, &pa, detail, sizeof detail);
+    CHECK(status == INTERPHASE_STATUS_OK, "%s, step %d: status %d: %s", what, i, status, detail);
+    if (status != INTERPHASE_STATUS_OK) return -1.0;
+    status = interphase_update(props_b, nprops, 2, state_b, s, tb, kb, nb, &pb, detail, sizeof detail);
+    CHECK(status == INTERPHASE_STATUS_OK, "%s, step %d (reference): status %d: %s", what, i, status, detail);
+    if (status != INTERPHASE_STATUS_OK) return -1.0;
+    double scale_t = fabs(tb[0]) + fabs(tb[1]) + 1e-300, scale_k = fabs(kb[0]) + fabs(kb[3]) + 1e-300;
+    for (int k = 0; k < 2; ++k) largest = fmax(largest, fabs(ta[k] - tb[k]) / scale_t);
+    for (int k = 0; k < 4; ++k) largest = fmax(largest, fabs(ka[k] - kb[k]) / scale_k);
+    for (int k = 0; k < INTERPHASE_NSTATE; ++k) largest = fmax(largest, fabs(na[k] - nb[k]));
+    largest = fmax(largest, fabs(pa - pb) / (fabs(pb) + 1e-300));
+    memcpy(state_a, na, sizeof state_a);
+    memcpy(state_b, nb, sizeof state_b);
+  }
+  *d_final = state_a[0];
+  return largest;
+}
+
+/* A load that must fail with `expected`, its detail naming `fragment`; NULL detail must not crash. */
+static void expect_load_failure(int (*load)(const char *, char *, size_t), const char *path, int expected,
+                                const char *fragment) {
+  char detail[257] = "";
+  int status = load(path, detail, sizeof detail);
+  CHECK(status == expected, "load(\"%s\"): status %d, expected %d (%s)", path ? path : "NULL", status, expected, detail);
+  CHECK(strstr(detail, fragment) != NULL, "load(\"%s\"): detail \"%s\" does not name \"%s\"", path ? path : "NULL",
+        detail, fragment);
+  CHECK(load(path, NULL, 0) == expected, "load(\"%s\") without a detail buffer", path ? path : "NULL");
+  printf("  load(%s): status %d: %s\n", path ? path : "NULL", status, detail);
+}
+
+static void test_load_table(const char *paper, const char *coarse) {
+  double custom[NPROPS_MICRO], builtin[NPROPS_MICRO], traction[2] = {-7.0, -7.0}, tangent[4] = {-7.0}, psi = -7.0;
+  double state_new[INTERPHASE_NSTATE] = {-7.0}, d_final = 0.0;
+  const double state[INTERPHASE_NSTATE] = {0.0}, s[2] = {0.001, 0.0005};
+  char detail[257] = "", msg[257];
+  micro_props(custom, 1.0);
+  micro_props(builtin, 0.0);
+
+  /* before any load: "custom RVE table selected but none loaded", outputs untouched */
+  int status = interphase_update(custom, NPROPS_MICRO, 2, state, s, traction, tangent, state_new, &psi, detail,
+                                 sizeof detail);
+  interphase_status_message(status, msg, sizeof msg);
+  CHECK(status == INTERPHASE_STATUS_TABLE_NOT_LOADED && strcmp(msg, "custom RVE table selected but none loaded") == 0,
+        "no table loaded: status %d \"%s\"", status, msg);
+  CHECK(traction[0] == -7.0 && tangent[0] == -7.0 && state_new[0] == -7.0 && psi == -7.0,
+        "no table loaded: outputs were touched");
+
+  /* a missing file, a malformed file, a NULL and an empty path: clear errors, nothing loaded */
+  expect_load_failure(interphase_load_table, "no-such-dir/missing-table.dat", INTERPHASE_STATUS_TABLE_UNREADABLE,
+                      "no-such-dir/missing-table.dat");
+  char columns[400] = "# columns:";
+  const char *names[] = {"a",    "D",     "C_TT",  "C_TN",  "C_NT",  "C_NN", "Dbar_TT", "Dbar_TN",
+                         "Dbar_NT", "Dbar_NN", "Cc_TT", "Cc_TN", "Cc_NT", "Cc_NN", "Tc_T", "Tc_N",
+                         "Sc_T", "Sc_N",  "Cf_T",  "Cf_N",  "Tf",    "Sf",   "ufbar"};
+  for (size_t i = 0; i < sizeof names / sizeof names[0]; ++i) {
+    strcat(columns, " ");
+    strcat(columns, names[i]);
+  }
+  char text[1024];
+  snprintf(text, sizeof text, "# b = 25\n# h = 5\n%s\n0 0 1000\n", columns);
+  write_file("bad_row_table.dat", text); /* line 4 holds 3 numbers for 23 columns */
+  expect_load_failure(interphase_load_table, "bad_row_table.dat", INTERPHASE_STATUS_TABLE_BAD_ROW,
+                      "bad_row_table.dat:4: 3 numbers");
+  write_file("bad_header_table.dat", "# b = 25\n# h = minus one\n");
+  expect_load_failure(interphase_load_table, "bad_header_table.dat", INTERPHASE_STATUS_TABLE_BAD_HEADER,
+                      "bad_header_table.dat:2:");
+  expect_load_failure(interphase_load_table, NULL, INTERPHASE_STATUS_TABLE_UNREADABLE, "path is NULL");
+  expect_load_failure(interphase_load_table, "", INTERPHASE_STATUS_TABLE_UNREADABLE, "RVE table path is empty");
+  status = interphase_update(custom, NPROPS_MICRO, 2, state, s, traction, tangent, state_new, &psi, NULL, 0);
+  CHECK(status == INTERPHASE_STATUS_TABLE_NOT_LOADED, "after failed loads: status %d", status);
+
+  /* paper.dat as the custom table: the built-in table's response (compiled from the same file) */
+  status = interphase_load_table(paper, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK, "load %s: status %d: %s", paper, status, detail);
+  double diff = compare_histories(custom, builtin, NPROPS_MICRO, "custom paper.dat vs built-in", &d_final);
+  CHECK(diff >= 0.0 && diff <= 1e-12, "custom paper.dat vs built-in: largest relative difference %g", diff);
+  CHECK(d_final > 0.5, "the history damages the point only to D = %g", d_final);
+  printf("custom table %s: D = %.4f at the end, largest difference from the built-in table %.3g\n", paper, d_final,
+         diff);
+
+  /* a failed load keeps the table loaded before */
+  expect_load_failure(interphase_load_table, "bad_row_table.dat", INTERPHASE_STATUS_TABLE_BAD_ROW, "bad_row_table.dat");
+  diff = compare_histories(custom, builtin, NPROPS_MICRO, "after a failed load", &d_final);
+  CHECK(diff >= 0.0 && diff <= 1e-12, "after a failed load: largest relative difference %g", diff);
+
+  /* another table replaces it: the coarse table's response differs */
+  status = interphase_load_table(coarse, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK, "load %s: status %d: %s", coarse, status, detail);
+  diff = compare_histories(custom, builtin, NPROPS_MICRO, "custom coarse table vs built-in", &d_final);
+  CHECK(diff > 1e-3, "custom coarse table vs built-in: largest relative difference only %g", diff);
+  printf("custom table %s: largest difference from the built-in table %.3g\n", coarse, diff);
+}
+
+static void test_load_rcurve(void) {
+  double tabulated[NPROPS_FRACTURE], constant[NPROPS_FRACTURE], traction[2], tangent[4], psi, d_final = 0.0;
+  double state_new[INTERPHASE_NSTATE];
+  const double state[INTERPHASE_NSTATE] = {0.0}, s[2] = {0.001, 0.0005};
+  char detail[257] = "";
+  const double g_i = 0.005, g_ii = 0.0085; /* N/mm */
+  fracture_props(tabulated, 3.0, 0.0, 0.0);
+  fracture_props(constant, 1.0, g_i, g_ii);
+
+  int status = interphase_update(tabulated, NPROPS_FRACTURE, 2, state, s, traction, tangent, state_new, &psi, NULL, 0);
+  CHECK(status == INTERPHASE_STATUS_RCURVE_NOT_LOADED, "no R-curve loaded: status %d", status);
+
+  expect_load_failure(interphase_load_rcurve, "no-such-dir/missing-rcurve.txt", INTERPHASE_STATUS_RCURVE_UNREADABLE,
+                      "no-such-dir/missing-rcurve.txt");
+  write_file("bad_rcurve.txt", "# D G_cI G_cII\n0.0 0.005\n1.0 0.005 0.0085\n");
+  expect_load_failure(interphase_load_rcurve, "bad_rcurve.txt", INTERPHASE_STATUS_RCURVE_MALFORMED,
+                      "bad_rcurve.txt:2: expected three finite numbers");
+  write_file("negative_rcurve.txt", "0.0 0.005 0.0085\n1.0 -0.005 0.0085\n");
+  expect_load_failure(interphase_load_rcurve, "negative_rcurve.txt", INTERPHASE_STATUS_RCURVE_NEGATIVE,
+                      "negative_rcurve.txt:2:");
+  expect_load_failure(interphase_load_rcurve, NULL, INTERPHASE_STATUS_RCURVE_UNREADABLE, "path is NULL");
+
+  /* a constant tabulated R-curve: the constant R-curve's response */
+  char text[256];
+  snprintf(text, sizeof text, "# D G_cI G_cII (N/mm)\n0.0 %.17g %.17g\n0.5 %.17g %.17g\n1.0 %.17g %.17g\n", g_i, g_ii,
+           g_i, g_ii, g_i, g_ii);
+  write_file("constant_rcurve.txt", text);
+  status = interphase_load_rcurve("constant_rcurve.txt", detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK, "load constant_rcurve.txt: status %d: %s", status, detail);
+  double diff = compare_histories(tabulated, constant, NPROPS_FRACTURE, "tabulated vs constant R-curve", &d_final);
+  CHECK(diff >= 0.0 && diff <= 1e-12, "tabulated vs constant R-curve: largest relative difference %g", diff);
+  CHECK(d_final > 0.5, "the history damages the point only to D = %g", d_final);
+  printf("tabulated R-curve: D = %.4f at the end, largest difference from the constant R-curve %.3g\n", d_final, diff);
+}
+
 int main(int argc, char **argv) {
-  if (argc != 2) {
-    fprintf(stderr, "usage: %s <tests/driver/reference/mixed.csv>\n", argv[0]);
+  if (argc == 4 && strcmp(argv[1], "--load") == 0) {
+    test_load_table(argv[2], argv[3]);
+    test_load_rcurve();
+  } else if (argc == 2) {
+    test_mixed_history(argv[1]);
+    test_failures();
+  } else {
+    fprintf(stderr, "usage: %s <tests/driver/reference/mixed.csv>\n"
+                    "       %s --load <tables/paper.dat> <tables/paper-resolution.dat>\n", argv[0], argv[0]);
     return 2;
   }
-  test_mixed_history(argv[1]);
-  test_failures();
   printf("%d checks, %d failed\n", checks, failures);
   return failures == 0 ? 0 : 1;
 }
