@@ -8,13 +8,16 @@
 !> the same messages the UMAT would give at the first increment), *DEPVAR at least 4 (UMAT) or 8
 !> (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for Abaqus/Standard and a
 !> *DENSITY > 0 for Abaqus/Explicit. It reads keywords and their data lines only (no *INCLUDE,
-!> no parts/assemblies resolution) and prints one line per cohesive section; the exit status is 0
-!> when every check passes, 1 otherwise, 2 when a file cannot be read.
+!> no parts/assemblies resolution) and prints one line per cohesive section, and a note when the
+!> material needs a file loaded at start-up (a custom RVE table, a tabulated R-curve: the run
+!> then needs the environment variable and the start-of-analysis hook, which a deck cannot
+!> show); the exit status is 0 when every check passes, 1 otherwise, 2 when a file cannot be read.
 program interphase_check_deck
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_kinds, only: dp
    use interphase_finite, only: is_finite
-   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
+   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
+      MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props
    use interphase_driver_cli, only: get_argument
@@ -169,7 +172,7 @@ contains
 
       type(law_params_type) :: params
       character(len=MESSAGE_LEN) :: message
-      character(len=:), allocatable :: where, solver, summary
+      character(len=:), allocatable :: where, solver, summary, notes, hook
       integer :: m, k, status, nfail_before, depvar_needed
 
       nfail_before = nfail
@@ -189,6 +192,8 @@ contains
          if (materials(k)%name == section%material) m = k
       end do
       summary = ''
+      notes = ''
+      hook = trim(merge('VEXTERNALDB', 'UEXTERNALDB', explicit))
       if (m == 0) then
          call record_failure(where//': material '//trim(section%material)//' is not defined in this deck', nfail)
       else if (materials(m)%user_line == 0) then
@@ -207,6 +212,14 @@ contains
                   summary = trim(merge('simplified     ', 'micromechanical', params%model == MODEL_SIMPLIFIED))// &
                      ' model, '//trim(merge('displacement-driven', 'fracture-mechanics ', &
                      params%damage_law == DAMAGE_DISPLACEMENT))//' damage law'
+                  ! files the run must load at start-up (docs/abaqus.md, 'RVE tables')
+                  if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_CUSTOM_CODE) &
+                     notes = notes//'; note: PROPS('//int_to_string(PROP_TABLE)//') = 1 (custom RVE table): '// &
+                     'the run needs INTERPHASE_TABLE set to the table file and '//hook//' linked '// &
+                     '(make-user-file.sh --uexternaldb)'
+                  if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) &
+                     notes = notes//'; note: tabulated R-curve: the run needs INTERPHASE_RCURVE set to the '// &
+                     'R-curve file and '//hook//' linked (make-user-file.sh --uexternaldb)'
                end if
             end if
             depvar_needed = merge(NSTATV_VUMAT, NSTATV_REQUIRED, explicit)
@@ -224,7 +237,7 @@ contains
       end if
       if (nfail == nfail_before) then
          write (output_unit, '(a)') path//': ELSET='//trim(section%elset)//', material '// &
-            trim(section%material)//', '//trim(solver)//': '//summary//': ok'
+            trim(section%material)//', '//trim(solver)//': '//summary//': ok'//notes
       end if
    end subroutine check_section
 
