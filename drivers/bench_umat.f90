@@ -80,7 +80,7 @@ program bench_umat
 contains
 
    !> PROPS of the paper's Table 1 data, mu = 0.75 (our assumption): the simplified model with K
-   !> from the closed forms of MODEL-NOTES section 6, or the micromechanical model on the
+   !> from the closed forms of docs/rve.md, 'Exact identities', or the micromechanical model on the
    !> built-in table.
    subroutine set_props(which, damage_law)
       integer, intent(in) :: which, damage_law

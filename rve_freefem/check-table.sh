@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# check-table.sh -- verify an RVE coefficient table against the exact facts of MODEL-NOTES 6.
+# check-table.sh -- verify an RVE coefficient table against the exact identities of
+# docs/rve.md ('Exact identities').
 #
 #   bash rve_freefem/check-table.sh TABLE.dat [TABLE-diag.txt]
 #

@@ -8,7 +8,7 @@
 !> k = C/h, kc = C^c/h, dbar = Dbar/h, tc_t = T^c_T/h, sc_n = S^c_N/h; C^f, T^f are per unit
 !> slip lambda (mm) already. The symmetric RVE (crack centred, periodic sides) makes every
 !> cross term vanish (C_TN = C_NT = 0, Dbar_TN = Dbar_NT = 0, T^c_N = S^c_T = 0, C^f_N = 0,
-!> S^f = 0; MODEL-NOTES section 6); providers guarantee it and the set holds the non-zero
+!> S^f = 0; docs/rve.md, 'Exact identities'); providers guarantee it and the set holds the non-zero
 !> members only, which is also what in-plane isotropy requires in 3-D.
 module interphase_coefficients
    use interphase_kinds, only: dp

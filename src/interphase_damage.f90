@@ -1,5 +1,5 @@
-!> The displacement-driven damage law of the paper, eqs 13-18 (reconstructed in MODEL-NOTES
-!> section 2): the damage D^ reached by a separation, and its derivatives for the tangent.
+!> The displacement-driven damage law of the paper, eqs 13-18 (stated in docs/theory.md): the
+!> damage D^ reached by a separation, and its derivatives for the tangent.
 module interphase_damage
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type

@@ -1,5 +1,5 @@
 !> RVE coefficient tables (`tables/README.md` gives the format): reading a table file, checking
-!> it against the exact identities of the RVE problems (MODEL-NOTES section 6), and turning it
+!> it against the exact identities of the RVE problems (docs/rve.md), and turning it
 !> into the interpolation data of the micromechanical coefficient provider.
 !>
 !> This is set-up code (it reads files); the pure update never calls it. A table is read once,
@@ -231,7 +231,7 @@ contains
 
    end subroutine read_rve_table
 
-   !> Check a table against the exact facts of MODEL-NOTES section 6, to IDENTITY_TOL relative
+   !> Check a table against the exact identities of docs/rve.md, to IDENTITY_TOL relative
    !> (scales: C(0) for stiffnesses and crack stresses, h for jumps, C_TT(0)/h per unit slip):
    !> a from 0 to b strictly increasing, D = a/b; the symmetry zeros; eq 52 C + C^c = C(0);
    !> T^c_T = C_TT(0) and S^c_N = C_NN(0); at a = b C = 0 and Dbar = h I; T^f < 0,

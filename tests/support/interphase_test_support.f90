@@ -17,7 +17,7 @@ module interphase_test_support
 
 contains
 
-   !> K_T = C^_TT/h from the laminate closed form of MODEL-NOTES section 6 (MPa/mm).
+   !> K_T = C^_TT/h from the laminate closed form of docs/rve.md, 'Exact identities' (MPa/mm).
    pure real(dp) function paper_k_t()
       real(dp) :: g_m, g_b
       g_m = E_M/(2.0_dp*(1.0_dp + NU))
