@@ -20,7 +20,7 @@
 !> increment grows by GROW_FACTOR, never beyond the nominal one. Below min_increment times
 !> the nominal increment the analysis stops with a message.
 module interphase_fe2d_solver
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_REQUIRED, SV_DAMAGE, SV_SLIP_1
    use interphase_abaqus_interfaces, only: umat
@@ -73,6 +73,12 @@ module interphase_fe2d_solver
       !> factor (1 = consistent Newton). Only the tests change it, to show that their
       !> convergence-rate check fails with a wrong tangent.
       real(dp) :: tangent_scale = 1.0_dp
+      !> Test hook: in an increment longer than this (pseudo-time) every interface UMAT call gets
+      !> a NaN normal separation increment, which the UMAT refuses like any failed update: it
+      !> returns PNEWDT = 0.25 with its outputs untouched (docs/abaqus.md, Failures). No physical
+      !> separation makes the interphase UMAT fail (README, Verification), so only the tests set
+      !> it, to drive the PNEWDT cut-back. Default: never.
+      real(dp) :: umat_failure_above = huge(1.0_dp)
    end type fe2d_options_type
 
    !> One converged increment and its Newton history.
@@ -450,6 +456,7 @@ contains
                call interface_b_matrix(xy, mesh%xi(p), bm, jac)
                sep(:, ip) = matmul(bm, d)
                dstran = sep(:, ip) - sep_n(:, ip)
+               if (dt > options%umat_failure_above) dstran(1) = ieee_value(1.0_dp, ieee_quiet_nan)
                stress(:, ip) = stress_n(:, ip)
                statev(:, ip) = statev_n(:, ip)
                sse(ip) = sse_n(ip)
