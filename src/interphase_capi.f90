@@ -14,7 +14,7 @@ module interphase_capi
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_REQUIRED
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
-      STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, status_message
+      STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
    use interphase_params, only: law_params_type, from_props
@@ -160,15 +160,7 @@ contains
       type(c_ptr), intent(in) :: path                      !! NUL-terminated file name or NULL
       character(len=*), intent(in) :: what                 !! kind of file, for messages
       integer, intent(in) :: unreadable                    !! status of a path that cannot be used
-      interface
-         subroutine loader(path, status, message)
-            import :: MESSAGE_LEN
-            implicit none
-            character(len=*), intent(in) :: path
-            integer, intent(out) :: status
-            character(len=MESSAGE_LEN), intent(out) :: message
-         end subroutine loader
-      end interface
+      procedure(file_loader) :: loader                  !! the loader to call
       type(c_ptr), intent(in) :: detail                    !! char buffer or NULL
       integer(c_size_t), intent(in) :: detail_len          !! its size in bytes
       integer(c_int) :: status

@@ -3,7 +3,7 @@
 module interphase_status
    implicit none
    private
-   public :: status_message, severity_label
+   public :: status_message, severity_label, file_loader
 
    !> Length of the message strings that go with a status.
    integer, parameter, public :: MESSAGE_LEN = 256
@@ -65,6 +65,19 @@ module interphase_status
    integer, parameter, public :: SEVERITY_INFO = 1
    integer, parameter, public :: SEVERITY_WARNING = 2
    integer, parameter, public :: SEVERITY_FATAL = 3
+
+
+   abstract interface
+      !> A start-up loader of a data file (the custom RVE table, the tabulated R-curve): STATUS_OK
+      !> or a STATUS_* code with a message that names the file, the line and the failed check.
+      subroutine file_loader(path, status, message)
+         import :: MESSAGE_LEN
+         implicit none
+         character(len=*), intent(in) :: path
+         integer, intent(out) :: status
+         character(len=MESSAGE_LEN), intent(out) :: message
+      end subroutine file_loader
+   end interface
 
 contains
 

@@ -12,7 +12,7 @@
 !> reading. A file that cannot be read or fails its checks is a fatal error naming the variable,
 !> the file, the line and the failed check.
 module interphase_external_data
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_FATAL, status_message
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_FATAL, status_message, file_loader
    use interphase_layout, only: TABLE_CUSTOM_CODE
    use interphase_micro_coefficients, only: load_custom_table, custom_table_source
    use interphase_rcurve, only: load_rcurve, rcurve_source
@@ -44,43 +44,40 @@ contains
    subroutine load_table_file(caller, path, ok)
       character(len=*), intent(in) :: caller, path
       logical, intent(out) :: ok
-      character(len=MESSAGE_LEN) :: message
-      integer :: status
-      ok = .true.
-      if (custom_table_source(TABLE_CUSTOM_CODE) == path) then
-         call interphase_host_message(SEVERITY_INFO, caller//': custom RVE table '//path//' already loaded')
-         return
-      end if
-      call load_custom_table(path, status, message)
-      ok = status == STATUS_OK
-      if (.not. ok) then
-         call interphase_host_message(SEVERITY_FATAL, caller//': '//TABLE_VARIABLE//' = '//path//': '// &
-            status_message(status)//': '//trim(message))
-         return
-      end if
-      call interphase_host_message(SEVERITY_INFO, caller//': custom RVE table loaded from '//path)
+      call load_named_file(caller, TABLE_VARIABLE, 'custom RVE table', path, &
+         custom_table_source(TABLE_CUSTOM_CODE), load_custom_table, ok)
    end subroutine load_table_file
 
    !> Load the tabulated R-curve from `path` (unless that file is loaded already) and report.
    subroutine load_rcurve_file(caller, path, ok)
       character(len=*), intent(in) :: caller, path
       logical, intent(out) :: ok
+      call load_named_file(caller, RCURVE_VARIABLE, 'R-curve', path, rcurve_source(), load_rcurve, ok)
+   end subroutine load_rcurve_file
+
+   !> Call `loader` on `path` unless `loaded_from` is that path already; report success (info)
+   !> or failure (fatal, naming the variable, the file and the loader's message).
+   subroutine load_named_file(caller, variable, what, path, loaded_from, loader, ok)
+      character(len=*), intent(in) :: caller, variable, what, path
+      character(len=*), intent(in) :: loaded_from       !! the file loaded now ('' or a note if none)
+      procedure(file_loader) :: loader                  !! the loader to call
+      logical, intent(out) :: ok
       character(len=MESSAGE_LEN) :: message
       integer :: status
       ok = .true.
-      if (rcurve_source() == path) then
-         call interphase_host_message(SEVERITY_INFO, caller//': R-curve '//path//' already loaded')
+      if (loaded_from == path) then
+         call interphase_host_message(SEVERITY_INFO, caller//': '//what//' '//path//' already loaded')
          return
       end if
-      call load_rcurve(path, status, message)
+      call loader(path, status, message)
       ok = status == STATUS_OK
       if (.not. ok) then
-         call interphase_host_message(SEVERITY_FATAL, caller//': '//RCURVE_VARIABLE//' = '//path//': '// &
+         call interphase_host_message(SEVERITY_FATAL, caller//': '//variable//' = '//path//': '// &
             status_message(status)//': '//trim(message))
          return
       end if
-      call interphase_host_message(SEVERITY_INFO, caller//': R-curve loaded from '//path)
-   end subroutine load_rcurve_file
+      call interphase_host_message(SEVERITY_INFO, caller//': '//what//' loaded from '//path)
+   end subroutine load_named_file
 
    !> The value of a non-empty environment variable.
    logical function environment(name, value)
