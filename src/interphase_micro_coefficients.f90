@@ -9,7 +9,7 @@
 module interphase_micro_coefficients
    use interphase_kinds, only: dp
    use interphase_layout, only: TABLE_CUSTOM_CODE
-   use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, MESSAGE_LEN, status_message
+   use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, MESSAGE_LEN, status_message, message_path
    use interphase_coefficients, only: coefficient_set_type
    use interphase_spline, only: spline_type, spline_build, spline_export, &
       cubic_locate, cubic_eval
@@ -112,7 +112,7 @@ contains
       call interpolation_data(table, x, y)
       call spline_build(x, y, TABLE_SPLINE_METHOD, spline, status)
       if (status /= STATUS_OK) then
-         message = trim(path)//': '//status_message(status)
+         message = message_path(path)//': '//status_message(status)
          return
       end if
       call spline_export(spline, custom_knots, custom_coef)

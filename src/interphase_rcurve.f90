@@ -10,7 +10,7 @@
 module interphase_rcurve
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
-   use interphase_status, only: STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
+   use interphase_status, only: message_path, STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
       status_message
    use interphase_spline, only: spline_type, spline_build, spline_export, cubic_locate, cubic_eval, &
@@ -43,7 +43,7 @@ contains
       open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
          status = STATUS_RCURVE_UNREADABLE
-         message = trim(path)//': cannot open: '//trim(iomsg)
+         message = message_path(path)//': cannot open: '//trim(iomsg)
          return
       end if
       allocate (rows(3, 32))
@@ -99,12 +99,12 @@ contains
       close (unit)
       if (n < 2) then
          status = STATUS_RCURVE_BAD_RANGE
-         message = trim(path)//': fewer than two rows "D G_cI G_cII"'
+         message = message_path(path)//': fewer than two rows "D G_cI G_cII"'
          return
       end if
       call spline_build(rows(1, 1:n), transpose(rows(2:3, 1:n)), SPLINE_MONOTONE, spline, status)
       if (status /= STATUS_OK) then
-         message = trim(path)//': '//status_message(status)
+         message = message_path(path)//': '//status_message(status)
          return
       end if
       call spline_export(spline, rcurve_knots, rcurve_coef)
@@ -116,7 +116,7 @@ contains
          integer, intent(in) :: code
          character(len=*), intent(in) :: text
          status = code
-         write (message, '(a,a,i0,a,a)') trim(path), ':', lineno, ': ', text
+         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(path), ':', lineno, ': ', text
          close (unit)
       end subroutine fail
 

@@ -18,7 +18,7 @@ module interphase_rve_table
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_spline, only: SPLINE_NOT_A_KNOT
-   use interphase_status, only: STATUS_OK, STATUS_TABLE_UNREADABLE, STATUS_TABLE_BAD_HEADER, &
+   use interphase_status, only: message_path, STATUS_OK, STATUS_TABLE_UNREADABLE, STATUS_TABLE_BAD_HEADER, &
       STATUS_TABLE_MISSING_COLUMN, STATUS_TABLE_MISSING_KEY, STATUS_TABLE_BAD_ROW, &
       STATUS_TABLE_NONFINITE, STATUS_TABLE_NOT_INCREASING, STATUS_TABLE_BAD_RANGE, &
       STATUS_TABLE_IDENTITY, MESSAGE_LEN
@@ -92,7 +92,7 @@ contains
       open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
          status = STATUS_TABLE_UNREADABLE
-         message = trim(path)//': cannot open: '//trim(iomsg)
+         message = message_path(path)//': cannot open: '//trim(iomsg)
          return
       end if
       have_columns = .false.
@@ -212,7 +212,7 @@ contains
          integer, intent(in) :: code
          character(len=*), intent(in) :: text
          status = code
-         write (message, '(a,a,i0,a,a)') trim(path), ':', lineno, ': ', text
+         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(path), ':', lineno, ': ', text
          close (unit)
       end subroutine fail
 
@@ -242,7 +242,7 @@ contains
       character(len=MESSAGE_LEN), intent(out) :: message
 
       real(dp) :: c0_t, c0_n, scale_c, scale_f
-      integer :: i, n, j
+      integer :: i, n, j, ios
       integer, parameter :: ZERO_STIFF(6) = [COL_C_TN, COL_C_NT, COL_CC_TN, COL_CC_NT, COL_TC_N, COL_SC_T]
       integer, parameter :: ZERO_JUMP(2) = [COL_DBAR_TN, COL_DBAR_NT]
       integer, parameter :: ZERO_SLIP(2) = [COL_CF_N, COL_SF]
@@ -252,19 +252,19 @@ contains
       associate (r => table%rows, b => table%b, h => table%h)
          if (n < 2) then
             status = STATUS_TABLE_BAD_RANGE
-            message = trim(table%source)//': fewer than two rows'
+            message = message_path(table%source)//': fewer than two rows'
             return
          end if
          if (abs(r(1, COL_A)) > 0.0_dp .or. abs(r(n, COL_A) - b) > 1.0e-12_dp*b) then
             status = STATUS_TABLE_BAD_RANGE
-            write (message, '(a,es12.5,a,es12.5,a,es12.5)') trim(table%source)//': a runs from ', &
+            write (message, '(a,es12.5,a,es12.5,a,es12.5)', iostat=ios) message_path(table%source)//': a runs from ', &
                r(1, COL_A), ' to ', r(n, COL_A), ' mm, not from 0 to b = ', b
             return
          end if
          do i = 2, n
             if (.not. (r(i, COL_A) > r(i - 1, COL_A))) then
                status = STATUS_TABLE_NOT_INCREASING
-               write (message, '(a,a,i0,a,es24.16,a,es24.16)') trim(table%source), ':', table%line(i), &
+               write (message, '(a,a,i0,a,es24.16,a,es24.16)', iostat=ios) message_path(table%source), ':', table%line(i), &
                   ': a = ', r(i, COL_A), ' does not exceed the previous a = ', r(i - 1, COL_A)
                return
             end if
@@ -347,8 +347,9 @@ contains
          real(dp), intent(in) :: value
          integer, intent(out) :: status
          character(len=MESSAGE_LEN), intent(out) :: message
+         integer :: ios
          status = STATUS_TABLE_IDENTITY
-         write (message, '(a,a,i0,a,a,a,es24.16)') trim(table%source), ':', table%line(row), &
+         write (message, '(a,a,i0,a,a,a,es24.16)', iostat=ios) message_path(table%source), ':', table%line(row), &
             ': identity ', what, ' fails: value ', value
       end subroutine identity
 

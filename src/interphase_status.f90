@@ -3,7 +3,7 @@
 module interphase_status
    implicit none
    private
-   public :: status_message, severity_label, file_loader
+   public :: status_message, severity_label, file_loader, message_path
 
    !> Length of the message strings that go with a status.
    integer, parameter, public :: MESSAGE_LEN = 256
@@ -150,5 +150,21 @@ contains
       case default;            label = 'message'
       end select
    end function severity_label
+
+   !> A file name as messages show it: whole when it is short, else '...' and its last
+   !> MESSAGE_PATH_LEN - 3 characters, so that a message of MESSAGE_LEN characters keeps room for
+   !> the line number and what is wrong (the end of a path names the file).
+   pure function message_path(path) result(shown)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: shown
+      integer, parameter :: MESSAGE_PATH_LEN = 120
+      integer :: n
+      n = len_trim(path)
+      if (n <= MESSAGE_PATH_LEN) then
+         shown = path(1:n)
+      else
+         shown = '...'//path(n - MESSAGE_PATH_LEN + 4:n)
+      end if
+   end function message_path
 
 end module interphase_status

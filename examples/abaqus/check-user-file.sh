@@ -23,7 +23,10 @@ for variant in standard explicit standard-externaldb explicit-externaldb; do
    "$here/make-user-file.sh" --$solver "${extra[@]}" --build-dir "$build_dir" -o interphase_abaqus_$variant.f90
    "$fc" -c -std=f2008 -fimplicit-none -frecursive -ffree-line-length-132 -Wall -Wextra -Werror \
       -Wno-unused-dummy-argument -Wimplicit-interface interphase_abaqus_$variant.f90 -o $variant.o
-   if [ "$variant" != "$solver" ] && ! nm $variant.o | grep -q " T $db\$"; then
+   # nm's output is read whole first: under pipefail, grep -q closing the pipe early would make
+   # nm die of SIGPIPE and the test fail at random
+   symbols=$(nm $variant.o)
+   if [ "$variant" != "$solver" ] && ! grep -q " T $db\$" <<< "$symbols"; then
       echo "FAILED: $variant: $db is not defined"
       status=1
    fi
@@ -37,7 +40,7 @@ for variant in standard explicit standard-externaldb explicit-externaldb; do
       echo "FAILED: $solver: the hook does not call $hook"
       status=1
    fi
-   if ! nm $solver_o | grep -q " T $entry\$"; then
+   if ! grep -q " T $entry\$" <<< "$symbols"; then
       echo "FAILED: $solver: $entry is not defined"
       status=1
    fi

@@ -6,13 +6,14 @@
 !>
 !> Loading writes the library's only shared data (`protected` module data that the updates only
 !> read), so it must happen before any material point is updated and never while updates run:
-!> Abaqus calls these hooks at the start of the analysis, before any UMAT or VUMAT call. A file
-!> that is already loaded (same path) is not read again, so that a repeated start-of-analysis
-!> call (a restart, or a hook called once per thread) never rewrites data that updates may be
-!> reading. A file that cannot be read or fails its checks is a fatal error naming the variable,
-!> the file, the line and the failed check.
+!> Abaqus calls these hooks at the start of the analysis, once per process and before any UMAT
+!> or VUMAT call. A file that is already loaded (same path) is not read again, so that a later
+!> start-of-analysis call (a restart) never rewrites data that updates may be reading. There is
+!> no lock: two threads calling a hook for the first time at once would race (Abaqus does not do
+!> that; a host of its own must call it once, from one thread). A file that cannot be read or
+!> fails its checks is a fatal error naming the variable, the file, the line and the failed check.
 module interphase_external_data
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_FATAL, status_message, file_loader
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_FATAL, status_message, file_loader, message_path
    use interphase_layout, only: TABLE_CUSTOM_CODE
    use interphase_micro_coefficients, only: load_custom_table, custom_table_source
    use interphase_rcurve, only: load_rcurve, rcurve_source
@@ -66,17 +67,17 @@ contains
       integer :: status
       ok = .true.
       if (loaded_from == path) then
-         call interphase_host_message(SEVERITY_INFO, caller//': '//what//' '//path//' already loaded')
+         call interphase_host_message(SEVERITY_INFO, caller//': '//what//' '//message_path(path)//' already loaded')
          return
       end if
       call loader(path, status, message)
       ok = status == STATUS_OK
       if (.not. ok) then
-         call interphase_host_message(SEVERITY_FATAL, caller//': '//variable//' = '//path//': '// &
+         call interphase_host_message(SEVERITY_FATAL, caller//': '//variable//' = '//message_path(path)//': '// &
             status_message(status)//': '//trim(message))
          return
       end if
-      call interphase_host_message(SEVERITY_INFO, caller//': '//what//' loaded from '//path)
+      call interphase_host_message(SEVERITY_INFO, caller//': '//what//' loaded from '//message_path(path))
    end subroutine load_named_file
 
    !> The value of a non-empty environment variable.
