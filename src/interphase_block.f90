@@ -83,7 +83,9 @@ contains
       ! the compiler evaluates speculatively (hosts may run with traps enabled):
       ! pass 1, one loop for 2-D and one for 3-D: finiteness, |s_T|^2 and the trial crack shear
       ! stress's norm and direction (2-D: |tau| and its sign, no square root or division);
-      ! pass 2, common: damage, the simplified coefficients, open/stick/slip, energy.
+      ! between them the damage (its square root and division only where a point can grow);
+      ! pass 2, one loop for 2-D (no arithmetic on the zero second tangential components) and one
+      ! for 3-D: the simplified coefficients, open/stick/slip, energy.
       ! the return mapping divides by kf = -T^f = K_T (the scalar update forms the same 1/kf)
       inv_kf = 1.0_dp/params%k_t
       nfailed_count = 0
@@ -229,65 +231,64 @@ contains
                psi(k) = merge(psi_open, psi_closed, open)
                regime(k) = merge(regime_if_open, regime_if_closed, open)
             end do
-            cycle
+         else
+            ! ---- pass 2 (3-D)
+            do i = 1, m
+               k = c0 + i - 1
+               s_n_k = sn_w(i)
+               st1 = st1_w(i)
+               st2 = st2_w(i)
+               lam1_k = lam1_old(k)
+               lam2_k = lam2_w(i)
+               t_sq = t_sq_w(i)
+               tau_norm = tau_norm_w(i)
+
+               d_k = d_w(i)
+
+               ! the simplified model's coefficients at D (eqs 31-35)
+               kn_open = (1.0_dp - d_k)*params%k_n
+               kt_open = (1.0_dp - d_k)*params%k_t
+               kk_n = kn_open + d_k*params%k_n
+               kk_t = kt_open + d_k*params%k_t
+               cf_t = -d_k*params%k_t
+
+               ! intact or open crack: t = k s, crack faces free, slip = mean sliding = s_T
+               tn_open = kn_open*s_n_k
+               tt1_open = kt_open*st1
+               tt2_open = kt_open*st2
+               psi_open = 0.5_dp*(tn_open*s_n_k + (tt1_open*st1 + tt2_open*st2))
+               lam1_open = merge(lam1_k, st1, d_k <= 0.0_dp)
+               lam2_open = merge(lam2_k, st2, d_k <= 0.0_dp)
+               regime_if_open = merge(real(REGIME_INTACT, dp), real(REGIME_OPEN, dp), d_k <= 0.0_dp)
+
+               ! closed crack: trial stick state (eq 43), return mapping (eqs 44-48)
+               sigma = params%k_n*s_n_k
+               phi = params%mu*sigma + tau_norm
+               slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+               dgamma = phi*inv_kf
+               lam1_closed = merge(lam1_k + dgamma*dir1_w(i), lam1_k, slipping)
+               lam2_closed = merge(lam2_k + dgamma*dir2_w(i), lam2_k, slipping)
+               tn_closed = kk_n*s_n_k
+               tt1_closed = kk_t*st1 + cf_t*lam1_closed
+               tt2_closed = kk_t*st2 + cf_t*lam2_closed
+               psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + tt2_closed*st2)) &
+                  + 0.5_dp*cf_t*(lam1_closed*st1 + lam2_closed*st2) &
+                  - 0.5_dp*d_k*(-params%k_t)*(lam1_closed**2 + lam2_closed**2)
+               regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
+
+               ! select the regime's values
+               open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
+               ok(k) = ok_w(i)
+               d(k) = d_k
+               t_n(k) = merge(tn_open, tn_closed, open)
+               t_t1(k) = merge(tt1_open, tt1_closed, open)
+               t_t2(k) = merge(tt2_open, tt2_closed, open)
+               lam1(k) = merge(lam1_open, lam1_closed, open)
+               lam2(k) = merge(lam2_open, lam2_closed, open)
+               psi(k) = merge(psi_open, psi_closed, open)
+               regime(k) = merge(regime_if_open, regime_if_closed, open)
+            end do
          end if
-
-         ! ---- pass 2 (3-D)
-         do i = 1, m
-            k = c0 + i - 1
-            s_n_k = sn_w(i)
-            st1 = st1_w(i)
-            st2 = st2_w(i)
-            lam1_k = lam1_old(k)
-            lam2_k = lam2_w(i)
-            t_sq = t_sq_w(i)
-            tau_norm = tau_norm_w(i)
-
-            d_k = d_w(i)
-
-            ! the simplified model's coefficients at D (eqs 31-35)
-            kn_open = (1.0_dp - d_k)*params%k_n
-            kt_open = (1.0_dp - d_k)*params%k_t
-            kk_n = kn_open + d_k*params%k_n
-            kk_t = kt_open + d_k*params%k_t
-            cf_t = -d_k*params%k_t
-
-            ! intact or open crack: t = k s, crack faces free, slip = mean sliding = s_T
-            tn_open = kn_open*s_n_k
-            tt1_open = kt_open*st1
-            tt2_open = kt_open*st2
-            psi_open = 0.5_dp*(tn_open*s_n_k + (tt1_open*st1 + tt2_open*st2))
-            lam1_open = merge(lam1_k, st1, d_k <= 0.0_dp)
-            lam2_open = merge(lam2_k, st2, d_k <= 0.0_dp)
-            regime_if_open = merge(real(REGIME_INTACT, dp), real(REGIME_OPEN, dp), d_k <= 0.0_dp)
-
-            ! closed crack: trial stick state (eq 43), return mapping (eqs 44-48)
-            sigma = params%k_n*s_n_k
-            phi = params%mu*sigma + tau_norm
-            slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
-            dgamma = phi*inv_kf
-            lam1_closed = merge(lam1_k + dgamma*dir1_w(i), lam1_k, slipping)
-            lam2_closed = merge(lam2_k + dgamma*dir2_w(i), lam2_k, slipping)
-            tn_closed = kk_n*s_n_k
-            tt1_closed = kk_t*st1 + cf_t*lam1_closed
-            tt2_closed = kk_t*st2 + cf_t*lam2_closed
-            psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + tt2_closed*st2)) &
-               + 0.5_dp*cf_t*(lam1_closed*st1 + lam2_closed*st2) &
-               - 0.5_dp*d_k*(-params%k_t)*(lam1_closed**2 + lam2_closed**2)
-            regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
-
-            ! select the regime's values
-            open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
-            ok(k) = ok_w(i)
-            d(k) = d_k
-            t_n(k) = merge(tn_open, tn_closed, open)
-            t_t1(k) = merge(tt1_open, tt1_closed, open)
-            t_t2(k) = merge(tt2_open, tt2_closed, open)
-            lam1(k) = merge(lam1_open, lam1_closed, open)
-            lam2(k) = merge(lam2_open, lam2_closed, open)
-            psi(k) = merge(psi_open, psi_closed, open)
-            regime(k) = merge(regime_if_open, regime_if_closed, open)
-         end do
       end do
       nfailed = int(nfailed_count)
    end subroutine simplified_block_update

@@ -39,13 +39,13 @@ contains
 
    !> STATUS_OK when the data `params` needs at run time is loaded; else STATUS_TABLE_NOT_LOADED
    !> (micromechanical model on the custom table) or STATUS_RCURVE_NOT_LOADED (fracture law with
-   !> the tabulated R-curve), with a message that says how to load it.
+   !> the tabulated R-curve), with a message that says how to load it. Called by the UMAT at every
+   !> update: two integer tests when all is well (`message` is then left alone, not blanked).
    pure subroutine check_run_time_data(params, status, message)
       type(law_params_type), intent(in) :: params
       integer, intent(out) :: status
-      character(len=MESSAGE_LEN), intent(out) :: message
+      character(len=MESSAGE_LEN), intent(inout) :: message
       status = STATUS_OK
-      message = ''
       if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_CUSTOM_CODE) then
          if (.not. custom_table_loaded()) then
             status = STATUS_TABLE_NOT_LOADED

@@ -21,7 +21,6 @@ module interphase_external_data
    implicit none
    private
    public :: load_external_data, load_table_file, load_rcurve_file
-   public :: TABLE_VARIABLE, RCURVE_VARIABLE
 
    !> Environment variables naming the files.
    character(len=*), parameter :: TABLE_VARIABLE = 'INTERPHASE_TABLE'

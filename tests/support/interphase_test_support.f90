@@ -2,7 +2,8 @@
 module interphase_test_support
    use interphase_kinds, only: dp
    use interphase_layout, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, &
-      TABLE_DEFAULT_CODE
+      DAMAGE_FRACTURE, TABLE_DEFAULT_CODE, RCURVE_TABULATED, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, &
+      NPROPS_FRACTURE_EXTRA, LFM_D0, LFM_RCURVE, LFM_GC_I, LFM_GC_II
    use interphase_params, only: law_params_type, params_from_values
    use interphase_state, only: interface_state_type
    use interphase_kernel, only: interface_update
@@ -10,7 +11,7 @@ module interphase_test_support
    implicit none
    private
    public :: paper_params, paper_k_n, paper_k_t, fd_tangent, linear_path, micro_params, source_path, &
-      scratch_path
+      scratch_path, paper_props, micro_props, tabulated_rcurve_props
 
    !> RVE data of the paper's section 5 (mm, MPa).
    real(dp), parameter :: H_M = 2.0_dp, H_B = 3.0_dp, E_M = 1000.0_dp, E_B = 16000.0_dp, NU = 0.15_dp
@@ -46,6 +47,34 @@ contains
          0.00072_dp, 0.06_dp, params, status, message, k_n=paper_k_n(), k_t=paper_k_t())
       if (status /= 0) error stop 'paper_params: invalid test data'
    end function paper_params
+
+   !> PROPS (docs/abaqus.md) of the simplified model with the paper's Table 1 data, mu = 0.75.
+   pure function paper_props() result(props)
+      real(dp) :: props(NPROPS_SIMPLIFIED)
+      props = [real(MODEL_SIMPLIFIED, dp), real(DAMAGE_DISPLACEMENT, dp), 0.75_dp, 0.00044_dp, &
+         0.04_dp, 0.00072_dp, 0.06_dp, paper_k_n(), paper_k_t()]
+   end function paper_props
+
+   !> PROPS of the micromechanical model with the paper's Table 1 damage data, mu = 0.75, on
+   !> the table `table` (TABLE_*_CODE).
+   pure function micro_props(table) result(props)
+      integer, intent(in) :: table
+      real(dp) :: props(NPROPS_MICROMECHANICAL)
+      props = [real(MODEL_MICROMECHANICAL, dp), real(DAMAGE_DISPLACEMENT, dp), 0.75_dp, 0.00044_dp, &
+         0.04_dp, 0.00072_dp, 0.06_dp, real(table, dp)]
+   end function micro_props
+
+   !> PROPS of the simplified model with the fracture-mechanics law on the tabulated R-curve
+   !> (D0 = 0.1; the R-curve itself is loaded at start-up).
+   pure function tabulated_rcurve_props() result(props)
+      real(dp) :: props(NPROPS_SIMPLIFIED + NPROPS_FRACTURE_EXTRA)
+      props(1:NPROPS_SIMPLIFIED) = paper_props()
+      props(2) = real(DAMAGE_FRACTURE, dp)
+      props(NPROPS_SIMPLIFIED + LFM_D0) = 0.1_dp
+      props(NPROPS_SIMPLIFIED + LFM_RCURVE) = real(RCURVE_TABULATED, dp)
+      props(NPROPS_SIMPLIFIED + LFM_GC_I) = 0.0_dp
+      props(NPROPS_SIMPLIFIED + LFM_GC_II) = 0.0_dp
+   end function tabulated_rcurve_props
 
    !> The micromechanical model with the paper's Table 1 damage data and mu = 0.75 on the given
    !> table (default: the built-in one).

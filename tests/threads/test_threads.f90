@@ -147,7 +147,9 @@ contains
          544000.0_dp/1127.0_dp, 32000.0_dp/161.0_dp]
    end function paper_props
 
-   !> PROPS(1:nprops) of a material variant (the paper's Table 1 damage data throughout).
+   !> PROPS(1:nprops) of a material variant (the paper's Table 1 damage data throughout). Not the
+   !> test-support builders: that library carries the tests' message recorder, which would take
+   !> the place of host_stderr's interphase_host_message in this program.
    subroutine variant_props(variant, props, nprops)
       integer, intent(in) :: variant
       real(dp), intent(out) :: props(NPROPS_SIMPLIFIED + NPROPS_FRACTURE_EXTRA)
