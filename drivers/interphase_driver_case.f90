@@ -20,7 +20,7 @@ module interphase_driver_case
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
       DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, NPROPS_FRACTURE_EXTRA, LFM_D0, LFM_RCURVE, LFM_GC_I, &
       LFM_GC_II, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
-      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE
+      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
    use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
@@ -50,7 +50,10 @@ module interphase_driver_case
       real(dp) :: s0_t = UNSET_REAL, sf_t = UNSET_REAL   !! mm
       real(dp) :: k_n = UNSET_REAL, k_t = UNSET_REAL     !! MPa/mm (simplified)
       real(dp) :: d0 = UNSET_REAL                    !! initial crack a0/b (fracture law)
-      real(dp) :: g_ci = UNSET_REAL, g_cii = UNSET_REAL  !! N/mm (constant R-curve)
+      real(dp) :: g_ci = UNSET_REAL, g_cii = UNSET_REAL  !! N/mm per unit crack area (constant R-curve)
+      !> option: the crack faces' slip while the crack grows, 'fixed-pi' (the default) or
+      !> 'fixed-lambda' (the paper's form); '' leaves the option constant out of PROPS
+      character(len=ENTRY_LEN) :: growth_slip = ''
    end type material_entries_type
 
    !> Everything the driver needs from one case file.
@@ -113,10 +116,10 @@ contains
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       type(material_entries_type) :: e
-      character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file
+      character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
       real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii
       namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii
+         rcurve_file, g_ci, g_cii, growth_slip
       character(len=:), allocatable :: where
       integer :: ios
       character(len=512) :: iomsg
@@ -125,6 +128,7 @@ contains
       where = run%path//': &material: '
       call unpack_entries(e, model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, sf_t, &
          k_n, k_t, d0, g_ci, g_cii)
+      growth_slip = e%growth_slip
       read (unit, nml=material, iostat=ios, iomsg=iomsg)
       if (ios == iostat_end) then
          message = where//'group not found (expected "&material ... /")'
@@ -135,6 +139,7 @@ contains
       end if
       e = material_entries_type(model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, &
          sf_t, k_n, k_t, d0, g_ci, g_cii)
+      e%growth_slip = growth_slip
       call material_props(e, where, directory_of(run%path), run%props, run%table_path, run%rcurve_path, &
          ok, message)
    end subroutine read_material
@@ -305,6 +310,18 @@ contains
       props(PROP_SF_N) = e%sf_n
       props(PROP_S0_T) = e%s0_t
       props(PROP_SF_T) = e%sf_t
+      ! the option constants (interphase_layout): appended only when given
+      select case (to_lower(trim(adjustl(e%growth_slip))))
+      case ('')
+      case ('fixed-pi')
+         props = [props, real(GROWTH_FIXED_PI, dp)]
+      case ('fixed-lambda')
+         props = [props, real(GROWTH_FIXED_LAMBDA, dp)]
+      case default
+         message = where//"growth_slip must be 'fixed-pi' (the default) or 'fixed-lambda' (the paper's form), got '"// &
+            trim(adjustl(e%growth_slip))//"'"
+         return
+      end select
       ok = .true.
 
    contains

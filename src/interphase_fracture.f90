@@ -1,36 +1,46 @@
 !> The fracture-mechanics damage law (paper eqs 20-24, 40-42, 49-50): energy release rates of
-!> the RVE at fixed separation (and fixed slip when the crack is closed), the R-curves, the
-!> growth function g = G_I/G_cI + G_II/G_cII - 1 (eq 24) and the crack-growth solve.
+!> the RVE at fixed separation (and, when the crack is closed, fixed crack-face slip), the
+!> R-curves, the growth function g = G_I/(2 G_cI) + G_II/(2 G_cII) - 1 (eq 24 with the
+!> toughness per unit crack area) and the crack-growth solve.
 !>
 !> Conventions (docs/theory.md): energies per unit interface area; G per unit advance of the
 !> half-length a and unit RVE width, as in eq 20: G = -d(U/w)/da = -2 d(psi)/dD with
-!> U/w = 2b psi (V/w = 2b h). G per unit crack area (both tips advance, dA = 2 w da) is G/2.
+!> U/w = 2b psi (V/w = 2b h). A two-tip crack makes the area 2 w da, so the release per unit
+!> crack area is G/2: the toughness G_c (PROPS, R-curve files) is energy per unit crack area,
+!> as experiments report it, and the crack grows where G/2 = G_c. The damage dissipation per
+!> unit interface area is then G_c dD.
 !> Open crack (eq 40): G_I = -k_n' s_N^2 (only while s_N > 0), G_II = -k_t' |s_T|^2.
 !> Closed crack: the RVE energy also holds the crack faces' share,
 !>   psi = 1/2 kk_n s_N^2 + 1/2 kk_t |s_T|^2 + C^f lambda.s_T - 1/2 q |lambda|^2,  q = D T^f ufbar,
-!> so G = -2 dpsi/dD = -(kk_n' s_N^2 + kk_t' |s_T|^2) - 2 C^f' lambda.s_T + q' |lambda|^2, all
-!> mode II (s_N <= 0). Eq 49 keeps only the first part of this (from 1/2 Sigma.E); the difference
-!> is the work of the crack-face tractions, without which the energy balance fails
-!> (docs/theory.md).
+!> all mode II (s_N <= 0). With m = D ufbar and the integrated slip pi = m lambda held fixed
+!> (GROWTH_FIXED_PI, the default),
+!>   G = -(kk_n' s_N^2 + kk_t' |s_T|^2) - 2 A lambda.s_T + B |lambda|^2,
+!>   A = C^f' - C^f m'/m = m (C^f/m)',  B = T^f' m - T^f m' = m^2 (T^f/m)';
+!> with lambda held fixed (GROWTH_FIXED_LAMBDA, the paper's) A = C^f' and B = q'. Eq 49 keeps
+!> only the first part (from 1/2 Sigma.E); the rest is the work of the crack-face tractions,
+!> without which the energy balance fails (docs/theory.md).
 module interphase_fracture
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED
+   use interphase_layout, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI
    use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
    use interphase_rcurve, only: tabulated_rcurve
-   use interphase_response, only: response_type, respond
+   use interphase_response, only: response_type, respond, growth_trial_slip
    implicit none
    private
    public :: crack_load_type, growth_function, grow_crack
 
    !> What the crack sees in the increment: the separation at its end and the slip at its
-   !> start (the friction step at each trial D starts from it).
+   !> start (the friction step at each trial D starts from it, or from the slip that conserves
+   !> pi = m lambda: `growth_trial_slip`).
    type :: crack_load_type
       real(dp) :: s_n = 0.0_dp            !! normal separation (mm)
       real(dp) :: st(2) = 0.0_dp          !! tangential separation (mm)
       real(dp) :: slip_old(2) = 0.0_dp    !! frictional slip lambda_n at the start (mm)
+      real(dp) :: d_from = 0.0_dp         !! damage at the start, D_n (-)
+      real(dp) :: m_from = 0.0_dp         !! m(D_n) = D_n ufbar(D_n) (-); set by grow_crack when the crack grows
    end type crack_load_type
 
    !> Geometric scan towards D = 1 before the bracketed solve: points per run.
@@ -60,10 +70,10 @@ contains
 
       type(coefficient_set_type) :: c, dc, d2c
       type(response_type) :: r
-      real(dp) :: slip(2)
+      real(dp) :: slip(2), slip_trial(2), dslip_dd(2)
       logical :: closed
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
-      real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, p1, p2, q1, q2, lam_s, lam2, kappa, dkappa
+      real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, a1, a2, b1, b2, lam_s, lam2, kappa, dkappa
       integer :: nt
 
       nt = ntens - 1
@@ -78,8 +88,10 @@ contains
       end if
       if (status /= STATUS_OK) return
       t2 = load%st(1)**2 + load%st(2)**2
-      ! friction with D frozen
-      call respond(params, c, dc, d, load%slip_old, load%s_n, load%st, ntens, r, status)
+      ! friction with D frozen, from the slip the crack faces carry at D
+      call growth_trial_slip(params%growth_slip, load%d_from, load%m_from, d, c, dc, load%slip_old, &
+         slip_trial, dslip_dd)
+      call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, r, status)
       if (status /= STATUS_OK) return
       closed = r%closed
       slip = r%slip
@@ -116,38 +128,38 @@ contains
          gii_s(2:ntens) = -2.0_dp*dc%k_t*load%st(1:nt)
          gii_d = -d2c%k_t*t2
       else
-         ! q = D T^f ufbar: q1 = q', q2 = q''
-         p1 = dc%tf*c%ufbar + c%tf*dc%ufbar
-         p2 = d2c%tf*c%ufbar + 2.0_dp*dc%tf*dc%ufbar + c%tf*d2c%ufbar
-         q1 = c%tf*c%ufbar + d*p1
-         q2 = 2.0_dp*p1 + d*p2
+         call closed_release_factors(params%growth_slip, c, dc, d2c, d, a1, b1, a2, b2)
          lam_s = slip(1)*load%st(1) + slip(2)*load%st(2)
          lam2 = slip(1)**2 + slip(2)**2
          gi = 0.0_dp
-         gii = -((dc%k_n + dc%kc_n)*load%s_n**2 + (dc%k_t + dc%kc_t)*t2) - 2.0_dp*dc%cf_t*lam_s + q1*lam2
+         gii = -((dc%k_n + dc%kc_n)*load%s_n**2 + (dc%k_t + dc%kc_t)*t2) - 2.0_dp*a1*lam_s + b1*lam2
          gii_s(1) = -2.0_dp*(dc%k_n + dc%kc_n)*load%s_n
-         gii_s(2:ntens) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1:nt) - 2.0_dp*dc%cf_t*slip(1:nt)
-         gii_lam(1:nt) = -2.0_dp*dc%cf_t*load%st(1:nt) + 2.0_dp*q1*slip(1:nt)
-         gii_d = -((d2c%k_n + d2c%kc_n)*load%s_n**2 + (d2c%k_t + d2c%kc_t)*t2) - 2.0_dp*d2c%cf_t*lam_s &
-            + q2*lam2
+         gii_s(2:ntens) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1:nt) - 2.0_dp*a1*slip(1:nt)
+         gii_lam(1:nt) = -2.0_dp*a1*load%st(1:nt) + 2.0_dp*b1*slip(1:nt)
+         gii_d = -((d2c%k_n + d2c%kc_n)*load%s_n**2 + (d2c%k_t + d2c%kc_t)*t2) - 2.0_dp*a2*lam_s &
+            + b2*lam2
       end if
 
       ! R-curve
       select case (params%rcurve)
+      ! gc is the toughness in the eq-20 convention of G: twice the toughness per unit crack
+      ! area that PROPS and R-curve files give
       case (RCURVE_CONSTANT)
-         gc = [params%gc_i, params%gc_ii]
+         gc = 2.0_dp*[params%gc_i, params%gc_ii]
          dgc = 0.0_dp
       case (RCURVE_TABULATED)
          call tabulated_rcurve(d, gc, dgc, status)
          if (status /= STATUS_OK) return
+         gc = 2.0_dp*gc
+         dgc = 2.0_dp*dgc
       case default     ! RCURVE_EQUIVALENT, closed crack (mode II only)
          ! In pure mode II (s_N = 0) the closed crack slips without friction, tau = 0:
          ! lambda = -(T^c_T/T^f) s_T, and G_II = kappa s_T^2 with
-         ! kappa = -kk_t' + 2 C^f' (T^c_T/T^f) + q' (T^c_T/T^f)^2. The equivalent R-curve of the
+         ! kappa = -kk_t' + 2 A (T^c_T/T^f) + B (T^c_T/T^f)^2. The equivalent R-curve of the
          ! closed crack is therefore G_cII = kappa(D) sigma_T(D)^2 (for the simplified model
-         ! kappa = K_T = -k_t', the open crack's value).
+         ! kappa = K_T = -k_t', the open crack's value, with either growth-slip rule).
          call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
-         call closed_mode_two_stiffness(c, dc, d2c, d, kappa, dkappa)
+         call closed_mode_two_stiffness(params%growth_slip, c, dc, d2c, d, kappa, dkappa)
          gc = [1.0_dp, kappa*sig_t**2]
          dgc = [0.0_dp, dkappa*sig_t**2 + 2.0_dp*kappa*sig_t*dsig_t]
       end select
@@ -166,20 +178,45 @@ contains
       end if
    end subroutine growth_function
 
+   !> The factors of the closed crack's release rate, G_II = -kk' s.s - 2 A lambda.s_T + B |lambda|^2,
+   !> and their derivatives d/dD (a2 = A', b2 = B'; they need the second derivatives d2c, which
+   !> may be zero when g_D is not wanted). With m = D ufbar:
+   !> GROWTH_FIXED_PI: A = C^f' - C^f m'/m, B = T^f' m - T^f m'; GROWTH_FIXED_LAMBDA: A = C^f',
+   !> B = q' with q = D T^f ufbar = T^f m.
+   pure subroutine closed_release_factors(growth_slip, c, dc, d2c, d, a1, b1, a2, b2)
+      integer, intent(in) :: growth_slip
+      type(coefficient_set_type), intent(in) :: c, dc, d2c
+      real(dp), intent(in) :: d
+      real(dp), intent(out) :: a1, b1, a2, b2
+      real(dp) :: m, m1, m2
+      m = d*c%ufbar
+      m1 = c%ufbar + d*dc%ufbar
+      m2 = 2.0_dp*dc%ufbar + d*d2c%ufbar
+      if (growth_slip == GROWTH_FIXED_PI) then
+         a1 = dc%cf_t - c%cf_t*m1/m
+         b1 = dc%tf*m - c%tf*m1
+         a2 = d2c%cf_t - (dc%cf_t*m1 + c%cf_t*m2)/m + c%cf_t*(m1/m)**2
+         b2 = d2c%tf*m - c%tf*m2
+      else
+         a1 = dc%cf_t
+         b1 = dc%tf*m + c%tf*m1
+         a2 = d2c%cf_t
+         b2 = d2c%tf*m + 2.0_dp*dc%tf*m1 + c%tf*m2
+      end if
+   end subroutine closed_release_factors
+
    !> kappa(D) of the closed crack in pure mode II (see growth_function) and d kappa/dD.
-   pure subroutine closed_mode_two_stiffness(c, dc, d2c, d, kappa, dkappa)
+   pure subroutine closed_mode_two_stiffness(growth_slip, c, dc, d2c, d, kappa, dkappa)
+      integer, intent(in) :: growth_slip
       type(coefficient_set_type), intent(in) :: c, dc, d2c
       real(dp), intent(in) :: d
       real(dp), intent(out) :: kappa, dkappa
-      real(dp) :: r, dr, p1, p2, q1, q2
+      real(dp) :: r, dr, a1, b1, a2, b2
       r = c%tc_t/c%tf
       dr = dc%tc_t/c%tf - c%tc_t*dc%tf/c%tf**2
-      p1 = dc%tf*c%ufbar + c%tf*dc%ufbar
-      p2 = d2c%tf*c%ufbar + 2.0_dp*dc%tf*dc%ufbar + c%tf*d2c%ufbar
-      q1 = c%tf*c%ufbar + d*p1
-      q2 = 2.0_dp*p1 + d*p2
-      kappa = -(dc%k_t + dc%kc_t) + 2.0_dp*dc%cf_t*r + q1*r*r
-      dkappa = -(d2c%k_t + d2c%kc_t) + 2.0_dp*(d2c%cf_t*r + dc%cf_t*dr) + q2*r*r + 2.0_dp*q1*r*dr
+      call closed_release_factors(growth_slip, c, dc, d2c, d, a1, b1, a2, b2)
+      kappa = -(dc%k_t + dc%kc_t) + 2.0_dp*a1*r + b1*r*r
+      dkappa = -(d2c%k_t + d2c%kc_t) + 2.0_dp*(a2*r + a1*dr) + b2*r*r + 2.0_dp*b1*r*dr
    end subroutine closed_mode_two_stiffness
 
    !> The separation at which the displacement-driven law reaches D in a pure mode,
@@ -202,17 +239,26 @@ contains
    pure subroutine grow_crack(params, d_from, load, ntens, d_new, status)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d_from
-      type(crack_load_type), intent(in) :: load
+      type(crack_load_type), intent(inout) :: load    !! on return with m_from set when the crack grows
       integer, intent(in) :: ntens
       real(dp), intent(out) :: d_new
       integer, intent(out) :: status
 
       real(dp) :: g_lo, g_hi, d_lo, d_hi, d_mid, g_mid, unused_s(3), unused_lam(2), unused_d
+      type(coefficient_set_type) :: c_from, dc_from
       integer :: j, iter, side
 
       d_new = d_from
+      load%d_from = d_from
+      load%m_from = 0.0_dp
       call growth_function(params, d_from, load, ntens, g_lo, status, .false., unused_s, unused_lam, unused_d)
       if (status /= STATUS_OK .or. g_lo < 0.0_dp .or. d_from >= 1.0_dp) return
+      ! the crack grows: m(D_n) for the slip the faces carry at a larger D (growth_trial_slip)
+      if (params%growth_slip == GROWTH_FIXED_PI) then
+         call coefficients_at(params, d_from, c_from, dc_from, status)
+         if (status /= STATUS_OK) return
+         load%m_from = d_from*c_from%ufbar
+      end if
       d_lo = d_from
       d_hi = 1.0_dp
       g_hi = 0.0_dp

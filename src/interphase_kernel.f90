@@ -29,13 +29,13 @@ module interphase_kernel
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: DAMAGE_DISPLACEMENT
+   use interphase_layout, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
    use interphase_damage, only: displacement_damage
    use interphase_fracture, only: crack_load_type, growth_function, grow_crack
-   use interphase_response, only: response_type, respond
+   use interphase_response, only: response_type, respond, growth_trial_slip
    use interphase_state, only: interface_state_type
    implicit none
    private
@@ -55,9 +55,9 @@ contains
       real(dp), intent(out) :: psi                       !! stored energy per unit area (N/mm)
       integer, intent(out) :: status                     !! STATUS_OK or a failure code
 
-      type(coefficient_set_type) :: c, dc
+      type(coefficient_set_type) :: c, dc, c_from, dc_from
       type(response_type) :: r
-      real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3)
+      real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       integer :: ntens, nt, j
 
       ntens = size(s)
@@ -89,7 +89,21 @@ contains
          end if
          call coefficients_at(params, d, c, dc, status)
          if (status /= STATUS_OK) return
-         call respond(params, c, dc, d, old%slip, s_n, st, ntens, r, status)
+         slip_trial = old%slip
+         dslip_dd = 0.0_dp
+         if (params%growth_slip == GROWTH_FIXED_PI .and. d > old%d .and. &
+            (abs(old%slip(1)) > 0.0_dp .or. abs(old%slip(2)) > 0.0_dp)) then
+            ! the crack grew under slip: the friction step starts from the slip that conserves
+            ! pi = D ufbar lambda (a zero slip needs no scaling: it stays as it is)
+            m_from = 0.0_dp
+            if (old%d > 0.0_dp) then
+               call coefficients_at(params, old%d, c_from, dc_from, status)
+               if (status /= STATUS_OK) return
+               m_from = old%d*c_from%ufbar
+            end if
+            call growth_trial_slip(params%growth_slip, old%d, m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
+         end if
+         call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
          if (status /= STATUS_OK) return
       else
          call fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, status)
@@ -119,7 +133,7 @@ contains
 
       type(coefficient_set_type) :: c, dc
       type(crack_load_type) :: load
-      real(dp) :: d_n, g, g_s(3), g_lam(2), g_d, denominator, numerator(3)
+      real(dp) :: d_n, g, g_s(3), g_lam(2), g_d, denominator, numerator(3), slip_trial(2), dslip_dd(2)
       integer :: j, nt
 
       nt = ntens - 1
@@ -127,11 +141,13 @@ contains
       load%s_n = s_n
       load%st = st
       load%slip_old = old%slip
+      load%d_from = d_n
       call grow_crack(params, d_n, load, ntens, d, status)
       if (status /= STATUS_OK) return
       call coefficients_at(params, d, c, dc, status)
       if (status /= STATUS_OK) return
-      call respond(params, c, dc, d, old%slip, s_n, st, ntens, r, status)
+      call growth_trial_slip(params%growth_slip, d_n, load%m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
+      call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
       if (status /= STATUS_OK) return
 
       ! dD/ds from g(D, s, lambda(D, s)) = 0 while the crack grows

@@ -51,14 +51,28 @@ module interphase_layout
    integer, parameter, public :: LFM_D0 = 1
    !> Fracture-mechanics law, offset of the R-curve selector: RCURVE_*.
    integer, parameter, public :: LFM_RCURVE = 2
-   !> Fracture-mechanics law, offset of the constant mode-I toughness G_cI (N/mm, per unit
-   !> advance of the half-length a and unit width, eq 20); 0 unless RCURVE_CONSTANT.
+   !> Fracture-mechanics law, offset of the constant mode-I toughness G_cI (N/mm, energy per
+   !> unit crack area, as tests measure it); 0 unless RCURVE_CONSTANT.
    integer, parameter, public :: LFM_GC_I = 3
    !> Fracture-mechanics law, offset of the constant mode-II toughness G_cII (N/mm); 0 unless
    !> RCURVE_CONSTANT.
    integer, parameter, public :: LFM_GC_II = 4
    !> Number of PROPS the fracture-mechanics law adds to the model's.
    integer, parameter, public :: NPROPS_FRACTURE_EXTRA = 4
+   !> Optional trailing option constants: PROPS(nb + OPT_*), nb = the count the model and the
+   !> damage law take (9 or 8, plus 4 for the fracture law). A deck may stop before any of them;
+   !> each one left out takes its default. NPROPS may exceed nb by at most NPROPS_OPTIONS.
+   !> Option offset: the slip of the crack faces while the crack grows (GROWTH_*).
+   integer, parameter, public :: OPT_GROWTH_SLIP = 1
+   !> Number of option constants.
+   integer, parameter, public :: NPROPS_OPTIONS = 1
+   !> PROPS(nb + OPT_GROWTH_SLIP) value, the default: the crack faces' integrated slip
+   !> pi = D ufbar lambda is conserved while the crack grows (the faces made by the growth start
+   !> with zero slip), so that the damage driving force is >= 0 (docs/theory.md).
+   integer, parameter, public :: GROWTH_FIXED_PI = 0
+   !> PROPS(nb + OPT_GROWTH_SLIP) value: the paper's form, the mean slip lambda is held fixed
+   !> while the crack grows (the driving force can be negative in a closed crack).
+   integer, parameter, public :: GROWTH_FIXED_LAMBDA = 1
    !> R-curve: constant G_cI, G_cII.
    integer, parameter, public :: RCURVE_CONSTANT = 1
    !> R-curve: the one equivalent to the displacement-driven law in pure mode I and mode II,

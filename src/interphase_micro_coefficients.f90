@@ -9,18 +9,22 @@
 module interphase_micro_coefficients
    use interphase_kinds, only: dp
    use interphase_layout, only: TABLE_CUSTOM_CODE
-   use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, MESSAGE_LEN, status_message, message_path
+   use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
+      status_message, message_path
    use interphase_coefficients, only: coefficient_set_type
    use interphase_spline, only: spline_type, spline_build, spline_export, &
       cubic_locate, cubic_eval
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
       interpolation_data, crack_variable, N_COEFFICIENTS, TABLE_SPLINE_METHOD, IC_K_N, IC_K_T, &
-      IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_CF_T, IC_TF, IC_UFBAR
+      IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_CF_T, IC_DTF, IC_UFBAR
    use interphase_default_table, only: DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_SOURCE, &
       DEFAULT_TABLE_VARIABLE
    implicit none
    private
    public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded
+
+   !> Smallest positive damage at which the tables' coefficients are evaluated (-).
+   real(dp), parameter, public :: D_MIN_CRACK = 1.0e-30_dp
 
    !> The custom table: written once by `load_custom_table` before any update, then read only.
    integer, protected :: custom_variable = 0
@@ -51,7 +55,12 @@ contains
       end if
    end subroutine micro_coefficients
 
-   !> Coefficients at D from interpolation data (docs/theory.md).
+   !> Coefficients at D from interpolation data (docs/theory.md). The data hold D T^f
+   !> (IC_DTF), smooth down to D = 0; T^f = (D T^f)/D. At D = 0 (no crack) T^f has no finite
+   !> value: the set holds -huge(1.0_dp) there, which no regime uses (D = 0 is intact), and
+   !> zero derivatives. Below D = D_MIN_CRACK (> 0) T^f ~ 1/D and its derivatives ~ 1/D^2,
+   !> 1/D^3 would come close to overflow: STATUS_BAD_COEFFICIENTS (no update reaches such a D:
+   !> the displacement law's first damage is above 1e-16, and D0 is the fracture law's start).
    pure subroutine table_coefficients(variable, knots, coef_table, d, coef, dcoef_dd, status, d2coef_dd2)
       integer, intent(in) :: variable                        !! VARIABLE_* of the knots
       real(dp), intent(in) :: knots(:)                       !! knots, ascending
@@ -63,8 +72,13 @@ contains
       type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives d2/dD2
 
       real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS), d2v(N_COEFFICIENTS)
+      real(dp) :: tf, dtf, d2tf
       integer :: interval
 
+      if (d > 0.0_dp .and. d < D_MIN_CRACK) then
+         status = STATUS_BAD_COEFFICIENTS
+         return
+      end if
       call crack_variable(variable, d, x, dx_dd, d2x_dd2)
       call cubic_locate(knots, x, interval, status)
       if (status /= STATUS_OK) return
@@ -72,22 +86,34 @@ contains
          call cubic_eval(knots, coef_table, interval, x, v, dv, d2v)
          ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
          d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
-         d2coef_dd2 = as_set(d2v)
       else
          call cubic_eval(knots, coef_table, interval, x, v, dv)
+         d2v = 0.0_dp
       end if
       dv = dv*dx_dd
-      coef = as_set(v)
-      dcoef_dd = as_set(dv)
+      ! T^f = v/D, T^f' = (v' - T^f)/D, T^f'' = (v'' - 2 T^f')/D with v = D T^f
+      if (d > 0.0_dp) then
+         tf = v(IC_DTF)/d
+         dtf = (dv(IC_DTF) - tf)/d
+         d2tf = (d2v(IC_DTF) - 2.0_dp*dtf)/d
+      else
+         tf = -huge(1.0_dp)
+         dtf = 0.0_dp
+         d2tf = 0.0_dp
+      end if
+      coef = as_set(v, tf)
+      dcoef_dd = as_set(dv, dtf)
+      if (present(d2coef_dd2)) d2coef_dd2 = as_set(d2v, d2tf)
    end subroutine table_coefficients
 
-   !> The interpolated columns (IC_* order) as a coefficient set.
-   pure function as_set(v) result(c)
+   !> The interpolated columns (IC_* order) as a coefficient set, with T^f given apart.
+   pure function as_set(v, tf) result(c)
       real(dp), intent(in) :: v(N_COEFFICIENTS)
+      real(dp), intent(in) :: tf
       type(coefficient_set_type) :: c
       c = coefficient_set_type(k_n=v(IC_K_N), k_t=v(IC_K_T), kc_n=v(IC_KC_N), kc_t=v(IC_KC_T), &
          dbar_n=v(IC_DBAR_N), dbar_t=v(IC_DBAR_T), tc_t=v(IC_TC_T), sc_n=v(IC_SC_N), &
-         cf_t=v(IC_CF_T), tf=v(IC_TF), ufbar=v(IC_UFBAR))
+         cf_t=v(IC_CF_T), tf=tf, ufbar=v(IC_UFBAR))
    end function as_set
 
    !> Read, check and interpolate a custom table; call once at start-up, before any update

@@ -9,14 +9,15 @@ module interphase_params
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
       MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, PROP_TABLE, NPROPS_MICROMECHANICAL, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, LFM_D0, LFM_RCURVE, LFM_GC_I, LFM_GC_II, &
-      NPROPS_FRACTURE_EXTRA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED
+      NPROPS_FRACTURE_EXTRA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, OPT_GROWTH_SLIP, &
+      NPROPS_OPTIONS, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
    use interphase_status, only: STATUS_OK, STATUS_BAD_NPROPS, STATUS_BAD_MODEL, &
       STATUS_BAD_DAMAGE_LAW, STATUS_BAD_MU, STATUS_BAD_S0_N, STATUS_BAD_SF_N, STATUS_BAD_S0_T, &
       STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_TABLE_SELECTOR, MESSAGE_LEN, &
-      STATUS_BAD_D0, STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II
+      STATUS_BAD_D0, STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION
    implicit none
    private
-   public :: law_params_type, from_props, params_from_values, set_fracture_params
+   public :: law_params_type, from_props, params_from_values, set_fracture_params, set_options
 
    !> Parameters of one interface material (immutable once decoded).
    type :: law_params_type
@@ -32,8 +33,9 @@ module interphase_params
       integer :: table = TABLE_DEFAULT_CODE          !! micromechanical model: TABLE_*_CODE
       real(dp) :: d0 = 0.0_dp                        !! fracture law: initial crack D0 = a0/b (-)
       integer :: rcurve = 0                          !! fracture law: RCURVE_*
-      real(dp) :: gc_i = 0.0_dp                      !! fracture law, constant R-curve: G_cI (N/mm, eq 20)
-      real(dp) :: gc_ii = 0.0_dp                     !! fracture law, constant R-curve: G_cII (N/mm, eq 20)
+      real(dp) :: gc_i = 0.0_dp                      !! fracture law, constant R-curve: G_cI (N/mm per unit crack area)
+      real(dp) :: gc_ii = 0.0_dp                     !! fracture law, constant R-curve: G_cII (N/mm per unit crack area)
+      integer :: growth_slip = GROWTH_FIXED_PI       !! option: the crack faces' slip while the crack grows, GROWTH_*
       real(dp) :: eta_n = 0.0_dp                     !! eta_N = s0_N/sf_N (-), eq 13
       real(dp) :: eta_t = 0.0_dp                     !! eta_T = s0_T/sf_T (-), eq 13
       real(dp) :: inv_s0_n = 0.0_dp                  !! 1/s0_N (1/mm), for the damage law
@@ -78,13 +80,14 @@ contains
       if (model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
       nprops_needed = nm
       if (damage_law == DAMAGE_FRACTURE) nprops_needed = nm + NPROPS_FRACTURE_EXTRA
-      if (size(props) /= nprops_needed) then
+      if (size(props) < nprops_needed .or. size(props) > nprops_needed + NPROPS_OPTIONS) then
          status = STATUS_BAD_NPROPS
-         write (message, '(a,i0,a,a,a,a,a,i0)') 'NPROPS = ', size(props), ' but the ', &
+         write (message, '(a,i0,a,a,a,a,a,i0,a,i0,a)') 'NPROPS = ', size(props), ' but the ', &
             trim(merge('simplified     ', 'micromechanical', model == MODEL_SIMPLIFIED)), &
             ' model with the ', &
             trim(merge('displacement-driven', 'fracture-mechanics ', damage_law == DAMAGE_DISPLACEMENT)), &
-            ' damage law takes exactly ', nprops_needed
+            ' damage law takes ', nprops_needed, ' constants, followed by at most ', NPROPS_OPTIONS, &
+            ' option constant(s)'
          return
       end if
 
@@ -104,10 +107,44 @@ contains
             props(PROP_SF_N), props(PROP_S0_T), props(PROP_SF_T), params, status, message, &
             table=table)
       end if
-      if (status /= STATUS_OK .or. damage_law /= DAMAGE_FRACTURE) return
-      call set_fracture_params(params, props(nm + LFM_D0), selector_code(props(nm + LFM_RCURVE)), &
-         props(nm + LFM_RCURVE), props(nm + LFM_GC_I), props(nm + LFM_GC_II), nm, status, message)
+      if (status /= STATUS_OK) return
+      if (damage_law == DAMAGE_FRACTURE) then
+         call set_fracture_params(params, props(nm + LFM_D0), selector_code(props(nm + LFM_RCURVE)), &
+            props(nm + LFM_RCURVE), props(nm + LFM_GC_I), props(nm + LFM_GC_II), nm, status, message)
+         if (status /= STATUS_OK) return
+      end if
+      call set_options(params, props(nprops_needed + 1:), nprops_needed, status, message)
    end subroutine from_props
+
+   !> Decode and validate the optional trailing option constants (PROPS(base + OPT_*)); the
+   !> options not given keep their defaults. `base` is the PROPS index before them.
+   pure subroutine set_options(params, options, base, status, message)
+      type(law_params_type), intent(inout) :: params
+      real(dp), intent(in) :: options(:)     !! the option constants given (0 to NPROPS_OPTIONS)
+      integer, intent(in) :: base            !! PROPS index before the options (for messages)
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+
+      integer :: growth_slip
+
+      status = STATUS_OK
+      if (size(options) > NPROPS_OPTIONS) then
+         status = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a,i0)') 'too many option constants: ', size(options), ' given, at most ', &
+            NPROPS_OPTIONS
+         return
+      end if
+      if (size(options) >= OPT_GROWTH_SLIP) then
+         growth_slip = selector_code(options(OPT_GROWTH_SLIP))
+         if (growth_slip /= GROWTH_FIXED_PI .and. growth_slip /= GROWTH_FIXED_LAMBDA) then
+            call reject(STATUS_BAD_OPTION, base + OPT_GROWTH_SLIP, 'growth slip', options(OPT_GROWTH_SLIP), &
+               'use 0 (conserve the integrated slip pi = D ufbar lambda, the default) or 1 (hold lambda, '// &
+               'the paper''s form)', status, message)
+            return
+         end if
+         params%growth_slip = growth_slip
+      end if
+   end subroutine set_options
 
    !> Build and validate parameters from named values (the same checks as `from_props`; the
    !> messages cite the PROPS index each value occupies). The simplified model needs k_n and

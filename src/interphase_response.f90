@@ -4,12 +4,12 @@
 module interphase_response
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI
    use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
    use interphase_coefficients, only: coefficient_set_type
    implicit none
    private
-   public :: response_type, respond
+   public :: response_type, respond, growth_trial_slip
 
    !> The response at fixed D. No default initialisation (this is on the hot path): `respond`
    !> sets the components 1:ntens of every field it returns.
@@ -27,17 +27,48 @@ module interphase_response
 
 contains
 
+   !> The slip from which the friction step at damage D starts, for a crack that has grown from
+   !> D_from, where the faces' slip was lambda_n, and its derivative d/dD (D_from fixed).
+   !> GROWTH_FIXED_PI (the default): the integrated slip pi = m lambda, m = D ufbar, is conserved
+   !> (the faces made by the growth start with zero slip; docs/theory.md, 'Crack growth under
+   !> slip'): lambda_trial = lambda_n m(D_from)/m(D). GROWTH_FIXED_LAMBDA (the paper's form):
+   !> lambda_trial = lambda_n. Without growth (D <= D_from) lambda_trial = lambda_n in both.
+   pure subroutine growth_trial_slip(growth_slip, d_from, m_from, d, c, dc, slip_old, slip_trial, dslip_dd)
+      integer, intent(in) :: growth_slip                  !! GROWTH_* of interphase_layout
+      real(dp), intent(in) :: d_from                      !! damage the slip belongs to (-)
+      real(dp), intent(in) :: m_from                      !! m(D_from) = D_from ufbar(D_from) (-)
+      real(dp), intent(in) :: d                           !! damage D (-)
+      type(coefficient_set_type), intent(in) :: c, dc     !! coefficients at D and d/dD
+      real(dp), intent(in) :: slip_old(2)                 !! lambda_n (mm)
+      real(dp), intent(out) :: slip_trial(2)              !! lambda_trial (mm)
+      real(dp), intent(out) :: dslip_dd(2)                !! d lambda_trial/dD (mm)
+      real(dp) :: inv_m
+      if (growth_slip == GROWTH_FIXED_PI .and. d > d_from) then
+         ! m(D) > 0 where D > D_from >= 0; the guard only keeps a division by zero out of reach
+         ! (interphase_block forms the same quotient for the simplified model, m = D)
+         inv_m = 1.0_dp/max(d*c%ufbar, tiny(1.0_dp))
+         slip_trial = slip_old*(m_from*inv_m)
+         dslip_dd = -slip_trial*((c%ufbar + d*dc%ufbar)*inv_m)
+      else
+         slip_trial = slip_old
+         dslip_dd = 0.0_dp
+      end if
+   end subroutine growth_trial_slip
+
    !> The response at a fixed damage D: regime, traction, tangent at fixed D, dt/dD, slip and
-   !> its sensitivities, stored energy.
-   pure subroutine respond(params, c, dc, d, slip_old, s_n, st, ntens, r, status)
+   !> its sensitivities, stored energy. The friction step starts from `slip_old`; when that slip
+   !> itself depends on D (`growth_trial_slip`), `dslip_dd` gives its derivative, and dt/dD and
+   !> d lambda/dD include it.
+   pure subroutine respond(params, c, dc, d, slip_old, s_n, st, ntens, r, status, dslip_dd)
       type(law_params_type), intent(in) :: params
       type(coefficient_set_type), intent(in) :: c, dc     !! coefficients at D and d/dD
       real(dp), intent(in) :: d                           !! damage D
-      real(dp), intent(in) :: slip_old(2)                 !! slip at the start of the increment (mm)
+      real(dp), intent(in) :: slip_old(2)                 !! slip the friction step starts from (mm)
       real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
       integer, intent(in) :: ntens
       type(response_type), intent(out) :: r
       integer, intent(out) :: status
+      real(dp), intent(in), optional :: dslip_dd(2)       !! d(slip_old)/dD (mm), 0 if absent
 
       real(dp) :: kk_n, kk_t, sigma, tau(2), tau_norm, phi, kf, nvec(2), dgamma, ratio
       real(dp) :: dtau_dd(2), dphi_dd, proj_dtau(2), n_dot
@@ -113,10 +144,12 @@ contains
          end do
          ! d lambda/dD at fixed s
          dtau_dd = dc%tc_t*st + dc%tf*slip_old
+         if (present(dslip_dd)) dtau_dd = dtau_dd + c%tf*dslip_dd
          n_dot = nvec(1)*dtau_dd(1) + nvec(2)*dtau_dd(2)
          dphi_dd = params%mu*dc%sc_n*s_n + n_dot
          proj_dtau = dtau_dd - n_dot*nvec
          r%dlam_dd = (nvec*dphi_dd + (phi/tau_norm)*proj_dtau)/kf + dgamma*nvec*dc%tf/kf
+         if (present(dslip_dd)) r%dlam_dd = r%dlam_dd + dslip_dd
          r%traction(2:ntens) = kk_t*st(1:nt) + c%cf_t*r%slip(1:nt)
          do j = 1, ntens
             r%tangent(2:ntens, j) = c%cf_t*r%dlam_ds(1:nt, j)
@@ -134,6 +167,10 @@ contains
             r%tangent(i, i) = kk_t
          end do
          r%dtrac_dd(2:ntens) = (dc%k_t + dc%kc_t)*st(1:nt) + dc%cf_t*slip_old(1:nt)
+         if (present(dslip_dd)) then
+            r%dlam_dd = dslip_dd
+            r%dtrac_dd(2:ntens) = r%dtrac_dd(2:ntens) + c%cf_t*dslip_dd(1:nt)
+         end if
       end if
       r%psi = 0.5_dp*(r%traction(1)*s_n + sum(r%traction(2:ntens)*st(1:nt))) &
          + 0.5_dp*c%cf_t*(r%slip(1)*st(1) + r%slip(2)*st(2)) &

@@ -24,7 +24,8 @@ module interphase_rve_table
       STATUS_TABLE_IDENTITY, MESSAGE_LEN
    implicit none
    private
-   public :: rve_table_type, read_rve_table, check_rve_table, interpolation_data, crack_variable
+   public :: rve_table_type, read_rve_table, check_rve_table, interpolation_data, crack_variable, &
+      short_crack_a_tf
 
    !> Interpolation variables: w = 1/(1 - ln(1 - D)) (default) or D itself.
    integer, parameter, public :: VARIABLE_LOG_LIGAMENT = 1
@@ -48,10 +49,12 @@ module interphase_rve_table
       COL_SF = 22, COL_UFBAR = 23
 
    !> Interpolated columns, in interface units (per unit separation; docs/theory.md): the
-   !> members of `coefficient_set_type`, in this order.
+   !> members of `coefficient_set_type`, in this order, except that T^f, which grows like 1/D
+   !> as D -> 0, is interpolated as D T^f (IC_DTF), which is smooth with a finite limit at D = 0
+   !> (`short_crack_a_tf`); the provider divides by D.
    integer, parameter, public :: N_COEFFICIENTS = 11
    integer, parameter, public :: IC_K_N = 1, IC_K_T = 2, IC_KC_N = 3, IC_KC_T = 4, &
-      IC_DBAR_N = 5, IC_DBAR_T = 6, IC_TC_T = 7, IC_SC_N = 8, IC_CF_T = 9, IC_TF = 10, IC_UFBAR = 11
+      IC_DBAR_N = 5, IC_DBAR_T = 6, IC_TC_T = 7, IC_SC_N = 8, IC_CF_T = 9, IC_DTF = 10, IC_UFBAR = 11
 
    !> Relative tolerance of the identity checks: the FreeFEM tables satisfy them to ~1e-11.
    real(dp), parameter, public :: IDENTITY_TOL = 1.0e-8_dp
@@ -62,6 +65,7 @@ module interphase_rve_table
       real(dp) :: b = 0.0_dp                      !! RVE half-length (mm)
       real(dp) :: h = 0.0_dp                      !! RVE height h = h_m + h_b (mm)
       integer :: variable = VARIABLE_LOG_LIGAMENT !! VARIABLE_* of the interpolation
+      real(dp) :: a_tf_limit = 0.0_dp             !! lim a T^f as a -> 0 (MPa), short_crack_a_tf
       real(dp), allocatable :: rows(:, :)         !! rows(i, column) in the file's units
       integer, allocatable :: line(:)             !! file line of each row (for messages)
    end type rve_table_type
@@ -82,10 +86,10 @@ contains
       character(len=256) :: iomsg
       character(len=64) :: fields(MAX_FIELDS)
       integer :: unit, ios, lineno, nfields, position(N_TABLE_COLUMNS), ncols, nrows, j
-      real(dp) :: values(MAX_FIELDS), b, h
+      real(dp) :: values(MAX_FIELDS), b, h, a_tf_limit, elastic(4)
       real(dp), allocatable :: rows(:, :)
       integer, allocatable :: lines(:)
-      logical :: have_columns, have_b, have_h
+      logical :: have_columns, have_b, have_h, have_limit, have_elastic(4)
 
       status = STATUS_OK
       table%source = path
@@ -98,6 +102,10 @@ contains
       have_columns = .false.
       have_b = .false.
       have_h = .false.
+      have_limit = .false.
+      have_elastic = .false.
+      a_tf_limit = 0.0_dp
+      elastic = 0.0_dp
       position = 0
       ncols = 0
       nrows = 0
@@ -154,6 +162,21 @@ contains
             case ('h')
                call header_number(line(j + 3:), h, have_h)
                if (status /= STATUS_OK) return
+            case ('a_Tf_limit')
+               call header_real(line(j + 3:), -huge(1.0_dp), 0.0_dp, .true., a_tf_limit, have_limit)
+               if (status /= STATUS_OK) return
+            case ('E_m')
+               call header_number(line(j + 3:), elastic(1), have_elastic(1))
+               if (status /= STATUS_OK) return
+            case ('nu_m')
+               call header_real(line(j + 3:), -1.0_dp, 0.5_dp, .false., elastic(2), have_elastic(2))
+               if (status /= STATUS_OK) return
+            case ('E_b')
+               call header_number(line(j + 3:), elastic(3), have_elastic(3))
+               if (status /= STATUS_OK) return
+            case ('nu_b')
+               call header_real(line(j + 3:), -1.0_dp, 0.5_dp, .false., elastic(4), have_elastic(4))
+               if (status /= STATUS_OK) return
             case ('interpolation_variable')
                select case (trim(adjustl(line(j + 3:))))
                case ('w')
@@ -201,8 +224,20 @@ contains
          call fail(STATUS_TABLE_MISSING_COLUMN, 'no "# columns:" line')
          return
       end if
+      if (.not. have_limit) then
+         if (.not. all(have_elastic)) then
+            ! (the file is closed already: no `fail`, which closes it)
+            status = STATUS_TABLE_MISSING_KEY
+            message = message_path(path)//': the header must give the short-crack limit '// &
+               '"a_Tf_limit = ..." (MPa) or the layers'' "E_m", "nu_m", "E_b", "nu_b" (plane strain) it '// &
+               'follows from'
+            return
+         end if
+         a_tf_limit = short_crack_a_tf(elastic(1), elastic(2), elastic(3), elastic(4))
+      end if
       table%b = b
       table%h = h
+      table%a_tf_limit = a_tf_limit
       table%rows = transpose(rows(:, 1:nrows))
       table%line = lines(1:nrows)
 
@@ -228,6 +263,27 @@ contains
          if (.not. found) call fail(STATUS_TABLE_BAD_HEADER, 'header value is not a positive number: '// &
             trim(line(1:80)))
       end subroutine header_number
+
+      !> A header number in (lower, upper), or (lower, upper] with `closed_above` (a_Tf_limit:
+      !> (-huge, 0]; Poisson's ratios: (-1, 0.5)).
+      subroutine header_real(text, lower, upper, closed_above, value, found)
+         character(len=*), intent(in) :: text
+         real(dp), intent(in) :: lower, upper
+         logical, intent(in) :: closed_above
+         real(dp), intent(out) :: value
+         logical, intent(out) :: found
+         integer :: ios2
+         character(len=40) :: range
+         read (text, *, iostat=ios2) value
+         found = ios2 == 0
+         if (found) found = is_finite(value)
+         if (found) found = value > lower .and. (value < upper .or. (closed_above .and. .not. value > upper))
+         if (.not. found) then
+            write (range, '(a,es9.2,a,es9.2,a)', iostat=ios2) '(', lower, ', ', upper, merge(']', ')', closed_above)
+            call fail(STATUS_TABLE_BAD_HEADER, 'header value is not a number in '//trim(range)//': '// &
+               trim(line(1:80)))
+         end if
+      end subroutine header_real
 
    end subroutine read_rve_table
 
@@ -378,11 +434,36 @@ contains
             y(i, IC_TC_T) = r(COL_TC_T)/h
             y(i, IC_SC_N) = r(COL_SC_N)/h
             y(i, IC_CF_T) = r(COL_CF_T)
-            y(i, IC_TF) = r(COL_TF)
+            ! D T^f: the a = 0 row's T^f (no finite value) is replaced by the exact limit
+            if (r(COL_D) > 0.0_dp) then
+               y(i, IC_DTF) = r(COL_D)*r(COL_TF)
+            else
+               y(i, IC_DTF) = table%a_tf_limit/table%b
+            end if
             y(i, IC_UFBAR) = r(COL_UFBAR)
          end associate
       end do
    end subroutine interpolation_data
+
+   !> lim a T^f as a -> 0 (MPa) for a crack on the interface of two elastic layers in plane
+   !> strain: a short crack sees two half-planes, and the closed (zero normal jump),
+   !> frictionless crack under a uniform shear stress tau slides elliptically with the largest
+   !> jump 4 a (1 - beta^2) tau/E*, so T^f (crack shear stress per unit largest slip) is
+   !> -E*/(4 a (1 - beta^2)): 2/E* = 1/E'_m + 1/E'_b with E' = E/(1 - nu^2), and beta is
+   !> Dundurs' second parameter, (mu_m (kappa_b - 1) - mu_b (kappa_m - 1))/(mu_m (kappa_b + 1)
+   !> + mu_b (kappa_m + 1)), kappa = 3 - 4 nu (docs/rve.md, 'Short cracks').
+   pure real(dp) function short_crack_a_tf(e_m, nu_m, e_b, nu_b) result(a_tf)
+      real(dp), intent(in) :: e_m, nu_m          !! mortar Young's modulus (MPa), Poisson's ratio
+      real(dp), intent(in) :: e_b, nu_b          !! brick Young's modulus (MPa), Poisson's ratio
+      real(dp) :: e_star, g_m, g_b, k_m, k_b, beta
+      e_star = 2.0_dp/((1.0_dp - nu_m**2)/e_m + (1.0_dp - nu_b**2)/e_b)
+      g_m = e_m/(2.0_dp*(1.0_dp + nu_m))
+      g_b = e_b/(2.0_dp*(1.0_dp + nu_b))
+      k_m = 3.0_dp - 4.0_dp*nu_m
+      k_b = 3.0_dp - 4.0_dp*nu_b
+      beta = (g_m*(k_b - 1.0_dp) - g_b*(k_m - 1.0_dp))/(g_m*(k_b + 1.0_dp) + g_b*(k_m + 1.0_dp))
+      a_tf = -e_star/(4.0_dp*(1.0_dp - beta**2))
+   end function short_crack_a_tf
 
    !> The interpolation variable x(D), dx/dD and d2x/dD2: VARIABLE_DAMAGE x = D; VARIABLE_LOG_LIGAMENT
    !> x = w = 1/(1 - ln(1 - D)), dw/dD = -w^2/(1 - D), d2w/dD2 = (2w^3 - w^2)/(1 - D)^2 (both

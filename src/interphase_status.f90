@@ -28,6 +28,7 @@ module interphase_status
    integer, parameter, public :: STATUS_BAD_RCURVE = 16
    integer, parameter, public :: STATUS_BAD_GC_I = 17
    integer, parameter, public :: STATUS_BAD_GC_II = 18
+   integer, parameter, public :: STATUS_BAD_OPTION = 19
    ! ---- update failures (the increment may be retried smaller) ----
    integer, parameter, public :: STATUS_NONFINITE_SEPARATION = 20
    integer, parameter, public :: STATUS_BAD_STATE = 21
@@ -106,6 +107,7 @@ contains
       case (STATUS_BAD_RCURVE);            message = 'unknown R-curve selector'
       case (STATUS_BAD_GC_I);              message = 'mode-I toughness G_cI out of range'
       case (STATUS_BAD_GC_II);             message = 'mode-II toughness G_cII out of range'
+      case (STATUS_BAD_OPTION);            message = 'option constant out of range'
       case (STATUS_STAGGER_NOT_CONVERGED); message = 'staggered damage-friction iteration did not converge'
       case (STATUS_RCURVE_NOT_LOADED);     message = 'tabulated R-curve selected but none loaded'
       case (STATUS_RCURVE_UNREADABLE);     message = 'R-curve file cannot be opened or read'

@@ -238,22 +238,24 @@ contains
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       type(material_entries_type) :: e
-      character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file
+      character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
       real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii
       namelist /joint/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii
+         rcurve_file, g_ci, g_cii, growth_slip
       integer :: ios
       character(len=512) :: iomsg
 
       e%damage_law = 'displacement'
       call unpack_entries(e, model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, sf_t, &
          k_n, k_t, d0, g_ci, g_cii)
+      growth_slip = e%growth_slip
       rewind (unit)
       read (unit, nml=joint, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'joint', ios, iomsg, ok, message)
       if (.not. ok) return
       e = material_entries_type(model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, &
          sf_t, k_n, k_t, d0, g_ci, g_cii)
+      e%growth_slip = growth_slip
       call material_props(e, run%path//': &joint: ', directory_of(run%path), run%props, run%table_path, &
          run%rcurve_path, ok, message)
    end subroutine read_joint
