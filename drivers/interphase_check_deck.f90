@@ -17,7 +17,8 @@ program interphase_check_deck
    use interphase_kinds, only: dp
    use interphase_finite, only: is_finite
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
-      MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE
+      MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, RCURVE_EQUIVALENT, &
+      GROWTH_FIXED_LAMBDA
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props
    use interphase_driver_cli, only: get_argument
@@ -217,6 +218,13 @@ contains
                      notes = notes//'; note: PROPS('//int_to_string(PROP_TABLE)//') = 1 (custom RVE table): '// &
                      'the run needs INTERPHASE_TABLE set to the table file and '//hook//' linked '// &
                      '(make-user-file.sh --uexternaldb)'
+                  if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve /= RCURVE_EQUIVALENT) &
+                     notes = notes//'; note: the toughness (PROPS or R-curve file) is energy per unit crack '// &
+                     'area, as measured (interphase before 2026-12 read it per unit '// &
+                     'advance of a: the same number now means twice the energy)'
+                  if (params%growth_slip == GROWTH_FIXED_LAMBDA) &
+                     notes = notes//'; note: growth slip 1 (the paper''s form, lambda held while the crack grows) '// &
+                     'can return energy in a closed crack (docs/theory.md)'
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) &
                      notes = notes//'; note: tabulated R-curve: the run needs INTERPHASE_RCURVE set to the '// &
                      'R-curve file and '//hook//' linked (make-user-file.sh --uexternaldb)'

@@ -4,7 +4,7 @@
 !>
 !> File format: plain text, `#` comments and blank lines allowed; one row per point,
 !> `D G_cI G_cII` with D = a/b strictly increasing in [0, 1] (at least two rows) and the
-!> toughnesses > 0 in N/mm (per unit advance of the crack half-length a and unit width, eq 20;
+!> toughnesses > 0 in N/mm (energy per unit crack area, as measured; the eq-20 release rate G is twice it;
 !> docs/theory.md). Between the rows a monotone cubic (Fritsch-Carlson) interpolates, so the
 !> R-curve keeps the shape of the data; outside the rows it is an error, never an extrapolation.
 module interphase_rcurve
