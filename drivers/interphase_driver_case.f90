@@ -25,6 +25,9 @@ module interphase_driver_case
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
+   use interphase_text_input, only: tried_path
+   use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, KIND_REAL, KIND_INTEGER, &
+      KIND_LOGICAL, KIND_STRING
    implicit none
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, &
@@ -80,6 +83,19 @@ module interphase_driver_case
       character(len=:), allocatable :: rcurve_path
    end type case_type
 
+   !> The entries of interphase-point's case file and their kinds (checked before the namelist read).
+   type(entry_kind_type), parameter :: CASE_ENTRIES(19) = [ &
+      entry_kind_type('material.model', KIND_STRING), entry_kind_type('material.damage_law', KIND_STRING), &
+      entry_kind_type('material.table', KIND_STRING), entry_kind_type('material.rcurve', KIND_STRING), &
+      entry_kind_type('material.rcurve_file', KIND_STRING), entry_kind_type('material.mu', KIND_REAL), &
+      entry_kind_type('material.s0_n', KIND_REAL), entry_kind_type('material.sf_n', KIND_REAL), &
+      entry_kind_type('material.s0_t', KIND_REAL), entry_kind_type('material.sf_t', KIND_REAL), &
+      entry_kind_type('material.k_n', KIND_REAL), entry_kind_type('material.k_t', KIND_REAL), &
+      entry_kind_type('material.d0', KIND_REAL), entry_kind_type('material.g_ci', KIND_REAL), &
+      entry_kind_type('material.g_cii', KIND_REAL), entry_kind_type('loading.history', KIND_STRING), &
+      entry_kind_type('loading.output', KIND_STRING), entry_kind_type('loading.increments', KIND_INTEGER), &
+      entry_kind_type('loading.plot', KIND_LOGICAL)]
+
 contains
 
    !> Read and check a case file. On failure `ok` is false and `message` says what and where,
@@ -95,10 +111,17 @@ contains
       ok = .false.
       run%path = path
       run%name = stem_of(path)
+      ! bounded lines, one group of each name, each entry once and of its kind
+      call check_namelist_file(path, CASE_ENTRIES, ok, message)
+      if (.not. ok) then
+         if (index(message, path//': cannot open') == 1) message = tried_path(path)//message(len(path) + 1:)
+         return
+      end if
+      ok = .false.
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
          iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
-         message = path//': cannot open the case file: '//trim(iomsg)
+         message = tried_path(path)//': cannot open the case file: '//trim(iomsg)
          return
       end if
       call read_material(unit, run, ok, message)

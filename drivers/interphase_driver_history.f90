@@ -9,11 +9,10 @@
 !> separations in mm. Every data line has the same number of columns. Errors name the file and
 !> the line. The table is stored in the UMAT's component order: normal first, then shear(s).
 module interphase_driver_history
-   use, intrinsic :: iso_fortran_env, only: iostat_end
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
-   use interphase_driver_text, only: int_to_string, real_to_string, to_lower, read_line, &
-      split_words
+   use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words
+   use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES
    implicit none
    private
    public :: history_type, read_history
@@ -40,17 +39,19 @@ contains
       type(history_type), intent(out) :: history  !! the table, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      character(len=:), allocatable :: line, where
+      character(len=:), allocatable :: line, where, shown
       integer, allocatable :: starts(:), ends(:)
       real(dp) :: values(4)
       integer :: unit, ios, line_number, ncolumns, first_data_line, comment, i
+      integer(int64) :: bytes
       character(len=512) :: iomsg
 
       ok = .false.
+      shown = tried_path(path)
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
          iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
-         message = path//': cannot open the history file: '//trim(iomsg)
+         message = shown//': cannot open the history file: '//trim(iomsg)
          return
       end if
 
@@ -58,13 +59,20 @@ contains
       ncolumns = 0
       first_data_line = 0
       line_number = 0
+      bytes = 0
       do
          call read_line(unit, line, ios, iomsg)
          if (ios == iostat_end) exit
          line_number = line_number + 1
-         where = path//':'//int_to_string(line_number)//': '
+         where = shown//':'//int_to_string(line_number)//': '
          if (ios /= 0) then
             message = where//'cannot read the line: '//trim(iomsg)
+            close (unit)
+            return
+         end if
+         bytes = bytes + len(line) + 1
+         if (bytes > MAX_FILE_BYTES) then
+            message = where//'the file is larger than '//int_to_string(int(MAX_FILE_BYTES))//' bytes'
             close (unit)
             return
          end if
@@ -114,7 +122,7 @@ contains
       close (unit)
 
       if (history%nrows < 2) then
-         message = path//': needs at least 2 data rows, found '//int_to_string(history%nrows)
+         message = shown//': needs at least 2 data rows, found '//int_to_string(history%nrows)
          return
       end if
       history%ntens = ncolumns - 1
@@ -153,39 +161,22 @@ contains
       history%separation(2:n, history%nrows) = shear_then_normal(1:n - 1)
    end subroutine append_row
 
-   !> Parse one number: a Fortran real literal (digits, sign, point, exponent e/d). NaN and
-   !> infinities are refused, as is anything that does not read as a number.
+   !> Parse one number: the whole word one real literal (interphase_text_input: digits, sign,
+   !> point, exponent with its letter e/d; not `1-2`, `2*0.5`, `,`), finite.
    subroutine parse_number(word, value, ok, message)
       character(len=*), intent(in) :: word        !! the text
       real(dp), intent(out) :: value              !! the number when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      character(len=*), parameter :: ALLOWED = '0123456789+-.eEdD'
-      character(len=*), parameter :: DIGITS = '0123456789'
-      character(len=:), allocatable :: lower
-      integer :: ios
+      character(len=32) :: why
 
-      ok = .false.
-      value = 0.0_dp
-      lower = to_lower(word)
-      if (index(lower, 'nan') > 0 .or. index(lower, 'inf') > 0) then
-         message = "'"//word//"' is not a finite number (NaN and Inf are not allowed)"
-         return
+      call parse_real(word, value, ok, why)
+      if (ok) return
+      if (index(why, 'finite') > 0) then
+         message = "'"//clip_text(word)//"' is not a finite number "//trim(why(len('not finite ') + 1:))
+      else
+         message = "cannot parse '"//clip_text(word)//"' as a number"
       end if
-      if (verify(word, ALLOWED) /= 0 .or. scan(word, DIGITS) == 0) then
-         message = "cannot parse '"//word//"' as a number"
-         return
-      end if
-      read (word, *, iostat=ios) value
-      if (ios /= 0) then
-         message = "cannot parse '"//word//"' as a number"
-         return
-      end if
-      if (.not. ieee_is_finite(value)) then
-         message = "'"//word//"' is not a finite number (out of range)"
-         return
-      end if
-      ok = .true.
    end subroutine parse_number
 
 end module interphase_driver_history

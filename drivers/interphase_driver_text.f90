@@ -3,6 +3,7 @@
 module interphase_driver_text
    use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
    use interphase_kinds, only: dp
+   use interphase_text_input, only: MAX_LINE_LEN
    implicit none
    private
    public :: int_to_string, real_to_string, real_to_csv, to_lower
@@ -53,33 +54,59 @@ contains
       end do
    end function to_lower
 
-   !> Read one whole line of any length from a formatted sequential unit. A last line without a
-   !> newline is returned as a line. `iostat` is 0, `iostat_end` at the end of the file, or the
-   !> processor's error code (then `iomsg` says why).
+   !> Read one whole line from a formatted sequential unit, in time linear in its length, up to
+   !> MAX_LINE_LEN characters (interphase_text_input): a longer line (or a file without line
+   !> ends, such as /dev/zero) is an error, not read to its end. A last line without a newline is
+   !> returned as a line. `iostat` is 0, `iostat_end` at the end of the file, or an error code
+   !> (then `iomsg` says why).
    subroutine read_line(unit, line, iostat, iomsg)
       integer, intent(in) :: unit                 !! open formatted sequential unit
       character(len=:), allocatable, intent(out) :: line  !! the line, without its newline
       integer, intent(out) :: iostat              !! 0, iostat_end or an error code
       character(len=*), intent(inout) :: iomsg    !! error text when iostat is an error code
-      character(len=512) :: buffer
-      integer :: nread
+      character(len=4096) :: buffer
+      character(len=:), allocatable :: store
+      integer :: nread, length
 
-      line = ''
+      allocate (character(len=len(buffer)) :: store)
+      length = 0
       do
          read (unit, '(a)', advance='no', iostat=iostat, iomsg=iomsg, size=nread) buffer
          if (iostat == 0 .or. iostat == iostat_eor .or. iostat == iostat_end) then
-            line = line//buffer(:nread)
+            if (length + nread > MAX_LINE_LEN) then
+               iostat = 1
+               iomsg = 'line longer than '//int_to_string(MAX_LINE_LEN)//' characters'
+               line = ''
+               return
+            end if
+            if (length + nread > len(store)) call grow(store, length, length + nread)
+            store(length + 1:length + nread) = buffer(:nread)
+            length = length + nread
          end if
          if (iostat == iostat_eor) then
             iostat = 0
-            return
+            exit
          else if (iostat == iostat_end) then
-            if (len(line) > 0) iostat = 0
-            return
+            if (length > 0) iostat = 0
+            exit
          else if (iostat /= 0) then
-            return
+            exit
          end if
       end do
+      line = store(:length)
+
+   contains
+
+      !> Enlarge `text` (its first `used` characters kept) to at least `needed`, doubling.
+      subroutine grow(text, used, needed)
+         character(len=:), allocatable, intent(inout) :: text
+         integer, intent(in) :: used, needed
+         character(len=:), allocatable :: larger
+         allocate (character(len=max(needed, 2*len(text))) :: larger)
+         larger(:used) = text(:used)
+         call move_alloc(larger, text)
+      end subroutine grow
+
    end subroutine read_line
 
    !> Split a line into blank-separated words (blanks: space, tab, carriage return).

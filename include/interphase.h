@@ -93,6 +93,7 @@ extern "C" {
 #define INTERPHASE_STATUS_RCURVE_MALFORMED 61            /**< line is not "D G_cI G_cII" */
 #define INTERPHASE_STATUS_RCURVE_NEGATIVE 62             /**< toughness not positive */
 #define INTERPHASE_STATUS_RCURVE_BAD_RANGE 63            /**< D not increasing in [0, 1], or too few rows */
+#define INTERPHASE_STATUS_RCURVE_OUT_OF_RANGE 64         /**< tabulated R-curve does not cover D0 or the D reached */
 
 /**
  * Update one interface point: traction, consistent tangent, new state and stored energy at

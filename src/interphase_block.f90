@@ -27,15 +27,25 @@ module interphase_block
    use interphase_kinds, only: dp
    use interphase_finite, only: EXPONENT_MASK
    use interphase_params, only: law_params_type
-   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI
+   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
+      MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
    implicit none
    private
-   public :: simplified_block_update, density_counts
+   public :: simplified_block_update, density_counts, block_supports
 
    !> Bit pattern of the smallest positive normal number, tiny(1.0_dp).
    integer(int64), parameter :: SMALLEST_NORMAL_BITS = int(z'0010000000000000', int64)
 
 contains
+
+   !> Whether the points of a material may take the block update (`simplified_block_update`):
+   !> the simplified model with the displacement-driven damage law, every such material (any
+   !> mu, eta_N, eta_T, K_N, K_T that from_props accepts). Hosts ask here, never decide
+   !> themselves, so that the block update's coverage is stated in one place.
+   pure logical function block_supports(params)
+      type(law_params_type), intent(in) :: params    !! decoded by from_props
+      block_supports = params%model == MODEL_SIMPLIFIED .and. params%damage_law == DAMAGE_DISPLACEMENT
+   end function block_supports
 
    !> Update n points of the simplified model (displacement-driven damage law) from their
    !> separations at the end of the increment and their state at its start.

@@ -12,11 +12,13 @@ module interphase_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_ptr, c_null_char, &
       c_associated, c_f_pointer
    use interphase_kinds, only: dp
-   use interphase_layout, only: NSTATV_REQUIRED
+   use interphase_layout, only: NSTATV_REQUIRED, PROP_TABLE
+   use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
-      STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, status_message, file_loader
+      STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
+      STATUS_RCURVE_OUT_OF_RANGE, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
-   use interphase_rcurve, only: load_rcurve
+   use interphase_rcurve, only: load_rcurve, rcurve_coverage
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
@@ -34,7 +36,9 @@ contains
    !>    const double *state_old, const double *separation, double *traction, double *tangent,
    !>    double *state_new, double *stored_energy, char *detail, size_t detail_len)`.
    !> Returns STATUS_OK (0) or a status code; on a non-zero status the outputs are untouched and,
-   !> when `detail` is not NULL, it receives the detailed message (which value, which range).
+   !> when `detail` is not NULL, it receives the detailed message (which value, which range; for a
+   !> table or R-curve not loaded, which loader to call; for an R-curve that does not cover D0 or
+   !> the damage reached, the file, its range and the D).
    function interphase_update_c(props, nprops, ntens, state_old, separation, traction, tangent, &
          state_new, stored_energy, detail, detail_len) result(status) bind(C, name="interphase_update")
       integer(c_int), value, intent(in) :: nprops          !! number of PROPS (docs/abaqus.md)
@@ -80,8 +84,26 @@ contains
          call finish()
          return
       end if
-      call interface_update(params, old, separation(1:n), t(1:n), k(1:n, 1:n), new, psi, code)
+      ! data loaded at start-up: a missing table or R-curve, or one that does not cover D0
+      call check_run_time_data(params, code, message)
+      if (code == STATUS_TABLE_NOT_LOADED) then
+         write (message, '(a,i0,a)') 'PROPS[', PROP_TABLE - 1, '] = 1 selects the custom RVE table, but none is '// &
+            'loaded: call interphase_load_table(path, ...) before any update'
+      else if (code == STATUS_RCURVE_NOT_LOADED) then
+         message = 'the R-curve selector 3 selects the tabulated R-curve, but none is loaded: call '// &
+            'interphase_load_rcurve(path, ...) before any update'
+      end if
       if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      call interface_update(params, old, separation(1:n), t(1:n), k(1:n, 1:n), new, psi, code)
+      if (code == STATUS_RCURVE_OUT_OF_RANGE) then
+         write (message, '(a,a,g0.6,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+            old%d, ' at separation (mm) ', separation(1:n)
+         call finish()
+         return
+      else if (code /= STATUS_OK) then
          write (message, '(a,3es12.4)') 'separation (mm) ', separation(1:n)
          call finish()
          return

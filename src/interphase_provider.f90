@@ -8,10 +8,10 @@ module interphase_provider
    use interphase_layout, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, PROP_TABLE, &
       DAMAGE_FRACTURE, RCURVE_TABULATED
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
-      STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN
+      STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
    use interphase_coefficients, only: coefficient_set_type, simplified_coefficients
    use interphase_micro_coefficients, only: micro_coefficients, custom_table_loaded
-   use interphase_rcurve, only: rcurve_loaded
+   use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    implicit none
    private
    public :: coefficients_at, check_run_time_data
@@ -39,12 +39,14 @@ contains
 
    !> STATUS_OK when the data `params` needs at run time is loaded; else STATUS_TABLE_NOT_LOADED
    !> (micromechanical model on the custom table) or STATUS_RCURVE_NOT_LOADED (fracture law with
-   !> the tabulated R-curve), with a message that says how to load it. Called by the UMAT at every
+   !> the tabulated R-curve), with a message that says how to load it, or
+   !> STATUS_RCURVE_OUT_OF_RANGE when the loaded R-curve does not cover D0 (naming file and D0). Called by the UMAT at every
    !> update: two integer tests when all is well (`message` is then left alone, not blanked).
    pure subroutine check_run_time_data(params, status, message)
       type(law_params_type), intent(in) :: params
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(inout) :: message
+      integer :: ios
       status = STATUS_OK
       if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_CUSTOM_CODE) then
          if (.not. custom_table_loaded()) then
@@ -61,6 +63,9 @@ contains
             message = 'the R-curve selector 3 selects the tabulated R-curve, but none was loaded at start-up: '// &
                'set INTERPHASE_RCURVE to the R-curve file and link uexternaldb (Abaqus/Standard) or vexternaldb '// &
                '(Abaqus/Explicit), docs/abaqus.md'
+         else if (.not. rcurve_covers(params%d0)) then
+            status = STATUS_RCURVE_OUT_OF_RANGE
+            write (message, '(a,a,g0.6)', iostat=ios) rcurve_coverage(), ', not the initial crack D0 = ', params%d0
          end if
       end if
    end subroutine check_run_time_data

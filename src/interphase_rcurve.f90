@@ -12,81 +12,110 @@ module interphase_rcurve
    use interphase_kinds, only: dp
    use interphase_status, only: message_path, STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
-      status_message
+      STATUS_RCURVE_OUT_OF_RANGE, STATUS_SPLINE_OUT_OF_RANGE, status_message
+   use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
+      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END
    use interphase_spline, only: spline_type, spline_build, spline_export, cubic_locate, cubic_eval, &
       SPLINE_MONOTONE
    implicit none
    private
-   public :: load_rcurve, tabulated_rcurve, rcurve_source, rcurve_loaded
+   public :: load_rcurve, tabulated_rcurve, rcurve_source, rcurve_loaded, rcurve_covers, rcurve_coverage
 
    real(dp), allocatable, protected :: rcurve_knots(:)          !! D of the rows
    real(dp), allocatable, protected :: rcurve_coef(:, :, :)     !! monotone cubic, 2 columns
-   character(len=:), allocatable, protected :: loaded_source    !! file it came from
+   character(len=:), allocatable, protected :: loaded_source    !! file it came from, as given
+   character(len=:), allocatable, protected :: loaded_tried     !! the same as tried (absolute)
 
 contains
 
-   !> Read and check an R-curve file; call once at start-up, before any update.
+   !> Read and check an R-curve file; call once at start-up, before any update. Each field must
+   !> be one real literal (interphase_text_input); lines and the file are bounded. Errors name
+   !> the file (as tried) and the line.
    subroutine load_rcurve(path, status, message)
       character(len=*), intent(in) :: path
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
 
-      character(len=1024) :: line
-      character(len=256) :: iomsg
+      type(text_file_type) :: file
+      character(len=MESSAGE_LEN) :: text
+      character(len=32) :: why
+      character(len=:), allocatable :: source
       real(dp), allocatable :: rows(:, :), grown(:, :)
       real(dp) :: v(3)
-      integer :: unit, ios, lineno, n, last_line
+      integer :: outcome, n, first, i, j, field, starts(3), ends(3)
+      logical :: ok
       type(spline_type) :: spline
-      character(len=8) :: extra
 
       status = STATUS_OK
-      open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
-      if (ios /= 0) then
+      message = ''
+      source = tried_path(path)
+      call open_text_file(path, file, ok, text)
+      if (.not. ok) then
          status = STATUS_RCURVE_UNREADABLE
-         message = message_path(path)//': cannot open: '//trim(iomsg)
+         message = message_path(source)//': '//trim(text)
          return
       end if
       allocate (rows(3, 32))
       n = 0
-      lineno = 0
-      last_line = 0
-      do
-         read (unit, '(a)', iostat=ios) line
-         if (is_iostat_end(ios)) exit
-         lineno = lineno + 1
-         if (ios /= 0) then
-            call fail(STATUS_RCURVE_UNREADABLE, 'read error')
+      read_lines: do
+         call read_text_line(file, outcome, text)
+         if (outcome == TEXT_END) exit read_lines
+         if (outcome /= TEXT_LINE) then
+            call fail(STATUS_RCURVE_UNREADABLE, trim(text))
             return
          end if
-         line = adjustl(line)
-         if (len_trim(line) == 0 .or. line(1:1) == '#') cycle
-         read (line, *, iostat=ios) v
-         if (ios == 0) then
-            ! exactly three numbers: a fourth field is an error
-            extra = ''
-            read (line, *, iostat=ios) v, extra
-            if (ios == 0 .and. len_trim(extra) > 0) ios = 1
-            if (is_iostat_end(ios)) ios = 0
-         end if
-         if (ios /= 0 .or. .not. all(is_finite(v))) then
-            call fail(STATUS_RCURVE_MALFORMED, 'expected three finite numbers "D G_cI G_cII": '// &
-               trim(line(1:80)))
-            return
-         end if
-         if (.not. (v(2) > 0.0_dp .and. v(3) > 0.0_dp)) then
-            call fail(STATUS_RCURVE_NEGATIVE, 'toughness must be > 0 N/mm: '//trim(line(1:80)))
-            return
-         end if
-         if (v(1) < 0.0_dp .or. v(1) > 1.0_dp) then
-            call fail(STATUS_RCURVE_BAD_RANGE, 'D must lie in [0, 1]: '//trim(line(1:80)))
-            return
-         end if
-         if (n > 0) then
-            if (.not. (v(1) > rows(1, n))) then
-               call fail(STATUS_RCURVE_BAD_RANGE, 'D does not increase: '//trim(line(1:80)))
+         associate (line => file%buffer(1:file%length))
+            first = verify(line, ' '//achar(9))
+            if (first == 0) cycle read_lines
+            if (line(first:first) == '#') cycle read_lines
+            ! exactly three blank-separated fields, each one number
+            field = 0
+            i = first
+            do while (i <= len(line))
+               j = i
+               do while (j <= len(line))
+                  if (line(j:j) == ' ' .or. line(j:j) == achar(9)) exit
+                  j = j + 1
+               end do
+               field = field + 1
+               if (field <= 3) then
+                  starts(field) = i
+                  ends(field) = j - 1
+               end if
+               i = j
+               do while (i <= len(line))
+                  if (line(i:i) /= ' ' .and. line(i:i) /= achar(9)) exit
+                  i = i + 1
+               end do
+            end do
+            if (field /= 3) then
+               write (text, '(a,i0,a)') 'expected three finite numbers "D G_cI G_cII", found ', field, ' fields: '
+               call fail(STATUS_RCURVE_MALFORMED, trim(text)//' '//clip_text(line(first:)))
                return
             end if
-         end if
+            do field = 1, 3
+               call parse_real(line(starts(field):ends(field)), v(field), ok, why)
+               if (.not. ok) then
+                  call fail(STATUS_RCURVE_MALFORMED, 'expected three finite numbers "D G_cI G_cII"; field "'// &
+                     clip_text(line(starts(field):ends(field)))//'" is '//trim(why))
+                  return
+               end if
+            end do
+            if (.not. (v(2) > 0.0_dp .and. v(3) > 0.0_dp)) then
+               call fail(STATUS_RCURVE_NEGATIVE, 'toughness must be > 0 N/mm: '//clip_text(line(first:)))
+               return
+            end if
+            if (v(1) < 0.0_dp .or. v(1) > 1.0_dp) then
+               call fail(STATUS_RCURVE_BAD_RANGE, 'D must lie in [0, 1]: '//clip_text(line(first:)))
+               return
+            end if
+            if (n > 0) then
+               if (.not. (v(1) > rows(1, n))) then
+                  call fail(STATUS_RCURVE_BAD_RANGE, 'D does not increase: '//clip_text(line(first:)))
+                  return
+               end if
+            end if
+         end associate
          n = n + 1
          if (n > size(rows, 2)) then
             allocate (grown(3, 2*size(rows, 2)))
@@ -94,35 +123,38 @@ contains
             call move_alloc(grown, rows)
          end if
          rows(:, n) = v
-         last_line = lineno
-      end do
-      close (unit)
+      end do read_lines
+      call close_text_file(file)
       if (n < 2) then
          status = STATUS_RCURVE_BAD_RANGE
-         message = message_path(path)//': fewer than two rows "D G_cI G_cII"'
+         message = message_path(source)//': fewer than two rows "D G_cI G_cII"'
          return
       end if
       call spline_build(rows(1, 1:n), transpose(rows(2:3, 1:n)), SPLINE_MONOTONE, spline, status)
       if (status /= STATUS_OK) then
-         message = message_path(path)//': '//status_message(status)
+         message = message_path(source)//': '//status_message(status)
          return
       end if
       call spline_export(spline, rcurve_knots, rcurve_coef)
       loaded_source = path
+      loaded_tried = source
 
    contains
 
-      subroutine fail(code, text)
+      subroutine fail(code, what)
          integer, intent(in) :: code
-         character(len=*), intent(in) :: text
+         character(len=*), intent(in) :: what
+         integer :: ios
          status = code
-         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(path), ':', lineno, ': ', text
-         close (unit)
+         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(source), ':', file%line_number, ': ', what
+         call close_text_file(file)
       end subroutine fail
 
    end subroutine load_rcurve
 
-   !> G_cI, G_cII (N/mm) and their D-derivatives from the loaded R-curve at D.
+   !> G_cI, G_cII (N/mm) and their D-derivatives from the loaded R-curve at D: STATUS_OK,
+   !> STATUS_RCURVE_NOT_LOADED, or STATUS_RCURVE_OUT_OF_RANGE when D lies outside the file's
+   !> rows (a setup error of the file, not of the increment: rcurve_coverage says what).
    pure subroutine tabulated_rcurve(d, gc, dgc_dd, status)
       real(dp), intent(in) :: d              !! damage D = a/b
       real(dp), intent(out) :: gc(2)         !! (G_cI, G_cII)
@@ -134,6 +166,7 @@ contains
          return
       end if
       call cubic_locate(rcurve_knots, d, interval, status)
+      if (status == STATUS_SPLINE_OUT_OF_RANGE) status = STATUS_RCURVE_OUT_OF_RANGE
       if (status /= STATUS_OK) return
       call cubic_eval(rcurve_knots, rcurve_coef, interval, d, gc, dgc_dd)
    end subroutine tabulated_rcurve
@@ -143,8 +176,30 @@ contains
       rcurve_loaded = allocated(rcurve_coef)
    end function rcurve_loaded
 
-   !> The file the tabulated R-curve came from ('' when none is loaded).
-   function rcurve_source() result(source)
+   !> Whether the loaded R-curve's rows cover D (false when none is loaded).
+   pure logical function rcurve_covers(d)
+      real(dp), intent(in) :: d              !! damage D = a/b
+      rcurve_covers = .false.
+      if (.not. allocated(rcurve_knots)) return
+      rcurve_covers = d >= rcurve_knots(1) .and. d <= rcurve_knots(size(rcurve_knots))
+   end function rcurve_covers
+
+   !> For messages: 'R-curve <file> covers D from <lo> to <hi>' (the file as tried).
+   pure function rcurve_coverage() result(text)
+      character(len=:), allocatable :: text
+      character(len=64) :: range
+      integer :: ios
+      if (.not. allocated(rcurve_knots)) then
+         text = 'no R-curve loaded'
+         return
+      end if
+      write (range, '(a,g0.6,a,g0.6)', iostat=ios) ' covers D from ', rcurve_knots(1), ' to ', &
+         rcurve_knots(size(rcurve_knots))
+      text = 'R-curve '//message_path(loaded_tried)//trim(range)
+   end function rcurve_coverage
+
+   !> The file the tabulated R-curve came from, as given to load_rcurve ('' when none is loaded).
+   pure function rcurve_source() result(source)
       character(len=:), allocatable :: source
       source = ''
       if (allocated(loaded_source)) source = loaded_source

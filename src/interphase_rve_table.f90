@@ -18,6 +18,8 @@ module interphase_rve_table
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_spline, only: SPLINE_NOT_A_KNOT
+   use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
+      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END
    use interphase_status, only: message_path, STATUS_OK, STATUS_TABLE_UNREADABLE, STATUS_TABLE_BAD_HEADER, &
       STATUS_TABLE_MISSING_COLUMN, STATUS_TABLE_MISSING_KEY, STATUS_TABLE_BAD_ROW, &
       STATUS_TABLE_NONFINITE, STATUS_TABLE_NOT_INCREASING, STATUS_TABLE_BAD_RANGE, &
@@ -72,36 +74,41 @@ module interphase_rve_table
 
 contains
 
-   !> Read a table file: header `# key = value` lines (keys b and h required), the
-   !> `# columns:` line (every documented column, any order), then one row per a.
-   !> Errors name the file and line. The identities are checked separately (`check_rve_table`).
+   !> Read a table file: header `# key = value` lines (keys b and h required, each once), the
+   !> `# columns:` line (every documented column once, any order), then one row per a, each
+   !> field one real literal (interphase_text_input: no list-directed reading). Lines and the
+   !> file are bounded (MAX_LINE_LEN, MAX_FILE_BYTES). Errors name the file (as tried) and
+   !> line. The identities are checked separately (`check_rve_table`).
    subroutine read_rve_table(path, table, status, message)
       character(len=*), intent(in) :: path                 !! table file
       type(rve_table_type), intent(out) :: table
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
 
-      integer, parameter :: LINE_LEN = 8192, MAX_FIELDS = 64
-      character(len=LINE_LEN) :: line
-      character(len=256) :: iomsg
-      character(len=64) :: fields(MAX_FIELDS)
-      integer :: unit, ios, lineno, nfields, position(N_TABLE_COLUMNS), ncols, nrows, j
+      integer, parameter :: MAX_FIELDS = 64
+      type(text_file_type) :: file
+      character(len=MESSAGE_LEN) :: text
+      character(len=32) :: why
+      integer :: starts(MAX_FIELDS + 1), ends(MAX_FIELDS + 1)
+      integer :: outcome, nfields, position(N_TABLE_COLUMNS), ncols, nrows, j, k, first, eq
       real(dp) :: values(MAX_FIELDS), b, h, a_tf_limit, elastic(4)
       real(dp), allocatable :: rows(:, :)
       integer, allocatable :: lines(:)
-      logical :: have_columns, have_b, have_h, have_limit, have_elastic(4)
+      logical :: ok, have_columns, have_b, have_h, have_variable, have_limit, have_elastic(4)
 
       status = STATUS_OK
-      table%source = path
-      open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
-      if (ios /= 0) then
+      message = ''
+      table%source = tried_path(path)
+      call open_text_file(path, file, ok, text)
+      if (.not. ok) then
          status = STATUS_TABLE_UNREADABLE
-         message = message_path(path)//': cannot open: '//trim(iomsg)
+         message = message_path(table%source)//': '//trim(text)
          return
       end if
       have_columns = .false.
       have_b = .false.
       have_h = .false.
+      have_variable = .false.
       have_limit = .false.
       have_elastic = .false.
       a_tf_limit = 0.0_dp
@@ -112,129 +119,154 @@ contains
       b = 0.0_dp
       h = 0.0_dp
       allocate (rows(N_TABLE_COLUMNS, 64), lines(64))
-      lineno = 0
-      do
-         read (unit, '(a)', iostat=ios, iomsg=iomsg) line
-         if (is_iostat_end(ios)) exit
-         lineno = lineno + 1
-         if (ios /= 0) then
-            call fail(STATUS_TABLE_UNREADABLE, 'read error: '//trim(iomsg))
+      read_lines: do
+         call read_text_line(file, outcome, text)
+         if (outcome == TEXT_END) exit read_lines
+         if (outcome /= TEXT_LINE) then
+            call fail(STATUS_TABLE_UNREADABLE, trim(text))
             return
          end if
-         if (len_trim(line) == 0) cycle
-         line = adjustl(line)
-         if (line(1:1) == '#') then
-            if (have_columns) cycle                      ! comments after the header
-            line = adjustl(line(2:))
-            if (line(1:8) == 'columns:') then
-               call split(line(9:), fields, nfields)
-               if (nfields > MAX_FIELDS) then
-                  call fail(STATUS_TABLE_BAD_HEADER, 'too many columns on the "# columns:" line')
+         associate (line => file%buffer(1:file%length))
+            first = verify(line, ' '//achar(9))
+            if (first == 0) cycle read_lines
+            if (line(first:first) == '#') then
+               if (have_columns) cycle read_lines                 ! comments after the header
+               first = first + verify(line(first + 1:)//'x', ' '//achar(9))
+               if (first + 7 <= len(line)) then
+                  if (line(first:first + 7) == 'columns:') then
+                     call split(line(first + 8:), starts, ends, nfields)
+                     if (nfields > MAX_FIELDS) then
+                        write (text, '(a,i0,a)') 'more than ', MAX_FIELDS, ' columns on the "# columns:" line'
+                        call fail(STATUS_TABLE_BAD_HEADER, trim(text))
+                        return
+                     end if
+                     starts(1:nfields) = starts(1:nfields) + first + 7
+                     ends(1:nfields) = ends(1:nfields) + first + 7
+                     do j = 2, nfields
+                        do k = 1, j - 1
+                           if (line(starts(j):ends(j)) == line(starts(k):ends(k))) then
+                              call fail(STATUS_TABLE_BAD_HEADER, 'the "# columns:" line names column "'// &
+                                 clip_text(line(starts(j):ends(j)))//'" twice')
+                              return
+                           end if
+                        end do
+                     end do
+                     ncols = nfields
+                     do j = 1, N_TABLE_COLUMNS
+                        position(j) = 0
+                        do k = 1, nfields
+                           if (line(starts(k):ends(k)) == trim(TABLE_COLUMNS(j))) position(j) = k
+                        end do
+                        if (position(j) == 0) then
+                           call fail(STATUS_TABLE_MISSING_COLUMN, 'the "# columns:" line lacks column '// &
+                              trim(TABLE_COLUMNS(j)))
+                           return
+                        end if
+                     end do
+                     if (.not. (have_b .and. have_h)) then
+                        call fail(STATUS_TABLE_MISSING_KEY, 'the header before "# columns:" must give '// &
+                           '"b = ..." and "h = ..." (mm)')
+                        return
+                     end if
+                     have_columns = .true.
+                     cycle read_lines
+                  end if
+               end if
+               eq = index(line(first:), ' = ')
+               if (eq < 2) then
+                  call fail(STATUS_TABLE_BAD_HEADER, 'line reads: '//clip_text(line(first:)))
                   return
                end if
-               ncols = nfields
-               do j = 1, N_TABLE_COLUMNS
-                  position(j) = findloc_name(fields(1:nfields), TABLE_COLUMNS(j))
-                  if (position(j) == 0) then
-                     call fail(STATUS_TABLE_MISSING_COLUMN, 'the "# columns:" line lacks column '// &
-                        trim(TABLE_COLUMNS(j)))
+               eq = first + eq - 1
+               select case (line(first:eq - 1))
+               case ('b')
+                  call header_number('b', line(eq + 3:), b, have_b)
+                  if (status /= STATUS_OK) return
+               case ('h')
+                  call header_number('h', line(eq + 3:), h, have_h)
+                  if (status /= STATUS_OK) return
+               case ('a_Tf_limit')
+                  call header_real('a_Tf_limit', line(eq + 3:), -huge(1.0_dp), 0.0_dp, .true., a_tf_limit, have_limit)
+                  if (status /= STATUS_OK) return
+               case ('E_m')
+                  call header_number('E_m', line(eq + 3:), elastic(1), have_elastic(1))
+                  if (status /= STATUS_OK) return
+               case ('nu_m')
+                  call header_real('nu_m', line(eq + 3:), -1.0_dp, 0.5_dp, .false., elastic(2), have_elastic(2))
+                  if (status /= STATUS_OK) return
+               case ('E_b')
+                  call header_number('E_b', line(eq + 3:), elastic(3), have_elastic(3))
+                  if (status /= STATUS_OK) return
+               case ('nu_b')
+                  call header_real('nu_b', line(eq + 3:), -1.0_dp, 0.5_dp, .false., elastic(4), have_elastic(4))
+                  if (status /= STATUS_OK) return
+               case ('interpolation_variable')
+                  if (have_variable) then
+                     call fail(STATUS_TABLE_BAD_HEADER, 'key "interpolation_variable" given twice')
                      return
                   end if
-               end do
-               if (.not. (have_b .and. have_h)) then
-                  call fail(STATUS_TABLE_MISSING_KEY, 'the header before "# columns:" must give '// &
-                     '"b = ..." and "h = ..." (mm)')
+                  have_variable = .true.
+                  select case (trim(adjustl(line(eq + 3:))))
+                  case ('w')
+                     table%variable = VARIABLE_LOG_LIGAMENT
+                  case ('D')
+                     table%variable = VARIABLE_DAMAGE
+                  case default
+                     call fail(STATUS_TABLE_BAD_HEADER, 'interpolation_variable must be w or D, not "'// &
+                        clip_text(trim(adjustl(line(eq + 3:))))//'"')
+                     return
+                  end select
+               end select
+               cycle read_lines
+            end if
+            if (.not. have_columns) then
+               call fail(STATUS_TABLE_MISSING_COLUMN, 'data before the "# columns:" line')
+               return
+            end if
+            call split(line, starts, ends, nfields)
+            if (nfields /= ncols) then
+               if (nfields > MAX_FIELDS) then
+                  write (text, '(a,i0,a,i0)') 'more than ', MAX_FIELDS, ' numbers where the "# columns:" line names ', &
+                     ncols
+               else
+                  write (text, '(i0,a,i0)') nfields, ' numbers where the "# columns:" line names ', ncols
+               end if
+               call fail(STATUS_TABLE_BAD_ROW, trim(text))
+               return
+            end if
+            do j = 1, nfields
+               call parse_real(line(starts(j):ends(j)), values(j), ok, why)
+               if (.not. ok) then
+                  write (text, '(a,i0,a)') 'column ', j, ' is '//trim(why)//': "'// &
+                     clip_text(line(starts(j):ends(j)))//'"'
+                  if (index(why, 'finite') > 0) then
+                     call fail(STATUS_TABLE_NONFINITE, trim(text))
+                  else
+                     call fail(STATUS_TABLE_BAD_ROW, trim(text))
+                  end if
                   return
                end if
-               have_columns = .true.
-               cycle
-            end if
-            j = index(line, ' = ')
-            if (j < 2) then
-               call fail(STATUS_TABLE_BAD_HEADER, 'line reads: '// &
-                  trim(line(1:80)))
-               return
-            end if
-            select case (trim(line(1:j - 1)))
-            case ('b')
-               call header_number(line(j + 3:), b, have_b)
-               if (status /= STATUS_OK) return
-            case ('h')
-               call header_number(line(j + 3:), h, have_h)
-               if (status /= STATUS_OK) return
-            case ('a_Tf_limit')
-               call header_real(line(j + 3:), -huge(1.0_dp), 0.0_dp, .true., a_tf_limit, have_limit)
-               if (status /= STATUS_OK) return
-            case ('E_m')
-               call header_number(line(j + 3:), elastic(1), have_elastic(1))
-               if (status /= STATUS_OK) return
-            case ('nu_m')
-               call header_real(line(j + 3:), -1.0_dp, 0.5_dp, .false., elastic(2), have_elastic(2))
-               if (status /= STATUS_OK) return
-            case ('E_b')
-               call header_number(line(j + 3:), elastic(3), have_elastic(3))
-               if (status /= STATUS_OK) return
-            case ('nu_b')
-               call header_real(line(j + 3:), -1.0_dp, 0.5_dp, .false., elastic(4), have_elastic(4))
-               if (status /= STATUS_OK) return
-            case ('interpolation_variable')
-               select case (trim(adjustl(line(j + 3:))))
-               case ('w')
-                  table%variable = VARIABLE_LOG_LIGAMENT
-               case ('D')
-                  table%variable = VARIABLE_DAMAGE
-               case default
-                  call fail(STATUS_TABLE_BAD_HEADER, 'interpolation_variable must be w or D: '// &
-                     trim(line(1:80)))
-                  return
-               end select
-            end select
-            cycle
-         end if
-         if (.not. have_columns) then
-            call fail(STATUS_TABLE_MISSING_COLUMN, 'data before the "# columns:" line')
-            return
-         end if
-         call split(line, fields, nfields)
-         if (nfields /= ncols) then
-            write (iomsg, '(i0,a,i0,a)') nfields, ' numbers where the "# columns:" line names ', ncols
-            call fail(STATUS_TABLE_BAD_ROW, trim(iomsg))
-            return
-         end if
-         do j = 1, nfields
-            read (fields(j), *, iostat=ios) values(j)
-            if (ios /= 0) then
-               write (iomsg, '(a,i0,a)') 'column ', j, ' is not a number: "'//trim(fields(j))//'"'
-               call fail(STATUS_TABLE_BAD_ROW, trim(iomsg))
-               return
-            end if
-            if (.not. is_finite(values(j))) then
-               write (iomsg, '(a,i0,a)') 'column ', j, ' is not finite: "'//trim(fields(j))//'"'
-               call fail(STATUS_TABLE_NONFINITE, trim(iomsg))
-               return
-            end if
-         end do
+            end do
+         end associate
          nrows = nrows + 1
          if (nrows > size(lines)) call grow(rows, lines)
          rows(:, nrows) = values(position)
-         lines(nrows) = lineno
-      end do
-      close (unit)
+         lines(nrows) = file%line_number
+      end do read_lines
       if (.not. have_columns) then
          call fail(STATUS_TABLE_MISSING_COLUMN, 'no "# columns:" line')
          return
       end if
       if (.not. have_limit) then
          if (.not. all(have_elastic)) then
-            ! (the file is closed already: no `fail`, which closes it)
-            status = STATUS_TABLE_MISSING_KEY
-            message = message_path(path)//': the header must give the short-crack limit '// &
+            call fail(STATUS_TABLE_MISSING_KEY, 'the header must give the short-crack limit '// &
                '"a_Tf_limit = ..." (MPa) or the layers'' "E_m", "nu_m", "E_b", "nu_b" (plane strain) it '// &
-               'follows from'
+               'follows from')
             return
          end if
          a_tf_limit = short_crack_a_tf(elastic(1), elastic(2), elastic(3), elastic(4))
       end if
+      call close_text_file(file)
       table%b = b
       table%h = h
       table%a_tf_limit = a_tf_limit
@@ -243,46 +275,62 @@ contains
 
    contains
 
-      subroutine fail(code, text)
+      !> Set the status and the message 'file:line: text', and close the file (once).
+      subroutine fail(code, what)
          integer, intent(in) :: code
-         character(len=*), intent(in) :: text
+         character(len=*), intent(in) :: what
+         integer :: ios
          status = code
-         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(path), ':', lineno, ': ', text
-         close (unit)
+         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(table%source), ':', file%line_number, ': ', what
+         call close_text_file(file)
       end subroutine fail
 
-      subroutine header_number(text, value, found)
-         character(len=*), intent(in) :: text
+      !> A header value: one positive finite number, the key given once.
+      subroutine header_number(key, field, value, found)
+         character(len=*), intent(in) :: key, field
          real(dp), intent(out) :: value
-         logical, intent(out) :: found
-         integer :: ios2
-         read (text, *, iostat=ios2) value
-         found = ios2 == 0
-         if (found) found = is_finite(value)
-         if (found) found = value > 0.0_dp
-         if (.not. found) call fail(STATUS_TABLE_BAD_HEADER, 'header value is not a positive number: '// &
-            trim(line(1:80)))
+         logical, intent(inout) :: found
+         logical :: ok_number
+         character(len=32) :: why_number
+         if (found) then
+            call fail(STATUS_TABLE_BAD_HEADER, 'key "'//key//'" given twice')
+            return
+         end if
+         call parse_real(field, value, ok_number, why_number)
+         if (ok_number) ok_number = value > 0.0_dp
+         if (.not. ok_number) then
+            call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))// &
+               '" is not one positive number')
+            return
+         end if
+         found = .true.
       end subroutine header_number
 
       !> A header number in (lower, upper), or (lower, upper] with `closed_above` (a_Tf_limit:
-      !> (-huge, 0]; Poisson's ratios: (-1, 0.5)).
-      subroutine header_real(text, lower, upper, closed_above, value, found)
-         character(len=*), intent(in) :: text
+      !> (-huge, 0]; Poisson's ratios: (-1, 0.5)), the key given once.
+      subroutine header_real(key, field, lower, upper, closed_above, value, found)
+         character(len=*), intent(in) :: key, field
          real(dp), intent(in) :: lower, upper
          logical, intent(in) :: closed_above
          real(dp), intent(out) :: value
-         logical, intent(out) :: found
-         integer :: ios2
+         logical, intent(inout) :: found
+         logical :: ok_number
+         character(len=32) :: why_number
          character(len=40) :: range
-         read (text, *, iostat=ios2) value
-         found = ios2 == 0
-         if (found) found = is_finite(value)
-         if (found) found = value > lower .and. (value < upper .or. (closed_above .and. .not. value > upper))
-         if (.not. found) then
-            write (range, '(a,es9.2,a,es9.2,a)', iostat=ios2) '(', lower, ', ', upper, merge(']', ')', closed_above)
-            call fail(STATUS_TABLE_BAD_HEADER, 'header value is not a number in '//trim(range)//': '// &
-               trim(line(1:80)))
+         integer :: ios2
+         if (found) then
+            call fail(STATUS_TABLE_BAD_HEADER, 'key "'//key//'" given twice')
+            return
          end if
+         call parse_real(field, value, ok_number, why_number)
+         if (ok_number) ok_number = value > lower .and. (value < upper .or. (closed_above .and. .not. value > upper))
+         if (.not. ok_number) then
+            write (range, '(a,es9.2,a,es9.2,a)', iostat=ios2) '(', lower, ', ', upper, merge(']', ')', closed_above)
+            call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))// &
+               '" is not one number in '//trim(range))
+            return
+         end if
+         found = .true.
       end subroutine header_real
 
    end subroutine read_rve_table
@@ -290,8 +338,10 @@ contains
    !> Check a table against the exact identities of docs/rve.md, to IDENTITY_TOL relative
    !> (scales: C(0) for stiffnesses and crack stresses, h for jumps, C_TT(0)/h per unit slip):
    !> a from 0 to b strictly increasing, D = a/b; the symmetry zeros; eq 52 C + C^c = C(0);
-   !> T^c_T = C_TT(0) and S^c_N = C_NN(0); at a = b C = 0 and Dbar = h I; T^f < 0,
-   !> 0 < ufbar <= 1, Dbar >= 0. The message names the identity, the file line and the value.
+   !> T^c_T = C_TT(0) and S^c_N = C_NN(0); the reciprocity relations C^c_TT = C_TT(0) D Dbar_TT/h,
+   !> C^c_NN = C_NN(0) D Dbar_NN/h and C^f_T = -(C_TT(0)/h) D ufbar; at a = b C = 0, Dbar = h I,
+   !> ufbar = 1 and T^f = -C_TT(0)/h; the signs and ranges T^f < 0, 0 < ufbar <= 1, Dbar >= 0,
+   !> C >= 0 and non-increasing in a. The message names the identity, the file line and the value.
    pure subroutine check_rve_table(table, status, message)
       type(rve_table_type), intent(in) :: table
       integer, intent(out) :: status
@@ -384,6 +434,33 @@ contains
                call identity(i, 'Dbar_TT >= 0 and Dbar_NN >= 0', min(r(i, COL_DBAR_TT), r(i, COL_DBAR_NN)), status, message)
                return
             end if
+            if (r(i, COL_C_TT) < -IDENTITY_TOL*scale_c .or. r(i, COL_C_NN) < -IDENTITY_TOL*scale_c) then
+               call identity(i, 'C_TT >= 0 and C_NN >= 0', min(r(i, COL_C_TT), r(i, COL_C_NN)), status, message)
+               return
+            end if
+            if (i > 1) then
+               if (r(i, COL_C_TT) > r(i - 1, COL_C_TT) + IDENTITY_TOL*scale_c) then
+                  call identity(i, 'C_TT non-increasing in a', r(i, COL_C_TT), status, message)
+                  return
+               end if
+               if (r(i, COL_C_NN) > r(i - 1, COL_C_NN) + IDENTITY_TOL*scale_c) then
+                  call identity(i, 'C_NN non-increasing in a', r(i, COL_C_NN), status, message)
+                  return
+               end if
+            end if
+            ! reciprocity (docs/rve.md, 'Exact identities'): C^c = C(0) D Dbar/h, C^f_T = -(C_TT(0)/h) D ufbar
+            if (abs(r(i, COL_CC_TT) - c0_t*r(i, COL_D)*r(i, COL_DBAR_TT)/h) > IDENTITY_TOL*scale_c) then
+               call identity(i, 'Cc_TT = C_TT(0) D Dbar_TT/h (reciprocity)', r(i, COL_CC_TT), status, message)
+               return
+            end if
+            if (abs(r(i, COL_CC_NN) - c0_n*r(i, COL_D)*r(i, COL_DBAR_NN)/h) > IDENTITY_TOL*scale_c) then
+               call identity(i, 'Cc_NN = C_NN(0) D Dbar_NN/h (reciprocity)', r(i, COL_CC_NN), status, message)
+               return
+            end if
+            if (abs(r(i, COL_CF_T) + scale_f*r(i, COL_D)*r(i, COL_UFBAR)) > IDENTITY_TOL*scale_f) then
+               call identity(i, 'Cf_T = -(C_TT(0)/h) D ufbar (reciprocity)', r(i, COL_CF_T), status, message)
+               return
+            end if
          end do
          if (max(abs(r(n, COL_C_TT)), abs(r(n, COL_C_NN))) > IDENTITY_TOL*scale_c) then
             call identity(n, 'C = 0 at a = b', max(abs(r(n, COL_C_TT)), abs(r(n, COL_C_NN))), status, message)
@@ -391,6 +468,14 @@ contains
          end if
          if (max(abs(r(n, COL_DBAR_TT) - h), abs(r(n, COL_DBAR_NN) - h)) > IDENTITY_TOL*h) then
             call identity(n, 'Dbar = h I at a = b', r(n, COL_DBAR_TT), status, message)
+            return
+         end if
+         if (abs(r(n, COL_UFBAR) - 1.0_dp) > IDENTITY_TOL) then
+            call identity(n, 'ufbar = 1 at a = b', r(n, COL_UFBAR), status, message)
+            return
+         end if
+         if (abs(r(n, COL_TF) + scale_f) > IDENTITY_TOL*scale_f) then
+            call identity(n, 'Tf = -C_TT(0)/h at a = b', r(n, COL_TF), status, message)
             return
          end if
       end associate
@@ -489,45 +574,31 @@ contains
       end if
    end subroutine crack_variable
 
-   !> Split a line at blanks into at most size(fields) fields.
-   pure subroutine split(text, fields, nfields)
+   !> Split a line at blanks (spaces, tabs) into fields text(starts(i):ends(i)); nfields counts
+   !> them all, but only the first size(starts) are stored.
+   pure subroutine split(text, starts, ends, nfields)
       character(len=*), intent(in) :: text
-      character(len=*), intent(out) :: fields(:)
+      integer, intent(out) :: starts(:), ends(:)
       integer, intent(out) :: nfields
-      integer :: i, start
-      logical :: in_field
+      integer :: i
+      logical :: in_field, blank
       nfields = 0
       in_field = .false.
-      start = 1
-      do i = 1, len_trim(text) + 1
-         if (i <= len_trim(text)) then
-            if (text(i:i) /= ' ' .and. text(i:i) /= char(9)) then
-               if (.not. in_field) start = i
-               in_field = .true.
-               cycle
-            end if
-         end if
-         if (in_field) then
-            nfields = nfields + 1
-            if (nfields > size(fields)) return
-            fields(nfields) = text(start:i - 1)
+      starts = 0
+      ends = 0
+      do i = 1, len(text)
+         blank = text(i:i) == ' ' .or. text(i:i) == achar(9)
+         if (blank .and. in_field) then
+            if (nfields <= size(ends)) ends(nfields) = i - 1
             in_field = .false.
+         else if (.not. blank .and. .not. in_field) then
+            nfields = nfields + 1
+            if (nfields <= size(starts)) starts(nfields) = i
+            in_field = .true.
          end if
       end do
+      if (in_field .and. nfields <= size(ends)) ends(nfields) = len(text)
    end subroutine split
-
-   !> Position of `name` in `names`, 0 when absent.
-   pure integer function findloc_name(names, name) result(pos)
-      character(len=*), intent(in) :: names(:), name
-      integer :: i
-      pos = 0
-      do i = 1, size(names)
-         if (trim(names(i)) == trim(name)) then
-            pos = i
-            return
-         end if
-      end do
-   end function findloc_name
 
    !> Double the row capacity.
    pure subroutine grow(rows, lines)

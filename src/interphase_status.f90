@@ -61,6 +61,7 @@ module interphase_status
    integer, parameter, public :: STATUS_RCURVE_MALFORMED = 61
    integer, parameter, public :: STATUS_RCURVE_NEGATIVE = 62
    integer, parameter, public :: STATUS_RCURVE_BAD_RANGE = 63
+   integer, parameter, public :: STATUS_RCURVE_OUT_OF_RANGE = 64
 
    !> Severity of a host message: information, warning (the increment is cut back), fatal.
    integer, parameter, public :: SEVERITY_INFO = 1
@@ -114,6 +115,7 @@ contains
       case (STATUS_RCURVE_MALFORMED);      message = 'R-curve file line is not "D G_cI G_cII" (three finite numbers)'
       case (STATUS_RCURVE_NEGATIVE);       message = 'R-curve toughness not positive'
       case (STATUS_RCURVE_BAD_RANGE);      message = 'R-curve D values not strictly increasing within [0, 1], or too few'
+      case (STATUS_RCURVE_OUT_OF_RANGE);   message = 'tabulated R-curve does not cover the damage reached (or D0)'
       case (STATUS_NONFINITE_SEPARATION);  message = 'separation is not finite (NaN or Inf)'
       case (STATUS_BAD_STATE);             message = 'state variables out of range or not finite'
       case (STATUS_BAD_COEFFICIENTS);      message = 'coefficient set not admissible at this damage'

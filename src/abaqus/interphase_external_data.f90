@@ -18,6 +18,7 @@ module interphase_external_data
    use interphase_micro_coefficients, only: load_custom_table, custom_table_source
    use interphase_rcurve, only: load_rcurve, rcurve_source
    use interphase_abaqus_interfaces, only: interphase_host_message
+   use interphase_text_input, only: tried_path
    implicit none
    private
    public :: load_external_data, load_table_file, load_rcurve_file
@@ -66,7 +67,7 @@ contains
       integer :: status
       ok = .true.
       if (loaded_from == path) then
-         call interphase_host_message(SEVERITY_INFO, caller//': '//what//' '//message_path(path)//' already loaded')
+         call interphase_host_message(SEVERITY_INFO, caller//': '//what//' '//message_path(tried_path(path))//' already loaded')
          return
       end if
       call loader(path, status, message)
@@ -76,7 +77,7 @@ contains
             status_message(status)//': '//trim(message))
          return
       end if
-      call interphase_host_message(SEVERITY_INFO, caller//': '//what//' loaded from '//message_path(path))
+      call interphase_host_message(SEVERITY_INFO, caller//': '//what//' loaded from '//message_path(tried_path(path)))
    end subroutine load_named_file
 
    !> The value of a non-empty environment variable.

@@ -5,7 +5,9 @@
 !>
 !> This adapter only packs arguments and calls the pure kernel. On a failed update it lowers
 !> PNEWDT, reports through `interphase_host_message` and returns before touching STRESS,
-!> STATEV, DDSDDE, SSE or SPD. Thread-safe: no SAVE, COMMON or module data is written.
+!> STATEV, DDSDDE, SSE or SPD. Setup errors (sizes, PROPS, data not loaded, a tabulated R-curve
+!> that does not cover D0 or the damage reached) are reported as fatal, other failures as
+!> warnings (the increment is cut back). Thread-safe: no SAVE, COMMON or module data is written.
 !> SSE returns the stored energy and SPD accumulates the dissipated energy per unit area
 !> (N/mm): SPD += 1/2 (t_n + t).ds - (psi - psi_n), with psi_n the SSE passed in.
 subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, &
@@ -13,12 +15,13 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, &
       layer, kspt, jstep, kinc)
    use interphase_kinds, only: dp
-   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, MESSAGE_LEN, SEVERITY_WARNING, &
+   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, status_message
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
    use interphase_provider, only: check_run_time_data
+   use interphase_rcurve, only: rcurve_coverage
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
    integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, layer, kspt, kinc
@@ -66,7 +69,13 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    s(1:ntens) = stran + dstran
    call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
       new, psi, status)
-   if (status /= STATUS_OK) then
+   if (status == STATUS_RCURVE_OUT_OF_RANGE) then
+      ! the R-curve file does not reach the damage this point needs: a setup error
+      write (message, '(a,a,g0.6,a,3es12.4)', iostat=status) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+         old%d, ' at separation (mm) ', s(1:ntens)
+      call fail(STATUS_RCURVE_OUT_OF_RANGE, SEVERITY_FATAL)
+      return
+   else if (status /= STATUS_OK) then
       write (message, '(a,3es12.4)') 'update failed at separation (mm) ', s(1:ntens)
       call fail(status, SEVERITY_WARNING)
       return

@@ -18,12 +18,13 @@
 !>   copied unchanged. An annealing call (lanneal = 1) copies stress, state and energies
 !>   unchanged.
 !>
-!> The simplified model with the displacement-driven law runs the vectorised block update
-!> (interphase_block, column by column); the other models and laws the point update
+!> The materials `block_supports` accepts (the simplified model with the displacement-driven
+!> law) run the vectorised block update (interphase_block, column by column); the others the point update
 !> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
-!> Failures: bad sizes, PROPS, density or incoming STATEV, and a custom RVE table or R-curve
-!> selected but not loaded (VEXTERNALDB), are fatal (the whole block is held at
+!> Failures: bad sizes, PROPS, density or incoming STATEV, a custom RVE table or R-curve
+!> selected but not loaded (VEXTERNALDB), and a tabulated R-curve that does not cover D0 or the
+!> damage a point reaches, are fatal (the whole block is held at
 !> its old values and the host hook is called with SEVERITY_FATAL; Abaqus then stops). A point
 !> whose update fails (e.g. a non-finite increment) keeps its old stress, state and energies,
 !> gets STATEV(SV_FAILED) = 1, and one warning per call names the number of failed points and
@@ -36,15 +37,16 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       enerinelasnew)
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
-      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
+      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
-      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, status_message
+      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, STATUS_RCURVE_OUT_OF_RANGE, status_message
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
-   use interphase_block, only: simplified_block_update, density_counts
+   use interphase_block, only: simplified_block_update, density_counts, block_supports
+   use interphase_rcurve, only: rcurve_coverage
    use interphase_abaqus_interfaces, only: interphase_host_message
    implicit none
    integer, intent(in) :: nblock                    !! number of material points in this call
@@ -149,7 +151,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       ! (interphase_block); the other models and laws run the point update (interphase_kernel).
       ! Both give the same numbers for the simplified model (bit for bit). Results go straight into
       ! the new arrays; a failed point is put back to its old values afterwards.
-      blocked = params%model == MODEL_SIMPLIFIED .and. params%damage_law == DAMAGE_DISPLACEMENT
+      blocked = block_supports(params)
       nfailed = 0
       first_failed = 0
       first_status = STATUS_OK
@@ -250,6 +252,13 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
                call interface_update(params, old, statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1), &
                   traction, tangent(1:ntens, 1:ntens), new, psi(k), status)
+               if (status == STATUS_RCURVE_OUT_OF_RANGE) then
+                  ! the R-curve file does not reach the damage this point needs: a setup error
+                  write (message, '(a,a,i0,a,g0.6)', iostat=status) rcurve_coverage(), '; at block point ', km, &
+                     ' the crack grows beyond it from D = ', old%d
+                  fatal_code = STATUS_RCURVE_OUT_OF_RANGE
+                  exit update
+               end if
                ok(k) = status == STATUS_OK
                if (.not. ok(k)) then
                   nbad = nbad + 1

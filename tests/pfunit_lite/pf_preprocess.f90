@@ -9,7 +9,9 @@
 !> `if (anyExceptions()) return`, with `#line` markers so that compiler messages (and backtraces)
 !> point at the .pf lines. After the file a module `wrap_<module>` is appended whose `run_suite` runs the
 !> tests in file order through funit_run_test. Anything else starting with `@`, an assertion with a
-!> trailing comment, or a module not named like the file is an error: message `file:line: error: ...`
+!> trailing comment, an @assert line that real pFUnit would truncate (over 132 - 8 columns without
+!> its indentation), a @test/@before/@after before anything but a plain `subroutine` line (real
+!> pFUnit skips `recursive subroutine` etc. in silence), or a module not named like the file is an error: message `file:line: error: ...`
 !> on standard error, no output file, exit status 1.
 program pf_preprocess
    use, intrinsic :: iso_fortran_env, only: error_unit, iostat_eor, iostat_end
@@ -20,6 +22,9 @@ program pf_preprocess
    !> Longest free-form line; a longer generated statement is continued on further lines
    !> (pieces of at least MIN_CHUNK_LEN characters, whatever the indentation).
    integer, parameter :: MAX_LINE_LEN = 132, MIN_CHUNK_LEN = 60
+   !> Columns real pFUnit adds to an @assert line (without its indentation) when it writes the
+   !> assertion on one generated line (docs: ../shared/PFUNIT.md).
+   integer, parameter :: PFUNIT_EXTRA_COLUMNS = 8
    !> Buffer length when reading a line piecewise.
    integer, parameter :: READ_CHUNK = 256
    !> Prefix of the appended module that registers the tests.
@@ -142,6 +147,9 @@ contains
          end if
       end if
 
+      if (len(text) + PFUNIT_EXTRA_COLUMNS > MAX_LINE_LEN) call fail(line_no, '"@' // name // '" line is ' // &
+         int_str(len(text)) // ' columns without its indentation: real pFUnit writes it on one line about ' // &
+         int_str(PFUNIT_EXTRA_COLUMNS) // ' columns longer, over ' // int_str(MAX_LINE_LEN) // ' ("Line truncated")')
       associate (indent => line(1:index(line, '@') - 1))
          call emit(indent // 'call funit_location(''' // quoted(pf_file) // ''', ' // int_str(line_no) // ')')
          call emit('#line ' // int_str(line_no) // ' "' // in_path // '"')
@@ -160,8 +168,10 @@ contains
       do
          call split_word(statement, word, rest)
          select case (lower(word))
-         case ('recursive', 'non_recursive', 'impure', 'module')
-            statement = rest
+         case ('recursive', 'non_recursive', 'impure', 'pure', 'elemental', 'module')
+            call fail(line_no, trim(DIRECTIVE_NAMES(pending)) // ' (line ' // int_str(pending_line) // &
+               ') must be followed by a line that starts with "subroutine"; real pFUnit silently skips "' // &
+               word // ' subroutine" (it takes the next plain subroutine instead)')
          case ('subroutine')
             exit
          case default

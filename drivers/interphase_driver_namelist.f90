@@ -1,0 +1,248 @@
+!> A strict pre-check of a namelist case file, before Fortran's namelist read takes it: the file
+!> is read with bounded lines (interphase_text_input's limits), and refused when a group comes
+!> twice, when an entry of a group comes twice, or when an entry's value is not of its kind: one
+!> real literal, one integer, one logical (.true./.false.) or one quoted string. Messages name
+!> the file, the line, the group and the entry (`&loading: plot = 'yes' (line 9) is not .true.
+!> or .false.`). Entries it does not know are left to the namelist read (which names them).
+module interphase_driver_namelist
+   use, intrinsic :: iso_fortran_env, only: iostat_end, int64
+   use interphase_text_input, only: is_real_literal, clip_text, MAX_FILE_BYTES
+   use interphase_driver_text, only: int_to_string, to_lower, read_line
+   implicit none
+   private
+   public :: check_namelist_file, entry_kind_type, KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
+
+   !> Kinds of entry values.
+   integer, parameter :: KIND_REAL = 1, KIND_INTEGER = 2, KIND_LOGICAL = 3, KIND_STRING = 4
+
+   !> One known entry: 'group.name' (lower case) and its kind.
+   type :: entry_kind_type
+      character(len=64) :: name = ''
+      integer :: kind = 0
+   end type entry_kind_type
+
+   !> A token of the file: its text (lower-cased for names), its line, and what it is.
+   integer, parameter :: TOKEN_WORD = 1, TOKEN_STRING = 2, TOKEN_EQUALS = 3, TOKEN_COMMA = 4, &
+      TOKEN_SLASH = 5, TOKEN_GROUP = 6
+
+contains
+
+   !> Check `path` against `known` (entries of every group the program reads). ok = .false. with
+   !> `message` ('path:line: &group: ...') on the first problem.
+   subroutine check_namelist_file(path, known, ok, message)
+      character(len=*), intent(in) :: path
+      type(entry_kind_type), intent(in) :: known(:)
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+      character(len=:), allocatable :: line, group, seen_groups, seen_entries, name, value
+      character(len=512) :: iomsg
+      integer :: unit, ios, line_number, i, n, first, k, entry_line, nvalues, value_kind
+      integer(int64) :: bytes
+      character(len=1) :: quote
+      logical :: in_group, in_entry
+
+      ok = .false.
+      open (newunit=unit, file=path, status='old', action='read', form='formatted', iostat=ios, iomsg=iomsg)
+      if (ios /= 0) then
+         message = path//': cannot open the case file: '//trim(iomsg)
+         return
+      end if
+      in_group = .false.
+      in_entry = .false.
+      group = ''
+      seen_groups = ' '
+      seen_entries = ' '
+      name = ''
+      value = ''
+      nvalues = 0
+      entry_line = 0
+      line_number = 0
+      bytes = 0
+      quote = ' '
+      do
+         call read_line(unit, line, ios, iomsg)
+         if (ios == iostat_end) exit
+         line_number = line_number + 1
+         if (ios /= 0) then
+            call fail('cannot read the line: '//trim(iomsg))
+            return
+         end if
+         bytes = bytes + len(line) + 1
+         if (bytes > MAX_FILE_BYTES) then
+            call fail('the file is larger than '//int_to_string(int(MAX_FILE_BYTES))//' bytes')
+            return
+         end if
+         n = len(line)
+         i = 1
+         do while (i <= n)
+            associate (c => line(i:i))
+               if (c == ' ' .or. c == achar(9)) then
+                  i = i + 1
+               else if (c == '!') then
+                  exit                                     ! comment to the end of the line
+               else if (.not. in_group) then
+                  if (c /= '&') then
+                     call fail('text outside a group: "'//clip_text(line(i:))//'"')
+                     return
+                  end if
+                  first = i + 1
+                  i = scan_word_end(line, first)
+                  group = to_lower(line(first:i - 1))
+                  if (index(seen_groups, ' '//group//' ') > 0) then
+                     call fail('&'//group//' given twice: a case file has one group of each name')
+                     return
+                  end if
+                  seen_groups = seen_groups//group//' '
+                  seen_entries = ' '
+                  in_group = .true.
+               else if (c == '/' .or. c == '&') then
+                  if (c == '&') then
+                     if (to_lower(line(i:min(n, i + 3))) /= '&end') then
+                        call fail('&'//group//' is not closed by "/" before "'//clip_text(line(i:))//'"')
+                        return
+                     end if
+                     i = i + 3
+                  end if
+                  if (.not. finish_entry()) return
+                  in_group = .false.
+                  i = i + 1
+               else if (c == ',') then
+                  i = i + 1
+               else if (c == '=') then
+                  call fail('&'//group//': "=" without an entry name')
+                  return
+               else if (c == '''' .or. c == '"') then
+                  quote = c
+                  first = i
+                  i = i + 1
+                  do while (i <= n)
+                     if (line(i:i) == quote) then
+                        if (i < n) then
+                           if (line(i + 1:i + 1) == quote) then
+                              i = i + 2
+                              cycle
+                           end if
+                        end if
+                        exit
+                     end if
+                     i = i + 1
+                  end do
+                  if (i > n) then
+                     call fail('&'//group//': a string that does not end on its line: '//clip_text(line(first:)))
+                     return
+                  end if
+                  call add_value(line(first:i), KIND_STRING)
+                  i = i + 1
+               else
+                  first = i
+                  do while (i <= n)
+                     if (scan(line(i:i), ' ,/=!'//achar(9)) > 0) exit
+                     i = i + 1
+                  end do
+                  ! a word followed by '=' is the next entry's name
+                  k = verify(line(i:)//'x', ' '//achar(9)) + i - 1
+                  if (k <= n) then
+                     if (line(k:k) == '=') then
+                        if (.not. finish_entry()) return
+                        name = to_lower(line(first:i - 1))
+                        if (index(seen_entries, ' '//name//' ') > 0) then
+                           call fail('&'//group//': entry '//name//' given twice')
+                           return
+                        end if
+                        seen_entries = seen_entries//name//' '
+                        in_entry = .true.
+                        entry_line = line_number
+                        nvalues = 0
+                        value = ''
+                        i = k + 1
+                        cycle
+                     end if
+                  end if
+                  call add_value(line(first:i - 1), 0)
+               end if
+            end associate
+            if (allocated(message)) return
+         end do
+      end do
+      close (unit)
+      if (in_group) then
+         message = path//': &'//group//' is not closed by "/"'
+         return
+      end if
+      ok = .true.
+
+   contains
+
+      !> The end (one past) of the name starting at `from`.
+      pure integer function scan_word_end(text, from) result(past)
+         character(len=*), intent(in) :: text
+         integer, intent(in) :: from
+         past = from
+         do while (past <= len(text))
+            if (scan(text(past:past), ' ,/=!'//achar(9)) > 0) exit
+            past = past + 1
+         end do
+      end function scan_word_end
+
+      !> Record one value of the current entry (kind KIND_STRING for a quoted string, else 0).
+      subroutine add_value(text, quoted)
+         character(len=*), intent(in) :: text
+         integer, intent(in) :: quoted
+         if (.not. in_entry) then
+            call fail('&'//group//': a value without an entry name: '//clip_text(text))
+            return
+         end if
+         nvalues = nvalues + 1
+         value = text
+         value_kind = quoted
+      end subroutine add_value
+
+      !> Check the entry just ended against its kind; false (message set) when it is wrong.
+      logical function finish_entry() result(good)
+         integer :: j, kind
+         character(len=:), allocatable :: lower, where
+         good = .true.
+         if (.not. in_entry) return
+         in_entry = .false.
+         kind = 0
+         do j = 1, size(known)
+            if (trim(known(j)%name) == group//'.'//name) kind = known(j)%kind
+         end do
+         if (kind == 0) return
+         where = path//':'//int_to_string(entry_line)//': &'//group//': '//name
+         if (nvalues /= 1) then
+            good = .false.
+            message = where//' needs one value, got '//int_to_string(nvalues)
+            close (unit)
+            return
+         end if
+         lower = to_lower(value)
+         select case (kind)
+         case (KIND_REAL)
+            good = value_kind == 0 .and. is_real_literal(value)
+            if (.not. good) message = where//' = '//clip_text(value)//' is not a number'
+         case (KIND_INTEGER)
+            good = value_kind == 0 .and. len(value) > 0 .and. len(value) <= 9
+            if (good) good = verify(value(merge(2, 1, scan(value(1:1), '+-') > 0):), '0123456789') == 0 &
+               .and. len(value) > merge(1, 0, scan(value(1:1), '+-') > 0)
+            if (.not. good) message = where//' = '//clip_text(value)//' is not an integer'
+         case (KIND_LOGICAL)
+            good = value_kind == 0 .and. (lower == '.true.' .or. lower == '.false.' .or. lower == 't' &
+               .or. lower == 'f' .or. lower == '.t.' .or. lower == '.f.')
+            if (.not. good) message = where//' = '//clip_text(value)//' is not .true. or .false.'
+         case (KIND_STRING)
+            good = value_kind == KIND_STRING
+            if (.not. good) message = where//' = '//clip_text(value)//' is not a quoted string'
+         end select
+         if (.not. good) close (unit)
+      end function finish_entry
+
+      subroutine fail(text)
+         character(len=*), intent(in) :: text
+         message = path//':'//int_to_string(line_number)//': '//text
+         close (unit)
+      end subroutine fail
+
+   end subroutine check_namelist_file
+
+end module interphase_driver_namelist

@@ -1,0 +1,343 @@
+!> Bounded, strict reading of the text files interphase takes at start-up (RVE tables, R-curves,
+!> and the drivers' case and history files): one line at a time with a limit on its length and
+!> on the whole file, so that no file (a device such as /dev/zero, a line without end) is read
+!> forever; numbers taken only when the whole field is one real literal; file names shown as
+!> the path that was tried.
+!>
+!> Set-up code (I/O); the pure update never calls it.
+module interphase_text_input
+   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor, int64
+   use, intrinsic :: iso_c_binding, only: c_char, c_null_char, c_size_t, c_ptr, c_associated
+   use interphase_finite, only: is_finite
+   use interphase_kinds, only: dp
+   implicit none
+   private
+   public :: text_file_type, open_text_file, read_text_line, close_text_file, parse_real, &
+      is_real_literal, tried_path, clip_text
+
+   !> Longest line a reader takes (characters, without the newline).
+   integer, parameter, public :: MAX_LINE_LEN = 65536
+   !> Largest file a reader takes (bytes, newlines included): 64 MiB.
+   integer(int64), parameter, public :: MAX_FILE_BYTES = 67108864_int64
+
+   !> Outcomes of read_text_line: a line, the end of the file, a line too long, a file too
+   !> large, a read error.
+   integer, parameter, public :: TEXT_LINE = 0, TEXT_END = 1, TEXT_LINE_TOO_LONG = 2, &
+      TEXT_FILE_TOO_LARGE = 3, TEXT_READ_ERROR = 4
+
+   !> An open text file read line by line.
+   type :: text_file_type
+      integer :: unit = -1                       !! the unit, -1 when not open
+      integer :: line_number = 0                 !! lines read so far
+      integer(int64) :: bytes = 0_int64          !! bytes read so far
+      character(len=:), allocatable :: buffer    !! the last line (its first `length` characters)
+      integer :: length = 0                      !! length of the last line
+   end type text_file_type
+
+   interface
+      !> POSIX getcwd(3).
+      function c_getcwd(buf, size) result(p) bind(C, name='getcwd')
+         import :: c_char, c_size_t, c_ptr
+         implicit none
+         character(kind=c_char), intent(out) :: buf(*)
+         integer(c_size_t), value, intent(in) :: size
+         type(c_ptr) :: p
+      end function c_getcwd
+   end interface
+
+contains
+
+   !> Open `path` for reading. ok = .false. with `message` (the processor's reason) when it
+   !> cannot be opened; a directory is refused here too.
+   subroutine open_text_file(path, file, ok, message)
+      character(len=*), intent(in) :: path            !! the file
+      type(text_file_type), intent(out) :: file
+      logical, intent(out) :: ok
+      character(len=*), intent(out) :: message        !! reason when not ok
+      integer :: ios
+      character(len=256) :: iomsg
+      ok = .false.
+      message = ''
+      iomsg = ''
+      ! a directory opens (and reads as empty) with some compilers: refuse it by name
+      inquire (file=trim(path)//'/.', exist=ok)
+      if (ok) then
+         ok = .false.
+         message = 'cannot open: is a directory'
+         return
+      end if
+      open (newunit=file%unit, file=path, status='old', action='read', form='formatted', &
+         access='sequential', iostat=ios, iomsg=iomsg)
+      if (ios /= 0) then
+         file%unit = -1
+         message = 'cannot open: '//trim(iomsg)
+         return
+      end if
+      allocate (character(len=1024) :: file%buffer)
+      ok = .true.
+   end subroutine open_text_file
+
+   !> Read the next line into file%buffer(1:file%length), in pieces, in time linear in its
+   !> length. Returns TEXT_LINE, TEXT_END, or (with `message`) TEXT_LINE_TOO_LONG (more than
+   !> MAX_LINE_LEN characters), TEXT_FILE_TOO_LARGE (more than MAX_FILE_BYTES read) or
+   !> TEXT_READ_ERROR. A last line without a newline is a line; a trailing carriage return is
+   !> dropped. Reading stops at the limit: a line without end is never read to its end.
+   subroutine read_text_line(file, outcome, message)
+      type(text_file_type), intent(inout) :: file
+      integer, intent(out) :: outcome                 !! TEXT_*
+      character(len=*), intent(out) :: message        !! reason when not TEXT_LINE/TEXT_END
+      integer, parameter :: PIECE_LEN = 4096
+      character(len=PIECE_LEN) :: piece
+      character(len=:), allocatable :: grown
+      character(len=256) :: iomsg
+      integer :: ios, nread
+      logical :: started
+
+      message = ''
+      file%length = 0
+      started = .false.
+      do
+         iomsg = ''
+         read (file%unit, '(a)', advance='no', iostat=ios, iomsg=iomsg, size=nread) piece
+         if (ios /= 0 .and. ios /= iostat_eor .and. .not. is_iostat_end(ios)) then
+            outcome = TEXT_READ_ERROR
+            message = 'read error: '//trim(iomsg)
+            return
+         end if
+         if (is_iostat_end(ios) .and. nread == 0) then
+            if (started) exit
+            outcome = TEXT_END
+            return
+         end if
+         started = .true.
+         file%bytes = file%bytes + nread
+         if (ios == iostat_eor) file%bytes = file%bytes + 1
+         if (file%length + nread > MAX_LINE_LEN) then
+            outcome = TEXT_LINE_TOO_LONG
+            file%line_number = file%line_number + 1
+            write (message, '(a,i0,a)') 'line longer than ', MAX_LINE_LEN, ' characters'
+            return
+         end if
+         if (file%bytes > MAX_FILE_BYTES) then
+            outcome = TEXT_FILE_TOO_LARGE
+            file%line_number = file%line_number + 1
+            write (message, '(a,i0,a)') 'file larger than ', MAX_FILE_BYTES, ' bytes'
+            return
+         end if
+         if (file%length + nread > len(file%buffer)) then
+            allocate (character(len=max(2*len(file%buffer), file%length + nread)) :: grown)
+            grown(1:file%length) = file%buffer(1:file%length)
+            call move_alloc(grown, file%buffer)
+         end if
+         file%buffer(file%length + 1:file%length + nread) = piece(1:nread)
+         file%length = file%length + nread
+         if (ios /= 0) exit                           ! end of record, or of the file
+      end do
+      file%line_number = file%line_number + 1
+      if (file%length > 0) then
+         if (file%buffer(file%length:file%length) == achar(13)) file%length = file%length - 1
+      end if
+      outcome = TEXT_LINE
+   end subroutine read_text_line
+
+   !> Close the file (once: a second call does nothing).
+   subroutine close_text_file(file)
+      type(text_file_type), intent(inout) :: file
+      integer :: ios
+      if (file%unit /= -1) close (file%unit, iostat=ios)
+      file%unit = -1
+   end subroutine close_text_file
+
+   !> True when `text` (no leading or trailing blanks) is one real literal:
+   !> [sign] (digits [. [digits]] | . digits) [(e|E|d|D) [sign] digits]. Nothing else: no
+   !> separators (`,` `/`), no repeat counts (`2*`), no exponent without its letter (`1-2`).
+   pure logical function is_real_literal(text)
+      character(len=*), intent(in) :: text
+      integer :: i, n, mantissa_digits
+      n = len(text)
+      is_real_literal = .false.
+      i = 1
+      if (n == 0) return
+      if (text(1:1) == '+' .or. text(1:1) == '-') i = 2
+      mantissa_digits = 0
+      do while (i <= n)
+         if (.not. is_digit(text(i:i))) exit
+         mantissa_digits = mantissa_digits + 1
+         i = i + 1
+      end do
+      if (i <= n) then
+         if (text(i:i) == '.') then
+            i = i + 1
+            do while (i <= n)
+               if (.not. is_digit(text(i:i))) exit
+               mantissa_digits = mantissa_digits + 1
+               i = i + 1
+            end do
+         end if
+      end if
+      if (mantissa_digits == 0) return
+      if (i <= n) then
+         if (scan(text(i:i), 'eEdD') == 0) return
+         i = i + 1
+         if (i <= n) then
+            if (text(i:i) == '+' .or. text(i:i) == '-') i = i + 1
+         end if
+         if (i > n) return
+         do while (i <= n)
+            if (.not. is_digit(text(i:i))) return
+            i = i + 1
+         end do
+      end if
+      is_real_literal = .true.
+   end function is_real_literal
+
+   !> The number in `field` when the whole field (leading and trailing blanks aside) is one
+   !> finite real literal (is_real_literal); else ok = .false. and `why` says what is wrong.
+   subroutine parse_real(field, value, ok, why)
+      character(len=*), intent(in) :: field
+      real(dp), intent(out) :: value
+      logical, intent(out) :: ok
+      character(len=*), intent(out) :: why            !! 'not a number' or 'not finite'
+      integer :: ios, first, last
+      value = 0.0_dp
+      ok = .false.
+      why = 'not a number'
+      first = verify(field, ' '//achar(9))
+      last = len_trim(field)
+      if (first == 0) return
+      if (.not. is_real_literal(field(first:last))) then
+         if (is_nonfinite_word(field(first:last))) why = 'not finite (NaN or Inf)'
+         return
+      end if
+      if (overflows(field(first:last))) then
+         why = 'not finite (out of range)'
+         return
+      end if
+      read (field(first:last), *, iostat=ios) value
+      if (ios /= 0) return
+      if (.not. is_finite(value)) then
+         why = 'not finite (out of range)'
+         return
+      end if
+      ok = .true.
+   end subroutine parse_real
+
+   !> The path as it was tried: a relative path is shown after the current directory
+   !> ('cases/x.dat' -> '/home/u/run/cases/x.dat'), so that a message says which file it was.
+   !> An absolute path (or one when the current directory is not known) is returned as is.
+   function tried_path(path) result(full)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: full
+      integer, parameter :: CWD_LEN = 4096
+      character(kind=c_char) :: buf(CWD_LEN)
+      integer :: n
+      full = trim(path)
+      if (len(full) == 0) return
+      if (full(1:1) == '/') return
+      if (.not. c_associated(c_getcwd(buf, int(CWD_LEN, c_size_t)))) return
+      n = 0
+      do while (n < CWD_LEN)
+         if (buf(n + 1) == c_null_char) exit
+         n = n + 1
+      end do
+      if (n == 0 .or. n == CWD_LEN) return
+      block
+         character(len=n) :: cwd
+         integer :: i
+         do i = 1, n
+            cwd(i:i) = buf(i)
+         end do
+         do while (len(full) >= 2)
+            if (full(1:2) /= './') exit
+            full = full(3:)
+         end do
+         if (cwd(n:n) == '/') then
+            full = cwd//full
+         else
+            full = cwd//'/'//full
+         end if
+      end block
+   end function tried_path
+
+   !> Whether a real literal (is_real_literal) lies beyond huge(1.0_dp), decided from its digits
+   !> and exponent, so that it is never read (reading it would raise an overflow, which traps
+   !> under -ffpe-trap=overflow).
+   pure logical function overflows(literal)
+      character(len=*), intent(in) :: literal
+      character(len=*), parameter :: HUGE_DIGITS = '17976931348623157'   ! huge(1.0_dp) = 0.1797...e309
+      integer, parameter :: HUGE_MAGNITUDE = 309, MAX_EXPONENT_DIGITS = 6
+      character(len=len(HUGE_DIGITS)) :: digits
+      integer :: i, n, magnitude, exponent, mark, ndigits, ios
+      logical :: before_point, significant
+      n = len(literal)
+      mark = scan(literal, 'eEdD')
+      exponent = 0
+      if (mark > 0) then
+         if (len(literal(mark + 1:)) - verify(literal(mark + 1:), '+-0') + 1 > MAX_EXPONENT_DIGITS) then
+            overflows = literal(mark + 1:mark + 1) /= '-' .and. verify(literal(1:mark - 1), '+-0.') > 0
+            return
+         end if
+         read (literal(mark + 1:), *, iostat=ios) exponent
+         n = mark - 1
+      end if
+      digits = repeat('0', len(digits))
+      ndigits = 0
+      magnitude = 0
+      before_point = .true.
+      significant = .false.
+      do i = 1, n
+         if (literal(i:i) == '.') then
+            before_point = .false.
+         else if (literal(i:i) >= '0' .and. literal(i:i) <= '9') then
+            if (literal(i:i) /= '0') significant = .true.
+            if (significant) then
+               if (before_point) magnitude = magnitude + 1
+               if (ndigits < len(digits)) then
+                  ndigits = ndigits + 1
+                  digits(ndigits:ndigits) = literal(i:i)
+               end if
+            else if (.not. before_point) then
+               magnitude = magnitude - 1
+            end if
+         end if
+      end do
+      overflows = .false.
+      if (.not. significant) return
+      magnitude = magnitude + exponent
+      overflows = magnitude > HUGE_MAGNITUDE .or. (magnitude == HUGE_MAGNITUDE .and. digits > HUGE_DIGITS)
+   end function overflows
+
+   !> At most the first 60 characters of `text`, with '...' when cut (for messages).
+   pure function clip_text(text) result(short)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: short
+      if (len(text) <= 60) then
+         short = text
+      else
+         short = text(1:57)//'...'
+      end if
+   end function clip_text
+
+   !> NaN, Inf or Infinity (any case, optional sign, NaN(...) too).
+   pure logical function is_nonfinite_word(text)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: lower
+      integer :: i, first
+      lower = text
+      do i = 1, len(text)
+         if (text(i:i) >= 'A' .and. text(i:i) <= 'Z') lower(i:i) = achar(iachar(text(i:i)) + 32)
+      end do
+      first = 1
+      if (len(lower) > 0) then
+         if (lower(1:1) == '+' .or. lower(1:1) == '-') first = 2
+      end if
+      is_nonfinite_word = lower(first:) == 'inf' .or. lower(first:) == 'infinity' .or. lower(first:) == 'nan'
+      if (len(lower) >= first + 3) is_nonfinite_word = is_nonfinite_word .or. lower(first:first + 3) == 'nan('
+   end function is_nonfinite_word
+
+   pure logical function is_digit(c)
+      character(len=1), intent(in) :: c
+      is_digit = c >= '0' .and. c <= '9'
+   end function is_digit
+
+end module interphase_text_input
