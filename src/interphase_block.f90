@@ -74,16 +74,16 @@ contains
 
       !> Points per pass: the passes' working arrays stay in the L1 cache.
       integer, parameter :: SUB = 64
-      real(dp) :: sn_w(SUB), st1_w(SUB), st2_w(SUB), lam1_w(SUB), lam2_w(SUB), t_sq_w(SUB), tau_norm_w(SUB)
-      real(dp) :: dir1_w(SUB), dir2_w(SUB), d_w(SUB)
+      real(dp) :: sn_w(SUB), st1_w(SUB), st2_w(SUB), lam1_w(SUB), lam2_w(SUB), t_sq_w(SUB), d_w(SUB)
+      real(dp) :: ratio_w(SUB)
       logical :: ok_w(SUB)
       real(dp) :: inv_kf, s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
       real(dp) :: d_hat, d_k, num, den, kn_open, kt_open, kk_n, kk_t, cf_t, sigma, tau1, tau2
-      real(dp) :: tau_norm, phi, inv_norm, dgamma, lam1_closed, lam2_closed
+      real(dp) :: tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed
       real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
-      real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed, ratio
+      real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed
       integer(int64) :: keep, nfailed_count
-      logical :: ok_k, growing, open, slipping, conserve, scaled
+      logical :: ok_k, growing, open, slipping, conserve
       integer(int64) :: ngrow
       integer :: c0, m, i, k
 
@@ -91,13 +91,13 @@ contains
       ! loaded unconditionally, every branch computed and then selected) so that it vectorises;
       ! every operand is guarded so that no lane can raise a floating-point exception, whatever
       ! the compiler evaluates speculatively (hosts may run with traps enabled):
-      ! pass 1, one loop for 2-D and one for 3-D: finiteness, |s_T|^2 and the trial crack shear
-      ! stress's norm and direction (2-D: |tau| and its sign, no square root or division);
+      ! pass 1, one loop for 2-D and one for 3-D: finiteness and |s_T|^2;
       ! between them the damage (its square root and division only where a point can grow), and
       ! where a point's crack grew, its trial slip lambda_n D_n/D (pi = D lambda conserved,
-      ! GROWTH_FIXED_PI) with the trial shear stress formed again from it;
-      ! pass 2, one loop for 2-D (no arithmetic on the zero second tangential components) and one
-      ! for 3-D: the simplified coefficients, open/stick/slip, energy.
+      ! GROWTH_FIXED_PI);
+      ! pass 2, one loop for 2-D (no arithmetic on the zero second tangential components: |tau|
+      ! and its sign, no square root or division) and one for 3-D: the trial crack shear stress
+      ! from the trial slip, the simplified coefficients, open/stick/slip, energy.
       ! the return mapping divides by kf = -T^f = K_T (the scalar update forms the same 1/kf)
       inv_kf = 1.0_dp/params%k_t
       conserve = params%growth_slip == GROWTH_FIXED_PI
@@ -117,16 +117,12 @@ contains
                keep = merge(-1_int64, 0_int64, ok_k)
                s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
                st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
-               lam1_k = lam1_old(k)
-               tau1 = params%k_t*st1 + (-params%k_t)*lam1_k
                ok_w(i) = ok_k
                nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
                sn_w(i) = s_n_k
                st1_w(i) = st1
-               lam1_w(i) = lam1_k
+               lam1_w(i) = lam1_old(k)
                t_sq_w(i) = st1**2
-               tau_norm_w(i) = abs(tau1)
-               dir1_w(i) = sign(1.0_dp, tau1)
             end do
          else
             do i = 1, m
@@ -141,23 +137,14 @@ contains
                s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
                st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
                st2 = transfer(iand(transfer(st2, 0_int64), keep), 0.0_dp)
-               lam1_k = lam1_old(k)
-               lam2_k = lam2_old(k)
-               tau1 = params%k_t*st1 + (-params%k_t)*lam1_k
-               tau2 = params%k_t*st2 + (-params%k_t)*lam2_k
-               tau_norm = sqrt(tau1**2 + tau2**2)
-               inv_norm = 1.0_dp/max(tau_norm, tiny(1.0_dp))
                ok_w(i) = ok_k
                nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
                sn_w(i) = s_n_k
                st1_w(i) = st1
                st2_w(i) = st2
-               lam1_w(i) = lam1_k
-               lam2_w(i) = lam2_k
+               lam1_w(i) = lam1_old(k)
+               lam2_w(i) = lam2_old(k)
                t_sq_w(i) = st1**2 + st2**2
-               tau_norm_w(i) = tau_norm
-               dir1_w(i) = tau1*inv_norm
-               dir2_w(i) = tau2*inv_norm
             end do
          end if
 
@@ -192,40 +179,15 @@ contains
                ! + 0: an incoming D = -0 leaves as +0 whichever operand max picks (as in the kernel)
                d_w(i) = max(d_k, min(1.0_dp, d_hat)) + 0.0_dp
             end do
-            ! where the crack grew under slip: lambda_trial = lambda_n (D_n/D), the quotient the
-            ! point update forms (growth_trial_slip, m = D ufbar = D), and the trial crack shear
-            ! stress again from it (pass 1's expressions)
-            if (nt == 1) then
-               do i = 1, m
-                  k = c0 + i - 1
-                  d_k = d_w(i)
-                  scaled = conserve .and. d_k > d_old(k)
-                  ratio = d_old(k)*(1.0_dp/max(d_k, tiny(1.0_dp)))
-                  lam1_k = merge(lam1_w(i)*ratio, lam1_w(i), scaled)
-                  tau1 = params%k_t*st1_w(i) + (-params%k_t)*lam1_k
-                  lam1_w(i) = lam1_k
-                  tau_norm_w(i) = abs(tau1)
-                  dir1_w(i) = sign(1.0_dp, tau1)
-               end do
-            else
-               do i = 1, m
-                  k = c0 + i - 1
-                  d_k = d_w(i)
-                  scaled = conserve .and. d_k > d_old(k)
-                  ratio = d_old(k)*(1.0_dp/max(d_k, tiny(1.0_dp)))
-                  lam1_k = merge(lam1_w(i)*ratio, lam1_w(i), scaled)
-                  lam2_k = merge(lam2_w(i)*ratio, lam2_w(i), scaled)
-                  tau1 = params%k_t*st1_w(i) + (-params%k_t)*lam1_k
-                  tau2 = params%k_t*st2_w(i) + (-params%k_t)*lam2_k
-                  tau_norm = sqrt(tau1**2 + tau2**2)
-                  inv_norm = 1.0_dp/max(tau_norm, tiny(1.0_dp))
-                  lam1_w(i) = lam1_k
-                  lam2_w(i) = lam2_k
-                  tau_norm_w(i) = tau_norm
-                  dir1_w(i) = tau1*inv_norm
-                  dir2_w(i) = tau2*inv_norm
-               end do
-            end if
+            ! where the crack grew: the trial slip lambda_n (D_n/D), the quotient the point update
+            ! forms (growth_trial_slip, m = D ufbar = D); elsewhere lambda_n x 1, lambda_n itself
+            do i = 1, m
+               k = c0 + i - 1
+               d_k = d_w(i)
+               ratio_w(i) = merge(d_old(k)*(1.0_dp/max(d_k, tiny(1.0_dp))), 1.0_dp, conserve .and. d_k > d_old(k))
+               lam1_w(i) = lam1_w(i)*ratio_w(i)
+            end do
+            if (nt == 2) lam2_w(1:m) = lam2_w(1:m)*ratio_w(1:m)
          else
             do i = 1, m
                k = c0 + i - 1
@@ -244,8 +206,11 @@ contains
                s_n_k = sn_w(i)
                st1 = st1_w(i)
                lam1_k = lam1_w(i)
-               tau_norm = tau_norm_w(i)
                d_k = d_w(i)
+               ! trial crack shear stress (eq 43) from the trial slip: |tau| and its sign
+               tau1 = params%k_t*st1 + (-params%k_t)*lam1_k
+               tau_norm = abs(tau1)
+               dir1 = sign(1.0_dp, tau1)
 
                kn_open = (1.0_dp - d_k)*params%k_n
                kt_open = (1.0_dp - d_k)*params%k_t
@@ -263,7 +228,7 @@ contains
                phi = params%mu*sigma + tau_norm
                slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
                dgamma = phi*inv_kf
-               lam1_closed = merge(lam1_k + dgamma*dir1_w(i), lam1_k, slipping)
+               lam1_closed = merge(lam1_k + dgamma*dir1, lam1_k, slipping)
                tn_closed = kk_n*s_n_k
                tt1_closed = kk_t*st1 + cf_t*lam1_closed
                psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + 0.0_dp)) &
@@ -292,7 +257,13 @@ contains
                lam1_k = lam1_w(i)
                lam2_k = lam2_w(i)
                t_sq = t_sq_w(i)
-               tau_norm = tau_norm_w(i)
+               ! trial crack shear stress (eq 43) from the trial slip: its norm and direction
+               tau1 = params%k_t*st1 + (-params%k_t)*lam1_k
+               tau2 = params%k_t*st2 + (-params%k_t)*lam2_k
+               tau_norm = sqrt(tau1**2 + tau2**2)
+               inv_norm = 1.0_dp/max(tau_norm, tiny(1.0_dp))
+               dir1 = tau1*inv_norm
+               dir2 = tau2*inv_norm
 
                d_k = d_w(i)
 
@@ -317,8 +288,8 @@ contains
                phi = params%mu*sigma + tau_norm
                slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
                dgamma = phi*inv_kf
-               lam1_closed = merge(lam1_k + dgamma*dir1_w(i), lam1_k, slipping)
-               lam2_closed = merge(lam2_k + dgamma*dir2_w(i), lam2_k, slipping)
+               lam1_closed = merge(lam1_k + dgamma*dir1, lam1_k, slipping)
+               lam2_closed = merge(lam2_k + dgamma*dir2, lam2_k, slipping)
                tn_closed = kk_n*s_n_k
                tt1_closed = kk_t*st1 + cf_t*lam1_closed
                tt2_closed = kk_t*st2 + cf_t*lam2_closed

@@ -27,7 +27,7 @@ module interphase_fracture
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
    use interphase_rcurve, only: tabulated_rcurve
-   use interphase_response, only: response_type, respond, growth_trial_slip
+   use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure
    implicit none
    private
    public :: crack_load_type, growth_function, grow_crack
@@ -245,7 +245,6 @@ contains
       integer, intent(out) :: status
 
       real(dp) :: g_lo, g_hi, d_lo, d_hi, d_mid, g_mid, unused_s(3), unused_lam(2), unused_d
-      type(coefficient_set_type) :: c_from, dc_from
       integer :: j, iter, side
 
       d_new = d_from
@@ -255,9 +254,8 @@ contains
       if (status /= STATUS_OK .or. g_lo < 0.0_dp .or. d_from >= 1.0_dp) return
       ! the crack grows: m(D_n) for the slip the faces carry at a larger D (growth_trial_slip)
       if (params%growth_slip == GROWTH_FIXED_PI) then
-         call coefficients_at(params, d_from, c_from, dc_from, status)
+         call slip_measure(params, d_from, load%m_from, status)
          if (status /= STATUS_OK) return
-         load%m_from = d_from*c_from%ufbar
       end if
       d_lo = d_from
       d_hi = 1.0_dp

@@ -35,7 +35,7 @@ module interphase_kernel
    use interphase_provider, only: coefficients_at
    use interphase_damage, only: displacement_damage
    use interphase_fracture, only: crack_load_type, growth_function, grow_crack
-   use interphase_response, only: response_type, respond, growth_trial_slip
+   use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure
    use interphase_state, only: interface_state_type
    implicit none
    private
@@ -55,7 +55,7 @@ contains
       real(dp), intent(out) :: psi                       !! stored energy per unit area (N/mm)
       integer, intent(out) :: status                     !! STATUS_OK or a failure code
 
-      type(coefficient_set_type) :: c, dc, c_from, dc_from
+      type(coefficient_set_type) :: c, dc
       type(response_type) :: r
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       integer :: ntens, nt, j
@@ -95,12 +95,8 @@ contains
             (abs(old%slip(1)) > 0.0_dp .or. abs(old%slip(2)) > 0.0_dp)) then
             ! the crack grew under slip: the friction step starts from the slip that conserves
             ! pi = D ufbar lambda (a zero slip needs no scaling: it stays as it is)
-            m_from = 0.0_dp
-            if (old%d > 0.0_dp) then
-               call coefficients_at(params, old%d, c_from, dc_from, status)
-               if (status /= STATUS_OK) return
-               m_from = old%d*c_from%ufbar
-            end if
+            call slip_measure(params, old%d, m_from, status)
+            if (status /= STATUS_OK) return
             call growth_trial_slip(params%growth_slip, old%d, m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
          end if
          call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
@@ -141,7 +137,6 @@ contains
       load%s_n = s_n
       load%st = st
       load%slip_old = old%slip
-      load%d_from = d_n
       call grow_crack(params, d_n, load, ntens, d, status)
       if (status /= STATUS_OK) return
       call coefficients_at(params, d, c, dc, status)

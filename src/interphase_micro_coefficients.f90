@@ -88,22 +88,22 @@ contains
          d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
       else
          call cubic_eval(knots, coef_table, interval, x, v, dv)
-         d2v = 0.0_dp
       end if
       dv = dv*dx_dd
       ! T^f = v/D, T^f' = (v' - T^f)/D, T^f'' = (v'' - 2 T^f')/D with v = D T^f
+      tf = -huge(1.0_dp)
+      dtf = 0.0_dp
       if (d > 0.0_dp) then
          tf = v(IC_DTF)/d
          dtf = (dv(IC_DTF) - tf)/d
-         d2tf = (d2v(IC_DTF) - 2.0_dp*dtf)/d
-      else
-         tf = -huge(1.0_dp)
-         dtf = 0.0_dp
-         d2tf = 0.0_dp
       end if
       coef = as_set(v, tf)
       dcoef_dd = as_set(dv, dtf)
-      if (present(d2coef_dd2)) d2coef_dd2 = as_set(d2v, d2tf)
+      if (present(d2coef_dd2)) then
+         d2tf = 0.0_dp
+         if (d > 0.0_dp) d2tf = (d2v(IC_DTF) - 2.0_dp*dtf)/d
+         d2coef_dd2 = as_set(d2v, d2tf)
+      end if
    end subroutine table_coefficients
 
    !> The interpolated columns (IC_* order) as a coefficient set, with T^f given apart.

@@ -7,9 +7,10 @@ module interphase_response
    use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI
    use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
    use interphase_coefficients, only: coefficient_set_type
+   use interphase_provider, only: coefficients_at
    implicit none
    private
-   public :: response_type, respond, growth_trial_slip
+   public :: response_type, respond, growth_trial_slip, slip_measure
 
    !> The response at fixed D. No default initialisation (this is on the hot path): `respond`
    !> sets the components 1:ntens of every field it returns.
@@ -26,6 +27,21 @@ module interphase_response
    end type response_type
 
 contains
+
+   !> m(D) = D ufbar(D) (-), which turns the faces' mean slip into the integrated slip
+   !> pi = m lambda that crack growth conserves (0 at D = 0: no crack).
+   pure subroutine slip_measure(params, d, m, status)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d                           !! damage D (-)
+      real(dp), intent(out) :: m                          !! m(D) (-)
+      integer, intent(out) :: status
+      type(coefficient_set_type) :: c, dc
+      status = STATUS_OK
+      m = 0.0_dp
+      if (.not. (d > 0.0_dp)) return
+      call coefficients_at(params, d, c, dc, status)
+      if (status == STATUS_OK) m = d*c%ufbar
+   end subroutine slip_measure
 
    !> The slip from which the friction step at damage D starts, for a crack that has grown from
    !> D_from, where the faces' slip was lambda_n, and its derivative d/dD (D_from fixed).
