@@ -20,7 +20,8 @@ module interphase_driver_case
       PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
       DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, NPROPS_FRACTURE_EXTRA, LFM_D0, LFM_RCURVE, LFM_GC_I, &
       LFM_GC_II, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
-      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
+      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, OPT_GROWTH_SLIP, &
+      OPT_CONTACT_BAND, NPROPS_OPTIONS
    use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
@@ -57,6 +58,9 @@ module interphase_driver_case
       !> option: the crack faces' slip while the crack grows, 'fixed-pi' (the default) or
       !> 'fixed-lambda' (the paper's form); '' leaves the option constant out of PROPS
       character(len=ENTRY_LEN) :: growth_slip = ''
+      !> option: the contact band width chi (-), the continuous variant of the open/closed switch
+      !> at s_N = 0 (0: the paper's two-state law, the default); unset leaves it out of PROPS
+      real(dp) :: contact_band = UNSET_REAL
    end type material_entries_type
 
    !> Everything the driver needs from one case file.
@@ -84,7 +88,7 @@ module interphase_driver_case
    end type case_type
 
    !> The entries of interphase-point's case file and their kinds (checked before the namelist read).
-   type(entry_kind_type), parameter :: CASE_ENTRIES(19) = [ &
+   type(entry_kind_type), parameter :: CASE_ENTRIES(21) = [ &
       entry_kind_type('material.model', KIND_STRING), entry_kind_type('material.damage_law', KIND_STRING), &
       entry_kind_type('material.table', KIND_STRING), entry_kind_type('material.rcurve', KIND_STRING), &
       entry_kind_type('material.rcurve_file', KIND_STRING), entry_kind_type('material.mu', KIND_REAL), &
@@ -92,7 +96,8 @@ module interphase_driver_case
       entry_kind_type('material.s0_t', KIND_REAL), entry_kind_type('material.sf_t', KIND_REAL), &
       entry_kind_type('material.k_n', KIND_REAL), entry_kind_type('material.k_t', KIND_REAL), &
       entry_kind_type('material.d0', KIND_REAL), entry_kind_type('material.g_ci', KIND_REAL), &
-      entry_kind_type('material.g_cii', KIND_REAL), entry_kind_type('loading.history', KIND_STRING), &
+      entry_kind_type('material.g_cii', KIND_REAL), entry_kind_type('material.growth_slip', KIND_STRING), &
+      entry_kind_type('material.contact_band', KIND_REAL), entry_kind_type('loading.history', KIND_STRING), &
       entry_kind_type('loading.output', KIND_STRING), entry_kind_type('loading.increments', KIND_INTEGER), &
       entry_kind_type('loading.plot', KIND_LOGICAL)]
 
@@ -140,9 +145,9 @@ contains
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       type(material_entries_type) :: e
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
-      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii
+      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band
       namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii, growth_slip
+         rcurve_file, g_ci, g_cii, growth_slip, contact_band
       character(len=:), allocatable :: where
       integer :: ios
       character(len=512) :: iomsg
@@ -152,6 +157,7 @@ contains
       call unpack_entries(e, model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, sf_t, &
          k_n, k_t, d0, g_ci, g_cii)
       growth_slip = e%growth_slip
+      contact_band = e%contact_band
       read (unit, nml=material, iostat=ios, iomsg=iomsg)
       if (ios == iostat_end) then
          message = where//'group not found (expected "&material ... /")'
@@ -163,6 +169,7 @@ contains
       e = material_entries_type(model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, &
          sf_t, k_n, k_t, d0, g_ci, g_cii)
       e%growth_slip = growth_slip
+      e%contact_band = contact_band
       call material_props(e, where, directory_of(run%path), run%props, run%table_path, run%rcurve_path, &
          ok, message)
    end subroutine read_material
@@ -204,7 +211,8 @@ contains
 
       character(len=:), allocatable :: missing, model, law, rcurve
       real(dp), allocatable :: extended(:)
-      integer :: nm
+      real(dp) :: options(NPROPS_OPTIONS)
+      integer :: nm, noptions
 
       ok = .false.
       message = ''
@@ -333,18 +341,28 @@ contains
       props(PROP_SF_N) = e%sf_n
       props(PROP_S0_T) = e%s0_t
       props(PROP_SF_T) = e%sf_t
-      ! the option constants (interphase_layout): appended only when given
+      ! the option constants (interphase_layout): appended only up to the last one given, the
+      ! ones before it at their defaults
+      options = [real(GROWTH_FIXED_PI, dp), 0.0_dp]
+      noptions = 0
       select case (to_lower(trim(adjustl(e%growth_slip))))
       case ('')
       case ('fixed-pi')
-         props = [props, real(GROWTH_FIXED_PI, dp)]
+         noptions = OPT_GROWTH_SLIP
       case ('fixed-lambda')
-         props = [props, real(GROWTH_FIXED_LAMBDA, dp)]
+         options(OPT_GROWTH_SLIP) = real(GROWTH_FIXED_LAMBDA, dp)
+         noptions = OPT_GROWTH_SLIP
       case default
          message = where//"growth_slip must be 'fixed-pi' (the default) or 'fixed-lambda' (the paper's form), got '"// &
             trim(adjustl(e%growth_slip))//"'"
          return
       end select
+      if (.not. is_unset(e%contact_band)) then
+         if (.not. finite_entry('contact_band', e%contact_band)) return
+         options(OPT_CONTACT_BAND) = e%contact_band
+         noptions = OPT_CONTACT_BAND
+      end if
+      props = [props, options(1:noptions)]
       ok = .true.
 
    contains

@@ -2,6 +2,7 @@
 !> them. This module is the only place that knows which slot holds what; `docs/abaqus.md` is its
 !> user-facing copy and must be kept in step with it.
 module interphase_layout
+   use interphase_kinds, only: dp
    implicit none
    private
 
@@ -64,8 +65,16 @@ module interphase_layout
    !> each one left out takes its default. NPROPS may exceed nb by at most NPROPS_OPTIONS.
    !> Option offset: the slip of the crack faces while the crack grows (GROWTH_*).
    integer, parameter, public :: OPT_GROWTH_SLIP = 1
+   !> Option offset: the width chi (-) of the contact band, the continuous variant of the
+   !> open/closed switch at s_N = 0 (docs/theory.md, 'The contact band'): 0 (the default) is
+   !> the paper's two-state law; chi > 0 fades the frictionless closed crack's extra shear
+   !> stiffness out over 0 < s_N < chi |s_T|, so that the traction is continuous where the
+   !> crack opens. Displacement-driven damage law only.
+   integer, parameter, public :: OPT_CONTACT_BAND = 2
    !> Number of option constants.
-   integer, parameter, public :: NPROPS_OPTIONS = 1
+   integer, parameter, public :: NPROPS_OPTIONS = 2
+   !> Largest admissible contact band width chi (-).
+   real(dp), parameter, public :: CONTACT_BAND_MAX = 10.0_dp
    !> PROPS(nb + OPT_GROWTH_SLIP) value, the default: the crack faces' integrated slip
    !> pi = D ufbar lambda is conserved while the crack grows (the faces made by the growth start
    !> with zero slip), so that the damage driving force is >= 0 (docs/theory.md).

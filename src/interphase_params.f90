@@ -10,7 +10,7 @@ module interphase_params
       MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, PROP_TABLE, NPROPS_MICROMECHANICAL, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, LFM_D0, LFM_RCURVE, LFM_GC_I, LFM_GC_II, &
       NPROPS_FRACTURE_EXTRA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, OPT_GROWTH_SLIP, &
-      NPROPS_OPTIONS, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
+      NPROPS_OPTIONS, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, OPT_CONTACT_BAND, CONTACT_BAND_MAX
    use interphase_status, only: STATUS_OK, STATUS_BAD_NPROPS, STATUS_BAD_MODEL, &
       STATUS_BAD_DAMAGE_LAW, STATUS_BAD_MU, STATUS_BAD_S0_N, STATUS_BAD_SF_N, STATUS_BAD_S0_T, &
       STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_TABLE_SELECTOR, MESSAGE_LEN, &
@@ -36,6 +36,7 @@ module interphase_params
       real(dp) :: gc_i = 0.0_dp                      !! fracture law, constant R-curve: G_cI (N/mm per unit crack area)
       real(dp) :: gc_ii = 0.0_dp                     !! fracture law, constant R-curve: G_cII (N/mm per unit crack area)
       integer :: growth_slip = GROWTH_FIXED_PI       !! option: the crack faces' slip while the crack grows, GROWTH_*
+      real(dp) :: contact_band = 0.0_dp              !! option: contact band width chi (-), 0 = the paper's two-state law
       real(dp) :: eta_n = 0.0_dp                     !! eta_N = s0_N/sf_N (-), eq 13
       real(dp) :: eta_t = 0.0_dp                     !! eta_T = s0_T/sf_T (-), eq 13
       real(dp) :: inv_s0_n = 0.0_dp                  !! 1/s0_N (1/mm), for the damage law
@@ -126,6 +127,7 @@ contains
       character(len=MESSAGE_LEN), intent(out) :: message
 
       integer :: growth_slip
+      logical :: band_ok
 
       status = STATUS_OK
       if (size(options) > NPROPS_OPTIONS) then
@@ -143,6 +145,22 @@ contains
             return
          end if
          params%growth_slip = growth_slip
+      end if
+      if (size(options) >= OPT_CONTACT_BAND) then
+         band_ok = finite_at_least(options(OPT_CONTACT_BAND), 0.0_dp)
+         if (band_ok) band_ok = options(OPT_CONTACT_BAND) <= CONTACT_BAND_MAX
+         if (.not. band_ok) then
+            call reject(STATUS_BAD_OPTION, base + OPT_CONTACT_BAND, 'contact band chi', options(OPT_CONTACT_BAND), &
+               'must be finite, >= 0 (0: the paper''s open/closed switch) and <= 10', status, message)
+            return
+         end if
+         if (options(OPT_CONTACT_BAND) > 0.0_dp .and. params%damage_law /= DAMAGE_DISPLACEMENT) then
+            call reject(STATUS_BAD_OPTION, base + OPT_CONTACT_BAND, 'contact band chi', options(OPT_CONTACT_BAND), &
+               'the contact band is implemented for the displacement-driven damage law only (PROPS(2) = 1); '// &
+               'set it to 0 with the fracture-mechanics law', status, message)
+            return
+         end if
+         params%contact_band = options(OPT_CONTACT_BAND)
       end if
    end subroutine set_options
 

@@ -115,6 +115,8 @@ contains
             r%regime = REGIME_OPEN
          end if
          r%psi = 0.5_dp*(r%traction(1)*s_n + sum(r%traction(2:ntens)*st(1:nt)))
+         if (params%contact_band > 0.0_dp .and. d > 0.0_dp) &
+            call blend_contact_band(params%contact_band, c, dc, s_n, st, ntens, r, status)
          return
       end if
 
@@ -192,5 +194,64 @@ contains
          + 0.5_dp*c%cf_t*(r%slip(1)*st(1) + r%slip(2)*st(2)) &
          - 0.5_dp*d*c%tf*c%ufbar*(r%slip(1)**2 + r%slip(2)**2)
    end subroutine respond
+
+   !> The contact band (option OPT_CONTACT_BAND, docs/theory.md 'The contact band'). At s_N = 0
+   !> the closed crack slips without friction (mu sigma = 0), the bilateral crack, whose shear
+   !> stiffness exceeds the open crack's by q = kc_T - C^f_T T^c_T/T^f (the I coupling). On the
+   !> opening side, 0 < s_N < chi |s_T|, that excess fades out with the open crack's energy
+   !>   psi = 1/2 k_n s_N^2 + 1/2 k_t |s_T|^2 + 1/2 q |s_T|^2 (1 - W(t)),  t = s_N/(chi |s_T|),
+   !> W(t) = 10 t^3 - 15 t^4 + 6 t^5 (W = 0 at s_N = 0, 1 at s_N = chi |s_T|, two continuous
+   !> derivatives), so that t = d psi/ds and its tangent are continuous where the crack opens
+   !> and the law stays hyperelastic at fixed D. The closed crack (s_N <= 0) is the paper's.
+   !> On entry `r` holds the open crack's response; outside the band it is left as it is.
+   pure subroutine blend_contact_band(chi, c, dc, s_n, st, ntens, r, status)
+      real(dp), intent(in) :: chi                         !! band width chi (-), > 0
+      type(coefficient_set_type), intent(in) :: c, dc     !! coefficients at D and d/dD
+      real(dp), intent(in) :: s_n, st(2)                  !! separation (mm), s_N > 0
+      integer, intent(in) :: ntens
+      type(response_type), intent(inout) :: r             !! open response in, banded out
+      integer, intent(out) :: status
+
+      real(dp) :: rho, tb, w, w1, w2, q, dq, g_n, a_t, h_nn, h_nt, h_tt, gq(3), hq(3, 3)
+      integer :: nt, i, j
+
+      status = STATUS_OK
+      nt = ntens - 1
+      rho = sqrt(st(1)**2 + st(2)**2)
+      if (.not. (s_n < chi*rho)) return          ! above the band (or no shear): open
+      if (.not. (c%tf < 0.0_dp)) then
+         status = STATUS_BAD_COEFFICIENTS
+         return
+      end if
+      tb = s_n/(chi*rho)                          ! in (0, 1)
+      w = tb**3*(10.0_dp + tb*(-15.0_dp + 6.0_dp*tb))
+      w1 = 30.0_dp*(tb*(1.0_dp - tb))**2
+      w2 = 60.0_dp*tb*(1.0_dp - tb)*(1.0_dp - 2.0_dp*tb)
+      ! q (MPa/mm) and dq/dD: the frictionless closed crack's shear stiffness minus the open one's
+      q = c%kc_t - c%cf_t*c%tc_t/c%tf
+      dq = dc%kc_t - (dc%cf_t*c%tc_t + c%cf_t*dc%tc_t)/c%tf + c%cf_t*c%tc_t*dc%tf/c%tf**2
+      ! g = |s_T|^2 (1 - W(t)): gradient and Hessian in (s_N, s_T[, s_T2])
+      g_n = -rho*w1/chi
+      a_t = 2.0_dp*(1.0_dp - w) + tb*w1
+      h_nn = -w2/chi**2
+      h_nt = -(w1 - tb*w2)/(chi*rho)
+      h_tt = tb*(w1 - tb*w2)/rho**2
+      gq = 0.0_dp
+      hq = 0.0_dp
+      gq(1) = g_n
+      gq(2:ntens) = a_t*st(1:nt)
+      hq(1, 1) = h_nn
+      do i = 1, nt
+         hq(1, 1 + i) = h_nt*st(i)
+         hq(1 + i, 1) = hq(1, 1 + i)
+         do j = 1, nt
+            hq(1 + i, 1 + j) = merge(a_t, 0.0_dp, i == j) + h_tt*st(i)*st(j)
+         end do
+      end do
+      r%traction(1:ntens) = r%traction(1:ntens) + 0.5_dp*q*gq(1:ntens)
+      r%tangent(1:ntens, 1:ntens) = r%tangent(1:ntens, 1:ntens) + 0.5_dp*q*hq(1:ntens, 1:ntens)
+      r%dtrac_dd(1:ntens) = r%dtrac_dd(1:ntens) + 0.5_dp*dq*gq(1:ntens)
+      r%psi = r%psi + 0.5_dp*q*rho**2*(1.0_dp - w)
+   end subroutine blend_contact_band
 
 end module interphase_response

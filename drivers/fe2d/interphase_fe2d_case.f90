@@ -239,9 +239,9 @@ contains
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       type(material_entries_type) :: e
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
-      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii
+      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band
       namelist /joint/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii, growth_slip
+         rcurve_file, g_ci, g_cii, growth_slip, contact_band
       integer :: ios
       character(len=512) :: iomsg
 
@@ -249,6 +249,7 @@ contains
       call unpack_entries(e, model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, sf_t, &
          k_n, k_t, d0, g_ci, g_cii)
       growth_slip = e%growth_slip
+      contact_band = e%contact_band
       rewind (unit)
       read (unit, nml=joint, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'joint', ios, iomsg, ok, message)
@@ -256,6 +257,7 @@ contains
       e = material_entries_type(model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, &
          sf_t, k_n, k_t, d0, g_ci, g_cii)
       e%growth_slip = growth_slip
+      e%contact_band = contact_band
       call material_props(e, run%path//': &joint: ', directory_of(run%path), run%props, run%table_path, &
          run%rcurve_path, ok, message)
    end subroutine read_joint
