@@ -31,14 +31,18 @@ module interphase_fe2d_solver
    private
    public :: fe2d_options_type, fe2d_increment_type, fe2d_result_type, run_analysis, &
       CSV_COLUMNS, NCOLUMNS, COL_STEP, COL_T, COL_U, COL_SHEAR, COL_NORMAL, COL_JOINT_SHEAR, &
-      COL_V_TOP, COL_MEAN_D, COL_MAX_D, COL_MEAN_SLIP, MAX_ITERATIONS_LIMIT
+      COL_V_TOP, COL_MEAN_D, COL_MAX_D, COL_MEAN_SLIP, COL_JOINT_STORED, COL_JOINT_DISSIPATED, &
+      MAX_ITERATIONS_LIMIT
 
-   !> Columns of the load-displacement table (CSV header).
+   !> Columns of the load-displacement table (CSV header). joint_stored and joint_dissipated
+   !> are the UMAT's SSE and SPD integrated over the joint (N mm).
    character(len=*), parameter :: CSV_COLUMNS = &
-      'step,t,u,shear_force,normal_force,joint_shear_force,v_top,mean_D,max_D,mean_slip'
-   integer, parameter :: NCOLUMNS = 10
+      'step,t,u,shear_force,normal_force,joint_shear_force,v_top,mean_D,max_D,mean_slip,'// &
+      'joint_stored,joint_dissipated'
+   integer, parameter :: NCOLUMNS = 12
    integer, parameter :: COL_STEP = 1, COL_T = 2, COL_U = 3, COL_SHEAR = 4, COL_NORMAL = 5, &
-      COL_JOINT_SHEAR = 6, COL_V_TOP = 7, COL_MEAN_D = 8, COL_MAX_D = 9, COL_MEAN_SLIP = 10
+      COL_JOINT_SHEAR = 6, COL_V_TOP = 7, COL_MEAN_D = 8, COL_MAX_D = 9, COL_MEAN_SLIP = 10, &
+      COL_JOINT_STORED = 11, COL_JOINT_DISSIPATED = 12
    !> Largest max_iterations (size of the residual record).
    integer, parameter :: MAX_ITERATIONS_LIMIT = 50
    !> Increments growth after easy convergence.
@@ -551,6 +555,8 @@ contains
          row(COL_MEAN_D) = mean_damage(statev_n)
          row(COL_MAX_D) = maxval(statev_n(SV_DAMAGE, :))
          row(COL_MEAN_SLIP) = sum(abs(statev_n(SV_SLIP_1, :))*area)/sum(area)
+         row(COL_JOINT_STORED) = sum(sse_n*area)
+         row(COL_JOINT_DISSIPATED) = sum(spd_n*area)
          result%nrows = result%nrows + 1
          result%rows(:, result%nrows) = row
       end subroutine add_row
