@@ -17,13 +17,17 @@ program interphase_check_deck
    use interphase_kinds, only: dp
    use interphase_finite, only: is_finite
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
-      MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, RCURVE_EQUIVALENT, &
+      MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
+      RCURVE_EQUIVALENT, &
       GROWTH_FIXED_LAMBDA
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props
    use interphase_driver_cli, only: get_argument
    use interphase_driver_text, only: int_to_string, real_to_string
    implicit none
+   !> The smallest contact band width chi that keeps the stored energy convex at every D of the
+   !> built-in table (docs/theory.md, 'The contact band').
+   real(dp), parameter :: CHI_MIN_BUILT_IN = 0.55_dp
 
    !> Longest deck line read (Abaqus allows 256 characters).
    integer, parameter :: LINE_LEN = 1024
@@ -225,6 +229,11 @@ contains
                   if (params%growth_slip == GROWTH_FIXED_LAMBDA) &
                      notes = notes//'; note: growth slip 1 (the paper''s form, lambda held while the crack grows) '// &
                      'can return energy in a closed crack (docs/theory.md)'
+                  if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_DEFAULT_CODE .and. &
+                     params%contact_band > 0.0_dp .and. params%contact_band < CHI_MIN_BUILT_IN) &
+                     notes = notes//'; note: contact band chi = '//real_to_string(params%contact_band)// &
+                     ' is below 0.55, the width that keeps the stored energy convex up to D = 1 on the '// &
+                     'built-in table (docs/theory.md, ''The contact band'')'
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) &
                      notes = notes//'; note: tabulated R-curve: the run needs INTERPHASE_RCURVE set to the '// &
                      'R-curve file and '//hook//' linked (make-user-file.sh --uexternaldb)'
