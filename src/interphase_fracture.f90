@@ -27,7 +27,8 @@ module interphase_fracture
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
    use interphase_rcurve, only: tabulated_rcurve
-   use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure
+   use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure, contact_band_shape, &
+      band_stiffness
    implicit none
    private
    public :: crack_load_type, growth_function, grow_crack
@@ -74,6 +75,8 @@ contains
       logical :: closed
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
       real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, a1, a2, b1, b2, lam_s, lam2, kappa, dkappa
+      real(dp) :: band_g, band_grad(3), band_hess(3, 3), q, dq, d2q, scale, dscale
+      logical :: in_band
       integer :: nt
 
       nt = ntens - 1
@@ -95,6 +98,12 @@ contains
       if (status /= STATUS_OK) return
       closed = r%closed
       slip = r%slip
+      ! the contact band (open crack, 0 < s_N < chi |s_T|): psi holds 1/2 q g, so G_II holds -q' g
+      in_band = .false.
+      if (params%contact_band > 0.0_dp .and. .not. closed) then
+         call contact_band_shape(params%contact_band, load%s_n, load%st, ntens, in_band, band_g, band_grad, band_hess)
+         if (in_band) call band_stiffness(c, dc, d2c, q, dq, d2q)
+      end if
 
       if (params%rcurve == RCURVE_EQUIVALENT .and. .not. closed) then
          ! G/G_c with G_c = -k' sigma(D)^2: the provider's k' cancels, g = sum (s/sigma(D))^2 - 1
@@ -108,6 +117,16 @@ contains
             if (load%s_n > 0.0_dp) g_s(1) = 2.0_dp*load%s_n/sig_n**2
             g_s(2:ntens) = 2.0_dp*load%st(1:nt)/sig_t**2
             g_d = -2.0_dp*gi*dsig_n/sig_n - 2.0_dp*gii*dsig_t/sig_t
+         end if
+         if (in_band) then
+            ! G_II gains -q' g over G_cII = -k_t' sigma_T^2: g gains scale*band_g
+            scale = dq/(dc%k_t*sig_t**2)
+            g = g + scale*band_g
+            if (want_derivatives) then
+               dscale = d2q/(dc%k_t*sig_t**2) - scale*(d2c%k_t/dc%k_t + 2.0_dp*dsig_t/sig_t)
+               g_s(1:ntens) = g_s(1:ntens) + scale*band_grad(1:ntens)
+               g_d = g_d + dscale*band_g
+            end if
          end if
          return
       end if
@@ -127,6 +146,11 @@ contains
          gii = -dc%k_t*t2
          gii_s(2:ntens) = -2.0_dp*dc%k_t*load%st(1:nt)
          gii_d = -d2c%k_t*t2
+         if (in_band) then
+            gii = gii - dq*band_g
+            gii_s(1:ntens) = gii_s(1:ntens) - dq*band_grad(1:ntens)
+            gii_d = gii_d - d2q*band_g
+         end if
       else
          call closed_release_factors(params%growth_slip, c, dc, d2c, d, a1, b1, a2, b2)
          lam_s = slip(1)*load%st(1) + slip(2)*load%st(2)

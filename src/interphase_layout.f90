@@ -69,7 +69,7 @@ module interphase_layout
    !> open/closed switch at s_N = 0 (docs/theory.md, 'The contact band'): 0 (the default) is
    !> the paper's two-state law; chi > 0 fades the frictionless closed crack's extra shear
    !> stiffness out over 0 < s_N < chi |s_T|, so that the traction is continuous where the
-   !> crack opens. Displacement-driven damage law only.
+   !> crack opens. Both damage laws.
    integer, parameter, public :: OPT_CONTACT_BAND = 2
    !> Number of option constants.
    integer, parameter, public :: NPROPS_OPTIONS = 2

@@ -154,12 +154,6 @@ contains
                'must be finite, >= 0 (0: the paper''s open/closed switch) and <= 10', status, message)
             return
          end if
-         if (options(OPT_CONTACT_BAND) > 0.0_dp .and. params%damage_law /= DAMAGE_DISPLACEMENT) then
-            call reject(STATUS_BAD_OPTION, base + OPT_CONTACT_BAND, 'contact band chi', options(OPT_CONTACT_BAND), &
-               'the contact band is implemented for the displacement-driven damage law only (PROPS(2) = 1); '// &
-               'set it to 0 with the fracture-mechanics law', status, message)
-            return
-         end if
          params%contact_band = options(OPT_CONTACT_BAND)
       end if
    end subroutine set_options

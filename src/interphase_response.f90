@@ -10,7 +10,7 @@ module interphase_response
    use interphase_provider, only: coefficients_at
    implicit none
    private
-   public :: response_type, respond, growth_trial_slip, slip_measure
+   public :: response_type, respond, growth_trial_slip, slip_measure, contact_band_shape, band_stiffness
 
    !> The response at fixed D. No default initialisation (this is on the hot path): `respond`
    !> sets the components 1:ntens of every field it returns.
@@ -195,15 +195,70 @@ contains
          - 0.5_dp*d*c%tf*c%ufbar*(r%slip(1)**2 + r%slip(2)**2)
    end subroutine respond
 
+   !> The contact band's shape (docs/theory.md, 'The contact band'): g = |s_T|^2 (1 - W(t)),
+   !> t = s_N/(chi |s_T|), W(t) = 10 t^3 - 15 t^4 + 6 t^5, with its gradient and Hessian in
+   !> s = (s_N, s_T[, s_T2]) (mm^2, mm, -). inside = .false. (and g = 0) outside the band
+   !> 0 < s_N < chi |s_T|.
+   pure subroutine contact_band_shape(chi, s_n, st, ntens, inside, g, grad, hess)
+      real(dp), intent(in) :: chi                         !! band width chi (-), > 0
+      real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
+      integer, intent(in) :: ntens
+      logical, intent(out) :: inside
+      real(dp), intent(out) :: g, grad(3), hess(3, 3)
+      real(dp) :: rho, tb, w, w1, w2, a_t, h_nt, h_tt
+      integer :: nt, i, j
+      nt = ntens - 1
+      g = 0.0_dp
+      grad = 0.0_dp
+      hess = 0.0_dp
+      rho = sqrt(st(1)**2 + st(2)**2)
+      inside = s_n > 0.0_dp .and. s_n < chi*rho
+      if (.not. inside) return
+      tb = s_n/(chi*rho)                          ! in (0, 1)
+      w = tb**3*(10.0_dp + tb*(-15.0_dp + 6.0_dp*tb))
+      w1 = 30.0_dp*(tb*(1.0_dp - tb))**2
+      w2 = 60.0_dp*tb*(1.0_dp - tb)*(1.0_dp - 2.0_dp*tb)
+      g = rho**2*(1.0_dp - w)
+      a_t = 2.0_dp*(1.0_dp - w) + tb*w1
+      h_nt = -(w1 - tb*w2)/(chi*rho)
+      h_tt = tb*(w1 - tb*w2)/rho**2
+      grad(1) = -rho*w1/chi
+      grad(2:ntens) = a_t*st(1:nt)
+      hess(1, 1) = -w2/chi**2
+      do i = 1, nt
+         hess(1, 1 + i) = h_nt*st(i)
+         hess(1 + i, 1) = hess(1, 1 + i)
+         do j = 1, nt
+            hess(1 + i, 1 + j) = merge(a_t, 0.0_dp, i == j) + h_tt*st(i)*st(j)
+         end do
+      end do
+   end subroutine contact_band_shape
+
+   !> q = kc_T - C^f_T T^c_T/T^f (MPa/mm), the frictionless closed crack's shear stiffness over
+   !> the open crack's, and its first and second derivatives in D (c, dc, d2c: the coefficients
+   !> and their derivatives; d2c may be zero when q'' is not wanted). T^f < 0 is the caller's
+   !> check.
+   pure subroutine band_stiffness(c, dc, d2c, q, dq, d2q)
+      type(coefficient_set_type), intent(in) :: c, dc, d2c
+      real(dp), intent(out) :: q, dq, d2q
+      real(dp) :: u, du, d2u
+      ! q = kc_t - u/T^f with u = C^f_T T^c_T
+      u = c%cf_t*c%tc_t
+      du = dc%cf_t*c%tc_t + c%cf_t*dc%tc_t
+      d2u = d2c%cf_t*c%tc_t + 2.0_dp*dc%cf_t*dc%tc_t + c%cf_t*d2c%tc_t
+      q = c%kc_t - u/c%tf
+      dq = dc%kc_t - du/c%tf + u*dc%tf/c%tf**2
+      d2q = d2c%kc_t - d2u/c%tf + 2.0_dp*du*dc%tf/c%tf**2 + u*d2c%tf/c%tf**2 - 2.0_dp*u*dc%tf**2/c%tf**3
+   end subroutine band_stiffness
+
    !> The contact band (option OPT_CONTACT_BAND, docs/theory.md 'The contact band'). At s_N = 0
    !> the closed crack slips without friction (mu sigma = 0), the bilateral crack, whose shear
-   !> stiffness exceeds the open crack's by q = kc_T - C^f_T T^c_T/T^f (the I coupling). On the
-   !> opening side, 0 < s_N < chi |s_T|, that excess fades out with the open crack's energy
-   !>   psi = 1/2 k_n s_N^2 + 1/2 k_t |s_T|^2 + 1/2 q |s_T|^2 (1 - W(t)),  t = s_N/(chi |s_T|),
-   !> W(t) = 10 t^3 - 15 t^4 + 6 t^5 (W = 0 at s_N = 0, 1 at s_N = chi |s_T|, two continuous
-   !> derivatives), so that t = d psi/ds and its tangent are continuous where the crack opens
-   !> and the law stays hyperelastic at fixed D. The closed crack (s_N <= 0) is the paper's.
-   !> On entry `r` holds the open crack's response; outside the band it is left as it is.
+   !> stiffness exceeds the open crack's by q (band_stiffness; the I coupling). On the opening
+   !> side, 0 < s_N < chi |s_T|, that excess fades out with the open crack's energy
+   !>   psi = 1/2 k_n s_N^2 + 1/2 k_t |s_T|^2 + 1/2 q g,  g = |s_T|^2 (1 - W(t))
+   !> (contact_band_shape), so that t = d psi/ds and its tangent are continuous where the crack
+   !> opens and the law stays hyperelastic at fixed D. The closed crack (s_N <= 0) is the
+   !> paper's. On entry `r` holds the open crack's response; outside the band it is left as it is.
    pure subroutine blend_contact_band(chi, c, dc, s_n, st, ntens, r, status)
       real(dp), intent(in) :: chi                         !! band width chi (-), > 0
       type(coefficient_set_type), intent(in) :: c, dc     !! coefficients at D and d/dD
@@ -212,46 +267,21 @@ contains
       type(response_type), intent(inout) :: r             !! open response in, banded out
       integer, intent(out) :: status
 
-      real(dp) :: rho, tb, w, w1, w2, q, dq, g_n, a_t, h_nn, h_nt, h_tt, gq(3), hq(3, 3)
-      integer :: nt, i, j
+      real(dp) :: q, dq, unused_d2q, g, gq(3), hq(3, 3)
+      logical :: inside
 
       status = STATUS_OK
-      nt = ntens - 1
-      rho = sqrt(st(1)**2 + st(2)**2)
-      if (.not. (s_n < chi*rho)) return          ! above the band (or no shear): open
+      call contact_band_shape(chi, s_n, st, ntens, inside, g, gq, hq)
+      if (.not. inside) return
       if (.not. (c%tf < 0.0_dp)) then
          status = STATUS_BAD_COEFFICIENTS
          return
       end if
-      tb = s_n/(chi*rho)                          ! in (0, 1)
-      w = tb**3*(10.0_dp + tb*(-15.0_dp + 6.0_dp*tb))
-      w1 = 30.0_dp*(tb*(1.0_dp - tb))**2
-      w2 = 60.0_dp*tb*(1.0_dp - tb)*(1.0_dp - 2.0_dp*tb)
-      ! q (MPa/mm) and dq/dD: the frictionless closed crack's shear stiffness minus the open one's
-      q = c%kc_t - c%cf_t*c%tc_t/c%tf
-      dq = dc%kc_t - (dc%cf_t*c%tc_t + c%cf_t*dc%tc_t)/c%tf + c%cf_t*c%tc_t*dc%tf/c%tf**2
-      ! g = |s_T|^2 (1 - W(t)): gradient and Hessian in (s_N, s_T[, s_T2])
-      g_n = -rho*w1/chi
-      a_t = 2.0_dp*(1.0_dp - w) + tb*w1
-      h_nn = -w2/chi**2
-      h_nt = -(w1 - tb*w2)/(chi*rho)
-      h_tt = tb*(w1 - tb*w2)/rho**2
-      gq = 0.0_dp
-      hq = 0.0_dp
-      gq(1) = g_n
-      gq(2:ntens) = a_t*st(1:nt)
-      hq(1, 1) = h_nn
-      do i = 1, nt
-         hq(1, 1 + i) = h_nt*st(i)
-         hq(1 + i, 1) = hq(1, 1 + i)
-         do j = 1, nt
-            hq(1 + i, 1 + j) = merge(a_t, 0.0_dp, i == j) + h_tt*st(i)*st(j)
-         end do
-      end do
+      call band_stiffness(c, dc, coefficient_set_type(), q, dq, unused_d2q)
       r%traction(1:ntens) = r%traction(1:ntens) + 0.5_dp*q*gq(1:ntens)
       r%tangent(1:ntens, 1:ntens) = r%tangent(1:ntens, 1:ntens) + 0.5_dp*q*hq(1:ntens, 1:ntens)
       r%dtrac_dd(1:ntens) = r%dtrac_dd(1:ntens) + 0.5_dp*dq*gq(1:ntens)
-      r%psi = r%psi + 0.5_dp*q*rho**2*(1.0_dp - w)
+      r%psi = r%psi + 0.5_dp*q*g
    end subroutine blend_contact_band
 
 end module interphase_response
