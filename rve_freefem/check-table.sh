@@ -5,8 +5,9 @@
 #   bash rve_freefem/check-table.sh TABLE.dat [TABLE-diag.txt]
 #
 # Checks (each prints its largest residual; any failure gives exit code 1):
-#   format     every header line '# key = value', required keys, one '# columns:' line, 23 finite
-#              numbers per row, a ascending from 0 to b
+#   format     every header line '# key = value', required keys, one '# columns:' line (the 23
+#              columns of format 1, or those and I_fNT, format 2), that many finite numbers per
+#              row, a ascending from 0 to b
 #   closed     a = 0: C_TT, C_NN = closed forms (Chat), cross terms 0            tol TOL_CLOSED
 #   eq52       C(a) + C^c(a) = C(0) for every a (all four components)          tol TOL_EQ52
 #   crack      T^c_T = Chat_TT, S^c_N = Chat_NN at every a (crack means)      tol TOL_EXACT
@@ -14,6 +15,12 @@
 #   full       a = b: C = 0, Dbar = h I, C^c = C(0), C^f_T = T^f = -Chat_TT/h, ufbar = 1
 #   reciproc.  C^c_TT = Chat_TT (a/b) Dbar_TT / h, C^c_NN likewise, and
 #              C^f_T = -(Chat_TT/h) (a/b) ufbar (Betti with the intact laminate) tol TOL_EQ52
+#   betti-i    (i)   C_TT = Chat_TT (1 - D Dbar_TT/h), C_NN likewise          tol TOL_BETTI
+#   betti-ii   (ii') C^f_T = D T^f Dbar_TT/h + I/(2bh)       (with I_fNT)       tol TOL_BETTI
+#   betti-iii  (iii') Dbar_TT T^f + ufbar T^c_T = -I/(2a)   (with I_fNT, a > 0) tol TOL_BETTI
+#              and I = 0 at a = 0 (the limit a -> 0+)                          tol TOL_BETTI
+#              (docs/rve.md, 'Betti relations'; residuals of (ii'), (iii') relative to the
+#              largest term of the relation, of (i) to Chat)
 #   signs      T^f < 0, 0 < ufbar <= 1, 0 <= C <= Chat, C_TT and C_NN non-increasing in a
 #   pointwise  (with the diag file) max over crack nodes of |t - Chat|/Chat in p2, of the
 #              p3 shear stress |t - T^f|/|T^f| (uniform crack stress) and of the p3 jump error
@@ -25,6 +32,11 @@ TOL_CLOSED=1e-10
 TOL_EQ52=1e-8
 TOL_EXACT=1e-10
 TOL_POINT=1e-9
+# Betti relations: round-off level. Measured on the committed tables and the ctest runs
+# (coarse-paper, coarse-other, griffith): (i) <= 1.1e-14, (ii') <= 1.5e-12 (at a = 0.05 mm,
+# where C^f_T is 1e-3 of K^ and the largest term), (iii') <= 1.3e-13; 1e-10 leaves a margin of
+# ~70 for other FreeFEM/UMFPACK/BLAS builds.
+TOL_BETTI=1e-10
 
 [ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: check-table.sh TABLE.dat [DIAG.txt]" >&2; exit 2; }
 table=$1
@@ -32,7 +44,7 @@ diag=${2:-}
 [ -r "$table" ] || { echo "check-table.sh: error: cannot read $table" >&2; exit 3; }
 [ -z "$diag" ] || [ -r "$diag" ] || { echo "check-table.sh: error: cannot read $diag" >&2; exit 3; }
 
-awk -v TC="$TOL_CLOSED" -v TE="$TOL_EQ52" -v TX="$TOL_EXACT" -v TP="$TOL_POINT" -v diag="$diag" '
+awk -v TC="$TOL_CLOSED" -v TE="$TOL_EQ52" -v TX="$TOL_EXACT" -v TP="$TOL_POINT" -v TB="$TOL_BETTI" -v diag="$diag" '
 function abs(x) { return x < 0 ? -x : x }
 function report(name, res, tol, what) {
   ok = (res <= tol)
@@ -46,7 +58,11 @@ BEGIN {
 }
 /^#/ {
   line = $0
-  if (line ~ /^# columns: /) { ncolsline++; c = line; sub(/^# columns: /, "", c); if (c != cols) badcols = 1; next }
+  if (line ~ /^# columns: /) {
+    ncolsline++; c = line; sub(/^# columns: /, "", c)
+    if (c == cols) ncol = 23; else if (c == cols " I_fNT") ncol = 24; else badcols = 1
+    next
+  }
   if (n == 0 && line !~ /^# [A-Za-z_0-9]+ = ./) { printf "header line is not \"# key = value\": %s\n", line; badhdr = 1 }
   if (match(line, /^# [A-Za-z_0-9]+ = /)) { k = line; sub(/^# /, "", k); sub(/ = .*/, "", k); hv = line; sub(/^# [A-Za-z_0-9]+ = /, "", hv); hdr[k] = hv }
   next
@@ -54,7 +70,7 @@ BEGIN {
 NF == 0 { next }
 {
   n++
-  if (NF != 23) { badrow = 1; printf "row %d has %d fields\n", n, NF }
+  if (NF != ncol) { badrow = 1; printf "row %d has %d fields, the columns line names %d\n", n, NF, ncol }
   for (i = 1; i <= NF; i++) { if (!isnumber($i)) { badnum = 1; printf "row %d field %d not a finite number: %s\n", n, i, $i } ; v[n, i] = $i + 0 }
   if (n > 1 && !(v[n, 1] > v[n - 1, 1])) badorder = 1
 }
@@ -67,7 +83,7 @@ END {
   if (badrow || badnum || badorder || n < 2) fmt = 1
   hm = hdr["h_m"]; hb = hdr["h_b"]; b = hdr["b"]; Em = hdr["E_m"]; nm = hdr["nu_m"]; Eb = hdr["E_b"]; nb = hdr["nu_b"]
   if (!fmt && (v[1, 1] != 0 || abs(v[n, 1] - b) > 1e-12 * b)) { print "rows must run from a = 0 to a = b"; fmt = 1 }
-  report("format", fmt, 0, "header, columns line, " n " rows of 23 numbers, a = 0 .. b ascending")
+  report("format", fmt, 0, "header, columns line, " n " rows of " ncol " numbers, a = 0 .. b ascending")
   if (fmt) exit 1
   h = hm + hb
   Gm = Em / (2 * (1 + nm)); Gb = Eb / (2 * (1 + nb))
@@ -114,6 +130,37 @@ END {
     t = abs(v[i, 19] + KT * d * v[i, 23]) / KT; if (t > r) r = t
   }
   report("reciproc", r, TE, "C^c_TT = Chat_TT D Dbar_TT/h, C^c_NN = Chat_NN D Dbar_NN/h, C^f_T = -Chat_TT D ufbar/h")
+  # ---- Betti relations (docs/rve.md): (i) free of coupling; (ii), (iii) carry I = int sigma^f D_NT dx
+  r = 0
+  for (i = 1; i <= n; i++) {
+    d = v[i, 2]
+    t = abs(v[i, 3] - CT * (1 - d * v[i, 7] / h)) / CT; if (t > r) { r = t; ra = v[i, 1] }
+    t = abs(v[i, 6] - CN * (1 - d * v[i, 10] / h)) / CN; if (t > r) { r = t; ra = v[i, 1] }
+  }
+  report("betti-i", r, TB, "(i) C = Chat (1 - D Dbar/h), TT and NN (worst a = " ra ")")
+  if (ncol == 24) {
+    r2 = r3 = 0; a2 = a3 = ""
+    t = abs(v[1, 24]) / (2 * b * h * KT); if (t > r3) { r3 = t; a3 = 0 }
+    for (i = 2; i <= n; i++) {
+      a = v[i, 1]; d = v[i, 2]; I = v[i, 24]
+      x1 = v[i, 19]; x2 = d * v[i, 21] * v[i, 7] / h; x3 = I / (2 * b * h)
+      s = abs(x1); if (abs(x2) > s) s = abs(x2); if (abs(x3) > s) s = abs(x3)
+      t = abs(x1 - x2 - x3) / s; if (t > r2) { r2 = t; a2 = a }
+      y1 = v[i, 7] * v[i, 21]; y2 = v[i, 23] * v[i, 15]; y3 = I / (2 * a)
+      s = abs(y1); if (abs(y2) > s) s = abs(y2); if (abs(y3) > s) s = abs(y3)
+      t = abs(y1 + y2 + y3) / s; if (t > r3) { r3 = t; a3 = a }
+    }
+    report("betti-ii", r2, TB, "(ii) C^f_T = D T^f Dbar_TT/h + I/(2bh) (worst a = " a2 ")")
+    report("betti-iii", r3, TB, "(iii) Dbar_TT T^f + ufbar T^c_T = -I/(2a), I = 0 at a = 0 (worst a = " a3 ")")
+    # the short-crack defect of (iii) without I against its limit 4 eps^2 (information only)
+    km = 3 - 4 * nm; kb = 3 - 4 * nb
+    beta = (Gm * (kb - 1) - Gb * (km - 1)) / (Gm * (kb + 1) + Gb * (km + 1))
+    eps = log((1 - beta) / (1 + beta)) / (2 * 3.14159265358979324)
+    printf "short crack: defect -Dbar_TT T^f/(ufbar T^c_T) - 1 = %.5f %% at a = %g mm; 4 eps^2 = %.5f %% (beta = %.5f, eps = %.5f)\n", \
+      100 * (-v[2, 7] * v[2, 21] / (v[2, 23] * v[2, 15]) - 1), v[2, 1], 400 * eps * eps, beta, eps
+  } else {
+    print "betti-ii   --   no I_fNT column (format 1 table): (ii) and (iii) not checked"
+  }
   # ---- signs and bounds
   bad = 0
   for (i = 2; i <= n; i++) {

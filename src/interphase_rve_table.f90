@@ -2,6 +2,9 @@
 !> it against the exact identities of the RVE problems (docs/rve.md), and turning it
 !> into the interpolation data of the micromechanical coefficient provider.
 !>
+!> A table may carry one more column, I_fNT = int sigma^f D_NT dx over the crack (format 2 of
+!> tables/README.md); the Betti relations (ii') and (iii') of docs/rve.md are then checked too.
+!>
 !> This is set-up code (it reads files); the pure update never calls it. A table is read once,
 !> at start-up, and its interpolant is immutable afterwards.
 !>
@@ -27,7 +30,7 @@ module interphase_rve_table
    implicit none
    private
    public :: rve_table_type, read_rve_table, check_rve_table, interpolation_data, crack_variable, &
-      short_crack_a_tf
+      short_crack_a_tf, oscillation_index
 
    !> Interpolation variables: w = 1/(1 - ln(1 - D)) (default) or D itself.
    integer, parameter, public :: VARIABLE_LOG_LIGAMENT = 1
@@ -44,6 +47,9 @@ module interphase_rve_table
       'a', 'D', 'C_TT', 'C_TN', 'C_NT', 'C_NN', 'Dbar_TT', 'Dbar_TN', 'Dbar_NT', 'Dbar_NN', &
       'Cc_TT', 'Cc_TN', 'Cc_NT', 'Cc_NN', 'Tc_T', 'Tc_N', 'Sc_T', 'Sc_N', 'Cf_T', 'Cf_N', 'Tf', &
       'Sf', 'ufbar']
+   !> Optional column (format 2): I = int over the crack of sigma^f(x) D_NT(x) dx (MPa mm), the
+   !> p3 normal crack stress per unit slip against the p1 normal jump per unit E_T.
+   character(len=8), parameter, public :: BETTI_COLUMN = 'I_fNT'
    integer, parameter :: COL_A = 1, COL_D = 2, COL_C_TT = 3, COL_C_TN = 4, COL_C_NT = 5, &
       COL_C_NN = 6, COL_DBAR_TT = 7, COL_DBAR_TN = 8, COL_DBAR_NT = 9, COL_DBAR_NN = 10, &
       COL_CC_TT = 11, COL_CC_TN = 12, COL_CC_NT = 13, COL_CC_NN = 14, COL_TC_T = 15, &
@@ -60,6 +66,11 @@ module interphase_rve_table
 
    !> Relative tolerance of the identity checks: the FreeFEM tables satisfy them to ~1e-11.
    real(dp), parameter, public :: IDENTITY_TOL = 1.0e-8_dp
+   !> Relative tolerance of the Betti relations (i), (ii') and (iii') in a table that carries
+   !> I_fNT (residual of (ii') and (iii') relative to the relation's largest term, of (i) to
+   !> C(0)): round-off. Measured on the committed tables and the ctest runs: (i) <= 1.1e-14,
+   !> (ii') <= 1.5e-12 (a = 0.05 mm, where C^f_T is 1e-3 of C_TT(0)/h), (iii') <= 1.3e-13.
+   real(dp), parameter, public :: BETTI_TOL = 1.0e-10_dp
 
    !> A table as read from its file.
    type :: rve_table_type
@@ -70,12 +81,16 @@ module interphase_rve_table
       real(dp) :: a_tf_limit = 0.0_dp             !! lim a T^f as a -> 0 (MPa), short_crack_a_tf
       real(dp), allocatable :: rows(:, :)         !! rows(i, column) in the file's units
       integer, allocatable :: line(:)             !! file line of each row (for messages)
+      logical :: has_betti = .false.              !! the file has the column BETTI_COLUMN
+      real(dp), allocatable :: i_fnt(:)           !! I_fNT of each row (MPa mm); only with has_betti
+      logical :: has_elastic = .false.            !! the header gives E_m, nu_m, E_b, nu_b
+      real(dp) :: elastic(4) = 0.0_dp             !! E_m (MPa), nu_m, E_b (MPa), nu_b; with has_elastic
    end type rve_table_type
 
 contains
 
    !> Read a table file: header `# key = value` lines (keys b and h required, each once), the
-   !> `# columns:` line (every documented column once, any order), then one row per a, each
+   !> `# columns:` line (every documented column once, any order; BETTI_COLUMN optional), then one row per a, each
    !> field one real literal (interphase_text_input: no list-directed reading). Lines and the
    !> file are bounded (MAX_LINE_LEN, MAX_FILE_BYTES). Errors name the file (as tried) and
    !> line. The identities are checked separately (`check_rve_table`).
@@ -90,7 +105,7 @@ contains
       character(len=MESSAGE_LEN) :: text
       character(len=32) :: why
       integer :: starts(MAX_FIELDS + 1), ends(MAX_FIELDS + 1)
-      integer :: outcome, nfields, position(N_TABLE_COLUMNS), ncols, nrows, j, k, first, eq
+      integer :: outcome, nfields, position(N_TABLE_COLUMNS), ncols, nrows, j, k, first, eq, position_i
       real(dp) :: values(MAX_FIELDS), b, h, a_tf_limit, elastic(4)
       real(dp), allocatable :: rows(:, :)
       integer, allocatable :: lines(:)
@@ -114,11 +129,12 @@ contains
       a_tf_limit = 0.0_dp
       elastic = 0.0_dp
       position = 0
+      position_i = 0
       ncols = 0
       nrows = 0
       b = 0.0_dp
       h = 0.0_dp
-      allocate (rows(N_TABLE_COLUMNS, 64), lines(64))
+      allocate (rows(N_TABLE_COLUMNS + 1, 64), lines(64))
       read_lines: do
          call read_text_line(file, outcome, text)
          if (outcome == TEXT_END) exit read_lines
@@ -162,6 +178,9 @@ contains
                               trim(TABLE_COLUMNS(j)))
                            return
                         end if
+                     end do
+                     do k = 1, nfields
+                        if (line(starts(k):ends(k)) == trim(BETTI_COLUMN)) position_i = k
                      end do
                      if (.not. (have_b .and. have_h)) then
                         call fail(STATUS_TABLE_MISSING_KEY, 'the header before "# columns:" must give '// &
@@ -250,7 +269,9 @@ contains
          end associate
          nrows = nrows + 1
          if (nrows > size(lines)) call grow(rows, lines)
-         rows(:, nrows) = values(position)
+         rows(1:N_TABLE_COLUMNS, nrows) = values(position)
+         rows(N_TABLE_COLUMNS + 1, nrows) = 0.0_dp
+         if (position_i > 0) rows(N_TABLE_COLUMNS + 1, nrows) = values(position_i)
          lines(nrows) = file%line_number
       end do read_lines
       if (.not. have_columns) then
@@ -270,8 +291,14 @@ contains
       table%b = b
       table%h = h
       table%a_tf_limit = a_tf_limit
-      table%rows = transpose(rows(:, 1:nrows))
+      table%rows = transpose(rows(1:N_TABLE_COLUMNS, 1:nrows))
       table%line = lines(1:nrows)
+      table%has_betti = position_i > 0
+      if (table%has_betti) then
+         table%i_fnt = rows(N_TABLE_COLUMNS + 1, 1:nrows)
+      end if
+      table%has_elastic = all(have_elastic)
+      if (table%has_elastic) table%elastic = elastic
 
    contains
 
@@ -341,13 +368,16 @@ contains
    !> T^c_T = C_TT(0) and S^c_N = C_NN(0); the reciprocity relations C^c_TT = C_TT(0) D Dbar_TT/h,
    !> C^c_NN = C_NN(0) D Dbar_NN/h and C^f_T = -(C_TT(0)/h) D ufbar; at a = b C = 0, Dbar = h I,
    !> ufbar = 1 and T^f = -C_TT(0)/h; the signs and ranges T^f < 0, 0 < ufbar <= 1, Dbar >= 0,
-   !> C >= 0 and non-increasing in a. The message names the identity, the file line and the value.
+   !> C >= 0 and non-increasing in a; the Betti relation (i) C = C(0) (1 - D Dbar/h). With the
+   !> column I_fNT (has_betti) also (ii') C^f_T = D T^f Dbar_TT/h + I/(2bh), (iii') Dbar_TT T^f
+   !> + ufbar T^c_T = -I/(2a) for a > 0 and I = 0 at a = 0, and (i), all to BETTI_TOL (docs/rve.md,
+   !> 'Betti relations'). The message names the identity, the file line, the value and a.
    pure subroutine check_rve_table(table, status, message)
       type(rve_table_type), intent(in) :: table
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
 
-      real(dp) :: c0_t, c0_n, scale_c, scale_f
+      real(dp) :: c0_t, c0_n, scale_c, scale_f, tol_i, term(3)
       integer :: i, n, j, ios
       integer, parameter :: ZERO_STIFF(6) = [COL_C_TN, COL_C_NT, COL_CC_TN, COL_CC_NT, COL_TC_N, COL_SC_T]
       integer, parameter :: ZERO_JUMP(2) = [COL_DBAR_TN, COL_DBAR_NT]
@@ -383,6 +413,14 @@ contains
          end if
          scale_c = max(c0_t, c0_n)
          scale_f = c0_t/h
+         tol_i = IDENTITY_TOL
+         if (table%has_betti) tol_i = BETTI_TOL
+         if (table%has_betti) then
+            if (abs(table%i_fnt(1))/(2.0_dp*b*h) > BETTI_TOL*scale_f) then
+               call identity(1, 'I_fNT = 0 at a = 0 (limit a -> 0+)', table%i_fnt(1), status, message)
+               return
+            end if
+         end if
          do i = 1, n
             if (abs(r(i, COL_D) - r(i, COL_A)/b) > 1.0e-12_dp) then
                call identity(i, 'D = a/b', r(i, COL_D), status, message)
@@ -461,6 +499,27 @@ contains
                call identity(i, 'Cf_T = -(C_TT(0)/h) D ufbar (reciprocity)', r(i, COL_CF_T), status, message)
                return
             end if
+            ! Betti relations (docs/rve.md): (i) is free of I; (ii') and (iii') carry it
+            if (abs(r(i, COL_C_TT) - c0_t*(1.0_dp - r(i, COL_D)*r(i, COL_DBAR_TT)/h)) > tol_i*c0_t) then
+               call identity(i, 'C_TT = C_TT(0) (1 - D Dbar_TT/h) (Betti i)', r(i, COL_C_TT), status, message)
+               return
+            end if
+            if (abs(r(i, COL_C_NN) - c0_n*(1.0_dp - r(i, COL_D)*r(i, COL_DBAR_NN)/h)) > tol_i*c0_n) then
+               call identity(i, 'C_NN = C_NN(0) (1 - D Dbar_NN/h) (Betti i)', r(i, COL_C_NN), status, message)
+               return
+            end if
+            if (table%has_betti .and. i > 1) then
+               term = [r(i, COL_CF_T), -r(i, COL_D)*r(i, COL_TF)*r(i, COL_DBAR_TT)/h, -table%i_fnt(i)/(2.0_dp*b*h)]
+               if (abs(sum(term)) > BETTI_TOL*maxval(abs(term))) then
+                  call identity(i, 'Cf_T = D Tf Dbar_TT/h + I_fNT/(2bh) (Betti ii'')', table%i_fnt(i), status, message)
+                  return
+               end if
+               term = [r(i, COL_DBAR_TT)*r(i, COL_TF), r(i, COL_UFBAR)*r(i, COL_TC_T), table%i_fnt(i)/(2.0_dp*r(i, COL_A))]
+               if (abs(sum(term)) > BETTI_TOL*maxval(abs(term))) then
+                  call identity(i, 'Dbar_TT Tf + ufbar Tc_T = -I_fNT/(2a) (Betti iii'')', table%i_fnt(i), status, message)
+                  return
+               end if
+            end if
          end do
          if (max(abs(r(n, COL_C_TT)), abs(r(n, COL_C_NN))) > IDENTITY_TOL*scale_c) then
             call identity(n, 'C = 0 at a = b', max(abs(r(n, COL_C_TT)), abs(r(n, COL_C_NN))), status, message)
@@ -490,8 +549,8 @@ contains
          character(len=MESSAGE_LEN), intent(out) :: message
          integer :: ios
          status = STATUS_TABLE_IDENTITY
-         write (message, '(a,a,i0,a,a,a,es24.16)', iostat=ios) message_path(table%source), ':', table%line(row), &
-            ': identity ', what, ' fails: value ', value
+         write (message, '(a,a,i0,a,a,a,es24.16,a,es24.16,a)', iostat=ios) message_path(table%source), ':', &
+            table%line(row), ': identity ', what, ' fails: value ', value, ' at a = ', table%rows(row, COL_A), ' mm'
       end subroutine identity
 
    end subroutine check_rve_table
@@ -540,15 +599,34 @@ contains
    pure real(dp) function short_crack_a_tf(e_m, nu_m, e_b, nu_b) result(a_tf)
       real(dp), intent(in) :: e_m, nu_m          !! mortar Young's modulus (MPa), Poisson's ratio
       real(dp), intent(in) :: e_b, nu_b          !! brick Young's modulus (MPa), Poisson's ratio
-      real(dp) :: e_star, g_m, g_b, k_m, k_b, beta
+      real(dp) :: e_star
       e_star = 2.0_dp/((1.0_dp - nu_m**2)/e_m + (1.0_dp - nu_b**2)/e_b)
+      a_tf = -e_star/(4.0_dp*(1.0_dp - dundurs_beta(e_m, nu_m, e_b, nu_b)**2))
+   end function short_crack_a_tf
+
+   !> The bimaterial oscillation index eps = ln((1 - beta)/(1 + beta))/(2 pi) of the mortar-brick
+   !> interface in plane strain (beta as in short_crack_a_tf). A short crack's Betti defect,
+   !> -Dbar_TT T^f/(ufbar T^c_T) - 1 = I/(2 a ufbar T^c_T), tends to 4 eps^2 (docs/rve.md).
+   pure real(dp) function oscillation_index(e_m, nu_m, e_b, nu_b) result(eps)
+      real(dp), intent(in) :: e_m, nu_m          !! mortar Young's modulus (MPa), Poisson's ratio
+      real(dp), intent(in) :: e_b, nu_b          !! brick Young's modulus (MPa), Poisson's ratio
+      real(dp), parameter :: PI = acos(-1.0_dp)
+      real(dp) :: beta
+      beta = dundurs_beta(e_m, nu_m, e_b, nu_b)
+      eps = log((1.0_dp - beta)/(1.0_dp + beta))/(2.0_dp*PI)
+   end function oscillation_index
+
+   !> Dundurs' second parameter beta of the mortar (m) - brick (b) pair in plane strain.
+   pure real(dp) function dundurs_beta(e_m, nu_m, e_b, nu_b) result(beta)
+      real(dp), intent(in) :: e_m, nu_m          !! mortar Young's modulus (MPa), Poisson's ratio
+      real(dp), intent(in) :: e_b, nu_b          !! brick Young's modulus (MPa), Poisson's ratio
+      real(dp) :: g_m, g_b, k_m, k_b
       g_m = e_m/(2.0_dp*(1.0_dp + nu_m))
       g_b = e_b/(2.0_dp*(1.0_dp + nu_b))
       k_m = 3.0_dp - 4.0_dp*nu_m
       k_b = 3.0_dp - 4.0_dp*nu_b
       beta = (g_m*(k_b - 1.0_dp) - g_b*(k_m - 1.0_dp))/(g_m*(k_b + 1.0_dp) + g_b*(k_m + 1.0_dp))
-      a_tf = -e_star/(4.0_dp*(1.0_dp - beta**2))
-   end function short_crack_a_tf
+   end function dundurs_beta
 
    !> The interpolation variable x(D), dx/dD and d2x/dD2: VARIABLE_DAMAGE x = D; VARIABLE_LOG_LIGAMENT
    !> x = w = 1/(1 - ln(1 - D)), dw/dD = -w^2/(1 - D), d2w/dD2 = (2w^3 - w^2)/(1 - D)^2 (both

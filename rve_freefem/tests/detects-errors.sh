@@ -7,6 +7,9 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 table=$1; diag=$2; work=$3
 mkdir -p "$work" || exit 3
 bash "$here/check-table.sh" "$table" "$diag" > /dev/null || { echo "the unperturbed table must pass"; exit 1; }
+# a format-1 table (no I_fNT column, as written before the Betti relations were checked) must pass
+awk '/^# columns: / { sub(/ I_fNT$/, "") } /^#/ || NF == 0 { print; next } { NF = 23; print }' "$table" > "$work/format1.dat"
+bash "$here/check-table.sh" "$work/format1.dat" "$diag" > /dev/null || { echo "the table without I_fNT must pass"; exit 1; }
 # perturb column COL of data row ROW by the relative amount F
 perturb() { awk -v row="$1" -v col="$2" -v f="$3" '/^#/ || NF == 0 { print; next } { n++; if (n == row) $col = sprintf("%.17g", $col * (1 + f)); print }' "$table"; }
 fail=0
@@ -26,6 +29,10 @@ expect_fail "C_TN = 1e-6 MPa instead of 0 (1e-9 Chat)" "$work/t4.dat"
 n=$(awk '!/^#/ && NF' "$table" | wc -l)
 perturb "$n" 21 1e-9 > "$work/t5.dat"; expect_fail "T^f(b) off -Chat_TT/h by 1e-9" "$work/t5.dat"
 perturb 3 19 1e-7 > "$work/t6.dat"; expect_fail "C^f_T off by 1e-7 (reciprocity)" "$work/t6.dat"
+perturb 3 24 1e-7 > "$work/t10.dat"; expect_fail "I_fNT off by 1e-7 ((ii'), (iii'))" "$work/t10.dat"
+perturb 2 21 1e-9 > "$work/t11.dat"; expect_fail "T^f at the shortest crack off by 1e-9 ((ii'), (iii'))" "$work/t11.dat"
+awk '/^#/ || NF == 0 { print; next } { if (++n == 1) $24 = "1e-3"; print }' "$table" > "$work/t12.dat"
+expect_fail "I_fNT = 1e-3 at a = 0 (limit 0)" "$work/t12.dat"
 sed 's/^# columns: a D C_TT C_TN C_NT/# columns: a D C_TT C_NT C_TN/' "$table" > "$work/t7.dat"; expect_fail "columns line changed" "$work/t7.dat"
 awk '!/^#/ && NF { n++; if (n == 2) next } { print }' "$table" | sed '/^0 0 /d' > "$work/t8.dat"; expect_fail "a = 0 row missing" "$work/t8.dat"
 awk '{ for (i = 1; i < NF; i++) if ($i == "resTfpt=" && ++k == 2) $(i + 1) = "2e-9"; print }' "$diag" > "$work/d9.txt"
