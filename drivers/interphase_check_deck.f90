@@ -232,7 +232,7 @@ contains
                   if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_DEFAULT_CODE .and. &
                      params%contact_band > 0.0_dp .and. params%contact_band < CHI_MIN_BUILT_IN) &
                      notes = notes//'; note: contact band chi = '//real_to_string(params%contact_band)// &
-                     ' is below 0.55, the width that keeps the stored energy convex up to D = 1 on the '// &
+                     ' is below 0.55, the width that keeps the stored energy convex up to D = 1 - 1e-7 on the '// &
                      'built-in table (docs/theory.md, ''The contact band'')'
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) &
                      notes = notes//'; note: tabulated R-curve: the run needs INTERPHASE_RCURVE set to the '// &

@@ -22,7 +22,8 @@
 module interphase_fracture
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI
+   use interphase_layout, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI, &
+      MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
@@ -75,7 +76,7 @@ contains
       logical :: closed
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
       real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, a1, a2, b1, b2, lam_s, lam2, kappa, dkappa
-      real(dp) :: band_g, band_grad(3), band_hess(3, 3), q, dq, d2q, scale, dscale
+      real(dp) :: band_g, band_grad(3), band_hess(3, 3), q, dq, d2q
       logical :: in_band
       integer :: nt
 
@@ -100,7 +101,8 @@ contains
       slip = r%slip
       ! the contact band (open crack, 0 < s_N < chi |s_T|): psi holds 1/2 q g, so G_II holds -q' g
       in_band = .false.
-      if (params%contact_band > 0.0_dp .and. .not. closed) then
+      if (params%contact_band > 0.0_dp .and. params%model == MODEL_MICROMECHANICAL .and. .not. closed &
+         .and. params%rcurve /= RCURVE_EQUIVALENT) then
          call contact_band_shape(params%contact_band, load%s_n, load%st, ntens, in_band, band_g, band_grad, band_hess)
          if (in_band) call band_stiffness(c, dc, d2c, q, dq, d2q)
       end if
@@ -118,16 +120,10 @@ contains
             g_s(2:ntens) = 2.0_dp*load%st(1:nt)/sig_t**2
             g_d = -2.0_dp*gi*dsig_n/sig_n - 2.0_dp*gii*dsig_t/sig_t
          end if
-         if (in_band) then
-            ! G_II gains -q' g over G_cII = -k_t' sigma_T^2: g gains scale*band_g
-            scale = dq/(dc%k_t*sig_t**2)
-            g = g + scale*band_g
-            if (want_derivatives) then
-               dscale = d2q/(dc%k_t*sig_t**2) - scale*(d2c%k_t/dc%k_t + 2.0_dp*dsig_t/sig_t)
-               g_s(1:ntens) = g_s(1:ntens) + scale*band_grad(1:ntens)
-               g_d = g_d + dscale*band_g
-            end if
-         end if
+         ! In the contact band G_II = -(k_t' + q'(1 - W)) |s_T|^2 and the equivalent R-curve's
+         ! G_cII = -(k_t' + q'(1 - W)) sigma_T^2, so g is the same: it goes over continuously into
+         ! the closed crack's (G_cII = kappa sigma_T^2, kappa = -(k_t' + q') in pure mode II), and
+         ! the law stays equivalent to the displacement law, whose D the band does not change.
          return
       end if
 

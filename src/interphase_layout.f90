@@ -69,11 +69,14 @@ module interphase_layout
    !> open/closed switch at s_N = 0 (docs/theory.md, 'The contact band'): 0 (the default) is
    !> the paper's two-state law; chi > 0 fades the frictionless closed crack's extra shear
    !> stiffness out over 0 < s_N < chi |s_T|, so that the traction is continuous where the
-   !> crack opens. Both damage laws.
+   !> crack opens. Micromechanical model (the simplified one has no jump), both damage laws.
    integer, parameter, public :: OPT_CONTACT_BAND = 2
    !> Number of option constants.
    integer, parameter, public :: NPROPS_OPTIONS = 2
-   !> Largest admissible contact band width chi (-).
+   !> Admissible contact band widths: chi = 0 or CONTACT_BAND_MIN <= chi <= CONTACT_BAND_MAX (-).
+   !> Below 0.1 the band's normal stiffness, ~ q max|W''|/(2 chi^2), could exceed the intact
+   !> crack's (which the VUMAT's stable increment assumes), and its energy is far from convex.
+   real(dp), parameter, public :: CONTACT_BAND_MIN = 0.1_dp
    real(dp), parameter, public :: CONTACT_BAND_MAX = 10.0_dp
    !> PROPS(nb + OPT_GROWTH_SLIP) value, the default: the crack faces' integrated slip
    !> pi = D ufbar lambda is conserved while the crack grows (the faces made by the growth start

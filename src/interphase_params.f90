@@ -10,7 +10,7 @@ module interphase_params
       MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, PROP_TABLE, NPROPS_MICROMECHANICAL, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, LFM_D0, LFM_RCURVE, LFM_GC_I, LFM_GC_II, &
       NPROPS_FRACTURE_EXTRA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, OPT_GROWTH_SLIP, &
-      NPROPS_OPTIONS, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, OPT_CONTACT_BAND, CONTACT_BAND_MAX
+      NPROPS_OPTIONS, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, OPT_CONTACT_BAND, CONTACT_BAND_MIN, CONTACT_BAND_MAX
    use interphase_status, only: STATUS_OK, STATUS_BAD_NPROPS, STATUS_BAD_MODEL, &
       STATUS_BAD_DAMAGE_LAW, STATUS_BAD_MU, STATUS_BAD_S0_N, STATUS_BAD_SF_N, STATUS_BAD_S0_T, &
       STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_TABLE_SELECTOR, MESSAGE_LEN, &
@@ -148,10 +148,11 @@ contains
       end if
       if (size(options) >= OPT_CONTACT_BAND) then
          band_ok = finite_at_least(options(OPT_CONTACT_BAND), 0.0_dp)
-         if (band_ok) band_ok = options(OPT_CONTACT_BAND) <= CONTACT_BAND_MAX
+         if (band_ok) band_ok = .not. (options(OPT_CONTACT_BAND) > 0.0_dp) .or. &
+            (options(OPT_CONTACT_BAND) >= CONTACT_BAND_MIN .and. options(OPT_CONTACT_BAND) <= CONTACT_BAND_MAX)
          if (.not. band_ok) then
             call reject(STATUS_BAD_OPTION, base + OPT_CONTACT_BAND, 'contact band chi', options(OPT_CONTACT_BAND), &
-               'must be finite, >= 0 (0: the paper''s open/closed switch) and <= 10', status, message)
+               'must be 0 (the paper''s open/closed switch) or finite in [0.1, 10]', status, message)
             return
          end if
          params%contact_band = options(OPT_CONTACT_BAND)

@@ -4,7 +4,8 @@
 module interphase_response
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI
+   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
+      MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
@@ -115,7 +116,8 @@ contains
             r%regime = REGIME_OPEN
          end if
          r%psi = 0.5_dp*(r%traction(1)*s_n + sum(r%traction(2:ntens)*st(1:nt)))
-         if (params%contact_band > 0.0_dp .and. d > 0.0_dp) &
+         ! (the simplified model has q = 0: the band would change nothing but rounding)
+         if (params%contact_band > 0.0_dp .and. params%model == MODEL_MICROMECHANICAL .and. d > 0.0_dp) &
             call blend_contact_band(params%contact_band, c, dc, s_n, st, ntens, r, status)
          return
       end if
@@ -205,7 +207,7 @@ contains
       integer, intent(in) :: ntens
       logical, intent(out) :: inside
       real(dp), intent(out) :: g, grad(3), hess(3, 3)
-      real(dp) :: rho, tb, w, w1, w2, a_t, h_nt, h_tt
+      real(dp) :: rho, tb, w, w1, w2, a_t, h_nt, h_tt, e(2)
       integer :: nt, i, j
       nt = ntens - 1
       g = 0.0_dp
@@ -215,21 +217,24 @@ contains
       inside = s_n > 0.0_dp .and. s_n < chi*rho
       if (.not. inside) return
       tb = s_n/(chi*rho)                          ! in (0, 1)
+      e = st/rho                                  ! shear direction (|e| = 1; rho > 0 here)
       w = tb**3*(10.0_dp + tb*(-15.0_dp + 6.0_dp*tb))
       w1 = 30.0_dp*(tb*(1.0_dp - tb))**2
       w2 = 60.0_dp*tb*(1.0_dp - tb)*(1.0_dp - 2.0_dp*tb)
       g = rho**2*(1.0_dp - w)
       a_t = 2.0_dp*(1.0_dp - w) + tb*w1
-      h_nt = -(w1 - tb*w2)/(chi*rho)
-      h_tt = tb*(w1 - tb*w2)/rho**2
+      ! (the Hessian's mixed and shear-shear parts written with e, not st/rho^k: no overflow
+      ! for tiny |s_T|)
+      h_nt = -(w1 - tb*w2)/chi
+      h_tt = tb*(w1 - tb*w2)
       grad(1) = -rho*w1/chi
       grad(2:ntens) = a_t*st(1:nt)
       hess(1, 1) = -w2/chi**2
       do i = 1, nt
-         hess(1, 1 + i) = h_nt*st(i)
+         hess(1, 1 + i) = h_nt*e(i)
          hess(1 + i, 1) = hess(1, 1 + i)
          do j = 1, nt
-            hess(1 + i, 1 + j) = merge(a_t, 0.0_dp, i == j) + h_tt*st(i)*st(j)
+            hess(1 + i, 1 + j) = merge(a_t, 0.0_dp, i == j) + h_tt*e(i)*e(j)
          end do
       end do
    end subroutine contact_band_shape
@@ -256,8 +261,9 @@ contains
    !> stiffness exceeds the open crack's by q (band_stiffness; the I coupling). On the opening
    !> side, 0 < s_N < chi |s_T|, that excess fades out with the open crack's energy
    !>   psi = 1/2 k_n s_N^2 + 1/2 k_t |s_T|^2 + 1/2 q g,  g = |s_T|^2 (1 - W(t))
-   !> (contact_band_shape), so that t = d psi/ds and its tangent are continuous where the crack
-   !> opens and the law stays hyperelastic at fixed D. The closed crack (s_N <= 0) is the
+   !> (contact_band_shape), so that t = d psi/ds is continuous where the crack opens (the
+   !> tangent keeps the unilateral contact's kink there) and, with its tangent, at the band's
+   !> upper edge; the law stays hyperelastic at fixed D. The closed crack (s_N <= 0) is the
    !> paper's. On entry `r` holds the open crack's response; outside the band it is left as it is.
    pure subroutine blend_contact_band(chi, c, dc, s_n, st, ntens, r, status)
       real(dp), intent(in) :: chi                         !! band width chi (-), > 0

@@ -7,7 +7,7 @@
 #   drivers/fe2d/band-study.sh [--build-dir DIR] [--band CHI] [--check]
 # --band CHI  run with contact_band = CHI instead of the cases' value (0: the paper's law)
 # --check     exit 1 unless every run completes and, in each series, the peak force agrees to
-#             1e-6 relative, the dissipated energy of the two finest runs agrees to 2e-4
+#             1e-4 relative (the sampled peak of a converged path), the dissipated energy of the two finest runs agrees to 2e-4
 #             relative, and (monotonic case) its changes fall with each halving of the
 #             increment (what ctest runs)
 set -euo pipefail
@@ -48,8 +48,8 @@ series() {
       printf '%-9s %-8s %-5s %-24s %-18s %-16s %-10s\n' "${case_name#couplet-micro-band-}" "$integration" "$n" "$counts" "$peak" "$dis" "$change"
       if [ "$check" = 1 ]; then
         [ -z "$first_peak" ] && first_peak="$peak"
-        if ! awk -v a="$peak" -v b="$first_peak" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-6*b) }'; then
-          echo "  FAIL: the peak force differs from the first run's by more than 1e-6 relative" >&2; failed=1
+        if ! awk -v a="$peak" -v b="$first_peak" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-4*b) }'; then
+          echo "  FAIL: the peak force differs from the first run's by more than 1e-4 relative" >&2; failed=1
         fi
         if [ "$monotone" = 1 ] && [ -n "$previous_change" ] && ! awk -v a="$change" -v b="$previous_change" \
             'BEGIN { if (a < 0) a = -a; if (b < 0) b = -b; exit !(a < b) }'; then
