@@ -26,7 +26,7 @@ module interphase_block
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    use interphase_finite, only: EXPONENT_MASK
-   use interphase_params, only: law_params_type
+   use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
    implicit none
@@ -35,6 +35,11 @@ module interphase_block
 
    !> Bit pattern of the smallest positive normal number, tiny(1.0_dp).
    integer(int64), parameter :: SMALLEST_NORMAL_BITS = int(z'0010000000000000', int64)
+
+   !> All bits of an IEEE binary64 number but its sign: iand(bits, MAGNITUDE_MASK) are the bits of |x|.
+   integer(int64), parameter :: MAGNITUDE_MASK = int(z'7FFFFFFFFFFFFFFF', int64)
+   !> Bit pattern of SEPARATION_MAX: |x| <= SEPARATION_MAX exactly when the bits of |x| are at most these.
+   integer(int64), parameter :: SEPARATION_MAX_BITS = transfer(SEPARATION_MAX, 0_int64)
 
 contains
 
@@ -50,7 +55,7 @@ contains
    !> Update n points of the simplified model (displacement-driven damage law) from their
    !> separations at the end of the increment and their state at its start.
    !>
-   !> A point whose separation is not finite gets ok = .false.; its outputs are then finite but
+   !> A point whose separation is not finite or exceeds SEPARATION_MAX gets ok = .false.; its outputs are then finite but
    !> meaningless (the caller holds the point at its old values). The other points are updated
    !> exactly as `interface_update` does. In 2-D (nt = 1) the values of s_t2 and lam2_old are
    !> not used (the arrays must exist) and t_t2 = lam2 = 0 on return.
@@ -69,7 +74,7 @@ contains
       real(dp), intent(out) :: lam1(n), lam2(n)      !! slip lambda at the end (mm)
       real(dp), intent(out) :: regime(n)             !! REGIME_* code, as a real (STATEV form)
       real(dp), intent(out) :: psi(n)                !! stored energy per unit area (N/mm)
-      logical, intent(out) :: ok(n)                  !! the separation was finite
+      logical, intent(out) :: ok(n)                  !! the separation was finite, |s_i| <= SEPARATION_MAX
       integer, intent(out) :: nfailed                !! number of points with ok = .false.
 
       !> Points per pass: the passes' working arrays stay in the L1 cache.
@@ -105,15 +110,16 @@ contains
       do c0 = 1, n, SUB
          m = min(SUB, n - c0 + 1)
 
-         ! ---- pass 1: a point with a non-finite separation computes on zeros (its results are
-         ! not used); bit masks, not branches
+         ! ---- pass 1: a point with a non-finite separation, or one beyond SEPARATION_MAX (the
+         ! kernel's two checks; the magnitude bits of NaN and Inf exceed those of every finite
+         ! number), computes on zeros (its results are not used); bit masks, not branches
          if (nt == 1) then
             do i = 1, m
                k = c0 + i - 1
                s_n_k = s_n(k)
                st1 = s_t1(k)
-               ok_k = max(iand(transfer(s_n_k, 0_int64), EXPONENT_MASK), &
-                  iand(transfer(st1, 0_int64), EXPONENT_MASK)) /= EXPONENT_MASK
+               ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st1, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
                keep = merge(-1_int64, 0_int64, ok_k)
                s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
                st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
@@ -130,9 +136,9 @@ contains
                s_n_k = s_n(k)
                st1 = s_t1(k)
                st2 = s_t2(k)
-               ok_k = max(iand(transfer(s_n_k, 0_int64), EXPONENT_MASK), &
-                  iand(transfer(st1, 0_int64), EXPONENT_MASK), &
-                  iand(transfer(st2, 0_int64), EXPONENT_MASK)) /= EXPONENT_MASK
+               ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st1, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st2, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
                keep = merge(-1_int64, 0_int64, ok_k)
                s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
                st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)

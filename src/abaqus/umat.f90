@@ -6,7 +6,8 @@
 !> This adapter only packs arguments and calls the pure kernel. On a failed update it lowers
 !> PNEWDT, reports through `interphase_host_message` and returns before touching STRESS,
 !> STATEV, DDSDDE, SSE or SPD. Setup errors (sizes, PROPS, data not loaded, a tabulated R-curve
-!> that does not cover D0 or the damage reached) are reported as fatal, other failures as
+!> that does not cover D0 or the damage reached) and host inputs that are not finite (a NaN or
+!> Inf in the incoming STRESS, SSE or SPD, or an SPD that overflows) are reported as fatal, other failures as
 !> warnings (the increment is cut back). Thread-safe: no SAVE, COMMON or module data is written.
 !> SSE returns the stored energy and SPD accumulates the dissipated energy per unit area
 !> (N/mm): SPD += 1/2 (t_n + t).ds - (psi - psi_n), with psi_n the SSE passed in.
@@ -15,8 +16,9 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, &
       layer, kspt, jstep, kinc)
    use interphase_kinds, only: dp
+   use interphase_finite, only: is_finite
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
-      SEVERITY_FATAL, status_message
+      SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, status_message
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
@@ -39,9 +41,10 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
 
    type(law_params_type) :: params
    type(interface_state_type) :: old, new
-   real(dp) :: s(3), traction(3), tangent(3, 3), psi
+   real(dp) :: s(3), traction(3), tangent(3, 3), psi, spd_new
    integer :: status
    character(len=MESSAGE_LEN) :: message
+   character(len=33) :: stress_text
 
    if ((ntens /= 2 .and. ntens /= 3) .or. ndi /= 1 .or. nshr /= ntens - 1) then
       write (message, '(a,i0,a,i0,a,i0,a)') 'NTENS = ', ntens, ', NDI = ', ndi, ', NSHR = ', nshr, &
@@ -81,7 +84,17 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       return
    end if
 
-   spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
+   spd_new = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
+   if (.not. is_finite(spd_new)) then
+      ! a NaN or Inf in the incoming STRESS, SSE or SPD reaches SPD, as does their overflow; the
+      ! kernel's own outputs are finite (docs/abaqus.md, 'Admissible ranges')
+      write (stress_text, '(3es11.3)') stress
+      write (message, '(a,a,a,es11.3,a,es11.3,a)') 'incoming STRESS (MPa)', trim(stress_text), ', SSE ', sse, &
+         ', SPD ', spd, ' (N/mm): the host must pass finite values (those the UMAT returned last)'
+      call fail(STATUS_BAD_HOST_INPUT, SEVERITY_FATAL)
+      return
+   end if
+   spd = spd_new
    sse = psi
    stress = traction(1:ntens)
    ddsdde = tangent(1:ntens, 1:ntens)
