@@ -25,19 +25,17 @@
 module interphase_block
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
-   use interphase_finite, only: EXPONENT_MASK
-   use interphase_params, only: law_params_type, SEPARATION_MAX
+   use interphase_finite, only: MAGNITUDE_MASK
+   use interphase_params, only: law_params_type, SEPARATION_MAX, DENSITY_MIN, DENSITY_MAX
    use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
    implicit none
    private
    public :: simplified_block_update, density_counts, block_supports
 
-   !> Bit pattern of the smallest positive normal number, tiny(1.0_dp).
-   integer(int64), parameter :: SMALLEST_NORMAL_BITS = int(z'0010000000000000', int64)
-
-   !> All bits of an IEEE binary64 number but its sign: iand(bits, MAGNITUDE_MASK) are the bits of |x|.
-   integer(int64), parameter :: MAGNITUDE_MASK = int(z'7FFFFFFFFFFFFFFF', int64)
+   !> Bit patterns of DENSITY_MIN and DENSITY_MAX (positive numbers are ordered like their bits).
+   integer(int64), parameter :: DENSITY_MIN_BITS = transfer(DENSITY_MIN, 0_int64)
+   integer(int64), parameter :: DENSITY_MAX_BITS = transfer(DENSITY_MAX, 0_int64)
    !> Bit pattern of SEPARATION_MAX: |x| <= SEPARATION_MAX exactly when the bits of |x| are at most these.
    integer(int64), parameter :: SEPARATION_MAX_BITS = transfer(SEPARATION_MAX, 0_int64)
 
@@ -321,9 +319,10 @@ contains
       nfailed = int(nfailed_count)
    end subroutine simplified_block_update
 
-   !> The densities of a block in one branch-free pass: nbad values that are not finite, > 0 and
-   !> normal (bit patterns: no exception for NaN; a subnormal value would overflow its
-   !> reciprocal), and ndiff values whose bit pattern differs from rho(1) (0: one density).
+   !> The densities of a block in one branch-free pass: nbad values outside [DENSITY_MIN,
+   !> DENSITY_MAX] (bit patterns: no exception for NaN; negative numbers have the sign bit and
+   !> lie below; the window keeps the energies per unit mass and their products with the density
+   !> finite), and ndiff values whose bit pattern differs from rho(1) (0: one density).
    pure subroutine density_counts(n, rho, nbad, ndiff)
       integer, intent(in) :: n
       real(dp), intent(in) :: rho(n)
@@ -335,7 +334,7 @@ contains
       ndiff_bits = 0
       do k = 1, n
          b = transfer(rho(k), 0_int64)
-         nbad_bits = nbad_bits + merge(0_int64, 1_int64, b >= SMALLEST_NORMAL_BITS .and. b < EXPONENT_MASK)
+         nbad_bits = nbad_bits + merge(0_int64, 1_int64, b >= DENSITY_MIN_BITS .and. b <= DENSITY_MAX_BITS)
          ndiff_bits = ndiff_bits + merge(1_int64, 0_int64, b /= b1)
       end do
       nbad = int(nbad_bits)

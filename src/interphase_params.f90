@@ -33,6 +33,15 @@ module interphase_params
    !> Largest admissible slip component |lambda_i| (mm) in an incoming state (STATEV(2:3)):
    !> the slip the law itself produces stays of the order of the separations.
    real(dp), parameter, public :: SLIP_MAX = 1.0e30_dp
+   !> Largest admissible magnitude of what a host passes in besides the separation (adapters):
+   !> the UMAT's incoming STRESS (MPa), SSE and SPD (N/mm), STRAN and DSTRAN (mm), the VUMAT's
+   !> stressOld, enerInternOld and enerInelasOld (per unit mass) and its separation increments;
+   !> with the density in [DENSITY_MIN, DENSITY_MAX] the energy updates then stay below 1e160.
+   !> Outside: STATUS_BAD_HOST_INPUT (STRAN, DSTRAN: STATUS_NONFINITE_SEPARATION or
+   !> STATUS_SEPARATION_OUT_OF_RANGE, as for the separation itself).
+   real(dp), parameter, public :: HOST_VALUE_MAX = 1.0e50_dp
+   !> Admissible density of the VUMAT (*Density, tonne/mm^3 in N-mm-s units).
+   real(dp), parameter, public :: DENSITY_MIN = 1.0e-50_dp, DENSITY_MAX = 1.0e50_dp
    !> The window [PROPS_VALUE_MIN, PROPS_VALUE_MAX] and its upper end as the messages show them.
    character(len=*), parameter :: WINDOW_TEXT = '[1e-20, 1e20]', RANGE_MAX_TEXT = '1e20'
 

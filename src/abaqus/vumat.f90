@@ -22,8 +22,8 @@
 !> law) run the vectorised block update (interphase_block, column by column); the others the point update
 !> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
-!> Failures: bad sizes, PROPS, density or incoming STATEV, a NaN or Inf in stressOld or the old
-!> energies (or new energies that overflow: STATUS_BAD_HOST_INPUT), a custom RVE table or R-curve
+!> Failures: bad sizes, PROPS, density (outside [1e-50, 1e50]) or incoming STATEV, a NaN or Inf
+!> in stressOld, the old energies or strainInc, or one of them beyond 1e50 (STATUS_BAD_HOST_INPUT), a custom RVE table or R-curve
 !> selected but not loaded (VEXTERNALDB), and a tabulated R-curve that does not cover D0 or the
 !> damage a point reaches, are fatal (the whole block is held at
 !> its old values and the host hook is called with SEVERITY_FATAL; Abaqus then stops). A point
@@ -42,7 +42,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, STATUS_RCURVE_OUT_OF_RANGE, status_message, &
       STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_HOST_INPUT
-   use interphase_finite, only: is_finite
+   use interphase_finite, only: is_finite, is_within
+   use interphase_params, only: HOST_VALUE_MAX
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states
    use interphase_kernel, only: interface_update
@@ -94,6 +95,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    type(coefficient_set_type) :: intact, intact_rate
    real(dp) :: ds(CHUNK, 3), psi(CHUNK)
    logical :: ok(CHUNK)
+   real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei_old, ep_old
+   logical :: ok_host
    real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status, nbad_energy
@@ -171,7 +174,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                if (nbad > 0) exit
             end do
             write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
-               ': the VUMAT needs *Density > 0 (a normal number) on the material (its energies are per unit mass)'
+               ': the VUMAT needs *Density > 0, within [1e-50, 1e50], on the material (its energies are per unit mass)'
             fatal_code = -1
             exit update
          end if
@@ -300,8 +303,23 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          inv_rho_uniform = 1.0_dp/rho_t_uniform
          do k = 1, n
             km = k0 + k - 1
-            work_k = (stressold(km, 1) + stressnew(km, 1))*ds(k, 1) + (stressold(km, 2) + stressnew(km, 2))*ds(k, 2)
-            if (ntens == 3) work_k = work_k + (stressold(km, 3) + stressnew(km, 3))*ds(k, 3)
+            ! the host's values enter only when within HOST_VALUE_MAX (no branch: selected, never
+            ! computed on; a NaN or Inf would raise no exception either), the culprits counted
+            ok_host = is_within(stressold(km, 1), HOST_VALUE_MAX) .and. is_within(stressold(km, 2), HOST_VALUE_MAX) &
+               .and. is_within(stressold(km, ntens), HOST_VALUE_MAX) .and. is_within(enerinternold(km), HOST_VALUE_MAX) &
+               .and. is_within(enerinelasold(km), HOST_VALUE_MAX) .and. is_within(ds(k, 1), HOST_VALUE_MAX) &
+               .and. is_within(ds(k, 2), HOST_VALUE_MAX) .and. is_within(ds(k, ntens), HOST_VALUE_MAX)
+            nbad_energy = nbad_energy + merge(0, 1, ok_host)
+            so1 = merge(stressold(km, 1), 0.0_dp, ok_host)
+            so2 = merge(stressold(km, 2), 0.0_dp, ok_host)
+            so3 = merge(stressold(km, ntens), 0.0_dp, ok_host)
+            ds1 = merge(ds(k, 1), 0.0_dp, ok_host)
+            ds2 = merge(ds(k, 2), 0.0_dp, ok_host)
+            ds3 = merge(ds(k, ntens), 0.0_dp, ok_host)
+            ei_old = merge(enerinternold(km), 0.0_dp, ok_host)
+            ep_old = merge(enerinelasold(km), 0.0_dp, ok_host)
+            work_k = (so1 + stressnew(km, 1))*ds1 + (so2 + stressnew(km, 2))*ds2
+            if (ntens == 3) work_k = work_k + (so3 + stressnew(km, 3))*ds3
             if (uniform_density) then
                rho_t = rho_t_uniform
                inv_rho = inv_rho_uniform
@@ -309,22 +327,23 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                rho_t = density(km)*THICKNESS
                inv_rho = 1.0_dp/rho_t
             end if
-            psi_old = (enerinternold(km) - enerinelasold(km))*rho_t
-            energy_inelas = enerinelasold(km) + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
+            psi_old = (ei_old - ep_old)*rho_t
+            energy_inelas = ep_old + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
             enerinelasnew(km) = energy_inelas
             enerinternnew(km) = energy_inelas + psi(k)*inv_rho
-            ! a NaN or Inf in stressOld or the old energies reaches the new energies, as does
-            ! their overflow: counted without a branch, the culprit looked for only on error
-            nbad_energy = nbad_energy + merge(0, 1, is_finite(enerinternnew(km)) .and. is_finite(energy_inelas))
          end do
          if (nbad_energy > 0) then
-            do km = k0, k1
-               if (.not. (is_finite(enerinternnew(km)) .and. is_finite(enerinelasnew(km)))) exit
+            do k = 1, n
+               km = k0 + k - 1
+               if (.not. (all(is_within(stressold(km, :), HOST_VALUE_MAX)) .and. &
+                  is_within(enerinternold(km), HOST_VALUE_MAX) .and. is_within(enerinelasold(km), HOST_VALUE_MAX) &
+                  .and. all(is_within(ds(k, 1:ntens), HOST_VALUE_MAX)))) exit
             end do
             write (first_message, '(3es11.3)') stressold(km, :)
-            write (message, '(a,i0,a,a,a,2es11.3,a)') 'block point ', km, ': stressOld (MPa)', trim(first_message), &
-               ', enerInternOld, enerInelasOld ', enerinternold(km), enerinelasold(km), &
-               ': the host must pass finite values (those the VUMAT returned last)'
+            write (message, '(a,i0,a,a,a,2es11.3,a,es8.1,a)') 'block point ', km, ': stressOld (MPa)', &
+               trim(first_message), ', enerInternOld, enerInelasOld ', enerinternold(km), enerinelasold(km), &
+               ' or the separation increment: the host must pass finite values within ', HOST_VALUE_MAX, &
+               ' (those the VUMAT returned last)'
             fatal_code = STATUS_BAD_HOST_INPUT
             exit update
          end if
