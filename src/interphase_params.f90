@@ -33,13 +33,17 @@ module interphase_params
    !> Largest admissible slip component |lambda_i| (mm) in an incoming state (STATEV(2:3)):
    !> the slip the law itself produces stays of the order of the separations.
    real(dp), parameter, public :: SLIP_MAX = 1.0e30_dp
-   !> Largest admissible magnitude of what a host passes in besides the separation (adapters):
-   !> the UMAT's incoming STRESS (MPa), SSE and SPD (N/mm), STRAN and DSTRAN (mm), the VUMAT's
-   !> stressOld, enerInternOld and enerInelasOld (per unit mass) and its separation increments;
-   !> with the density in [DENSITY_MIN, DENSITY_MAX] the energy updates then stay below 1e160.
-   !> Outside: STATUS_BAD_HOST_INPUT (STRAN, DSTRAN: STATUS_NONFINITE_SEPARATION or
-   !> STATUS_SEPARATION_OUT_OF_RANGE, as for the separation itself).
-   real(dp), parameter, public :: HOST_VALUE_MAX = 1.0e50_dp
+   !> Largest admissible magnitudes of what a host passes in besides the separation (adapters):
+   !> HOST_VALUE_MAX for the UMAT's incoming STRESS (MPa), SSE and SPD (N/mm) and the VUMAT's
+   !> stressOld, enerInternOld and enerInelasOld (per unit mass); HOST_INCREMENT_MAX for the
+   !> UMAT's STRAN and DSTRAN and the VUMAT's separation increments (mm). With the density in
+   !> [DENSITY_MIN, DENSITY_MAX] every term of the energy updates then stays below 1e260, and what
+   !> the adapters return from admissible separations (tractions up to 1e40 MPa, energies up to
+   !> 1e60 N/mm, 1e110 per unit mass) lies inside the bounds again. Outside: STATUS_BAD_HOST_INPUT
+   !> (STRAN, DSTRAN: STATUS_NONFINITE_SEPARATION or STATUS_SEPARATION_OUT_OF_RANGE, as for the
+   !> separation itself).
+   real(dp), parameter, public :: HOST_VALUE_MAX = 1.0e150_dp
+   real(dp), parameter, public :: HOST_INCREMENT_MAX = 1.0e50_dp
    !> Admissible density of the VUMAT (*Density, tonne/mm^3 in N-mm-s units).
    real(dp), parameter, public :: DENSITY_MIN = 1.0e-50_dp, DENSITY_MAX = 1.0e50_dp
    !> The window [PROPS_VALUE_MIN, PROPS_VALUE_MAX] and its upper end as the messages show them.

@@ -23,7 +23,8 @@
 !> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
 !> Failures: bad sizes, PROPS, density (outside [1e-50, 1e50]) or incoming STATEV, a NaN or Inf
-!> in stressOld, the old energies or strainInc, or one of them beyond 1e50 (STATUS_BAD_HOST_INPUT), a custom RVE table or R-curve
+!> in stressOld, the old energies or strainInc, or one of them beyond 1e150 (strainInc: 1e50)
+!> (STATUS_BAD_HOST_INPUT), a custom RVE table or R-curve
 !> selected but not loaded (VEXTERNALDB), and a tabulated R-curve that does not cover D0 or the
 !> damage a point reaches, are fatal (the whole block is held at
 !> its old values and the host hook is called with SEVERITY_FATAL; Abaqus then stops). A point
@@ -43,7 +44,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, STATUS_RCURVE_OUT_OF_RANGE, status_message, &
       STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_HOST_INPUT
    use interphase_finite, only: is_finite, is_within
-   use interphase_params, only: HOST_VALUE_MAX
+   use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states
    use interphase_kernel, only: interface_update
@@ -307,8 +308,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             ! computed on; a NaN or Inf would raise no exception either), the culprits counted
             ok_host = is_within(stressold(km, 1), HOST_VALUE_MAX) .and. is_within(stressold(km, 2), HOST_VALUE_MAX) &
                .and. is_within(stressold(km, ntens), HOST_VALUE_MAX) .and. is_within(enerinternold(km), HOST_VALUE_MAX) &
-               .and. is_within(enerinelasold(km), HOST_VALUE_MAX) .and. is_within(ds(k, 1), HOST_VALUE_MAX) &
-               .and. is_within(ds(k, 2), HOST_VALUE_MAX) .and. is_within(ds(k, ntens), HOST_VALUE_MAX)
+               .and. is_within(enerinelasold(km), HOST_VALUE_MAX) .and. is_within(ds(k, 1), HOST_INCREMENT_MAX) &
+               .and. is_within(ds(k, 2), HOST_INCREMENT_MAX) .and. is_within(ds(k, ntens), HOST_INCREMENT_MAX)
             nbad_energy = nbad_energy + merge(0, 1, ok_host)
             so1 = merge(stressold(km, 1), 0.0_dp, ok_host)
             so2 = merge(stressold(km, 2), 0.0_dp, ok_host)
@@ -337,13 +338,13 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                km = k0 + k - 1
                if (.not. (all(is_within(stressold(km, :), HOST_VALUE_MAX)) .and. &
                   is_within(enerinternold(km), HOST_VALUE_MAX) .and. is_within(enerinelasold(km), HOST_VALUE_MAX) &
-                  .and. all(is_within(ds(k, 1:ntens), HOST_VALUE_MAX)))) exit
+                  .and. all(is_within(ds(k, 1:ntens), HOST_INCREMENT_MAX)))) exit
             end do
             write (first_message, '(3es11.3)') stressold(km, :)
-            write (message, '(a,i0,a,a,a,2es11.3,a,es8.1,a)') 'block point ', km, ': stressOld (MPa)', &
+            write (message, '(a,i0,a,a,a,2es11.3,a,es9.1e3,a,es9.1e3,a)') 'block point ', km, ': stressOld (MPa)', &
                trim(first_message), ', enerInternOld, enerInelasOld ', enerinternold(km), enerinelasold(km), &
-               ' or the separation increment: the host must pass finite values within ', HOST_VALUE_MAX, &
-               ' (those the VUMAT returned last)'
+               ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the VUMAT returned last) '// &
+               'and separation increments within ', HOST_INCREMENT_MAX, ' mm'
             fatal_code = STATUS_BAD_HOST_INPUT
             exit update
          end if
