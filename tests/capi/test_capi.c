@@ -192,6 +192,20 @@ static void test_failures(void) {
   CHECK(status == INTERPHASE_STATUS_NONFINITE_SEPARATION, "NaN separation: status %d", status);
   CHECK(traction[0] == -7.0 && psi == -7.0, "NaN separation: outputs were touched");
 
+  /* a finite separation beyond the admissible range, and one at its edge */
+  const double s_far[2] = {0.0, -2.0 * INTERPHASE_SEPARATION_MAX}, s_edge[2] = {INTERPHASE_SEPARATION_MAX, 0.0};
+  status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_far, traction, tangent, state_new, &psi,
+                             detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE && strstr(detail, "-2.0000E+20") != NULL,
+        "separation -2e20 mm: status %d, \"%s\"", status, detail);
+  CHECK(traction[0] == -7.0 && psi == -7.0, "separation -2e20 mm: outputs were touched");
+  status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_edge, traction, tangent, state_new, &psi,
+                             detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && isfinite(psi) && isfinite(traction[0]) && state_new[0] == 1.0,
+        "separation 1e20 mm: status %d, psi %g, D %g", status, psi, state_new[0]);
+  traction[0] = -7.0;
+  psi = -7.0;
+
   /* bad old state: D > 1 */
   const double bad_state[INTERPHASE_NSTATE] = {1.5, 0.0, 0.0, 0.0};
   status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, bad_state, s, traction, tangent, state_new, &psi,
