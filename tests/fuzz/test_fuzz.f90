@@ -383,7 +383,8 @@ contains
    !> Whether the open crack's stiffness rises from D_n to D (k_n or k_t larger at D): the law's
    !> promise of a non-negative dissipation on open steps rests on C(D) non-increasing. A table
    !> whose interpolant breaks that (tables/paper-small-d.dat has no rows between D = 0.09 and
-   !> D = 1, and its spline gives k_t < 0 above D = 0.99) is counted and reported, not checked.
+   !> D = 1: its spline gives k_t < 0 from D = 0.867 and a rising k_t above D = 0.996; the
+   !> built-in table's k has a small positive slope at D = 0) is counted and reported, not checked.
    logical function stiffness_rises(params, d_from, d_to) result(rises)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d_from, d_to
