@@ -85,6 +85,8 @@ contains
       character(len=LINE_LEN) :: line
       character(len=MESSAGE_LEN) :: message
       character(len=80) :: keyword, field, repeated
+      character(len=80), allocatable :: parameter_names(:)
+      character(len=LINE_LEN), allocatable :: parameter_values(:)
       real(dp) :: values(16)
       integer :: ios, lineno, nvalues, k, current, data_lines, i, outcome
       logical :: explicit, opened
@@ -127,7 +129,7 @@ contains
             keyword = upper_compact(before_comma(line(2:)))
             data_lines = 0
             ! a parameter given twice on a keyword line: which one counts is not for us to guess
-            repeated = repeated_parameter(line)
+            call keyword_parameters(line, parameter_names, parameter_values, repeated)
             if (len_trim(repeated) > 0) then
                call record_failure(path//':'//int_to_string(lineno)//': *'//trim(before_comma(line(2:)))//': parameter '// &
                   trim(repeated)//' given twice: "'//clip_text(trim(line))//'"', nfail)
@@ -332,43 +334,18 @@ contains
       end do
    end function upper_compact
 
-   !> The value of parameter `name` on a keyword line ('' when absent).
-   function parameter_value(line, name) result(value)
-      character(len=*), intent(in) :: line, name
-      character(len=:), allocatable :: value
-      character(len=len(line)) :: rest, item
-      integer :: i, eq
-      value = ''
-      rest = line
-      i = index(rest, ',')
-      do while (i > 0)
-         rest = rest(i + 1:)
-         i = index(rest, ',')
-         if (i > 0) then
-            item = rest(1:i - 1)
-         else
-            item = rest
-         end if
-         eq = index(item, '=')
-         if (eq > 0) then
-            if (trim(upper_compact(item(1:eq - 1))) == name) then
-               value = trim(adjustl(item(eq + 1:)))
-               return
-            end if
-         end if
-      end do
-   end function parameter_value
-
-   !> The first parameter named twice on a keyword line ('' when none), compared as Abaqus does
-   !> (case and blanks ignored).
-   function repeated_parameter(line) result(name)
+   !> The parameters of a keyword line, "*KEYWORD, NAME=value, FLAG, ...": their names (upper
+   !> case, blanks removed, as Abaqus compares them), their values as written ('' for a flag)
+   !> and the first name given twice ('' when none).
+   subroutine keyword_parameters(line, names, values, repeated)
       character(len=*), intent(in) :: line
-      character(len=80) :: name
-      character(len=80), allocatable :: names(:)
+      character(len=80), allocatable, intent(out) :: names(:)
+      character(len=len(line)), allocatable, intent(out) :: values(:)
+      character(len=80), intent(out) :: repeated
       character(len=len(line)) :: rest, item
       integer :: i, eq
-      name = ''
-      allocate (names(0))
+      allocate (names(0), values(0))
+      repeated = ''
       rest = line
       i = index(rest, ',')
       do while (i > 0)
@@ -382,13 +359,30 @@ contains
          eq = index(item, '=')
          if (eq == 0) eq = len_trim(item) + 1
          if (len_trim(item(1:eq - 1)) == 0) cycle
-         if (any(names == upper_compact(item(1:eq - 1)))) then
-            name = upper_compact(item(1:eq - 1))
+         if (len_trim(repeated) == 0 .and. any(names == upper_compact(item(1:eq - 1)))) &
+            repeated = upper_compact(item(1:eq - 1))
+         names = [character(len=80) :: names, upper_compact(item(1:eq - 1))]
+         values = [character(len=len(line)) :: values, adjustl(item(min(eq + 1, len(item) + 1):))]
+      end do
+   end subroutine keyword_parameters
+
+   !> The value of parameter `name` on a keyword line ('' when absent; the first when repeated).
+   function parameter_value(line, name) result(value)
+      character(len=*), intent(in) :: line, name
+      character(len=:), allocatable :: value
+      character(len=80), allocatable :: names(:)
+      character(len=len(line)), allocatable :: values(:)
+      character(len=80) :: repeated
+      integer :: i
+      value = ''
+      call keyword_parameters(line, names, values, repeated)
+      do i = 1, size(names)
+         if (trim(names(i)) == name) then
+            value = trim(values(i))
             return
          end if
-         names = [character(len=80) :: names, upper_compact(item(1:eq - 1))]
       end do
-   end function repeated_parameter
+   end function parameter_value
 
    !> The keyword line has the parameter `name` (with or without a value).
    logical function has_parameter(line, name)

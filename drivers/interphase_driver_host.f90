@@ -8,7 +8,7 @@
 module interphase_driver_host
    implicit none
    private
-   public :: reset_fatal_message, fatal_message_reported, last_fatal_message, record_message
+   public :: reset_fatal_message, fatal_message_reported, last_fatal_message, driver_host_message
 
    logical :: fatal_seen = .false.
    character(len=:), allocatable :: fatal_text
@@ -33,27 +33,26 @@ contains
       if (fatal_seen) text = fatal_text
    end function last_fatal_message
 
-   !> Record a message; called by the hook below only.
-   subroutine record_message(severity, message)
-      use interphase_status, only: SEVERITY_FATAL
-      integer, intent(in) :: severity
-      character(len=*), intent(in) :: message
+   !> What the hook below does with a message: standard error ('interphase: <severity>:
+   !> <message>', as src/abaqus/host_stderr.f90 writes it), and the record of a fatal one.
+   subroutine driver_host_message(severity, message)
+      use, intrinsic :: iso_fortran_env, only: error_unit
+      use interphase_status, only: SEVERITY_FATAL, severity_label
+      integer, intent(in) :: severity            !! one of the SEVERITY_* codes
+      character(len=*), intent(in) :: message    !! what went wrong, with the offending value
+      write (error_unit, '(a)') 'interphase: '//severity_label(severity)//': '//trim(message)
       if (severity /= SEVERITY_FATAL) return
       fatal_seen = .true.
       fatal_text = trim(message)
-   end subroutine record_message
+   end subroutine driver_host_message
 
 end module interphase_driver_host
 
-!> The hook the adapters call (interphase_abaqus_interfaces): standard error, as
-!> src/abaqus/host_stderr.f90 writes it, and the record above.
+!> The hook the adapters call (interphase_abaqus_interfaces), for the drivers.
 subroutine interphase_host_message(severity, message)
-   use, intrinsic :: iso_fortran_env, only: error_unit
-   use interphase_status, only: severity_label
-   use interphase_driver_host, only: record_message
+   use interphase_driver_host, only: driver_host_message
    implicit none
-   integer, intent(in) :: severity            !! one of the SEVERITY_* codes
-   character(len=*), intent(in) :: message    !! what went wrong, with the offending value
-   write (error_unit, '(a)') 'interphase: '//severity_label(severity)//': '//trim(message)
-   call record_message(severity, message)
+   integer, intent(in) :: severity             !! one of the SEVERITY_* codes
+   character(len=*), intent(in) :: message     !! what went wrong
+   call driver_host_message(severity, message)
 end subroutine interphase_host_message

@@ -74,18 +74,12 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    ! STRAN and DSTRAN as the separation is checked (within HOST_INCREMENT_MAX; a smaller
    ! increment may help), STRESS, SSE and SPD within HOST_VALUE_MAX (the values the UMAT
    ! returned last: fatal otherwise)
-   if (.not. (all(is_finite(stran)) .and. all(is_finite(dstran)))) then
-      write (message, '(a,3es12.4)') 'STRAN (mm) ', stran
-      write (stress_text, '(3es11.3)') dstran
-      message = trim(message)//', DSTRAN'//trim(stress_text)
-      call fail(STATUS_NONFINITE_SEPARATION, SEVERITY_WARNING)
-      return
-   end if
    if (.not. (all(is_within(stran, HOST_INCREMENT_MAX)) .and. all(is_within(dstran, HOST_INCREMENT_MAX)))) then
       write (message, '(a,3es12.4)') 'STRAN (mm) ', stran
       write (stress_text, '(3es11.3)') dstran
       message = trim(message)//', DSTRAN'//trim(stress_text)
-      call fail(STATUS_SEPARATION_OUT_OF_RANGE, SEVERITY_WARNING)
+      call fail(merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
+         all(is_finite(stran)) .and. all(is_finite(dstran))), SEVERITY_WARNING)
       return
    end if
    if (.not. (all(is_within(stress, HOST_VALUE_MAX)) .and. is_within(sse, HOST_VALUE_MAX) .and. &

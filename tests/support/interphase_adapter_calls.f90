@@ -92,9 +92,7 @@ contains
       real(dp), intent(in) :: props(:)
       real(dp), intent(in) :: ds(:, :)
       character(len=*), intent(in), optional :: cmname
-      real(dp) :: strain_inc(b%nblock, 1 + b%nshr), coord(b%nblock, 3), char_length(b%nblock)
-      real(dp) :: spin(b%nblock, b%nshr), temp(b%nblock), stretch(b%nblock, 1 + b%nshr)
-      real(dp) :: defgrad(b%nblock, 1 + 2*b%nshr), field(b%nblock, 1)
+      real(dp) :: strain_inc(b%nblock, 1 + b%nshr), zeros(b%nblock, 3), ones(b%nblock, 5)
       real(dp) :: stress_new(b%nblock, 1 + b%nshr), state_new(b%nblock, NSTATV_VUMAT)
       real(dp) :: ei_new(b%nblock), ep_new(b%nblock)
       character(len=80) :: name
@@ -104,17 +102,14 @@ contains
       if (present(cmname)) name = cmname
       strain_inc(:, 1) = ds(1:b%nblock, 1)
       strain_inc(:, 2:n) = 0.5_dp*ds(1:b%nblock, 2:n)
-      coord = 0.0_dp
-      char_length = 1.0_dp
-      spin = 0.0_dp
-      temp = 0.0_dp
-      stretch = 1.0_dp
-      defgrad = 1.0_dp
-      field = 0.0_dp
+      ! what interphase does not read: coordinates, spin, temperatures and field 0; characteristic
+      ! length, stretches and deformation gradients 1 (sections of two arrays, read only)
+      zeros = 0.0_dp
+      ones = 1.0_dp
       call vumat(b%nblock, 1, b%nshr, NSTATV_VUMAT, 1, size(props), 0, 1.0_dp, 1.0_dp, 1.0e-3_dp, name, &
-         coord, char_length, props, b%density, strain_inc, spin, temp, stretch, defgrad, field, b%stress, &
-         b%state, b%ener_intern, b%ener_inelas, temp, stretch, defgrad, field, stress_new, state_new, &
-         ei_new, ep_new)
+         zeros, ones(:, 1), props, b%density, strain_inc, zeros(:, 1:b%nshr), zeros(:, 1), ones(:, 1:n), &
+         ones(:, 1:n + b%nshr), zeros(:, 1:1), b%stress, b%state, b%ener_intern, b%ener_inelas, zeros(:, 1), &
+         ones(:, 1:n), ones(:, 1:n + b%nshr), zeros(:, 1:1), stress_new, state_new, ei_new, ep_new)
       b%stress = stress_new
       b%state = state_new
       b%ener_intern = ei_new
