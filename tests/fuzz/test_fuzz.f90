@@ -70,6 +70,8 @@ program test_fuzz
    integer :: nfailed = 0, nchecked = 0, nsteps_run = 0
    !> What part 1 covered: steps every adapter refused, dissipation and continuity checks made.
    integer :: nrefused = 0, nelastic = 0, nopen = 0, ncontinuity = 0, nrising = 0
+   !> A digest of every result of part 1 (bit patterns), printed so that builds can be compared.
+   integer(int64) :: digest = 0_int64
    !> Broken files refused (part 2).
    integer :: nbroken_refused = 0
    integer :: model, law, rcurve, table, ntens, imat, load_status
@@ -108,6 +110,8 @@ program test_fuzz
    if (nrising > 0) write (output_unit, '(a,i0,a)') 'test_fuzz: note: ', nrising, ' open steps not checked for '// &
       'dissipation: the open crack''s stiffness rises with D there (or is negative): a table''s interpolant, '// &
       'not the law (see stiffness_rises)'
+   write (output_unit, '(a,i0,a)') 'test_fuzz: digest of the results ', digest, ' (compare builds: it is the same '// &
+      'when every result is)'
    write (output_unit, '(a,i0,a,i0,a)') 'test_fuzz: ', nbroken_refused, ' of ', 4*NBROKEN, &
       ' broken files refused (RVE tables, R-curves, histories, case files)'
    write (output_unit, '(a,i0,a,i0,a)') 'test_fuzz: ', nchecked, ' checks, ', nfailed, ' failed'
@@ -136,6 +140,18 @@ contains
       integer, intent(in) :: lo, hi
       pick = min(hi, lo + int(real(hi - lo + 1, dp)*uniform()))
    end function pick
+
+   !> Mix bit patterns into the digest (modulo the Park-Miller prime, no overflow).
+   subroutine add_to_digest(values)
+      real(dp), intent(in) :: values(:)
+      integer :: i
+      integer(int64) :: bits
+      do i = 1, size(values)
+         bits = transfer(values(i), 0_int64)
+         digest = modulo(digest*31_int64 + modulo(bits, 2147483647_int64) + modulo(ishft(bits, -32), 2147483647_int64), &
+            2147483647_int64)
+      end do
+   end subroutine add_to_digest
 
    ! ======================================================================================
    ! checks
@@ -252,6 +268,9 @@ contains
       character(len=:), allocatable :: name, where
       type(law_params_type) :: params
 
+      ! (allocated before the assignment: gfortran -O2 otherwise warns that the descriptor of the
+      ! reallocated array is used uninitialised)
+      allocate (props(0))
       props = random_props(model, law, rcurve, table, growth_slip)
       call from_props(props, params, status, detail)
       call check(status == STATUS_OK, 'random material', 'PROPS refused: '//trim(detail))
@@ -331,6 +350,7 @@ contains
                reshape(ck(1:ntens, 1:ntens), [ntens*ntens])), where, 'UMAT DDSDDE and C API tangent differ')
             call check(same_bits([points(k)%sse], [cpsi]), where, 'UMAT SSE and C API stored energy differ')
             cstate(:, k) = cnew
+            call add_to_digest([points(k)%statev, points(k)%stress(1:ntens), points(k)%sse, points(k)%spd])
             ! finite, damage monotone in [0, 1]
             call check(all(is_finite([points(k)%stress(1:ntens), points(k)%statev, points(k)%sse, points(k)%spd, &
                reshape(points(k)%ddsdde(1:ntens, 1:ntens), [ntens*ntens]), vblock%ener_intern(k), &
@@ -576,6 +596,7 @@ contains
       procedure(file_loader) :: loader
       character(len=4096), allocatable :: lines(:)
       integer :: i, line
+      allocate (lines(size(good)))
       do i = 1, NBROKEN
          lines = good
          line = break_one_line(lines, data, ' ')
