@@ -23,6 +23,8 @@ program interphase_check_deck
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props
    use interphase_driver_cli, only: get_argument
+   use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
+      tried_path, clip_text, TEXT_LINE, TEXT_END
    use interphase_driver_text, only: int_to_string, real_to_string
    implicit none
    !> The smallest contact band width chi that keeps the stored energy convex at every D of the
@@ -44,6 +46,8 @@ program interphase_check_deck
       logical :: unsymm = .false.
       integer :: depvar = -1                   !! *DEPVAR (-1: none)
       real(dp) :: density = -1.0_dp            !! *DENSITY (-1: none)
+      integer :: line = 0                      !! line of *MATERIAL
+      character(len=16), allocatable :: options_seen(:)   !! *USER MATERIAL, *DEPVAR, *DENSITY so far
    end type material_type
 
    !> One *COHESIVE SECTION.
@@ -81,16 +85,22 @@ contains
 
       type(material_type), allocatable :: materials(:)
       type(section_type), allocatable :: sections(:)
-      character(len=LINE_LEN) :: line, message
-      character(len=80) :: keyword, field
+      type(text_file_type) :: file
+      character(len=LINE_LEN) :: line
+      character(len=MESSAGE_LEN) :: message
+      character(len=80) :: keyword, field, repeated
+      character(len=80), allocatable :: parameter_names(:)
+      character(len=LINE_LEN), allocatable :: parameter_values(:)
       real(dp) :: values(16)
-      integer :: unit, ios, lineno, nvalues, k, current, data_lines, i
-      logical :: explicit
+      integer :: ios, lineno, nvalues, k, current, data_lines, i, outcome
+      logical :: explicit, opened
 
       allocate (materials(0), sections(0))
-      open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=message)
-      if (ios /= 0) then
-         write (error_unit, '(a)') 'interphase-check-deck: '//path//': cannot open: '//trim(message)
+      ! the readers' bounded line reader (interphase_text_input): lines and file size are limited,
+      ! so that no file (/dev/zero, a line without end) is read forever
+      call open_text_file(path, file, opened, message)
+      if (.not. opened) then
+         write (error_unit, '(a)') 'interphase-check-deck: '//tried_path(path)//': '//trim(message)
          status = 2
          return
       end if
@@ -101,18 +111,56 @@ contains
       data_lines = 0
       lineno = 0
       do
-         read (unit, '(a)', iostat=ios) line
-         if (ios /= 0) exit
-         lineno = lineno + 1
-         line = adjustl(line)
+         call read_text_line(file, outcome, message)
+         if (outcome == TEXT_END) exit
+         lineno = file%line_number
+         if (outcome /= TEXT_LINE) then
+            write (error_unit, '(a,i0,a)') 'interphase-check-deck: '//tried_path(path)//':', lineno, ': '//trim(message)
+            call close_text_file(file)
+            status = 2
+            return
+         end if
+         if (file%length > LINE_LEN) then
+            write (error_unit, '(a,i0,a,i0,a)') 'interphase-check-deck: '//tried_path(path)//':', lineno, &
+               ': line longer than ', LINE_LEN, ' characters (Abaqus reads at most 256)'
+            call close_text_file(file)
+            status = 2
+            return
+         end if
+         line = adjustl(file%buffer(1:file%length))
          if (len_trim(line) == 0 .or. line(1:min(2, len(line))) == '**') cycle
          if (line(1:1) == '*') then
             keyword = upper_compact(before_comma(line(2:)))
             data_lines = 0
+            ! a parameter given twice on a keyword line: which one counts is not for us to guess
+            call keyword_parameters(line, parameter_names, parameter_values, repeated)
+            if (len_trim(repeated) > 0) then
+               call record_failure(path//':'//int_to_string(lineno)//': *'//trim(before_comma(line(2:)))//': parameter '// &
+                  trim(repeated)//' given twice: "'//clip_text(trim(line))//'"', nfail)
+            end if
             select case (trim(keyword))
             case ('MATERIAL')
-               materials = [materials, material_type(name=upper_compact(parameter_value(line, 'NAME')))]
+               do k = 1, size(materials)
+                  if (materials(k)%name == upper_compact(parameter_value(line, 'NAME'))) then
+                     call record_failure(path//':'//int_to_string(lineno)//': *MATERIAL, NAME='// &
+                        trim(materials(k)%name)//' defined a second time (first at line '// &
+                        int_to_string(materials(k)%line)//')', nfail)
+                  end if
+               end do
+               materials = [materials, material_type(name=upper_compact(parameter_value(line, 'NAME')), line=lineno, &
+                  options_seen=[character(len=16) ::])]
                current = size(materials)
+            case ('USERMATERIAL', 'DEPVAR', 'DENSITY')
+               if (current > 0) then
+                  if (any(materials(current)%options_seen == trim(keyword))) then
+                     call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword)//' given twice in '// &
+                        '*MATERIAL, NAME='//trim(materials(current)%name), nfail)
+                  end if
+                  materials(current)%options_seen = [character(len=16) :: materials(current)%options_seen, &
+                     trim(keyword)]
+               end if
+            end select
+            select case (trim(keyword))
             case ('USERMATERIAL')
                if (current > 0) then
                   materials(current)%user_line = lineno
@@ -155,7 +203,7 @@ contains
             if (data_lines == 1 .and. nvalues >= 1) sections(size(sections))%thickness = values(1)
          end select
       end do
-      close (unit)
+      call close_text_file(file)
 
       if (size(sections) == 0) then
          write (output_unit, '(a)') path//': no *COHESIVE SECTION: nothing for interphase to check'
@@ -295,13 +343,18 @@ contains
       end do
    end function upper_compact
 
-   !> The value of parameter `name` on a keyword line ('' when absent).
-   function parameter_value(line, name) result(value)
-      character(len=*), intent(in) :: line, name
-      character(len=:), allocatable :: value
+   !> The parameters of a keyword line, "*KEYWORD, NAME=value, FLAG, ...": their names (upper
+   !> case, blanks removed, as Abaqus compares them), their values as written ('' for a flag)
+   !> and the first name given twice ('' when none).
+   subroutine keyword_parameters(line, names, values, repeated)
+      character(len=*), intent(in) :: line
+      character(len=80), allocatable, intent(out) :: names(:)
+      character(len=len(line)), allocatable, intent(out) :: values(:)
+      character(len=80), intent(out) :: repeated
       character(len=len(line)) :: rest, item
       integer :: i, eq
-      value = ''
+      allocate (names(0), values(0))
+      repeated = ''
       rest = line
       i = index(rest, ',')
       do while (i > 0)
@@ -313,11 +366,29 @@ contains
             item = rest
          end if
          eq = index(item, '=')
-         if (eq > 0) then
-            if (trim(upper_compact(item(1:eq - 1))) == name) then
-               value = trim(adjustl(item(eq + 1:)))
-               return
-            end if
+         if (eq == 0) eq = len_trim(item) + 1
+         if (len_trim(item(1:eq - 1)) == 0) cycle
+         if (len_trim(repeated) == 0 .and. any(names == upper_compact(item(1:eq - 1)))) &
+            repeated = upper_compact(item(1:eq - 1))
+         names = [character(len=80) :: names, upper_compact(item(1:eq - 1))]
+         values = [character(len=len(line)) :: values, adjustl(item(min(eq + 1, len(item) + 1):))]
+      end do
+   end subroutine keyword_parameters
+
+   !> The value of parameter `name` on a keyword line ('' when absent; the first when repeated).
+   function parameter_value(line, name) result(value)
+      character(len=*), intent(in) :: line, name
+      character(len=:), allocatable :: value
+      character(len=80), allocatable :: names(:)
+      character(len=len(line)), allocatable :: values(:)
+      character(len=80) :: repeated
+      integer :: i
+      value = ''
+      call keyword_parameters(line, names, values, repeated)
+      do i = 1, size(names)
+         if (trim(names(i)) == name) then
+            value = trim(values(i))
+            return
          end if
       end do
    end function parameter_value

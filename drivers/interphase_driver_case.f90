@@ -32,7 +32,7 @@ module interphase_driver_case
    implicit none
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, &
-      load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset
+      load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset, precheck_case_file, material_entry_kinds
 
    !> Length of the character entries of the namelists (model names, paths).
    integer, parameter :: ENTRY_LEN = 1024
@@ -87,21 +87,46 @@ module interphase_driver_case
       character(len=:), allocatable :: rcurve_path
    end type case_type
 
-   !> The entries of interphase-point's case file and their kinds (checked before the namelist read).
-   type(entry_kind_type), parameter :: CASE_ENTRIES(21) = [ &
-      entry_kind_type('material.model', KIND_STRING), entry_kind_type('material.damage_law', KIND_STRING), &
-      entry_kind_type('material.table', KIND_STRING), entry_kind_type('material.rcurve', KIND_STRING), &
-      entry_kind_type('material.rcurve_file', KIND_STRING), entry_kind_type('material.mu', KIND_REAL), &
-      entry_kind_type('material.s0_n', KIND_REAL), entry_kind_type('material.sf_n', KIND_REAL), &
-      entry_kind_type('material.s0_t', KIND_REAL), entry_kind_type('material.sf_t', KIND_REAL), &
-      entry_kind_type('material.k_n', KIND_REAL), entry_kind_type('material.k_t', KIND_REAL), &
-      entry_kind_type('material.d0', KIND_REAL), entry_kind_type('material.g_ci', KIND_REAL), &
-      entry_kind_type('material.g_cii', KIND_REAL), entry_kind_type('material.growth_slip', KIND_STRING), &
-      entry_kind_type('material.contact_band', KIND_REAL), entry_kind_type('loading.history', KIND_STRING), &
-      entry_kind_type('loading.output', KIND_STRING), entry_kind_type('loading.increments', KIND_INTEGER), &
-      entry_kind_type('loading.plot', KIND_LOGICAL)]
+   !> The entries of interphase-point's `&loading` group and their kinds (checked before the
+   !> namelist read, with those of `material_entry_kinds('material')`).
+   type(entry_kind_type), parameter :: LOADING_ENTRIES(4) = [ &
+      entry_kind_type('loading.history', KIND_STRING), entry_kind_type('loading.output', KIND_STRING), &
+      entry_kind_type('loading.increments', KIND_INTEGER), entry_kind_type('loading.plot', KIND_LOGICAL)]
 
 contains
+
+   !> The pre-check of every case file of the drivers (interphase-point, interphase-fe2d), before
+   !> Fortran's namelist read: bounded lines and file size, one group of each name, each entry
+   !> once and of its kind (`check_namelist_file`); a file that cannot be opened is named as the
+   !> path tried.
+   subroutine precheck_case_file(path, known, ok, message)
+      character(len=*), intent(in) :: path                 !! case file
+      type(entry_kind_type), intent(in) :: known(:)        !! 'group.entry' names and kinds
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message  !! 'file:line: &group: ...' when not ok
+      call check_namelist_file(path, known, ok, message)
+      if (.not. ok) then
+         if (index(message, path//': cannot open') == 1) message = tried_path(path)//message(len(path) + 1:)
+      end if
+   end subroutine precheck_case_file
+
+   !> The entries of the interface material's group (`&material` of interphase-point, `&joint`
+   !> of interphase-fe2d: the same entries, packed by `material_props`) and their kinds.
+   pure function material_entry_kinds(group) result(kinds)
+      character(len=*), intent(in) :: group                !! the group's name, lower case
+      type(entry_kind_type) :: kinds(17)
+      character(len=*), parameter :: STRINGS(6) = [character(len=11) :: 'model', 'damage_law', 'table', &
+         'rcurve', 'rcurve_file', 'growth_slip']
+      character(len=*), parameter :: REALS(11) = [character(len=12) :: 'mu', 's0_n', 'sf_n', 's0_t', 'sf_t', &
+         'k_n', 'k_t', 'd0', 'g_ci', 'g_cii', 'contact_band']
+      integer :: i
+      do i = 1, size(STRINGS)
+         kinds(i) = entry_kind_type(group//'.'//trim(STRINGS(i)), KIND_STRING)
+      end do
+      do i = 1, size(REALS)
+         kinds(size(STRINGS) + i) = entry_kind_type(group//'.'//trim(REALS(i)), KIND_REAL)
+      end do
+   end function material_entry_kinds
 
    !> Read and check a case file. On failure `ok` is false and `message` says what and where,
    !> always naming the case file.
@@ -117,11 +142,8 @@ contains
       run%path = path
       run%name = stem_of(path)
       ! bounded lines, one group of each name, each entry once and of its kind
-      call check_namelist_file(path, CASE_ENTRIES, ok, message)
-      if (.not. ok) then
-         if (index(message, path//': cannot open') == 1) message = tried_path(path)//message(len(path) + 1:)
-         return
-      end if
+      call precheck_case_file(path, [material_entry_kinds('material'), LOADING_ENTRIES], ok, message)
+      if (.not. ok) return
       ok = .false.
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
          iostat=ios, iomsg=iomsg)

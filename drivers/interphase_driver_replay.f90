@@ -7,7 +7,9 @@
 !> Each history segment is split into `increments` equal sub-increments and the UMAT is called
 !> once per sub-increment, carrying STRESS, STATEV, SSE and SPD. When the UMAT asks for a
 !> smaller increment (PNEWDT < 1) the step is halved and retried, up to MAX_HALVINGS times
-!> within one sub-increment; every converged step gives one CSV row.
+!> within one sub-increment; every converged step gives one CSV row. A fatal message of the UMAT
+!> (a setup error found during the run, e.g. a tabulated R-curve that does not cover the damage
+!> reached) ends the replay at once with that message: no smaller step can cure it.
 module interphase_driver_replay
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_REQUIRED
@@ -16,6 +18,7 @@ module interphase_driver_replay
    use interphase_driver_history, only: history_type
    use interphase_driver_output, only: write_csv_row
    use interphase_driver_text, only: int_to_string, real_to_string
+   use interphase_driver_host, only: reset_fatal_message, fatal_message_reported, last_fatal_message
    implicit none
    private
    public :: replay_history, MAX_HALVINGS, point_state_type, new_point, call_umat
@@ -133,7 +136,14 @@ contains
                time_new = time_a + theta*(time_b - time_a)
             end if
             trial = point
+            call reset_fatal_message()
             call call_umat(run%props, trial, s_new, time_new, pnewdt)
+            if (pnewdt < 1.0_dp .and. fatal_message_reported()) then
+               message = run%path//': the UMAT stopped with a setup error from t = '// &
+                  real_to_string(point%time)//' to t = '//real_to_string(time_new)// &
+                  ' (separation '//separation_text(s_new)//' mm): '//last_fatal_message()
+               return
+            end if
             if (pnewdt < 1.0_dp) then
                halvings = halvings + 1
                if (halvings > MAX_HALVINGS) then

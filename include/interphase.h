@@ -37,6 +37,8 @@ extern "C" {
 #define INTERPHASE_NSTATE 4
 /** Number of PROPS of the simplified (spring) model. */
 #define INTERPHASE_NPROPS_SIMPLIFIED 9
+/** Largest admissible separation component (mm): SEPARATION_MAX of src/interphase_params.f90. */
+#define INTERPHASE_SEPARATION_MAX 1.0e20
 
 /* Status codes: every STATUS_* of src/interphase_status.f90, same names and values (the ctest
  * capi_status_codes_match fails if they ever differ). interphase_status_message gives the text. */
@@ -67,6 +69,8 @@ extern "C" {
 #define INTERPHASE_STATUS_BAD_COEFFICIENTS 22            /**< coefficient set not admissible */
 #define INTERPHASE_STATUS_STAGGER_NOT_CONVERGED 23       /**< damage-friction iteration did not converge */
 #define INTERPHASE_STATUS_RCURVE_NOT_LOADED 24           /**< tabulated R-curve selected, none loaded */
+#define INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE 25     /**< a separation component |s_i| > 1e20 mm */
+#define INTERPHASE_STATUS_BAD_HOST_INPUT 26              /**< adapters: host stress/energy not finite */
 /* interpolation tables: construction, then evaluation */
 #define INTERPHASE_STATUS_SPLINE_TOO_FEW_POINTS 40       /**< too few table points */
 #define INTERPHASE_STATUS_SPLINE_BAD_SHAPE 41            /**< table values do not match the knots */
@@ -104,7 +108,10 @@ extern "C" {
  *                       fracture-mechanics damage law: docs/abaqus.md)
  * @param ntens          2 (2-D: s_N, s_T) or 3 (3-D: s_N, s_T1, s_T2)
  * @param state_old      INTERPHASE_NSTATE doubles: the state at the start of the increment
- * @param separation     @p ntens doubles: total separation at the end of the increment (mm)
+ * @param separation     @p ntens doubles: total separation at the end of the increment (mm);
+ *                       admissible |separation[i]| <= 1e20 mm (INTERPHASE_SEPARATION_MAX), larger
+ *                       is INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE, NaN/Inf
+ *                       INTERPHASE_STATUS_NONFINITE_SEPARATION
  * @param traction       out, @p ntens doubles: traction (MPa)
  * @param tangent        out, @p ntens * @p ntens doubles, row-major: d traction / d separation (MPa/mm)
  * @param state_new      out, INTERPHASE_NSTATE doubles: state at the end (may alias nothing else)
@@ -113,7 +120,10 @@ extern "C" {
  *                       value (e.g. "PROPS(5) sf_N = 1.00000E-04 is out of range: ...")
  * @param detail_len     size of @p detail in bytes (257 holds any message: at most 256 characters)
  * @return INTERPHASE_STATUS_OK (0), or a status code; on failure traction, tangent, state_new
- *         and stored_energy are left untouched.
+ *         and stored_energy are left untouched. Admissible ranges (docs/abaqus.md, 'Admissible
+ *         ranges'): the lengths s0, sf, the stiffnesses K and the toughnesses G_c of PROPS in
+ *         [1e-20, 1e20] (mm, MPa/mm, N/mm), mu in [0, 1e20], the slip in state_old within
+ *         |lambda_i| <= 1e30 mm; inside them every output is finite and the same in every build.
  */
 int interphase_update(const double *props, int nprops, int ntens, const double *state_old,
                       const double *separation, double *traction, double *tangent,

@@ -25,16 +25,19 @@
 module interphase_block
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
-   use interphase_finite, only: EXPONENT_MASK
-   use interphase_params, only: law_params_type
+   use interphase_finite, only: MAGNITUDE_MASK
+   use interphase_params, only: law_params_type, SEPARATION_MAX, DENSITY_MIN, DENSITY_MAX
    use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
    implicit none
    private
    public :: simplified_block_update, density_counts, block_supports
 
-   !> Bit pattern of the smallest positive normal number, tiny(1.0_dp).
-   integer(int64), parameter :: SMALLEST_NORMAL_BITS = int(z'0010000000000000', int64)
+   !> Bit patterns of DENSITY_MIN and DENSITY_MAX (positive numbers are ordered like their bits).
+   integer(int64), parameter :: DENSITY_MIN_BITS = transfer(DENSITY_MIN, 0_int64)
+   integer(int64), parameter :: DENSITY_MAX_BITS = transfer(DENSITY_MAX, 0_int64)
+   !> Bit pattern of SEPARATION_MAX: |x| <= SEPARATION_MAX exactly when the bits of |x| are at most these.
+   integer(int64), parameter :: SEPARATION_MAX_BITS = transfer(SEPARATION_MAX, 0_int64)
 
 contains
 
@@ -51,7 +54,7 @@ contains
    !> Update n points of the simplified model (displacement-driven damage law) from their
    !> separations at the end of the increment and their state at its start.
    !>
-   !> A point whose separation is not finite gets ok = .false.; its outputs are then finite but
+   !> A point whose separation is not finite or exceeds SEPARATION_MAX gets ok = .false.; its outputs are then finite but
    !> meaningless (the caller holds the point at its old values). The other points are updated
    !> exactly as `interface_update` does. In 2-D (nt = 1) the values of s_t2 and lam2_old are
    !> not used (the arrays must exist) and t_t2 = lam2 = 0 on return.
@@ -70,7 +73,7 @@ contains
       real(dp), intent(out) :: lam1(n), lam2(n)      !! slip lambda at the end (mm)
       real(dp), intent(out) :: regime(n)             !! REGIME_* code, as a real (STATEV form)
       real(dp), intent(out) :: psi(n)                !! stored energy per unit area (N/mm)
-      logical, intent(out) :: ok(n)                  !! the separation was finite
+      logical, intent(out) :: ok(n)                  !! the separation was finite, |s_i| <= SEPARATION_MAX
       integer, intent(out) :: nfailed                !! number of points with ok = .false.
 
       !> Points per pass: the passes' working arrays stay in the L1 cache.
@@ -106,15 +109,16 @@ contains
       do c0 = 1, n, SUB
          m = min(SUB, n - c0 + 1)
 
-         ! ---- pass 1: a point with a non-finite separation computes on zeros (its results are
-         ! not used); bit masks, not branches
+         ! ---- pass 1: a point with a non-finite separation, or one beyond SEPARATION_MAX (the
+         ! kernel's two checks; the magnitude bits of NaN and Inf exceed those of every finite
+         ! number), computes on zeros (its results are not used); bit masks, not branches
          if (nt == 1) then
             do i = 1, m
                k = c0 + i - 1
                s_n_k = s_n(k)
                st1 = s_t1(k)
-               ok_k = max(iand(transfer(s_n_k, 0_int64), EXPONENT_MASK), &
-                  iand(transfer(st1, 0_int64), EXPONENT_MASK)) /= EXPONENT_MASK
+               ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st1, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
                keep = merge(-1_int64, 0_int64, ok_k)
                s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
                st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
@@ -131,9 +135,9 @@ contains
                s_n_k = s_n(k)
                st1 = s_t1(k)
                st2 = s_t2(k)
-               ok_k = max(iand(transfer(s_n_k, 0_int64), EXPONENT_MASK), &
-                  iand(transfer(st1, 0_int64), EXPONENT_MASK), &
-                  iand(transfer(st2, 0_int64), EXPONENT_MASK)) /= EXPONENT_MASK
+               ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st1, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st2, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
                keep = merge(-1_int64, 0_int64, ok_k)
                s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
                st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
@@ -316,9 +320,10 @@ contains
       nfailed = int(nfailed_count)
    end subroutine simplified_block_update
 
-   !> The densities of a block in one branch-free pass: nbad values that are not finite, > 0 and
-   !> normal (bit patterns: no exception for NaN; a subnormal value would overflow its
-   !> reciprocal), and ndiff values whose bit pattern differs from rho(1) (0: one density).
+   !> The densities of a block in one branch-free pass: nbad values outside [DENSITY_MIN,
+   !> DENSITY_MAX] (bit patterns: no exception for NaN; negative numbers have the sign bit and
+   !> lie below; the window keeps the energies per unit mass and their products with the density
+   !> finite), and ndiff values whose bit pattern differs from rho(1) (0: one density).
    pure subroutine density_counts(n, rho, nbad, ndiff)
       integer, intent(in) :: n
       real(dp), intent(in) :: rho(n)
@@ -330,7 +335,7 @@ contains
       ndiff_bits = 0
       do k = 1, n
          b = transfer(rho(k), 0_int64)
-         nbad_bits = nbad_bits + merge(0_int64, 1_int64, b >= SMALLEST_NORMAL_BITS .and. b < EXPONENT_MASK)
+         nbad_bits = nbad_bits + merge(0_int64, 1_int64, b >= DENSITY_MIN_BITS .and. b <= DENSITY_MAX_BITS)
          ndiff_bits = ndiff_bits + merge(1_int64, 0_int64, b /= b1)
       end do
       nbad = int(nbad_bits)

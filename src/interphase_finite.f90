@@ -7,10 +7,12 @@ module interphase_finite
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: is_finite, EXPONENT_MASK
+   public :: is_finite, is_within, EXPONENT_MASK, MAGNITUDE_MASK
 
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
    integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
+   !> All bits but the sign: iand(bits of x, MAGNITUDE_MASK) are the bits of |x|.
+   integer(int64), parameter :: MAGNITUDE_MASK = int(z'7FFFFFFFFFFFFFFF', int64)
 
 contains
 
@@ -19,5 +21,13 @@ contains
       real(dp), intent(in) :: x
       is_finite = iand(transfer(x, 0_int64), EXPONENT_MASK) /= EXPONENT_MASK
    end function is_finite
+
+   !> True when x is finite and |x| <= bound (bound finite, >= 0). Compares the bit patterns of |x|
+   !> and bound (ordered like the numbers; NaN and Inf lie above every finite number), so it
+   !> raises no floating-point exception for NaN or Inf.
+   elemental logical function is_within(x, bound)
+      real(dp), intent(in) :: x, bound
+      is_within = iand(transfer(x, 0_int64), MAGNITUDE_MASK) <= transfer(bound, 0_int64)
+   end function is_within
 
 end module interphase_finite

@@ -270,8 +270,12 @@ contains
       d_new = d_from
       load%d_from = d_from
       load%m_from = 0.0_dp
+      status = STATUS_OK
+      ! a crack that has reached b cannot grow: g is not evaluated there (the equivalent R-curve's
+      ! closed-crack toughness vanishes at D = 1, and g would be 0/0)
+      if (d_from >= 1.0_dp) return
       call growth_function(params, d_from, load, ntens, g_lo, status, .false., unused_s, unused_lam, unused_d)
-      if (status /= STATUS_OK .or. g_lo < 0.0_dp .or. d_from >= 1.0_dp) return
+      if (status /= STATUS_OK .or. g_lo < 0.0_dp) return
       ! the crack grows: m(D_n) for the slip the faces carry at a larger D (growth_trial_slip)
       if (params%growth_slip == GROWTH_FIXED_PI) then
          call slip_measure(params, d_from, load%m_from, status)

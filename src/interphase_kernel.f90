@@ -28,9 +28,10 @@
 module interphase_kernel
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
-   use interphase_params, only: law_params_type
+   use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_layout, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI
-   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION
+   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, &
+      STATUS_SEPARATION_OUT_OF_RANGE
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
    use interphase_damage, only: displacement_damage
@@ -68,6 +69,11 @@ contains
       end if
       if (.not. all(is_finite(s))) then
          status = STATUS_NONFINITE_SEPARATION
+         return
+      end if
+      ! beyond |s_i| = SEPARATION_MAX the arithmetic would overflow (interphase_params)
+      if (any(abs(s) > SEPARATION_MAX)) then
+         status = STATUS_SEPARATION_OUT_OF_RANGE
          return
       end if
       s_n = s(1)

@@ -143,7 +143,8 @@ contains
       end if
       call spline_export(spline, custom_knots, custom_coef)
       custom_variable = table%variable
-      custom_source = path
+      ! the file as it was tried (a relative path resolved against the current directory)
+      custom_source = table%source
    end subroutine load_custom_table
 
    !> Whether a custom table has been loaded (the micromechanical model with PROPS(8) = 1 needs one).

@@ -19,6 +19,36 @@ module interphase_params
    private
    public :: law_params_type, from_props, params_from_values, set_fracture_params, set_options
 
+   !> Admissible magnitudes of the dimensional PROPS (s0, sf in mm; K in MPa/mm; G_c in N/mm) and
+   !> the largest friction coefficient: every product the update forms of up to eight such
+   !> factors (the squares of s/s0 in the damage law, alpha^4 in its derivatives, energies
+   !> K s^2, g = G/(2 G_c)) then stays between 1e-160 and 1e160, normal numbers far from
+   !> overflow and underflow, so that no build and no adapter can round a result differently
+   !> into Inf, NaN or zero (docs/abaqus.md, 'Admissible ranges').
+   real(dp), parameter, public :: PROPS_VALUE_MIN = 1.0e-20_dp
+   real(dp), parameter, public :: PROPS_VALUE_MAX = 1.0e20_dp
+   !> Largest admissible separation component |s_i| (mm) at the end of an increment; larger
+   !> ones are STATUS_SEPARATION_OUT_OF_RANGE (the increment is cut back).
+   real(dp), parameter, public :: SEPARATION_MAX = 1.0e20_dp
+   !> Largest admissible slip component |lambda_i| (mm) in an incoming state (STATEV(2:3)):
+   !> the slip the law itself produces stays of the order of the separations.
+   real(dp), parameter, public :: SLIP_MAX = 1.0e30_dp
+   !> Largest admissible magnitudes of what a host passes in besides the separation (adapters):
+   !> HOST_VALUE_MAX for the UMAT's incoming STRESS (MPa), SSE and SPD (N/mm) and the VUMAT's
+   !> stressOld, enerInternOld and enerInelasOld (per unit mass); HOST_INCREMENT_MAX for the
+   !> UMAT's STRAN and DSTRAN and the VUMAT's separation increments (mm). With the density in
+   !> [DENSITY_MIN, DENSITY_MAX] every term of the energy updates then stays below 1e260, and what
+   !> the adapters return from admissible separations (tractions up to 1e40 MPa, energies up to
+   !> 1e60 N/mm, 1e110 per unit mass) lies inside the bounds again. Outside: STATUS_BAD_HOST_INPUT
+   !> (STRAN, DSTRAN: STATUS_NONFINITE_SEPARATION or STATUS_SEPARATION_OUT_OF_RANGE, as for the
+   !> separation itself).
+   real(dp), parameter, public :: HOST_VALUE_MAX = 1.0e150_dp
+   real(dp), parameter, public :: HOST_INCREMENT_MAX = 1.0e50_dp
+   !> Admissible density of the VUMAT (*Density, tonne/mm^3 in N-mm-s units).
+   real(dp), parameter, public :: DENSITY_MIN = 1.0e-50_dp, DENSITY_MAX = 1.0e50_dp
+   !> The window [PROPS_VALUE_MIN, PROPS_VALUE_MAX] and its upper end as the messages show them.
+   character(len=*), parameter :: WINDOW_TEXT = '[1e-20, 1e20]', RANGE_MAX_TEXT = '1e20'
+
    !> Parameters of one interface material (immutable once decoded).
    type :: law_params_type
       integer :: model = MODEL_SIMPLIFIED            !! MODEL_* selector
@@ -187,20 +217,22 @@ contains
          if (present(k_t)) k_t_used = k_t
       end if
       ! Each test fails for NaN and Inf without comparing them (no FP exception is raised).
-      if (.not. finite_at_least(mu, 0.0_dp)) then
-         call reject(STATUS_BAD_MU, PROP_MU, 'mu', mu, 'must be finite and >= 0', status, message)
-      else if (.not. finite_above(s0_n, 0.0_dp)) then
-         call reject(STATUS_BAD_S0_N, PROP_S0_N, 's0_N', s0_n, 'must be finite and > 0 mm', status, message)
-      else if (.not. finite_above(sf_n, s0_n)) then
-         call reject(STATUS_BAD_SF_N, PROP_SF_N, 'sf_N', sf_n, 'must be finite and > s0_N = PROPS(4)', status, message)
-      else if (.not. finite_above(s0_t, 0.0_dp)) then
-         call reject(STATUS_BAD_S0_T, PROP_S0_T, 's0_T', s0_t, 'must be finite and > 0 mm', status, message)
-      else if (.not. finite_above(sf_t, s0_t)) then
-         call reject(STATUS_BAD_SF_T, PROP_SF_T, 'sf_T', sf_t, 'must be finite and > s0_T = PROPS(6)', status, message)
-      else if (model == MODEL_SIMPLIFIED .and. .not. finite_above(k_n_used, 0.0_dp)) then
-         call reject(STATUS_BAD_K_N, PROP_K_N, 'K_N', k_n_used, 'must be finite and > 0 MPa/mm', status, message)
-      else if (model == MODEL_SIMPLIFIED .and. .not. finite_above(k_t_used, 0.0_dp)) then
-         call reject(STATUS_BAD_K_T, PROP_K_T, 'K_T', k_t_used, 'must be finite and > 0 MPa/mm', status, message)
+      if (.not. (finite_at_least(mu, 0.0_dp) .and. finite_at_most(mu, PROPS_VALUE_MAX))) then
+         call reject(STATUS_BAD_MU, PROP_MU, 'mu', mu, 'must lie in [0, '//RANGE_MAX_TEXT//']', status, message)
+      else if (.not. in_window(s0_n)) then
+         call reject(STATUS_BAD_S0_N, PROP_S0_N, 's0_N', s0_n, 'must lie in '//WINDOW_TEXT//' mm', status, message)
+      else if (.not. (finite_above(sf_n, s0_n) .and. in_window(sf_n))) then
+         call reject(STATUS_BAD_SF_N, PROP_SF_N, 'sf_N', sf_n, 'must be > s0_N = PROPS(4) and lie in '// &
+            WINDOW_TEXT//' mm', status, message)
+      else if (.not. in_window(s0_t)) then
+         call reject(STATUS_BAD_S0_T, PROP_S0_T, 's0_T', s0_t, 'must lie in '//WINDOW_TEXT//' mm', status, message)
+      else if (.not. (finite_above(sf_t, s0_t) .and. in_window(sf_t))) then
+         call reject(STATUS_BAD_SF_T, PROP_SF_T, 'sf_T', sf_t, 'must be > s0_T = PROPS(6) and lie in '// &
+            WINDOW_TEXT//' mm', status, message)
+      else if (model == MODEL_SIMPLIFIED .and. .not. in_window(k_n_used)) then
+         call reject(STATUS_BAD_K_N, PROP_K_N, 'K_N', k_n_used, 'must lie in '//WINDOW_TEXT//' MPa/mm', status, message)
+      else if (model == MODEL_SIMPLIFIED .and. .not. in_window(k_t_used)) then
+         call reject(STATUS_BAD_K_T, PROP_K_T, 'K_T', k_t_used, 'must lie in '//WINDOW_TEXT//' MPa/mm', status, message)
       end if
       if (status /= STATUS_OK) return
 
@@ -246,11 +278,11 @@ contains
          return
       end if
       if (rcurve == RCURVE_CONSTANT) then
-         if (.not. finite_above(gc_i, 0.0_dp)) then
-            call reject(STATUS_BAD_GC_I, base + LFM_GC_I, 'G_cI', gc_i, 'must be finite and > 0 N/mm', &
+         if (.not. in_window(gc_i)) then
+            call reject(STATUS_BAD_GC_I, base + LFM_GC_I, 'G_cI', gc_i, 'must lie in '//WINDOW_TEXT//' N/mm', &
                status, message)
-         else if (.not. finite_above(gc_ii, 0.0_dp)) then
-            call reject(STATUS_BAD_GC_II, base + LFM_GC_II, 'G_cII', gc_ii, 'must be finite and > 0 N/mm', &
+         else if (.not. in_window(gc_ii)) then
+            call reject(STATUS_BAD_GC_II, base + LFM_GC_II, 'G_cII', gc_ii, 'must lie in '//WINDOW_TEXT//' N/mm', &
                status, message)
          end if
       else
@@ -277,7 +309,7 @@ contains
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
       status = code
-      write (message, '(a,i0,a,a,a,es12.5,a,a)') 'PROPS(', index, ') ', symbol, ' = ', value, &
+      write (message, '(a,i0,a,a,a,es12.5e3,a,a)') 'PROPS(', index, ') ', symbol, ' = ', value, &
          ' is out of range: ', rule
    end subroutine reject
 
@@ -295,12 +327,26 @@ contains
       end do
    end function selector_code
 
+   !> x lies in [PROPS_VALUE_MIN, PROPS_VALUE_MAX] (false for NaN and Inf, without an exception).
+   pure logical function in_window(x)
+      real(dp), intent(in) :: x
+      in_window = .false.
+      if (is_finite(x)) in_window = x >= PROPS_VALUE_MIN .and. x <= PROPS_VALUE_MAX
+   end function in_window
+
    !> x is finite and x > lower (false for NaN and Inf, without an invalid-operation exception).
    pure logical function finite_above(x, lower)
       real(dp), intent(in) :: x, lower
       finite_above = .false.
       if (is_finite(x)) finite_above = x > lower
    end function finite_above
+
+   !> x is finite and x <= upper.
+   pure logical function finite_at_most(x, upper)
+      real(dp), intent(in) :: x, upper
+      finite_at_most = .false.
+      if (is_finite(x)) finite_at_most = x <= upper
+   end function finite_at_most
 
    !> x is finite and x >= lower.
    pure logical function finite_at_least(x, lower)

@@ -1,8 +1,8 @@
 !> The history state of one interface point and its one load/store pair with Abaqus STATEV.
 module interphase_state
    use, intrinsic :: iso_fortran_env, only: int64
-   use interphase_finite, only: EXPONENT_MASK
    use interphase_kinds, only: dp
+   use interphase_params, only: SLIP_MAX
    use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED, &
       REGIME_INTACT, REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_BAD_STATE, STATUS_BAD_NSTATV, MESSAGE_LEN
@@ -12,6 +12,9 @@ module interphase_state
 
    !> Bit pattern of 1.0_dp.
    integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
+   !> Bit pattern of SLIP_MAX: a binary64 number x has |x| <= SLIP_MAX exactly when the bits of |x|
+   !> (sign cleared) are at most these (NaN and Inf lie above every finite number).
+   integer(int64), parameter :: SLIP_MAX_BITS = transfer(SLIP_MAX, 0_int64)
    !> Position of the sign bit of an IEEE binary64 number.
    integer, parameter :: SIGN_BIT = 63
 
@@ -24,7 +27,8 @@ module interphase_state
 
 contains
 
-   !> Read the state from STATEV, checking it: 0 <= D <= 1, finite slip, a known regime code.
+   !> Read the state from STATEV, checking it: 0 <= D <= 1, slip |lambda_i| <= SLIP_MAX (finite),
+   !> a known regime code.
    pure subroutine state_unpack(statev, ntens, state, status, message)
       real(dp), intent(in) :: statev(:)                  !! STATEV as given by the host
       integer, intent(in) :: ntens                       !! 2 (2-D) or 3 (3-D)
@@ -48,10 +52,10 @@ contains
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE, ') D = ', state%d, &
             ' must lie in [0, 1]'
-      else if (finite_bits(transfer(state%slip(1), 0_int64))*finite_bits(transfer(state%slip(2), 0_int64)) == 0) then
+      else if (slip_admissible(transfer(state%slip(1), 0_int64))*slip_admissible(transfer(state%slip(2), 0_int64)) == 0) then
          status = STATUS_BAD_STATE
-         write (message, '(a,i0,a,i0,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
-            ') slip is not finite'
+         write (message, '(a,i0,a,i0,a,2es12.4,a,es8.1,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
+            ') slip = ', state%slip, ' is not finite or exceeds |lambda_i| <= ', SLIP_MAX, ' mm'
       else if (state%regime < REGIME_INTACT) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_REGIME, ') regime = ', &
@@ -78,8 +82,8 @@ contains
          bl1 = transfer(lam1(k), 0_int64)
          bl2 = transfer(lam2(k), 0_int64)
          br = transfer(regime(k), 0_int64)
-         nbad_bits = nbad_bits + 1 - damage_admissible(bd)*finite_bits(bl1) &
-            *max(lam2_ignored, finite_bits(bl2))*regime_known(br)
+         nbad_bits = nbad_bits + 1 - damage_admissible(bd)*slip_admissible(bl1) &
+            *max(lam2_ignored, slip_admissible(bl2))*regime_known(br)
       end do
       nbad = int(nbad_bits)
    end function count_invalid_states
@@ -92,11 +96,12 @@ contains
          merge(1_int64, 0_int64, ibclr(b, SIGN_BIT) == 0_int64))
    end function damage_admissible
 
-   !> 1 when the binary64 number of bit pattern b is finite, else 0 (exponent bits).
-   elemental integer(int64) function finite_bits(b)
+   !> 1 when the binary64 number x of bit pattern b is finite with |x| <= SLIP_MAX, else 0 (integer
+   !> operations only: no exception for NaN).
+   elemental integer(int64) function slip_admissible(b)
       integer(int64), intent(in) :: b
-      finite_bits = merge(1_int64, 0_int64, iand(b, EXPONENT_MASK) /= EXPONENT_MASK)
-   end function finite_bits
+      slip_admissible = merge(1_int64, 0_int64, ibclr(b, SIGN_BIT) <= SLIP_MAX_BITS)
+   end function slip_admissible
 
    !> 1 when bit pattern b is exactly the real number of a REGIME_* code, else 0.
    elemental integer(int64) function regime_known(b)

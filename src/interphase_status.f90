@@ -35,6 +35,8 @@ module interphase_status
    integer, parameter, public :: STATUS_BAD_COEFFICIENTS = 22
    integer, parameter, public :: STATUS_STAGGER_NOT_CONVERGED = 23
    integer, parameter, public :: STATUS_RCURVE_NOT_LOADED = 24
+   integer, parameter, public :: STATUS_SEPARATION_OUT_OF_RANGE = 25
+   integer, parameter, public :: STATUS_BAD_HOST_INPUT = 26
    ! ---- interpolation tables (interphase_spline): construction, then evaluation ----
    integer, parameter, public :: STATUS_SPLINE_TOO_FEW_POINTS = 40
    integer, parameter, public :: STATUS_SPLINE_BAD_SHAPE = 41
@@ -117,6 +119,9 @@ contains
       case (STATUS_RCURVE_BAD_RANGE);      message = 'R-curve D values not strictly increasing within [0, 1], or too few'
       case (STATUS_RCURVE_OUT_OF_RANGE);   message = 'tabulated R-curve does not cover the damage reached (or D0)'
       case (STATUS_NONFINITE_SEPARATION);  message = 'separation is not finite (NaN or Inf)'
+      case (STATUS_SEPARATION_OUT_OF_RANGE); message = 'separation outside the admissible range |s_i| <= 1e20 mm'
+      case (STATUS_BAD_HOST_INPUT);        message = 'incoming stress or energy from the host not finite, '// &
+         'or the energy it gives overflows'
       case (STATUS_BAD_STATE);             message = 'state variables out of range or not finite'
       case (STATUS_BAD_COEFFICIENTS);      message = 'coefficient set not admissible at this damage'
       case (STATUS_SPLINE_TOO_FEW_POINTS); message = 'too few table points for the interpolation method'

@@ -8,7 +8,8 @@ module interphase_fe2d_case
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
-      ENTRY_LEN
+      ENTRY_LEN, precheck_case_file, material_entry_kinds
+   use interphase_driver_namelist, only: entry_kind_type, KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words
    implicit none
@@ -62,6 +63,21 @@ module interphase_fe2d_case
       logical :: plot = .true.                         !! PNG wanted
    end type fe2d_case_type
 
+   !> The entries of the groups other than `&joint` (whose entries are the point driver's
+   !> `&material` ones, `material_entry_kinds`) and their kinds, for the pre-check.
+   type(entry_kind_type), parameter :: FE2D_ENTRIES(20) = [ &
+      entry_kind_type('geometry.bricks', KIND_INTEGER), entry_kind_type('geometry.brick_length', KIND_REAL), &
+      entry_kind_type('geometry.brick_height', KIND_REAL), entry_kind_type('geometry.thickness', KIND_REAL), &
+      entry_kind_type('geometry.sides', KIND_STRING), entry_kind_type('mesh.nx', KIND_INTEGER), &
+      entry_kind_type('mesh.ny', KIND_INTEGER), entry_kind_type('mesh.integration', KIND_STRING), &
+      entry_kind_type('brick.e', KIND_REAL), entry_kind_type('brick.nu', KIND_REAL), &
+      entry_kind_type('loading.precompression', KIND_REAL), &
+      entry_kind_type('loading.precompression_increments', KIND_INTEGER), &
+      entry_kind_type('loading.history', KIND_STRING), entry_kind_type('loading.increments', KIND_INTEGER), &
+      entry_kind_type('loading.tolerance', KIND_REAL), entry_kind_type('loading.displacement_tolerance', KIND_REAL), &
+      entry_kind_type('loading.max_iterations', KIND_INTEGER), entry_kind_type('loading.min_increment', KIND_REAL), &
+      entry_kind_type('loading.output', KIND_STRING), entry_kind_type('loading.plot', KIND_LOGICAL)]
+
 contains
 
    !> Read and check a case file and its shear history.
@@ -76,6 +92,11 @@ contains
       ok = .false.
       run%path = path
       run%name = stem_of(path)
+      ! the drivers' one pre-check: bounded lines and size, one group of each name, each entry
+      ! once and of its kind
+      call precheck_case_file(path, [FE2D_ENTRIES, material_entry_kinds('joint')], ok, message)
+      if (.not. ok) return
+      ok = .false.
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
          iostat=ios, iomsg=iomsg)
       if (ios /= 0) then

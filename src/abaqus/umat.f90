@@ -6,8 +6,9 @@
 !> This adapter only packs arguments and calls the pure kernel. On a failed update it lowers
 !> PNEWDT, reports through `interphase_host_message` and returns before touching STRESS,
 !> STATEV, DDSDDE, SSE or SPD. Setup errors (sizes, PROPS, data not loaded, a tabulated R-curve
-!> that does not cover D0 or the damage reached) are reported as fatal, other failures as
-!> warnings (the increment is cut back). Thread-safe: no SAVE, COMMON or module data is written.
+!> that does not cover D0 or the damage reached) and host inputs out of range (a NaN, an Inf or a
+!> magnitude beyond HOST_VALUE_MAX = 1e150 in the incoming STRESS, SSE or SPD) are reported as
+!> fatal, other failures as warnings (the increment is cut back). Thread-safe: no SAVE, COMMON or module data is written.
 !> SSE returns the stored energy and SPD accumulates the dissipated energy per unit area
 !> (N/mm): SPD += 1/2 (t_n + t).ds - (psi - psi_n), with psi_n the SSE passed in.
 subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, &
@@ -15,9 +16,11 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, &
       layer, kspt, jstep, kinc)
    use interphase_kinds, only: dp
+   use interphase_finite, only: is_finite, is_within
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
-      SEVERITY_FATAL, status_message
-   use interphase_params, only: law_params_type, from_props
+      SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
+      status_message
+   use interphase_params, only: law_params_type, from_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
    use interphase_provider, only: check_run_time_data
@@ -42,6 +45,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    real(dp) :: s(3), traction(3), tangent(3, 3), psi
    integer :: status
    character(len=MESSAGE_LEN) :: message
+   character(len=33) :: stress_text
 
    if ((ntens /= 2 .and. ntens /= 3) .or. ndi /= 1 .or. nshr /= ntens - 1) then
       write (message, '(a,i0,a,i0,a,i0,a)') 'NTENS = ', ntens, ', NDI = ', ndi, ', NSHR = ', nshr, &
@@ -66,6 +70,27 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       return
    end if
 
+   ! the host's values, before any arithmetic on them (so that none can raise an exception):
+   ! STRAN and DSTRAN as the separation is checked (within HOST_INCREMENT_MAX; a smaller
+   ! increment may help), STRESS, SSE and SPD within HOST_VALUE_MAX (the values the UMAT
+   ! returned last: fatal otherwise)
+   if (.not. (all(is_within(stran, HOST_INCREMENT_MAX)) .and. all(is_within(dstran, HOST_INCREMENT_MAX)))) then
+      write (message, '(a,3es12.4)') 'STRAN (mm) ', stran
+      write (stress_text, '(3es11.3)') dstran
+      message = trim(message)//', DSTRAN'//trim(stress_text)
+      call fail(merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
+         all(is_finite(stran)) .and. all(is_finite(dstran))), SEVERITY_WARNING)
+      return
+   end if
+   if (.not. (all(is_within(stress, HOST_VALUE_MAX)) .and. is_within(sse, HOST_VALUE_MAX) .and. &
+         is_within(spd, HOST_VALUE_MAX))) then
+      write (stress_text, '(3es11.3)') stress
+      write (message, '(a,a,a,es11.3,a,es11.3,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), ', SSE ', sse, &
+         ', SPD ', spd, ' (N/mm): the host must pass finite values within ', HOST_VALUE_MAX, &
+         ' (those the UMAT returned last)'
+      call fail(STATUS_BAD_HOST_INPUT, SEVERITY_FATAL)
+      return
+   end if
    s(1:ntens) = stran + dstran
    call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
       new, psi, status)
@@ -81,6 +106,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       return
    end if
 
+   ! every term bounded (|STRESS|, |SSE|, |SPD| <= HOST_VALUE_MAX, |DSTRAN| <= HOST_INCREMENT_MAX,
+   ! the kernel's outputs by the admissible ranges): no overflow
    spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
    sse = psi
    stress = traction(1:ntens)

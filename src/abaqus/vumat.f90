@@ -22,11 +22,13 @@
 !> law) run the vectorised block update (interphase_block, column by column); the others the point update
 !> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
-!> Failures: bad sizes, PROPS, density or incoming STATEV, a custom RVE table or R-curve
+!> Failures: bad sizes, PROPS, density (outside [1e-50, 1e50]) or incoming STATEV, a NaN or Inf
+!> in stressOld, the old energies or strainInc, or one of them beyond 1e150 (strainInc: 1e50)
+!> (STATUS_BAD_HOST_INPUT), a custom RVE table or R-curve
 !> selected but not loaded (VEXTERNALDB), and a tabulated R-curve that does not cover D0 or the
 !> damage a point reaches, are fatal (the whole block is held at
 !> its old values and the host hook is called with SEVERITY_FATAL; Abaqus then stops). A point
-!> whose update fails (e.g. a non-finite increment) keeps its old stress, state and energies,
+!> whose update fails (e.g. a non-finite increment, or a separation beyond |s_i| = 1e20 mm) keeps its old stress, state and energies,
 !> gets STATEV(SV_FAILED) = 1, and one warning per call names the number of failed points and
 !> the first one; the other points of the block are updated (Abaqus/Explicit has no PNEWDT).
 !> Thread-safe: no SAVE, COMMON or module data is written.
@@ -39,7 +41,10 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
       SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
-      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, STATUS_RCURVE_OUT_OF_RANGE, status_message
+      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, STATUS_RCURVE_OUT_OF_RANGE, status_message, &
+      STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_HOST_INPUT
+   use interphase_finite, only: is_finite, is_within
+   use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_params, only: law_params_type, from_props
    use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states
    use interphase_kernel, only: interface_update
@@ -91,9 +96,11 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    type(coefficient_set_type) :: intact, intact_rate
    real(dp) :: ds(CHUNK, 3), psi(CHUNK)
    logical :: ok(CHUNK)
+   real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei_old, ep_old
+   logical :: ok_host
    real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density
-   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status
+   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    character(len=MESSAGE_LEN) :: message, first_message
 
@@ -168,7 +175,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                if (nbad > 0) exit
             end do
             write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
-               ': the VUMAT needs *Density > 0 (a normal number) on the material (its energies are per unit mass)'
+               ': the VUMAT needs *Density > 0, within [1e-50, 1e50], on the material (its energies are per unit mass)'
             fatal_code = -1
             exit update
          end if
@@ -242,7 +249,6 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
                   psi(1:n), ok(1:n), nbad)
             end if
-            if (nbad > 0 .and. first_status == STATUS_OK) first_status = STATUS_NONFINITE_SEPARATION
          else
             if (ntens == 2) statenew(k0:k1, SV_SEP_T2) = 0.0_dp
             nbad = 0
@@ -275,6 +281,9 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          if (nbad > 0) then
             if (first_failed == 0) then
                first_failed = k0 - 1 + findloc(ok(1:n), .false., dim=1)
+               ! the block update reports no status: its two checks are the kernel's
+               if (blocked) first_status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
+                  all(is_finite(statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1))))
                write (first_message, '(a,3es12.4)') 'separation (mm) ', &
                   statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
             end if
@@ -290,12 +299,28 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          ! case), else per point (the compiler makes one loop of each case and dimension out of
          ! this one); the same numbers either way
          uniform_density = ndiff == 0
+         nbad_energy = 0
          rho_t_uniform = density(k0)*THICKNESS
          inv_rho_uniform = 1.0_dp/rho_t_uniform
          do k = 1, n
             km = k0 + k - 1
-            work_k = (stressold(km, 1) + stressnew(km, 1))*ds(k, 1) + (stressold(km, 2) + stressnew(km, 2))*ds(k, 2)
-            if (ntens == 3) work_k = work_k + (stressold(km, 3) + stressnew(km, 3))*ds(k, 3)
+            ! the host's values enter only when within HOST_VALUE_MAX (no branch: selected, never
+            ! computed on; a NaN or Inf would raise no exception either), the culprits counted
+            ok_host = is_within(stressold(km, 1), HOST_VALUE_MAX) .and. is_within(stressold(km, 2), HOST_VALUE_MAX) &
+               .and. is_within(stressold(km, ntens), HOST_VALUE_MAX) .and. is_within(enerinternold(km), HOST_VALUE_MAX) &
+               .and. is_within(enerinelasold(km), HOST_VALUE_MAX) .and. is_within(ds(k, 1), HOST_INCREMENT_MAX) &
+               .and. is_within(ds(k, 2), HOST_INCREMENT_MAX) .and. is_within(ds(k, ntens), HOST_INCREMENT_MAX)
+            nbad_energy = nbad_energy + merge(0, 1, ok_host)
+            so1 = merge(stressold(km, 1), 0.0_dp, ok_host)
+            so2 = merge(stressold(km, 2), 0.0_dp, ok_host)
+            so3 = merge(stressold(km, ntens), 0.0_dp, ok_host)
+            ds1 = merge(ds(k, 1), 0.0_dp, ok_host)
+            ds2 = merge(ds(k, 2), 0.0_dp, ok_host)
+            ds3 = merge(ds(k, ntens), 0.0_dp, ok_host)
+            ei_old = merge(enerinternold(km), 0.0_dp, ok_host)
+            ep_old = merge(enerinelasold(km), 0.0_dp, ok_host)
+            work_k = (so1 + stressnew(km, 1))*ds1 + (so2 + stressnew(km, 2))*ds2
+            if (ntens == 3) work_k = work_k + (so3 + stressnew(km, 3))*ds3
             if (uniform_density) then
                rho_t = rho_t_uniform
                inv_rho = inv_rho_uniform
@@ -303,11 +328,26 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                rho_t = density(km)*THICKNESS
                inv_rho = 1.0_dp/rho_t
             end if
-            psi_old = (enerinternold(km) - enerinelasold(km))*rho_t
-            energy_inelas = enerinelasold(km) + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
+            psi_old = (ei_old - ep_old)*rho_t
+            energy_inelas = ep_old + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
             enerinelasnew(km) = energy_inelas
             enerinternnew(km) = energy_inelas + psi(k)*inv_rho
          end do
+         if (nbad_energy > 0) then
+            do k = 1, n
+               km = k0 + k - 1
+               if (.not. (all(is_within(stressold(km, :), HOST_VALUE_MAX)) .and. &
+                  is_within(enerinternold(km), HOST_VALUE_MAX) .and. is_within(enerinelasold(km), HOST_VALUE_MAX) &
+                  .and. all(is_within(ds(k, 1:ntens), HOST_INCREMENT_MAX)))) exit
+            end do
+            write (first_message, '(3es11.3)') stressold(km, :)
+            write (message, '(a,i0,a,a,a,2es11.3,a,es9.1e3,a,es9.1e3,a)') 'block point ', km, ': stressOld (MPa)', &
+               trim(first_message), ', enerInternOld, enerInelasOld ', enerinternold(km), enerinelasold(km), &
+               ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the VUMAT returned last) '// &
+               'and separation increments within ', HOST_INCREMENT_MAX, ' mm'
+            fatal_code = STATUS_BAD_HOST_INPUT
+            exit update
+         end if
 
          ! a failed point is held at its old values and flagged
          if (nbad > 0) then

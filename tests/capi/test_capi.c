@@ -192,6 +192,20 @@ static void test_failures(void) {
   CHECK(status == INTERPHASE_STATUS_NONFINITE_SEPARATION, "NaN separation: status %d", status);
   CHECK(traction[0] == -7.0 && psi == -7.0, "NaN separation: outputs were touched");
 
+  /* a finite separation beyond the admissible range, and one at its edge */
+  const double s_far[2] = {0.0, -2.0 * INTERPHASE_SEPARATION_MAX}, s_edge[2] = {INTERPHASE_SEPARATION_MAX, 0.0};
+  status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_far, traction, tangent, state_new, &psi,
+                             detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE && strstr(detail, "-2.0000E+20") != NULL,
+        "separation -2e20 mm: status %d, \"%s\"", status, detail);
+  CHECK(traction[0] == -7.0 && psi == -7.0, "separation -2e20 mm: outputs were touched");
+  status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_edge, traction, tangent, state_new, &psi,
+                             detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && isfinite(psi) && isfinite(traction[0]) && state_new[0] == 1.0,
+        "separation 1e20 mm: status %d, psi %g, D %g", status, psi, state_new[0]);
+  traction[0] = -7.0;
+  psi = -7.0;
+
   /* bad old state: D > 1 */
   const double bad_state[INTERPHASE_NSTATE] = {1.5, 0.0, 0.0, 0.0};
   status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, bad_state, s, traction, tangent, state_new, &psi,
@@ -225,6 +239,7 @@ static void test_failures(void) {
       INTERPHASE_STATUS_BAD_D0, INTERPHASE_STATUS_BAD_RCURVE, INTERPHASE_STATUS_BAD_GC_I, INTERPHASE_STATUS_BAD_GC_II,
       INTERPHASE_STATUS_NONFINITE_SEPARATION, INTERPHASE_STATUS_BAD_STATE, INTERPHASE_STATUS_BAD_COEFFICIENTS,
       INTERPHASE_STATUS_STAGGER_NOT_CONVERGED, INTERPHASE_STATUS_RCURVE_NOT_LOADED,
+      INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE, INTERPHASE_STATUS_BAD_HOST_INPUT, INTERPHASE_STATUS_BAD_OPTION,
       INTERPHASE_STATUS_SPLINE_TOO_FEW_POINTS, INTERPHASE_STATUS_SPLINE_BAD_SHAPE, INTERPHASE_STATUS_SPLINE_BAD_METHOD,
       INTERPHASE_STATUS_SPLINE_NONFINITE_DATA, INTERPHASE_STATUS_SPLINE_BAD_KNOTS,
       INTERPHASE_STATUS_SPLINE_SOLVER_FAILED, INTERPHASE_STATUS_SPLINE_NOT_BUILT,
@@ -233,7 +248,7 @@ static void test_failures(void) {
       INTERPHASE_STATUS_TABLE_MISSING_KEY, INTERPHASE_STATUS_TABLE_BAD_ROW, INTERPHASE_STATUS_TABLE_NONFINITE,
       INTERPHASE_STATUS_TABLE_NOT_INCREASING, INTERPHASE_STATUS_TABLE_BAD_RANGE, INTERPHASE_STATUS_TABLE_IDENTITY,
       INTERPHASE_STATUS_TABLE_NOT_LOADED, INTERPHASE_STATUS_RCURVE_UNREADABLE, INTERPHASE_STATUS_RCURVE_MALFORMED,
-      INTERPHASE_STATUS_RCURVE_NEGATIVE, INTERPHASE_STATUS_RCURVE_BAD_RANGE};
+      INTERPHASE_STATUS_RCURVE_NEGATIVE, INTERPHASE_STATUS_RCURVE_BAD_RANGE, INTERPHASE_STATUS_RCURVE_OUT_OF_RANGE};
   for (size_t i = 0; i < sizeof codes / sizeof codes[0]; ++i) {
     interphase_status_message(codes[i], msg, sizeof msg);
     CHECK(strcmp(msg, "unknown status code") != 0, "status %d has no message", codes[i]);
@@ -414,6 +429,28 @@ static void test_load_rcurve(void) {
   CHECK(diff >= 0.0 && diff <= 1e-12, "tabulated vs constant R-curve: largest relative difference %g", diff);
   CHECK(d_final > 0.5, "the history damages the point only to D = %g", d_final);
   printf("tabulated R-curve: D = %.4f at the end, largest difference from the constant R-curve %.3g\n", d_final, diff);
+
+  /* an R-curve that covers D0 = 0.05 but not the damage reached: status 64 once the crack grows
+     beyond D = 0.3, the outputs untouched, the detail naming the file, its range and the D */
+  write_file("short_rcurve.txt", "0.0 0.005 0.0085\n0.1 0.005 0.0085\n0.2 0.005 0.0085\n0.3 0.005 0.0085\n");
+  status = interphase_load_rcurve("short_rcurve.txt", detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK, "load short_rcurve.txt: status %d: %s", status, detail);
+  double state_old[INTERPHASE_NSTATE] = {0.0}, kept[INTERPHASE_NSTATE];
+  int step = 0;
+  status = INTERPHASE_STATUS_OK;
+  for (step = 1; step <= 1000 && status == INTERPHASE_STATUS_OK; ++step) {
+    const double opening[2] = {0.00005 * step, 0.0};
+    memcpy(kept, state_new, sizeof kept);
+    status = interphase_update(tabulated, NPROPS_FRACTURE, 2, state_old, opening, traction, tangent, state_new, &psi,
+                               detail, sizeof detail);
+    if (status == INTERPHASE_STATUS_OK) memcpy(state_old, state_new, sizeof state_old);
+  }
+  CHECK(status == INTERPHASE_STATUS_RCURVE_OUT_OF_RANGE, "short R-curve: status %d (expected 64): %s", status, detail);
+  CHECK(memcmp(kept, state_new, sizeof kept) == 0, "short R-curve: state_new touched on failure");
+  CHECK(strstr(detail, "short_rcurve.txt covers D from 0.00000 to 0.300000") != NULL &&
+            strstr(detail, "grows beyond it from D = ") != NULL,
+        "short R-curve: detail \"%s\"", detail);
+  CHECK(state_old[0] <= 0.3 && step > 2, "short R-curve: last D = %g after %d updates", state_old[0], step - 1);
 }
 
 int main(int argc, char **argv) {
