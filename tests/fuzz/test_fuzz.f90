@@ -191,7 +191,7 @@ contains
       integer, intent(out) :: growth_slip
       real(dp), intent(out) :: chi
       real(dp), allocatable :: props(:)
-      real(dp) :: mu, scale_n, scale_t, eta_n, eta_t, s0_n, s0_t, draw
+      real(dp) :: mu, scale_n, scale_t, eta_n, eta_t, s0_n, s0_t, draw, draw_band
       mu = merge(0.0_dp, between(0.0_dp, 1.5_dp), uniform() < 0.15_dp)
       scale_n = between(0.5_dp, 2.0_dp)
       scale_t = between(0.5_dp, 2.0_dp)
@@ -219,7 +219,8 @@ contains
       ! the option constant given (always for the paper's form, half the time for the default)
       draw = uniform()
       chi = 0.0_dp
-      if (model == MODEL_MICROMECHANICAL .and. uniform() < 0.5_dp) chi = between(0.3_dp, 2.0_dp)
+      draw_band = uniform()
+      if (model == MODEL_MICROMECHANICAL .and. draw_band < 0.5_dp) chi = between(0.3_dp, 2.0_dp)
       if (growth_slip == GROWTH_FIXED_LAMBDA .or. draw < 0.5_dp .or. chi > 0.0_dp) &
          props = [props, real(growth_slip, dp)]
       if (chi > 0.0_dp) props = [props, chi]
