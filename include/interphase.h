@@ -92,6 +92,7 @@ extern "C" {
 #define INTERPHASE_STATUS_TABLE_BAD_RANGE 57             /**< table does not run from a = 0 to a = b */
 #define INTERPHASE_STATUS_TABLE_IDENTITY 58              /**< table violates an exact RVE identity */
 #define INTERPHASE_STATUS_TABLE_NOT_LOADED 59            /**< custom RVE table selected, none loaded */
+#define INTERPHASE_STATUS_TABLE_INTERPOLANT 49           /**< RVE table's interpolant inadmissible between two rows */
 /* R-curve files (interphase_load_rcurve) */
 #define INTERPHASE_STATUS_RCURVE_UNREADABLE 60           /**< R-curve file cannot be opened or read */
 #define INTERPHASE_STATUS_RCURVE_MALFORMED 61            /**< line is not "D G_cI G_cII" */

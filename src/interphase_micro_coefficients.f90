@@ -10,18 +10,22 @@ module interphase_micro_coefficients
    use interphase_kinds, only: dp
    use interphase_layout, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
-      status_message, message_path
+      STATUS_TABLE_INTERPOLANT, status_message, message_path
    use interphase_coefficients, only: coefficient_set_type
    use interphase_spline, only: spline_type, spline_build, spline_export, &
       cubic_locate, cubic_eval
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
-      interpolation_data, crack_variable, N_COEFFICIENTS, TABLE_SPLINE_METHOD, IC_K_N, IC_K_T, &
+      interpolation_data, crack_variable, N_COEFFICIENTS, TABLE_SPLINE_METHOD, VARIABLE_DAMAGE, IC_K_N, IC_K_T, &
       IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_CF_T, IC_DTF, IC_UFBAR
    use interphase_default_table, only: DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_SOURCE, &
       DEFAULT_TABLE_VARIABLE
    implicit none
    private
-   public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded
+   public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded, &
+      check_interpolant, default_table_data
+
+   !> Points per interval between two rows at which `check_interpolant` evaluates the interpolant.
+   integer, parameter :: INTERPOLANT_SAMPLES = 16
 
    !> Smallest positive damage at which the tables' coefficients are evaluated (-).
    real(dp), parameter, public :: D_MIN_CRACK = 1.0e-30_dp
@@ -116,6 +120,69 @@ contains
          cf_t=v(IC_CF_T), tf=tf, ufbar=v(IC_UFBAR))
    end function as_set
 
+   !> The interpolant between a table's rows must be a law where the update uses it (0 < D < 1):
+   !> at INTERPOLANT_SAMPLES points inside every interval of the interpolation variable it checks
+   !> the signs the update's structure rests on: k_N > 0, k_T > 0 (open crack), Dbar_NN > 0 (the
+   !> open/closed switch Dbar_NN s_N > 0), ufbar > 0, T^f < 0 (the friction step), S^c_N > 0 and
+   !> T^c_T > 0 (the closed crack's stresses). Rows that pass their own checks can still have an
+   !> interpolant that breaks these where the rows are far apart (tables/paper-small-d.dat, short
+   !> cracks only and then the a = b row, has Dbar_NN < 0 from D = 0.30). Dbar_TT is not among
+   !> them: it only sets the slip an open crack's faces keep for when they close again, and the
+   !> paper-resolution table's spline undershoots it (Dbar_TT >= -4.7e-3 for D < 0.014, between
+   !> its rows at a = 0 and 1 mm; tables/README.md). On failure: STATUS_TABLE_INTERPOLANT, the
+   !> first D, the coefficient's name and its value.
+   pure subroutine check_interpolant(variable, knots, coef_table, status, bad_d, bad_name, bad_value)
+      integer, intent(in) :: variable                        !! VARIABLE_* of the knots
+      real(dp), intent(in) :: knots(:)                       !! knots, ascending
+      real(dp), intent(in) :: coef_table(:, 0:, :)           !! cubic coefficients
+      integer, intent(out) :: status
+      real(dp), intent(out) :: bad_d                         !! where (-), when status /= STATUS_OK
+      character(len=*), intent(out) :: bad_name              !! which coefficient
+      real(dp), intent(out) :: bad_value                     !! its value there
+      type(coefficient_set_type) :: c, dc
+      real(dp) :: x, d, values(7)
+      integer :: i, j, k
+      character(len=8), parameter :: NAMES(7) = [character(len=8) :: 'k_N', 'k_T', 'Dbar_NN', &
+         'ufbar', '-T^f', 'S^c_N', 'T^c_T']
+      status = STATUS_OK
+      bad_d = 0.0_dp
+      bad_name = ''
+      bad_value = 0.0_dp
+      do i = 1, size(knots) - 1
+         do j = 1, INTERPOLANT_SAMPLES
+            x = knots(i) + (knots(i + 1) - knots(i))*real(j, dp)/real(INTERPOLANT_SAMPLES + 1, dp)
+            ! D from the interpolation variable: x = D, or x = w = 1/(1 - ln(1 - D))
+            if (variable == VARIABLE_DAMAGE) then
+               d = x
+            else
+               d = 1.0_dp - exp(1.0_dp - 1.0_dp/x)
+            end if
+            if (.not. (d > D_MIN_CRACK .and. d < 1.0_dp)) cycle
+            call table_coefficients(variable, knots, coef_table, d, c, dc, status)
+            if (status /= STATUS_OK) return
+            values = [c%k_n, c%k_t, c%dbar_n, c%ufbar, -c%tf, c%sc_n, c%tc_t]
+            do k = 1, size(values)
+               if (.not. (values(k) > 0.0_dp)) then
+                  status = STATUS_TABLE_INTERPOLANT
+                  bad_d = d
+                  bad_name = NAMES(k)
+                  bad_value = values(k)
+                  return
+               end if
+            end do
+         end do
+      end do
+   end subroutine check_interpolant
+
+   !> The built-in table's interpolation data (for tests of `check_interpolant`).
+   pure subroutine default_table_data(variable, knots, coef_table)
+      integer, intent(out) :: variable
+      real(dp), allocatable, intent(out) :: knots(:), coef_table(:, :, :)
+      variable = DEFAULT_TABLE_VARIABLE
+      knots = DEFAULT_TABLE_KNOTS
+      coef_table = DEFAULT_TABLE_COEF
+   end subroutine default_table_data
+
    !> Read, check and interpolate a custom table; call once at start-up, before any update
    !> and from one thread (UEXTERNALDB at LOP = 0 does). A second call replaces the table and
    !> is only safe while no update runs.
@@ -128,6 +195,9 @@ contains
       type(spline_type) :: spline
       real(dp), allocatable :: x(:), y(:, :)
       integer :: n
+      real(dp) :: bad_d, bad_value
+      real(dp), allocatable :: knots(:), coef(:, :, :)
+      character(len=32) :: bad_name
 
       call read_rve_table(path, table, status, message)
       if (status /= STATUS_OK) return
@@ -141,7 +211,16 @@ contains
          message = message_path(path)//': '//status_message(status)
          return
       end if
-      call spline_export(spline, custom_knots, custom_coef)
+      call spline_export(spline, knots, coef)
+      ! the interpolant between the rows must be a law too (signs the update relies on)
+      call check_interpolant(table%variable, knots, coef, status, bad_d, bad_name, bad_value)
+      if (status /= STATUS_OK) then
+         write (message, '(a,a,a,a,es10.3,a,es10.3,a,es10.3,a)') message_path(path), ': interpolant between rows: ', &
+            trim(bad_name), ' = ', bad_value, ' at D = ', bad_d, ' (a = ', bad_d*table%b, ' mm), not > 0: add rows there'
+         return
+      end if
+      call move_alloc(knots, custom_knots)
+      call move_alloc(coef, custom_coef)
       custom_variable = table%variable
       ! the file as it was tried (a relative path resolved against the current directory)
       custom_source = table%source

@@ -58,6 +58,9 @@ module interphase_status
    integer, parameter, public :: STATUS_TABLE_BAD_RANGE = 57
    integer, parameter, public :: STATUS_TABLE_IDENTITY = 58
    integer, parameter, public :: STATUS_TABLE_NOT_LOADED = 59
+   !> (49, beside the spline codes: the table's rows pass, but its interpolant between two rows
+   !> is not a law there)
+   integer, parameter, public :: STATUS_TABLE_INTERPOLANT = 49
    ! ---- R-curve files (interphase_rcurve) ----
    integer, parameter, public :: STATUS_RCURVE_UNREADABLE = 60
    integer, parameter, public :: STATUS_RCURVE_MALFORMED = 61
@@ -143,6 +146,7 @@ contains
       case (STATUS_TABLE_BAD_RANGE);       message = 'RVE table does not run from a = 0 to a = b'
       case (STATUS_TABLE_IDENTITY);        message = 'RVE table violates an exact identity of the RVE problems'
       case (STATUS_TABLE_NOT_LOADED);      message = 'custom RVE table selected but none loaded'
+      case (STATUS_TABLE_INTERPOLANT);     message = 'RVE table interpolant inadmissible between two rows'
       case default;                        message = 'unknown status code'
       end select
    end function status_message
