@@ -27,7 +27,7 @@ module interphase_block
    use interphase_kinds, only: dp
    use interphase_finite, only: MAGNITUDE_MASK
    use interphase_params, only: law_params_type, SEPARATION_MAX, DENSITY_MIN, DENSITY_MAX
-   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
+   use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
    implicit none
    private

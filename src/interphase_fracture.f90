@@ -22,7 +22,7 @@
 module interphase_fracture
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI, &
+   use interphase_enums, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI, &
       MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED
    use interphase_coefficients, only: coefficient_set_type

@@ -29,7 +29,7 @@ module interphase_kernel
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
-   use interphase_layout, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI
+   use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, &
       STATUS_SEPARATION_OUT_OF_RANGE
    use interphase_coefficients, only: coefficient_set_type

@@ -3,8 +3,18 @@
 !> user-facing copy and must be kept in step with it.
 module interphase_layout
    use interphase_kinds, only: dp
+   ! the codes stored in the slots (interphase_enums), offered here too so that a user of the
+   ! layout has the slot and its values from one module
+   use interphase_enums, only: TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, &
+      DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
+      GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, &
+      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    implicit none
    private
+   public :: TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, &
+      DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
+      GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, &
+      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
 
    ! ---- PROPS (material constants, `*USER MATERIAL, CONSTANTS=...`) --------------------------
    !> Model selector: MODEL_SIMPLIFIED or MODEL_MICROMECHANICAL.
@@ -33,21 +43,7 @@ module interphase_layout
    integer, parameter, public :: PROP_TABLE = 8
    !> Number of PROPS the micromechanical model takes.
    integer, parameter, public :: NPROPS_MICROMECHANICAL = 8
-   !> PROPS(PROP_TABLE) value: the built-in table (tables/paper.dat).
-   integer, parameter, public :: TABLE_DEFAULT_CODE = 0
-   !> PROPS(PROP_TABLE) value: the custom table loaded at start-up.
-   integer, parameter, public :: TABLE_CUSTOM_CODE = 1
 
-   !> PROPS(PROP_MODEL) value: the simplified spring model of the paper's section 3.4.
-   integer, parameter, public :: MODEL_SIMPLIFIED = 1
-   !> PROPS(PROP_MODEL) value: the micromechanical model on RVE tables.
-   integer, parameter, public :: MODEL_MICROMECHANICAL = 2
-   !> PROPS(PROP_DAMAGE_LAW) value: the displacement-driven damage law, eqs 13-18.
-   integer, parameter, public :: DAMAGE_DISPLACEMENT = 1
-   !> PROPS(PROP_DAMAGE_LAW) value: the fracture-mechanics law (Griffith criterion with R-curves,
-   !> eqs 20-24, 40-42, 49-50). Its four constants follow the model's block:
-   !> PROPS(nm + LFM_*) with nm = NPROPS_SIMPLIFIED or NPROPS_MICROMECHANICAL.
-   integer, parameter, public :: DAMAGE_FRACTURE = 2
    !> Fracture-mechanics law, offset of the initial crack D0 = a0/b (-), 0 < D0 < 1.
    integer, parameter, public :: LFM_D0 = 1
    !> Fracture-mechanics law, offset of the R-curve selector: RCURVE_*.
@@ -78,21 +74,6 @@ module interphase_layout
    !> crack's (which the VUMAT's stable increment assumes), and its energy is far from convex.
    real(dp), parameter, public :: CONTACT_BAND_MIN = 0.1_dp
    real(dp), parameter, public :: CONTACT_BAND_MAX = 10.0_dp
-   !> PROPS(nb + OPT_GROWTH_SLIP) value, the default: the crack faces' integrated slip
-   !> pi = D ufbar lambda is conserved while the crack grows (the faces made by the growth start
-   !> with zero slip), so that the damage driving force is >= 0 (docs/theory.md).
-   integer, parameter, public :: GROWTH_FIXED_PI = 0
-   !> PROPS(nb + OPT_GROWTH_SLIP) value: the paper's form, the mean slip lambda is held fixed
-   !> while the crack grows (the driving force can be negative in a closed crack).
-   integer, parameter, public :: GROWTH_FIXED_LAMBDA = 1
-   !> R-curve: constant G_cI, G_cII.
-   integer, parameter, public :: RCURVE_CONSTANT = 1
-   !> R-curve: the one equivalent to the displacement-driven law in pure mode I and mode II,
-   !> built from s0_N, sf_N, s0_T, sf_T (PROPS 4-7) and the provider's dC/dD.
-   integer, parameter, public :: RCURVE_EQUIVALENT = 2
-   !> R-curve: tabulated G_cI(D), G_cII(D), read from a file at start-up (UEXTERNALDB with the
-   !> environment variable INTERPHASE_RCURVE, or the driver's case file).
-   integer, parameter, public :: RCURVE_TABULATED = 3
 
    ! ---- STATEV (solution-dependent state, `*DEPVAR`) -----------------------------------------
    !> Damage D = a/b (-), history maximum, 0 <= D <= 1.
@@ -119,13 +100,5 @@ module interphase_layout
    !> Number of STATEV slots the VUMAT uses (nstatev must be at least this).
    integer, parameter, public :: NSTATV_VUMAT = 8
 
-   !> Regime codes (STATEV(SV_REGIME)): no crack yet.
-   integer, parameter, public :: REGIME_INTACT = 0
-   !> Regime code: crack open, crack faces traction-free.
-   integer, parameter, public :: REGIME_OPEN = 1
-   !> Regime code: crack closed, faces stick.
-   integer, parameter, public :: REGIME_STICK = 2
-   !> Regime code: crack closed, faces slip (Coulomb).
-   integer, parameter, public :: REGIME_SLIP = 3
 
 end module interphase_layout

@@ -8,7 +8,7 @@
 !> file) into `protected` data that the pure update only reads.
 module interphase_micro_coefficients
    use interphase_kinds, only: dp
-   use interphase_layout, only: TABLE_CUSTOM_CODE
+   use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
       STATUS_TABLE_INTERPOLANT, status_message, message_path
    use interphase_coefficients, only: coefficient_set_type

@@ -5,8 +5,9 @@
 module interphase_provider
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, PROP_TABLE, &
-      DAMAGE_FRACTURE, RCURVE_TABULATED
+   use interphase_layout, only: PROP_TABLE
+   use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, &
+      RCURVE_TABULATED
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
       STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
    use interphase_coefficients, only: coefficient_set_type, simplified_coefficients

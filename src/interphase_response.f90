@@ -4,7 +4,7 @@
 module interphase_response
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_layout, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
+   use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
    use interphase_coefficients, only: coefficient_set_type

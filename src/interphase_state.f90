@@ -3,8 +3,8 @@ module interphase_state
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    use interphase_params, only: SLIP_MAX
-   use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED, &
-      REGIME_INTACT, REGIME_SLIP
+   use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED
+   use interphase_enums, only: REGIME_INTACT, REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_BAD_STATE, STATUS_BAD_NSTATV, MESSAGE_LEN
    implicit none
    private

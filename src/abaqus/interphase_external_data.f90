@@ -14,7 +14,7 @@
 !> fails its checks is a fatal error naming the variable, the file, the line and the failed check.
 module interphase_external_data
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_FATAL, status_message, file_loader, message_path
-   use interphase_layout, only: TABLE_CUSTOM_CODE
+   use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_micro_coefficients, only: load_custom_table, custom_table_source
    use interphase_rcurve, only: load_rcurve, rcurve_source
    use interphase_abaqus_interfaces, only: interphase_host_message
