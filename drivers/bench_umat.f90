@@ -11,11 +11,10 @@
 program bench_umat
    use, intrinsic :: iso_fortran_env, only: int64, output_unit, error_unit
    use interphase_kinds, only: dp
-   use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
-      PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
-      MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, TABLE_DEFAULT_CODE, &
-      DAMAGE_FRACTURE, NPROPS_FRACTURE_EXTRA, LFM_D0, LFM_RCURVE, RCURVE_EQUIVALENT, &
-      DAMAGE_DISPLACEMENT, NSTATV_REQUIRED
+   use interphase_layout, only: NSTATV_REQUIRED
+   use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, &
+      RCURVE_EQUIVALENT, DAMAGE_DISPLACEMENT
+   use interphase_params, only: law_params_type, to_props
    use interphase_abaqus_interfaces, only: umat
    implicit none
 
@@ -84,29 +83,26 @@ contains
    !> built-in table.
    subroutine set_props(which, damage_law)
       integer, intent(in) :: which, damage_law
-      integer :: i, nm
-      nm = merge(NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, which == MODEL_SIMPLIFIED)
-      if (damage_law == DAMAGE_FRACTURE) then
-         props = [(0.0_dp, i = 1, nm + NPROPS_FRACTURE_EXTRA)]
-         ! initial crack D0 = 0.02, the R-curve equivalent to the displacement law
-         props(nm + LFM_D0) = 0.02_dp
-         props(nm + LFM_RCURVE) = real(RCURVE_EQUIVALENT, dp)
-      else
-         props = [(0.0_dp, i = 1, nm)]
-      end if
+      type(law_params_type) :: p
+      p%model = which
+      p%damage_law = damage_law
+      p%mu = 0.75_dp
+      p%s0_n = 0.00044_dp
+      p%sf_n = 0.04_dp
+      p%s0_t = 0.00072_dp
+      p%sf_t = 0.06_dp
       if (which == MODEL_SIMPLIFIED) then
-         props(PROP_K_N) = 544000.0_dp/1127.0_dp
-         props(PROP_K_T) = 32000.0_dp/161.0_dp
+         p%k_n = 544000.0_dp/1127.0_dp
+         p%k_t = 32000.0_dp/161.0_dp
       else
-         props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
+         p%table = TABLE_DEFAULT_CODE
       end if
-      props(PROP_MODEL) = real(which, dp)
-      props(PROP_DAMAGE_LAW) = real(damage_law, dp)
-      props(PROP_MU) = 0.75_dp
-      props(PROP_S0_N) = 0.00044_dp
-      props(PROP_SF_N) = 0.04_dp
-      props(PROP_S0_T) = 0.00072_dp
-      props(PROP_SF_T) = 0.06_dp
+      if (damage_law == DAMAGE_FRACTURE) then
+         ! initial crack D0 = 0.02, the R-curve equivalent to the displacement law
+         p%d0 = 0.02_dp
+         p%rcurve = RCURVE_EQUIVALENT
+      end if
+      props = to_props(p)
    end subroutine set_props
 
    pure function model_name(which, damage_law) result(name)

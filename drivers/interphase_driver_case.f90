@@ -16,12 +16,10 @@ module interphase_driver_case
    use, intrinsic :: iso_fortran_env, only: iostat_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use interphase_kinds, only: dp
-   use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, &
-      PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, MODEL_SIMPLIFIED, &
-      DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, NPROPS_FRACTURE_EXTRA, LFM_D0, LFM_RCURVE, LFM_GC_I, &
-      LFM_GC_II, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, MODEL_MICROMECHANICAL, NPROPS_MICROMECHANICAL, PROP_TABLE, &
-      TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, OPT_GROWTH_SLIP, &
-      OPT_CONTACT_BAND, NPROPS_OPTIONS
+   use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
+      RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, &
+      GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
+   use interphase_params, only: law_params_type, to_props
    use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
@@ -232,9 +230,7 @@ contains
       character(len=:), allocatable, intent(out) :: message
 
       character(len=:), allocatable :: missing, model, law, rcurve
-      real(dp), allocatable :: extended(:)
-      real(dp) :: options(NPROPS_OPTIONS)
-      integer :: nm, noptions
+      type(law_params_type) :: p
 
       ok = .false.
       message = ''
@@ -270,24 +266,22 @@ contains
             message = where//"table is an entry of model = 'micromechanical' only"
             return
          end if
-         allocate (props(NPROPS_SIMPLIFIED))
-         props(PROP_MODEL) = real(MODEL_SIMPLIFIED, dp)
+         p%model = MODEL_SIMPLIFIED
          if (.not. finite_entry('k_n', e%k_n)) return
          if (.not. finite_entry('k_t', e%k_t)) return
-         props(PROP_K_N) = e%k_n
-         props(PROP_K_T) = e%k_t
+         p%k_n = e%k_n
+         p%k_t = e%k_t
       case ('micromechanical')
          if (.not. (is_unset(e%k_n) .and. is_unset(e%k_t))) then
             message = where//"k_n and k_t are entries of model = 'simplified' only (the "// &
                "micromechanical model takes its stiffness from the RVE table)"
             return
          end if
-         allocate (props(NPROPS_MICROMECHANICAL))
-         props(PROP_MODEL) = real(MODEL_MICROMECHANICAL, dp)
+         p%model = MODEL_MICROMECHANICAL
          if (len_trim(e%table) == 0) then
-            props(PROP_TABLE) = real(TABLE_DEFAULT_CODE, dp)
+            p%table = TABLE_DEFAULT_CODE
          else
-            props(PROP_TABLE) = real(TABLE_CUSTOM_CODE, dp)
+            p%table = TABLE_CUSTOM_CODE
             table_path = join_path(base_dir, trim(adjustl(e%table)))
          end if
       case default
@@ -297,7 +291,7 @@ contains
       end select
       select case (law)
       case ('displacement')
-         props(PROP_DAMAGE_LAW) = real(DAMAGE_DISPLACEMENT, dp)
+         p%damage_law = DAMAGE_DISPLACEMENT
          if (.not. (is_unset(e%d0) .and. is_unset(e%g_ci) .and. is_unset(e%g_cii)) .or. &
             len(rcurve) > 0 .or. len_trim(e%rcurve_file) > 0) then
             message = where//"d0, rcurve, rcurve_file, g_ci and g_cii are entries of "// &
@@ -305,18 +299,15 @@ contains
             return
          end if
       case ('fracture')
-         props(PROP_DAMAGE_LAW) = real(DAMAGE_FRACTURE, dp)
+         p%damage_law = DAMAGE_FRACTURE
          if (is_unset(e%d0)) then
             message = where//"missing entry d0 (initial crack a0/b, needed by damage_law = 'fracture')"
             return
          end if
          if (.not. finite_entry('d0', e%d0)) return
-         nm = size(props)
-         allocate (extended(nm + NPROPS_FRACTURE_EXTRA))
-         extended(1:nm) = props
-         extended(nm + LFM_D0) = e%d0
-         extended(nm + LFM_GC_I) = 0.0_dp
-         extended(nm + LFM_GC_II) = 0.0_dp
+         p%d0 = e%d0
+         p%gc_i = 0.0_dp
+         p%gc_ii = 0.0_dp
          select case (rcurve)
          case ('constant')
             if (is_unset(e%g_ci) .or. is_unset(e%g_cii)) then
@@ -325,17 +316,17 @@ contains
             end if
             if (.not. finite_entry('g_ci', e%g_ci)) return
             if (.not. finite_entry('g_cii', e%g_cii)) return
-            extended(nm + LFM_RCURVE) = real(RCURVE_CONSTANT, dp)
-            extended(nm + LFM_GC_I) = e%g_ci
-            extended(nm + LFM_GC_II) = e%g_cii
+            p%rcurve = RCURVE_CONSTANT
+            p%gc_i = e%g_ci
+            p%gc_ii = e%g_cii
          case ('equivalent')
-            extended(nm + LFM_RCURVE) = real(RCURVE_EQUIVALENT, dp)
+            p%rcurve = RCURVE_EQUIVALENT
          case ('tabulated')
             if (len_trim(e%rcurve_file) == 0) then
                message = where//"rcurve = 'tabulated' needs the entry rcurve_file"
                return
             end if
-            extended(nm + LFM_RCURVE) = real(RCURVE_TABULATED, dp)
+            p%rcurve = RCURVE_TABULATED
             rcurve_path = join_path(base_dir, trim(adjustl(e%rcurve_file)))
          case default
             message = where//"rcurve must be 'constant', 'equivalent' or 'tabulated', got '"// &
@@ -346,7 +337,6 @@ contains
             message = where//"g_ci and g_cii are entries of rcurve = 'constant' only"
             return
          end if
-         call move_alloc(extended, props)
       case default
          message = where//"unknown damage_law '"//trim(adjustl(e%damage_law))// &
             "' (available: 'displacement', 'fracture')"
@@ -358,22 +348,17 @@ contains
       if (.not. finite_entry('sf_n', e%sf_n)) return
       if (.not. finite_entry('s0_t', e%s0_t)) return
       if (.not. finite_entry('sf_t', e%sf_t)) return
-      props(PROP_MU) = e%mu
-      props(PROP_S0_N) = e%s0_n
-      props(PROP_SF_N) = e%sf_n
-      props(PROP_S0_T) = e%s0_t
-      props(PROP_SF_T) = e%sf_t
-      ! the option constants (interphase_layout): appended only up to the last one given, the
-      ! ones before it at their defaults
-      options = [real(GROWTH_FIXED_PI, dp), 0.0_dp]
-      noptions = 0
+      p%mu = e%mu
+      p%s0_n = e%s0_n
+      p%sf_n = e%sf_n
+      p%s0_t = e%s0_t
+      p%sf_t = e%sf_t
+      ! the option settings (their defaults unless given)
       select case (to_lower(trim(adjustl(e%growth_slip))))
-      case ('')
-      case ('fixed-pi')
-         noptions = OPT_GROWTH_SLIP
+      case ('', 'fixed-pi')
+         p%growth_slip = GROWTH_FIXED_PI
       case ('fixed-lambda')
-         options(OPT_GROWTH_SLIP) = real(GROWTH_FIXED_LAMBDA, dp)
-         noptions = OPT_GROWTH_SLIP
+         p%growth_slip = GROWTH_FIXED_LAMBDA
       case default
          message = where//"growth_slip must be 'fixed-pi' (the default) or 'fixed-lambda' (the paper's form), got '"// &
             trim(adjustl(e%growth_slip))//"'"
@@ -381,10 +366,11 @@ contains
       end select
       if (.not. is_unset(e%contact_band)) then
          if (.not. finite_entry('contact_band', e%contact_band)) return
-         options(OPT_CONTACT_BAND) = e%contact_band
-         noptions = OPT_CONTACT_BAND
+         p%contact_band = e%contact_band
       end if
-      props = [props, options(1:noptions)]
+      ! PROPS from the one encoder (interphase_params); the values are checked by the UMAT's
+      ! decoder, whose message names the PROPS index
+      props = to_props(p)
       ok = .true.
 
    contains

@@ -75,6 +75,30 @@ module interphase_layout
    real(dp), parameter, public :: CONTACT_BAND_MIN = 0.1_dp
    real(dp), parameter, public :: CONTACT_BAND_MAX = 10.0_dp
 
+   !> How an option constant is decoded: OPTION_SELECTOR, an integer code 0 .. upper given as
+   !> exactly that real number; OPTION_SWITCHED_RANGE, 0 (off) or a finite value in
+   !> [lower, upper].
+   integer, parameter, public :: OPTION_SELECTOR = 1
+   integer, parameter, public :: OPTION_SWITCHED_RANGE = 2
+   !> What an option constant is: its symbol (in messages), how it is decoded, its default, its
+   !> range and the rule a message states when a value breaks it.
+   type, public :: option_spec_type
+      character(len=24) :: symbol = ''
+      integer :: kind = OPTION_SELECTOR
+      real(dp) :: default = 0.0_dp
+      real(dp) :: lower = 0.0_dp
+      real(dp) :: upper = 0.0_dp
+      character(len=160) :: rule = ''
+   end type option_spec_type
+   !> Everything a new option needs, in one place: its offset (OPT_*) is its index here, and
+   !> interphase_params decodes, checks and encodes every entry from this table.
+   type(option_spec_type), parameter, public :: OPTION_SPECS(NPROPS_OPTIONS) = [ &
+      option_spec_type('growth slip', OPTION_SELECTOR, real(GROWTH_FIXED_PI, dp), 0.0_dp, &
+         real(GROWTH_FIXED_LAMBDA, dp), 'use 0 (conserve the integrated slip pi = D ufbar lambda, the '// &
+         'default) or 1 (hold lambda, the paper''s form)'), &
+      option_spec_type('contact band chi', OPTION_SWITCHED_RANGE, 0.0_dp, CONTACT_BAND_MIN, CONTACT_BAND_MAX, &
+         'must be 0 (the paper''s open/closed switch) or finite in [0.1, 10]')]
+
    ! ---- STATEV (solution-dependent state, `*DEPVAR`) -----------------------------------------
    !> Damage D = a/b (-), history maximum, 0 <= D <= 1.
    integer, parameter, public :: SV_DAMAGE = 1

@@ -8,7 +8,7 @@ module interphase_params
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
       PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, PROP_TABLE, NPROPS_MICROMECHANICAL, LFM_D0, &
       LFM_RCURVE, LFM_GC_I, LFM_GC_II, NPROPS_FRACTURE_EXTRA, OPT_GROWTH_SLIP, NPROPS_OPTIONS, &
-      OPT_CONTACT_BAND, CONTACT_BAND_MIN, CONTACT_BAND_MAX
+      OPT_CONTACT_BAND, OPTION_SPECS, OPTION_SELECTOR, option_spec_type
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_CONSTANT, RCURVE_EQUIVALENT, &
       RCURVE_TABULATED, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
@@ -18,7 +18,7 @@ module interphase_params
       STATUS_BAD_D0, STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION
    implicit none
    private
-   public :: law_params_type, from_props, params_from_values, set_fracture_params, set_options
+   public :: law_params_type, from_props, params_from_values, set_fracture_params, set_options, to_props
 
    !> Admissible magnitudes of the dimensional PROPS (s0, sf in mm; K in MPa/mm; G_c in N/mm) and
    !> the largest friction coefficient: every product the update forms of up to eight such
@@ -157,8 +157,10 @@ contains
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
 
-      integer :: growth_slip
-      logical :: band_ok
+      real(dp) :: values(NPROPS_OPTIONS)
+      type(option_spec_type) :: spec
+      logical :: valid
+      integer :: k
 
       status = STATUS_OK
       if (size(options) > NPROPS_OPTIONS) then
@@ -167,28 +169,68 @@ contains
             NPROPS_OPTIONS
          return
       end if
-      if (size(options) >= OPT_GROWTH_SLIP) then
-         growth_slip = selector_code(options(OPT_GROWTH_SLIP))
-         if (growth_slip /= GROWTH_FIXED_PI .and. growth_slip /= GROWTH_FIXED_LAMBDA) then
-            call reject(STATUS_BAD_OPTION, base + OPT_GROWTH_SLIP, 'growth slip', options(OPT_GROWTH_SLIP), &
-               'use 0 (conserve the integrated slip pi = D ufbar lambda, the default) or 1 (hold lambda, '// &
-               'the paper''s form)', status, message)
+      ! every option from its entry in OPTION_SPECS: the default, or the value given when it
+      ! passes the entry's check
+      values = OPTION_SPECS%default
+      do k = 1, size(options)
+         spec = OPTION_SPECS(k)
+         if (spec%kind == OPTION_SELECTOR) then
+            valid = selector_code(options(k)) >= nint(spec%lower) .and. selector_code(options(k)) <= nint(spec%upper)
+         else
+            valid = finite_at_least(options(k), 0.0_dp)
+            if (valid) valid = .not. (options(k) > 0.0_dp) .or. (options(k) >= spec%lower .and. options(k) <= spec%upper)
+         end if
+         if (.not. valid) then
+            call reject(STATUS_BAD_OPTION, base + k, trim(spec%symbol), options(k), trim(spec%rule), status, message)
             return
          end if
-         params%growth_slip = growth_slip
-      end if
-      if (size(options) >= OPT_CONTACT_BAND) then
-         band_ok = finite_at_least(options(OPT_CONTACT_BAND), 0.0_dp)
-         if (band_ok) band_ok = .not. (options(OPT_CONTACT_BAND) > 0.0_dp) .or. &
-            (options(OPT_CONTACT_BAND) >= CONTACT_BAND_MIN .and. options(OPT_CONTACT_BAND) <= CONTACT_BAND_MAX)
-         if (.not. band_ok) then
-            call reject(STATUS_BAD_OPTION, base + OPT_CONTACT_BAND, 'contact band chi', options(OPT_CONTACT_BAND), &
-               'must be 0 (the paper''s open/closed switch) or finite in [0.1, 10]', status, message)
-            return
-         end if
-         params%contact_band = options(OPT_CONTACT_BAND)
-      end if
+         values(k) = options(k)
+      end do
+      params%growth_slip = nint(values(OPT_GROWTH_SLIP))
+      params%contact_band = values(OPT_CONTACT_BAND)
    end subroutine set_options
+
+   !> The PROPS array (docs/abaqus.md) of a parameter set: the one encoder of PROPS, the inverse
+   !> of `from_props` for every set it accepts. The option constants are written up to the last
+   !> one that is not at its default (none when all are), so that a material without options has
+   !> the short deck it always had.
+   pure function to_props(params) result(props)
+      type(law_params_type), intent(in) :: params
+      real(dp), allocatable :: props(:)
+      real(dp) :: values(NPROPS_OPTIONS)
+      integer :: nm, nlast, k
+      nm = NPROPS_SIMPLIFIED
+      if (params%model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
+      allocate (props(nm))
+      props(PROP_MODEL) = real(params%model, dp)
+      props(PROP_DAMAGE_LAW) = real(params%damage_law, dp)
+      props(PROP_MU) = params%mu
+      props(PROP_S0_N) = params%s0_n
+      props(PROP_SF_N) = params%sf_n
+      props(PROP_S0_T) = params%s0_t
+      props(PROP_SF_T) = params%sf_t
+      if (params%model == MODEL_MICROMECHANICAL) then
+         props(PROP_TABLE) = real(params%table, dp)
+      else
+         props(PROP_K_N) = params%k_n
+         props(PROP_K_T) = params%k_t
+      end if
+      if (params%damage_law == DAMAGE_FRACTURE) then
+         props = [props, [params%d0, real(params%rcurve, dp), params%gc_i, params%gc_ii]]
+      end if
+      values(OPT_GROWTH_SLIP) = real(params%growth_slip, dp)
+      values(OPT_CONTACT_BAND) = params%contact_band
+      nlast = 0
+      do k = 1, NPROPS_OPTIONS
+         if (.not. same_bits(values(k), OPTION_SPECS(k)%default)) nlast = k
+      end do
+      props = [props, values(1:nlast)]
+   contains
+      pure logical function same_bits(a, b)
+         real(dp), intent(in) :: a, b
+         same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
+      end function same_bits
+   end function to_props
 
    !> Build and validate parameters from named values (the same checks as `from_props`; the
    !> messages cite the PROPS index each value occupies). The simplified model needs k_n and
