@@ -35,6 +35,9 @@ extern "C" {
 
 /** Number of doubles in a state array (STATEV slots 1..4 of the UMAT). */
 #define INTERPHASE_NSTATE 4
+/** State doubles of a material with viscous regularisation (its viscosity option > 0): the
+ *  four above and the damage law's own (inviscid) D; use interphase_update_dt for it. */
+#define INTERPHASE_NSTATE_VISCOUS 5
 /** Number of PROPS of the simplified (spring) model. */
 #define INTERPHASE_NPROPS_SIMPLIFIED 9
 /** Largest admissible separation component (mm): SEPARATION_MAX of src/interphase_params.f90. */
@@ -71,6 +74,7 @@ extern "C" {
 #define INTERPHASE_STATUS_RCURVE_NOT_LOADED 24           /**< tabulated R-curve selected, none loaded */
 #define INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE 25     /**< a separation component |s_i| > 1e20 mm */
 #define INTERPHASE_STATUS_BAD_HOST_INPUT 26              /**< adapters: host stress/energy not finite */
+#define INTERPHASE_STATUS_BAD_TIME_INCREMENT 27          /**< time increment missing, negative or not finite (viscosity) */
 /* interpolation tables: construction, then evaluation */
 #define INTERPHASE_STATUS_SPLINE_TOO_FEW_POINTS 40       /**< too few table points */
 #define INTERPHASE_STATUS_SPLINE_BAD_SHAPE 41            /**< table values do not match the knots */
@@ -129,6 +133,18 @@ extern "C" {
 int interphase_update(const double *props, int nprops, int ntens, const double *state_old,
                       const double *separation, double *traction, double *tangent,
                       double *state_new, double *stored_energy, char *detail, size_t detail_len);
+
+/**
+ * interphase_update with the time increment @p dt (s) of the increment, which viscous
+ * regularisation of the damage needs (the viscosity option constant, docs/abaqus.md); for a
+ * material with it, @p state_old and @p state_new hold INTERPHASE_NSTATE_VISCOUS doubles (the
+ * fifth: the damage law's own D), else INTERPHASE_NSTATE. interphase_update refuses such a
+ * material with INTERPHASE_STATUS_BAD_TIME_INCREMENT; so does this function for a @p dt that is
+ * negative or not finite. Otherwise as interphase_update.
+ */
+int interphase_update_dt(const double *props, int nprops, int ntens, const double *state_old,
+                         const double *separation, double dt, double *traction, double *tangent,
+                         double *state_new, double *stored_energy, char *detail, size_t detail_len);
 
 /**
  * Load the custom RVE table that the micromechanical model uses where PROPS[7] = 1 (what

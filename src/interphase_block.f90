@@ -44,11 +44,13 @@ contains
    !> Whether the points of a material may take the block update (`simplified_block_update`):
    !> the simplified model with the displacement-driven damage law, every such material (any
    !> mu, eta_N, eta_T, K_N, K_T and options that from_props accepts; the contact band acts on
-   !> the micromechanical model only). Hosts ask here, never decide
+   !> the micromechanical model only), except with viscous regularisation (those points take
+   !> the point update). Hosts ask here, never decide
    !> themselves, so that the block update's coverage is stated in one place.
    pure logical function block_supports(params)
       type(law_params_type), intent(in) :: params    !! decoded by from_props
-      block_supports = params%model == MODEL_SIMPLIFIED .and. params%damage_law == DAMAGE_DISPLACEMENT
+      block_supports = params%model == MODEL_SIMPLIFIED .and. params%damage_law == DAMAGE_DISPLACEMENT &
+         .and. .not. (params%viscosity > 0.0_dp)
    end function block_supports
 
    !> Update n points of the simplified model (displacement-driven damage law) from their

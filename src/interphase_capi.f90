@@ -12,19 +12,19 @@ module interphase_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_ptr, c_null_char, &
       c_associated, c_f_pointer
    use interphase_kinds, only: dp
-   use interphase_layout, only: NSTATV_REQUIRED, PROP_TABLE
+   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE
    use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
       STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
-      STATUS_RCURVE_OUT_OF_RANGE, status_message, file_loader
+      STATUS_RCURVE_OUT_OF_RANGE, STATUS_BAD_TIME_INCREMENT, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_coverage
    use interphase_params, only: law_params_type, from_props
-   use interphase_state, only: interface_state_type, state_unpack, state_pack
+   use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update
    implicit none
    private
-   public :: interphase_update_c, interphase_status_message_c, interphase_load_table_c, &
+   public :: interphase_update_c, interphase_update_dt_c, interphase_status_message_c, interphase_load_table_c, &
       interphase_load_rcurve_c
 
    !> Longest path (bytes, without the NUL) the loaders accept from C.
@@ -53,11 +53,57 @@ contains
       type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
       integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
       integer(c_int) :: status
+      status = capi_update(props, nprops, ntens, state_old, separation, traction, tangent, state_new, &
+         stored_energy, detail, detail_len)
+   end function interphase_update_c
+
+   !> C: `int interphase_update_dt(const double *props, int nprops, int ntens,
+   !>    const double *state_old, const double *separation, double dt, double *traction,
+   !>    double *tangent, double *state_new, double *stored_energy, char *detail, size_t detail_len)`:
+   !> interphase_update with the time increment dt (s), which viscous regularisation needs; the
+   !> state is then INTERPHASE_NSTATE_VISCOUS (5) doubles.
+   function interphase_update_dt_c(props, nprops, ntens, state_old, separation, dt, traction, tangent, &
+         state_new, stored_energy, detail, detail_len) result(status) bind(C, name="interphase_update_dt")
+      integer(c_int), value, intent(in) :: nprops          !! number of PROPS (docs/abaqus.md)
+      real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
+      integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
+      real(c_double), intent(in) :: state_old(*)           !! state_slots(params) doubles
+      real(c_double), intent(in) :: separation(*)          !! ntens doubles (mm)
+      real(c_double), value, intent(in) :: dt              !! time increment (s)
+      real(c_double), intent(inout) :: traction(*)         !! ntens doubles (MPa)
+      real(c_double), intent(inout) :: tangent(*)          !! ntens*ntens doubles, row-major (MPa/mm)
+      real(c_double), intent(inout) :: state_new(*)        !! state_slots(params) doubles
+      real(c_double), intent(inout) :: stored_energy       !! stored energy per unit area (N/mm)
+      type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
+      integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
+      integer(c_int) :: status
+      status = capi_update(props, nprops, ntens, state_old, separation, traction, tangent, state_new, &
+         stored_energy, detail, detail_len, dt)
+   end function interphase_update_dt_c
+
+   !> The update behind both C entry points; `dt` absent: interphase_update (no time increment,
+   !> which a material with viscous regularisation refuses).
+   function capi_update(props, nprops, ntens, state_old, separation, traction, tangent, &
+         state_new, stored_energy, detail, detail_len, dt) result(status)
+      integer(c_int), intent(in) :: nprops
+      real(c_double), intent(in) :: props(*)
+      integer(c_int), intent(in) :: ntens
+      real(c_double), intent(in) :: state_old(*)
+      real(c_double), intent(in) :: separation(*)
+      real(c_double), intent(inout) :: traction(*)
+      real(c_double), intent(inout) :: tangent(*)
+      real(c_double), intent(inout) :: state_new(*)
+      real(c_double), intent(inout) :: stored_energy
+      type(c_ptr), intent(in) :: detail
+      integer(c_size_t), intent(in) :: detail_len
+      real(c_double), intent(in), optional :: dt
+      integer(c_int) :: status
 
       type(law_params_type) :: params
       type(interface_state_type) :: old, new
-      real(dp) :: t(3), k(3, 3), psi, sv(NSTATV_REQUIRED)
-      integer :: code, i, j, n
+      real(dp) :: t(3), k(3, 3), psi, sv(NSTATV_VISCOUS)
+      integer :: code, i, j, n, nsv
+      logical :: viscous
       character(len=MESSAGE_LEN) :: message
 
       message = ''
@@ -79,7 +125,9 @@ contains
          call finish()
          return
       end if
-      call state_unpack(state_old(1:NSTATV_REQUIRED), n, old, code, message)
+      viscous = params%viscosity > 0.0_dp
+      nsv = state_slots(params)
+      call state_unpack(state_old(1:nsv), n, old, code, message, viscous)
       if (code /= STATUS_OK) then
          call finish()
          return
@@ -97,8 +145,17 @@ contains
          call finish()
          return
       end if
-      call interface_update(params, old, separation(1:n), t(1:n), k(1:n, 1:n), new, psi, code)
-      if (code == STATUS_RCURVE_OUT_OF_RANGE) then
+      call interface_update(params, old, separation(1:n), t(1:n), k(1:n, 1:n), new, psi, code, dt)
+      if (code == STATUS_BAD_TIME_INCREMENT) then
+         if (present(dt)) then
+            write (message, '(a,es12.4,a)') 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
+         else
+            message = 'the material has viscous regularisation (its viscosity option): call '// &
+               'interphase_update_dt with the time increment'
+         end if
+         call finish()
+         return
+      else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
          write (message, '(a,a,g0.6,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
             old%d, ' at separation (mm) ', separation(1:n)
          call finish()
@@ -115,9 +172,9 @@ contains
             tangent((i - 1)*n + j) = k(i, j)
          end do
       end do
-      sv = state_old(1:NSTATV_REQUIRED)
-      call state_pack(new, sv)
-      state_new(1:NSTATV_REQUIRED) = sv
+      sv(1:nsv) = state_old(1:nsv)
+      call state_pack(new, sv(1:nsv), viscous)
+      state_new(1:nsv) = sv(1:nsv)
       stored_energy = psi
       call finish()
 
@@ -129,7 +186,7 @@ contains
          if (code /= STATUS_OK) call copy_to_c(trim(message), detail, detail_len)
       end subroutine finish
 
-   end function interphase_update_c
+   end function capi_update
 
    !> C: `size_t interphase_status_message(int status, char *buf, size_t len)`. Writes the
    !> generic message of `status` into `buf` (at most len - 1 characters and a NUL; nothing if

@@ -30,7 +30,7 @@ module interphase_kernel
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI
-   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, &
+   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, STATUS_BAD_TIME_INCREMENT, &
       STATUS_SEPARATION_OUT_OF_RANGE
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
@@ -46,7 +46,7 @@ contains
 
    !> Update one interface point from the old state and the separation at the end of the
    !> increment. On a non-zero status the outputs are undefined and must not be used.
-   pure subroutine interface_update(params, old, s, traction, tangent, new, psi, status)
+   pure subroutine interface_update(params, old, s, traction, tangent, new, psi, status, dt)
       type(law_params_type), intent(in) :: params        !! material parameters
       type(interface_state_type), intent(in) :: old      !! state at the start of the increment
       real(dp), intent(in) :: s(:)                       !! separation (s_N, s_T[, s_T2]) (mm)
@@ -55,10 +55,14 @@ contains
       type(interface_state_type), intent(out) :: new     !! state at the end of the increment
       real(dp), intent(out) :: psi                       !! stored energy per unit area (N/mm)
       integer, intent(out) :: status                     !! STATUS_OK or a failure code
+      !> time increment (s): needed with viscous regularisation (params%viscosity > 0), where it
+      !> must be finite and >= 0 (else STATUS_BAD_TIME_INCREMENT); not used otherwise
+      real(dp), intent(in), optional :: dt
 
       type(coefficient_set_type) :: c, dc
       type(response_type) :: r
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
+      real(dp) :: d_law, ratio, weight
       integer :: ntens, nt, j
 
       ntens = size(s)
@@ -84,14 +88,37 @@ contains
          ! damage first (eq 39), then the response at that damage
          t_sq = st(1)**2 + st(2)**2
          call displacement_damage(params, s_n, t_sq, d_hat, dd_dsn, dd_dt)
-         ! + 0: an incoming D = -0 leaves as +0 whichever operand max picks (the block update
-         ! of interphase_block does the same, so both agree bit for bit)
-         d = max(old%d, min(1.0_dp, d_hat)) + 0.0_dp
+         ! the damage law's own D, the history maximum (without viscous regularisation old%d_inviscid
+         ! is old%d); + 0: an incoming D = -0 leaves as +0 whichever operand max picks (the block
+         ! update of interphase_block does the same, so both agree bit for bit)
+         d_law = max(old%d_inviscid, old%d)
+         d = max(d_law, min(1.0_dp, d_hat)) + 0.0_dp
          dd_ds = 0.0_dp
-         if (d_hat > old%d .and. d_hat < 1.0_dp) then
+         if (d_hat > d_law .and. d_hat < 1.0_dp) then
             dd_ds(1) = dd_dsn
             t = sqrt(t_sq)
             if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
+         end if
+         new%d_inviscid = d
+         if (params%viscosity > 0.0_dp) then
+            ! Duvaut-Lions: D_v = (D_v,n + (dt/eta) D)/(1 + dt/eta), the response at D_v, and
+            ! dD_v/ds = (dt/eta)/(1 + dt/eta) dD/ds (docs/theory.md, 'Viscous regularisation')
+            if (.not. present(dt)) then
+               status = STATUS_BAD_TIME_INCREMENT
+               return
+            end if
+            if (.not. (is_finite(dt) .and. dt >= 0.0_dp)) then
+               status = STATUS_BAD_TIME_INCREMENT
+               return
+            end if
+            ratio = dt/params%viscosity
+            if (is_finite(ratio)) then
+               weight = ratio/(1.0_dp + ratio)
+            else
+               weight = 1.0_dp                ! dt/eta beyond the range of reals: inviscid
+            end if
+            d = max(old%d, old%d + weight*(d - old%d)) + 0.0_dp
+            dd_ds = weight*dd_ds
          end if
          call coefficients_at(params, d, c, dc, status)
          if (status /= STATUS_OK) return
@@ -112,6 +139,7 @@ contains
          if (status /= STATUS_OK) return
       end if
 
+      if (params%damage_law /= DAMAGE_DISPLACEMENT) new%d_inviscid = d
       new%d = d
       new%slip = r%slip
       new%regime = r%regime

@@ -67,8 +67,12 @@ module interphase_layout
    !> stiffness out over 0 < s_N < chi |s_T|, so that the traction is continuous where the
    !> crack opens. Micromechanical model (the simplified one has no jump), both damage laws.
    integer, parameter, public :: OPT_CONTACT_BAND = 2
+   !> Option offset: the viscosity eta (s) of the damage's viscous regularisation (Duvaut-Lions,
+   !> as Abaqus offers for its cohesive elements): D_v = (D_v,n + (dt/eta) D)/(1 + dt/eta), the
+   !> response and the tangent at D_v; 0 (the default) is off. Displacement-driven law only.
+   integer, parameter, public :: OPT_VISCOSITY = 3
    !> Number of option constants.
-   integer, parameter, public :: NPROPS_OPTIONS = 2
+   integer, parameter, public :: NPROPS_OPTIONS = 3
    !> Admissible contact band widths: chi = 0 or CONTACT_BAND_MIN <= chi <= CONTACT_BAND_MAX (-).
    !> Below 0.1 the band's normal stiffness, ~ q max|W''|/(2 chi^2), could exceed the intact
    !> crack's (which the VUMAT's stable increment assumes), and its energy is far from convex.
@@ -97,10 +101,15 @@ module interphase_layout
          real(GROWTH_FIXED_LAMBDA, dp), 'use 0 (conserve the integrated slip pi = D ufbar lambda, the '// &
          'default) or 1 (hold lambda, the paper''s form)'), &
       option_spec_type('contact band chi', OPTION_SWITCHED_RANGE, 0.0_dp, CONTACT_BAND_MIN, CONTACT_BAND_MAX, &
-         'must be 0 (the paper''s open/closed switch) or finite in [0.1, 10]')]
+         'must be 0 (the paper''s open/closed switch) or finite in [0.1, 10]'), &
+      option_spec_type('viscosity eta', OPTION_SWITCHED_RANGE, 0.0_dp, 1.0e-20_dp, 1.0e20_dp, &
+         'must be 0 (no viscous regularisation) or finite in [1e-20, 1e20] s')]
 
    ! ---- STATEV (solution-dependent state, `*DEPVAR`) -----------------------------------------
-   !> Damage D = a/b (-), history maximum, 0 <= D <= 1.
+   ! The slots the UMAT and the VUMAT share come first (1 .. NSTATV_SHARED), the VUMAT's own after
+   ! them, so that a new shared slot never moves a shared one.
+   !> Damage D = a/b (-), 0 <= D <= 1, the damage the response uses: the history maximum of the
+   !> damage law's D, or with viscous regularisation (OPT_VISCOSITY) the regularised D_v.
    integer, parameter, public :: SV_DAMAGE = 1
    !> Frictional slip lambda, first tangential component (mm).
    integer, parameter, public :: SV_SLIP_1 = 2
@@ -108,21 +117,28 @@ module interphase_layout
    integer, parameter, public :: SV_SLIP_2 = 3
    !> Regime of the last converged update (output only): one of the REGIME_* codes.
    integer, parameter, public :: SV_REGIME = 4
-   !> Number of STATEV slots interphase uses (NSTATV must be at least this).
+   !> With viscous regularisation only: the damage law's own (inviscid) D, history maximum
+   !> (-), D_v <= D <= 1. Not read nor written without it.
+   integer, parameter, public :: SV_DAMAGE_INVISCID = 5
+   !> Number of STATEV slots interphase uses without viscous regularisation (NSTATV must be at
+   !> least this).
    integer, parameter, public :: NSTATV_REQUIRED = 4
+   !> Number of STATEV slots with viscous regularisation (NSTATV must be at least this then).
+   integer, parameter, public :: NSTATV_VISCOUS = 5
+   !> Number of slots the UMAT and the VUMAT share.
+   integer, parameter, public :: NSTATV_SHARED = 5
 
    ! ---- STATEV slots of the VUMAT only (Abaqus/Explicit passes increments, not totals) -------
    !> VUMAT: total normal separation s_N accumulated from the increments (mm).
-   integer, parameter, public :: SV_SEP_N = 5
+   integer, parameter, public :: SV_SEP_N = NSTATV_SHARED + 1
    !> VUMAT: total tangential separation s_T1, first shear direction (mm).
-   integer, parameter, public :: SV_SEP_T1 = 6
+   integer, parameter, public :: SV_SEP_T1 = NSTATV_SHARED + 2
    !> VUMAT: total tangential separation s_T2, second shear direction (mm); stays 0 in 2-D.
-   integer, parameter, public :: SV_SEP_T2 = 7
+   integer, parameter, public :: SV_SEP_T2 = NSTATV_SHARED + 3
    !> VUMAT: failure flag, 0 = every update succeeded, 1 = an update at this point failed at
    !> some increment and its stress and state were held there (sticky; output only).
-   integer, parameter, public :: SV_FAILED = 8
+   integer, parameter, public :: SV_FAILED = NSTATV_SHARED + 4
    !> Number of STATEV slots the VUMAT uses (nstatev must be at least this).
-   integer, parameter, public :: NSTATV_VUMAT = 8
-
+   integer, parameter, public :: NSTATV_VUMAT = NSTATV_SHARED + 4
 
 end module interphase_layout

@@ -2,13 +2,14 @@
 module interphase_state
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
-   use interphase_params, only: SLIP_MAX
-   use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED
+   use interphase_params, only: SLIP_MAX, law_params_type
+   use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED, &
+      SV_DAMAGE_INVISCID, NSTATV_VISCOUS
    use interphase_enums, only: REGIME_INTACT, REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_BAD_STATE, STATUS_BAD_NSTATV, MESSAGE_LEN
    implicit none
    private
-   public :: interface_state_type, state_unpack, state_pack, count_invalid_states
+   public :: interface_state_type, state_unpack, state_pack, count_invalid_states, state_slots
 
    !> Bit pattern of 1.0_dp.
    integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
@@ -20,27 +21,39 @@ module interphase_state
 
    !> History variables of one interface point.
    type :: interface_state_type
-      real(dp) :: d = 0.0_dp                  !! damage D = a/b (-), history maximum
+      real(dp) :: d = 0.0_dp                  !! damage D = a/b (-) the response uses: the history
+                                              !! maximum, or with viscous regularisation D_v
       real(dp) :: slip(2) = 0.0_dp            !! frictional slip lambda (mm); slip(2) = 0 in 2-D
       integer :: regime = REGIME_INTACT       !! REGIME_* of the last update (output only)
+      real(dp) :: d_inviscid = 0.0_dp         !! with viscous regularisation: the damage law's own
+                                              !! D (history maximum), d <= d_inviscid <= 1
    end type interface_state_type
 
 contains
 
    !> Read the state from STATEV, checking it: 0 <= D <= 1, slip |lambda_i| <= SLIP_MAX (finite),
    !> a known regime code.
-   pure subroutine state_unpack(statev, ntens, state, status, message)
+   pure subroutine state_unpack(statev, ntens, state, status, message, viscous)
       real(dp), intent(in) :: statev(:)                  !! STATEV as given by the host
       integer, intent(in) :: ntens                       !! 2 (2-D) or 3 (3-D)
       type(interface_state_type), intent(out) :: state
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
+      !> the material has viscous regularisation: STATEV(SV_DAMAGE_INVISCID) is read too (default:
+      !> not, and d_inviscid = d)
+      logical, intent(in), optional :: viscous
+      logical :: with_inviscid
+      integer :: needed
 
       status = STATUS_OK
-      if (size(statev) < NSTATV_REQUIRED) then
+      with_inviscid = .false.
+      if (present(viscous)) with_inviscid = viscous
+      needed = merge(NSTATV_VISCOUS, NSTATV_REQUIRED, with_inviscid)
+      if (size(statev) < needed) then
          status = STATUS_BAD_NSTATV
-         write (message, '(a,i0,a,i0)') 'NSTATV = ', size(statev), &
-            ' but interphase needs at least ', NSTATV_REQUIRED
+         write (message, '(a,i0,a,i0,a)') 'NSTATV = ', size(statev), &
+            ' but interphase needs at least ', needed, trim(merge(' (viscous regularisation)', '                         ', &
+            with_inviscid))
          return
       end if
       state%d = statev(SV_DAMAGE)
@@ -61,7 +74,25 @@ contains
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_REGIME, ') regime = ', &
             statev(SV_REGIME), ' is not a regime code 0..3'
       end if
+      state%d_inviscid = state%d
+      if (status /= STATUS_OK .or. .not. with_inviscid) return
+      state%d_inviscid = statev(SV_DAMAGE_INVISCID)
+      ! D_v <= D <= 1 (the regularised damage never overtakes the damage law's)
+      if (damage_admissible(transfer(state%d_inviscid, 0_int64)) == 0) then
+         status = STATUS_BAD_STATE
+      else if (state%d_inviscid < state%d) then
+         status = STATUS_BAD_STATE
+      end if
+      if (status /= STATUS_OK) write (message, '(a,i0,a,es12.5,a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE_INVISCID, &
+         ') D = ', state%d_inviscid, ' must lie in [STATEV(', SV_DAMAGE, ') = ', state%d, ', 1]'
    end subroutine state_unpack
+
+   !> Number of STATEV slots a material's state takes: NSTATV_REQUIRED, or NSTATV_VISCOUS with
+   !> viscous regularisation.
+   pure integer function state_slots(params) result(n)
+      type(law_params_type), intent(in) :: params
+      n = merge(NSTATV_VISCOUS, NSTATV_REQUIRED, params%viscosity > 0.0_dp)
+   end function state_slots
 
    !> Number of points whose incoming state `state_unpack` would refuse, for a host that holds a
    !> block of points column by column (the VUMAT): one branch-free pass that vectorises, so the
@@ -124,14 +155,19 @@ contains
       end do
    end function regime_code
 
-   !> Store the state into STATEV (slots beyond NSTATV_REQUIRED are left alone).
-   pure subroutine state_pack(state, statev)
+   !> Store the state into STATEV (slots beyond NSTATV_REQUIRED, or NSTATV_VISCOUS with `viscous`,
+   !> are left alone).
+   pure subroutine state_pack(state, statev, viscous)
       type(interface_state_type), intent(in) :: state
       real(dp), intent(inout) :: statev(:)               !! STATEV, size >= NSTATV_REQUIRED
+      logical, intent(in), optional :: viscous           !! write STATEV(SV_DAMAGE_INVISCID) too
       statev(SV_DAMAGE) = state%d
       statev(SV_SLIP_1) = state%slip(1)
       statev(SV_SLIP_2) = state%slip(2)
       statev(SV_REGIME) = real(state%regime, dp)
+      if (present(viscous)) then
+         if (viscous) statev(SV_DAMAGE_INVISCID) = state%d_inviscid
+      end if
    end subroutine state_pack
 
 end module interphase_state

@@ -37,6 +37,7 @@ module interphase_status
    integer, parameter, public :: STATUS_RCURVE_NOT_LOADED = 24
    integer, parameter, public :: STATUS_SEPARATION_OUT_OF_RANGE = 25
    integer, parameter, public :: STATUS_BAD_HOST_INPUT = 26
+   integer, parameter, public :: STATUS_BAD_TIME_INCREMENT = 27
    ! ---- interpolation tables (interphase_spline): construction, then evaluation ----
    integer, parameter, public :: STATUS_SPLINE_TOO_FEW_POINTS = 40
    integer, parameter, public :: STATUS_SPLINE_BAD_SHAPE = 41
@@ -125,6 +126,7 @@ contains
       case (STATUS_SEPARATION_OUT_OF_RANGE); message = 'separation outside the admissible range |s_i| <= 1e20 mm'
       case (STATUS_BAD_HOST_INPUT);        message = 'incoming stress or energy from the host not finite, '// &
          'or the energy it gives overflows'
+      case (STATUS_BAD_TIME_INCREMENT);    message = 'time increment missing, negative or not finite (viscous regularisation)'
       case (STATUS_BAD_STATE);             message = 'state variables out of range or not finite'
       case (STATUS_BAD_COEFFICIENTS);      message = 'coefficient set not admissible at this damage'
       case (STATUS_SPLINE_TOO_FEW_POINTS); message = 'too few table points for the interpolation method'

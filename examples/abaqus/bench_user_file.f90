@@ -13,7 +13,7 @@ program bench_user_file
    implicit none
 
    !> Points per block, state variables (docs/abaqus.md), increments per cycle, cycles, runs.
-   integer, parameter :: NB = 4096, NSV = 8, NINC = 8, NCYCLE = 250, NRUN = 5
+   integer, parameter :: NB = 4096, NSV = 9, NINC = 8, NCYCLE = 250, NRUN = 5
    !> The simplified model with the paper's Table 1 data (PROPS as in docs/abaqus.md).
    real(dp), parameter :: PROPS(9) = [1.0_dp, 1.0_dp, 0.75_dp, 0.00044_dp, 0.04_dp, 0.00072_dp, 0.06_dp, &
       544000.0_dp/1127.0_dp, 32000.0_dp/161.0_dp]

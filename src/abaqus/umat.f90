@@ -19,7 +19,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_finite, only: is_finite, is_within
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
-      status_message
+      STATUS_BAD_TIME_INCREMENT, status_message
    use interphase_params, only: law_params_type, from_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
@@ -64,7 +64,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       call fail(status, SEVERITY_FATAL)
       return
    end if
-   call state_unpack(statev, ntens, old, status, message)
+   call state_unpack(statev, ntens, old, status, message, viscous=params%viscosity > 0.0_dp)
    if (status /= STATUS_OK) then
       call fail(status, SEVERITY_FATAL)
       return
@@ -93,8 +93,12 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    end if
    s(1:ntens) = stran + dstran
    call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
-      new, psi, status)
-   if (status == STATUS_RCURVE_OUT_OF_RANGE) then
+      new, psi, status, dtime)
+   if (status == STATUS_BAD_TIME_INCREMENT) then
+      write (message, '(a,es12.4,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
+      call fail(status, SEVERITY_FATAL)
+      return
+   else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
       ! the R-curve file does not reach the damage this point needs: a setup error
       write (message, '(a,a,g0.6,a,3es12.4)', iostat=status) rcurve_coverage(), '; the crack grows beyond it from D = ', &
          old%d, ' at separation (mm) ', s(1:ntens)
@@ -112,7 +116,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    sse = psi
    stress = traction(1:ntens)
    ddsdde = tangent(1:ntens, 1:ntens)
-   call state_pack(new, statev)
+   call state_pack(new, statev, viscous=params%viscosity > 0.0_dp)
 
 contains
 

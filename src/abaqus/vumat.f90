@@ -38,15 +38,15 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       tempnew, stretchnew, defgradnew, fieldnew, stressnew, statenew, enerinternnew, &
       enerinelasnew)
    use interphase_kinds, only: dp
-   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
-      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED
+   use interphase_layout, only: NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
+      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, STATUS_RCURVE_OUT_OF_RANGE, status_message, &
       STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_HOST_INPUT
    use interphase_finite, only: is_finite, is_within
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_params, only: law_params_type, from_props
-   use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states
+   use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states, state_slots
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
@@ -99,7 +99,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei_old, ep_old
    logical :: ok_host
    real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
-   logical :: blocked, packaging, uniform_density
+   logical :: blocked, packaging, uniform_density, viscous, bad_state
+   integer :: nsv   !! STATEV slots of the state (state_slots)
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    character(len=MESSAGE_LEN) :: message, first_message
@@ -129,6 +130,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          fatal_code = status
          exit update
       end if
+      viscous = params%viscosity > 0.0_dp
+      nsv = state_slots(params)
       ! a custom table or R-curve that was not loaded at start-up (VEXTERNALDB)
       call check_run_time_data(params, status, message)
       if (status /= STATUS_OK) then
@@ -180,10 +183,20 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             exit update
          end if
          ! (in 2-D the slip-2 column is not looked at: slip 1 stands in, so that it is not read)
-         if (count_invalid_states(n, nt, stateold(k0:k1, SV_DAMAGE), stateold(k0:k1, SV_SLIP_1), &
-               stateold(k0:k1, SV_SLIP_1 + nt - 1), stateold(k0:k1, SV_REGIME)) > 0) then
+         ! (with viscous regularisation the point update reads STATEV(SV_DAMAGE_INVISCID) too: every
+         ! point is checked by state_unpack then)
+         bad_state = count_invalid_states(n, nt, stateold(k0:k1, SV_DAMAGE), stateold(k0:k1, SV_SLIP_1), &
+            stateold(k0:k1, SV_SLIP_1 + nt - 1), stateold(k0:k1, SV_REGIME)) > 0
+         if (viscous .and. .not. bad_state) then
             do km = k0, k1
-               call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
+               call state_unpack(stateold(km, 1:nsv), ntens, old, status, message, viscous)
+               if (status /= STATUS_OK) bad_state = .true.
+               if (bad_state) exit
+            end do
+         end if
+         if (bad_state) then
+            do km = k0, k1
+               call state_unpack(stateold(km, 1:nsv), ntens, old, status, message, viscous)
                if (status /= STATUS_OK) exit
             end do
             write (first_message, '(a,i0,a,a)') 'block point ', km, ': ', trim(message)
@@ -216,6 +229,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                statenew(km, SV_SEP_N) = stateold(km, SV_SEP_N) + ds(k, 1)
                statenew(km, SV_SEP_T1) = stateold(km, SV_SEP_T1) + ds(k, 2)
                statenew(km, SV_FAILED) = stateold(km, SV_FAILED)
+               statenew(km, SV_DAMAGE_INVISCID) = stateold(km, SV_DAMAGE_INVISCID)
             end do
          else
             do k = 1, n
@@ -227,6 +241,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                statenew(km, SV_SEP_T1) = stateold(km, SV_SEP_T1) + ds(k, 2)
                statenew(km, SV_SEP_T2) = stateold(km, SV_SEP_T2) + ds(k, 3)
                statenew(km, SV_FAILED) = stateold(km, SV_FAILED)
+               statenew(km, SV_DAMAGE_INVISCID) = stateold(km, SV_DAMAGE_INVISCID)
             end do
          end if
 
@@ -255,9 +270,9 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             do k = 1, n
                km = k0 + k - 1
                ! checked above, cannot fail here
-               call state_unpack(stateold(km, 1:NSTATV_REQUIRED), ntens, old, status, message)
+               call state_unpack(stateold(km, 1:nsv), ntens, old, status, message, viscous)
                call interface_update(params, old, statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1), &
-                  traction, tangent(1:ntens, 1:ntens), new, psi(k), status)
+                  traction, tangent(1:ntens, 1:ntens), new, psi(k), status, dt)
                if (status == STATUS_RCURVE_OUT_OF_RANGE) then
                   ! the R-curve file does not reach the damage this point needs: a setup error
                   write (message, '(a,a,i0,a,g0.6)', iostat=status) rcurve_coverage(), '; at block point ', km, &
@@ -274,7 +289,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   psi(k) = 0.0_dp
                end if
                stressnew(km, 1:ntens) = traction(1:ntens)
-               call state_pack(new, statenew(km, 1:NSTATV_REQUIRED))
+               call state_pack(new, statenew(km, 1:nsv), viscous)
             end do
          end if
 
@@ -366,9 +381,9 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       if (nfailed > 0) then
          block
             character(len=2*MESSAGE_LEN) :: full
-            write (full, '(a,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
-               ' points failed and were held at their old stress and state (STATEV(8) = 1); first at block point ', &
-               first_failed, ': ', status_message(first_status), ': ', trim(first_message)
+            write (full, '(a,a,i0,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
+               ' points failed and were held at their old stress and state (STATEV(', SV_FAILED, &
+               ') = 1); first at block point ', first_failed, ': ', status_message(first_status), ': ', trim(first_message)
             call interphase_host_message(SEVERITY_WARNING, trim(full))
          end block
       end if

@@ -35,7 +35,7 @@ program test_fuzz
    use interphase_finite, only: is_finite
    use interphase_layout, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, RCURVE_CONSTANT, RCURVE_EQUIVALENT, NSTATV_REQUIRED, SV_DAMAGE, &
-      SV_FAILED, SV_REGIME, REGIME_OPEN, REGIME_SLIP, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
+      SV_FAILED, SV_REGIME, SV_SEP_N, REGIME_OPEN, REGIME_SLIP, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_FATAL, file_loader
    use interphase_params, only: SEPARATION_MAX, law_params_type, from_props
    use interphase_coefficients, only: coefficient_set_type
@@ -347,7 +347,8 @@ contains
                call check(same_bits(before%statev, points(k)%statev) .and. same_bits(before%stress, points(k)%stress), &
                   where, 'the UMAT changed its outputs on a failed step')
                if (.not. vumat_ok) then
-                  call check(same_bits(vblock%state(k, 1:ntens + 4), [before%statev, sep(1:ntens, k)]), where, &
+                  call check(same_bits(vblock%state(k, 1:NSTATV_REQUIRED), before%statev) .and. &
+                     same_bits(vblock%state(k, SV_SEP_N:SV_SEP_N + ntens - 1), sep(1:ntens, k)), where, &
                      'the VUMAT changed the state of a failed point')
                end if
                cycle
