@@ -59,6 +59,9 @@ module interphase_driver_case
       !> option: the contact band width chi (-), the continuous variant of the open/closed switch
       !> at s_N = 0 (0: the paper's two-state law, the default); unset leaves it out of PROPS
       real(dp) :: contact_band = UNSET_REAL
+      !> option: the viscosity eta (s) of the damage's viscous regularisation (0: none, the
+      !> default); unset leaves it out of PROPS
+      real(dp) :: viscosity = UNSET_REAL
    end type material_entries_type
 
    !> Everything the driver needs from one case file.
@@ -112,11 +115,11 @@ contains
    !> of interphase-fe2d: the same entries, packed by `material_props`) and their kinds.
    pure function material_entry_kinds(group) result(kinds)
       character(len=*), intent(in) :: group                !! the group's name, lower case
-      type(entry_kind_type) :: kinds(17)
+      type(entry_kind_type) :: kinds(18)
       character(len=*), parameter :: STRINGS(6) = [character(len=11) :: 'model', 'damage_law', 'table', &
          'rcurve', 'rcurve_file', 'growth_slip']
-      character(len=*), parameter :: REALS(11) = [character(len=12) :: 'mu', 's0_n', 'sf_n', 's0_t', 'sf_t', &
-         'k_n', 'k_t', 'd0', 'g_ci', 'g_cii', 'contact_band']
+      character(len=*), parameter :: REALS(12) = [character(len=12) :: 'mu', 's0_n', 'sf_n', 's0_t', 'sf_t', &
+         'k_n', 'k_t', 'd0', 'g_ci', 'g_cii', 'contact_band', 'viscosity']
       integer :: i
       do i = 1, size(STRINGS)
          kinds(i) = entry_kind_type(group//'.'//trim(STRINGS(i)), KIND_STRING)
@@ -165,9 +168,9 @@ contains
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       type(material_entries_type) :: e
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
-      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band
+      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band, viscosity
       namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii, growth_slip, contact_band
+         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity
       character(len=:), allocatable :: where
       integer :: ios
       character(len=512) :: iomsg
@@ -178,6 +181,7 @@ contains
          k_n, k_t, d0, g_ci, g_cii)
       growth_slip = e%growth_slip
       contact_band = e%contact_band
+      viscosity = e%viscosity
       read (unit, nml=material, iostat=ios, iomsg=iomsg)
       if (ios == iostat_end) then
          message = where//'group not found (expected "&material ... /")'
@@ -190,6 +194,7 @@ contains
          sf_t, k_n, k_t, d0, g_ci, g_cii)
       e%growth_slip = growth_slip
       e%contact_band = contact_band
+      e%viscosity = viscosity
       call material_props(e, where, directory_of(run%path), run%props, run%table_path, run%rcurve_path, &
          ok, message)
    end subroutine read_material
@@ -367,6 +372,10 @@ contains
       if (.not. is_unset(e%contact_band)) then
          if (.not. finite_entry('contact_band', e%contact_band)) return
          p%contact_band = e%contact_band
+      end if
+      if (.not. is_unset(e%viscosity)) then
+         if (.not. finite_entry('viscosity', e%viscosity)) return
+         p%viscosity = e%viscosity
       end if
       ! PROPS from the one encoder (interphase_params); the values are checked by the UMAT's
       ! decoder, whose message names the PROPS index

@@ -12,7 +12,7 @@
 !> reached) ends the replay at once with that message: no smaller step can cure it.
 module interphase_driver_replay
    use interphase_kinds, only: dp
-   use interphase_layout, only: NSTATV_REQUIRED
+   use interphase_layout, only: NSTATV_VISCOUS
    use interphase_abaqus_interfaces, only: umat
    use interphase_driver_case, only: case_type
    use interphase_driver_history, only: history_type
@@ -231,7 +231,7 @@ contains
       real(dp), intent(in) :: t0                  !! initial time
       type(point_state_type) :: point
       point%time = t0
-      allocate (point%separation(ntens), point%stress(ntens), point%statev(NSTATV_REQUIRED))
+      allocate (point%separation(ntens), point%stress(ntens), point%statev(NSTATV_VISCOUS))
       point%separation = 0.0_dp
       point%stress = 0.0_dp
       point%statev = 0.0_dp

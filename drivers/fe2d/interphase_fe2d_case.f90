@@ -260,9 +260,9 @@ contains
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       type(material_entries_type) :: e
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
-      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band
+      real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band, viscosity
       namelist /joint/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii, growth_slip, contact_band
+         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity
       integer :: ios
       character(len=512) :: iomsg
 
@@ -271,6 +271,7 @@ contains
          k_n, k_t, d0, g_ci, g_cii)
       growth_slip = e%growth_slip
       contact_band = e%contact_band
+      viscosity = e%viscosity
       rewind (unit)
       read (unit, nml=joint, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'joint', ios, iomsg, ok, message)
@@ -279,6 +280,7 @@ contains
          sf_t, k_n, k_t, d0, g_ci, g_cii)
       e%growth_slip = growth_slip
       e%contact_band = contact_band
+      e%viscosity = viscosity
       call material_props(e, run%path//': &joint: ', directory_of(run%path), run%props, run%table_path, &
          run%rcurve_path, ok, message)
    end subroutine read_joint

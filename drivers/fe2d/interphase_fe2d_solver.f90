@@ -22,7 +22,7 @@
 module interphase_fe2d_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
-   use interphase_layout, only: NSTATV_REQUIRED, SV_DAMAGE, SV_SLIP_1
+   use interphase_layout, only: NSTATV_VISCOUS, SV_DAMAGE, SV_SLIP_1
    use interphase_abaqus_interfaces, only: umat
    use interphase_fe2d_case, only: fe2d_case_type
    use interphase_fe2d_mesh, only: fe2d_mesh_type, q4_stiffness, interface_b_matrix
@@ -149,7 +149,7 @@ contains
       u_n = 0.0_dp
       fint = 0.0_dp
       npts = mesh%npoint*mesh%nintf
-      allocate (sep_n(2, npts), stress_n(2, npts), statev_n(NSTATV_REQUIRED, npts), sse_n(npts), &
+      allocate (sep_n(2, npts), stress_n(2, npts), statev_n(NSTATV_VISCOUS, npts), sse_n(npts), &
          spd_n(npts), area(npts), joint_sign(npts))
       sep_n = 0.0_dp
       stress_n = 0.0_dp
@@ -197,7 +197,7 @@ contains
       !> A setup error (bad PROPS) is refused by the UMAT at any increment size: ask once.
       subroutine probe_material(ok)
          logical, intent(out) :: ok
-         real(dp) :: stress1(2), statev1(NSTATV_REQUIRED), ddsdde(2, 2), sse1, spd1, scd, rpl
+         real(dp) :: stress1(2), statev1(NSTATV_VISCOUS), ddsdde(2, 2), sse1, spd1, scd, rpl
          real(dp) :: ddsddt(2), drplde(2), drpldt, zero2(2), predef(1), dpred(1), eye(3, 3), pnewdt
          integer :: a
 
@@ -221,7 +221,7 @@ contains
          pnewdt = 1.0_dp
          call umat(stress1, statev1, ddsdde, sse1, spd1, scd, rpl, ddsddt, drplde, drpldt, &
             zero2, zero2, [0.0_dp, 0.0_dp], 0.0_dp, 0.0_dp, 0.0_dp, predef, dpred, CMNAME, 1, 1, &
-            2, NSTATV_REQUIRED, run%props, size(run%props), [0.0_dp, 0.0_dp, 0.0_dp], eye, &
+            2, NSTATV_VISCOUS, run%props, size(run%props), [0.0_dp, 0.0_dp, 0.0_dp], eye, &
             pnewdt, 1.0_dp, eye, eye, 1, 1, 1, 1, [1, 0, 0, 0], 0)
          ok = pnewdt >= 1.0_dp
          if (.not. ok) result%message = '&joint: the UMAT rejected the interface material '// &
@@ -476,7 +476,7 @@ contains
                point_pnewdt = 1.0_dp
                call umat(stress(:, ip), statev(:, ip), ddsdde, sse(ip), spd(ip), scd, rpl, &
                   ddsddt, drplde, drpldt, sep_n(:, ip), dstran, time, dt, 0.0_dp, 0.0_dp, &
-                  predef, dpred, CMNAME, 1, 1, 2, NSTATV_REQUIRED, run%props, size(run%props), &
+                  predef, dpred, CMNAME, 1, 1, 2, NSTATV_VISCOUS, run%props, size(run%props), &
                   coords, drot, point_pnewdt, 2.0_dp*jac, dfgrd, dfgrd, e, p, 1, 1, jstep, kinc)
                if (point_pnewdt < 1.0_dp) then
                   pnewdt = min(pnewdt, point_pnewdt)
