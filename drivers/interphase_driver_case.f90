@@ -18,7 +18,7 @@ module interphase_driver_case
    use interphase_kinds, only: dp
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, &
-      GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
+      GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE
    use interphase_params, only: law_params_type, to_props
    use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
    use interphase_micro_coefficients, only: load_custom_table
@@ -62,6 +62,9 @@ module interphase_driver_case
       !> option: the viscosity eta (s) of the damage's viscous regularisation (0: none, the
       !> default); unset leaves it out of PROPS
       real(dp) :: viscosity = UNSET_REAL
+      !> option: which stiffness DDSDDE is, 'consistent' (the default), 'symmetric' (its
+      !> symmetric part) or 'fixed-damage' (symmetric, positive semi-definite)
+      character(len=ENTRY_LEN) :: stiffness = ''
    end type material_entries_type
 
    !> Everything the driver needs from one case file.
@@ -115,9 +118,9 @@ contains
    !> of interphase-fe2d: the same entries, packed by `material_props`) and their kinds.
    pure function material_entry_kinds(group) result(kinds)
       character(len=*), intent(in) :: group                !! the group's name, lower case
-      type(entry_kind_type) :: kinds(18)
-      character(len=*), parameter :: STRINGS(6) = [character(len=11) :: 'model', 'damage_law', 'table', &
-         'rcurve', 'rcurve_file', 'growth_slip']
+      type(entry_kind_type) :: kinds(19)
+      character(len=*), parameter :: STRINGS(7) = [character(len=11) :: 'model', 'damage_law', 'table', &
+         'rcurve', 'rcurve_file', 'growth_slip', 'stiffness']
       character(len=*), parameter :: REALS(12) = [character(len=12) :: 'mu', 's0_n', 'sf_n', 's0_t', 'sf_t', &
          'k_n', 'k_t', 'd0', 'g_ci', 'g_cii', 'contact_band', 'viscosity']
       integer :: i
@@ -169,8 +172,9 @@ contains
       type(material_entries_type) :: e
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
       real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band, viscosity
+      character(len=ENTRY_LEN) :: stiffness
       namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity
+         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity, stiffness
       character(len=:), allocatable :: where
       integer :: ios
       character(len=512) :: iomsg
@@ -182,6 +186,7 @@ contains
       growth_slip = e%growth_slip
       contact_band = e%contact_band
       viscosity = e%viscosity
+      stiffness = e%stiffness
       read (unit, nml=material, iostat=ios, iomsg=iomsg)
       if (ios == iostat_end) then
          message = where//'group not found (expected "&material ... /")'
@@ -195,6 +200,7 @@ contains
       e%growth_slip = growth_slip
       e%contact_band = contact_band
       e%viscosity = viscosity
+      e%stiffness = stiffness
       call material_props(e, where, directory_of(run%path), run%props, run%table_path, run%rcurve_path, &
          ok, message)
    end subroutine read_material
@@ -377,6 +383,18 @@ contains
          if (.not. finite_entry('viscosity', e%viscosity)) return
          p%viscosity = e%viscosity
       end if
+      select case (to_lower(trim(adjustl(e%stiffness))))
+      case ('', 'consistent')
+         p%stiffness = STIFFNESS_CONSISTENT
+      case ('symmetric')
+         p%stiffness = STIFFNESS_SYMMETRIC
+      case ('fixed-damage')
+         p%stiffness = STIFFNESS_FIXED_DAMAGE
+      case default
+         message = where//"stiffness must be 'consistent' (the default), 'symmetric' or 'fixed-damage', got '"// &
+            trim(adjustl(e%stiffness))//"'"
+         return
+      end select
       ! PROPS from the one encoder (interphase_params); the values are checked by the UMAT's
       ! decoder, whose message names the PROPS index
       props = to_props(p)

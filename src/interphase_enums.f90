@@ -42,5 +42,14 @@ module interphase_enums
    integer, parameter, public :: REGIME_STICK = 2
    !> Regime code: crack closed, faces slip (Coulomb).
    integer, parameter, public :: REGIME_SLIP = 3
+   !> PROPS(nb + OPT_STIFFNESS) value, the default: DDSDDE is the consistent tangent (unsymmetric
+   !> while damage grows or the crack slips: Abaqus needs UNSYMM).
+   integer, parameter, public :: STIFFNESS_CONSISTENT = 0
+   !> PROPS(nb + OPT_STIFFNESS) value: DDSDDE is the consistent tangent's symmetric part.
+   integer, parameter, public :: STIFFNESS_SYMMETRIC = 1
+   !> PROPS(nb + OPT_STIFFNESS) value: DDSDDE is the tangent at fixed damage, without the
+   !> friction's coupling of the shear traction to s_N: symmetric and positive semi-definite
+   !> (for hosts that assemble only a symmetric stiffness; Newton then converges linearly).
+   integer, parameter, public :: STIFFNESS_FIXED_DAMAGE = 2
 
 end module interphase_enums

@@ -29,7 +29,8 @@ module interphase_kernel
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
-   use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI
+   use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
+      REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, STATUS_BAD_TIME_INCREMENT, &
       STATUS_SEPARATION_OUT_OF_RANGE
    use interphase_coefficients, only: coefficient_set_type
@@ -62,7 +63,7 @@ contains
       type(coefficient_set_type) :: c, dc
       type(response_type) :: r
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
-      real(dp) :: d_law, ratio, weight
+      real(dp) :: d_law, ratio, weight, d_v
       integer :: ntens, nt, j
 
       ntens = size(s)
@@ -117,7 +118,12 @@ contains
             else
                weight = 1.0_dp                ! dt/eta beyond the range of reals: inviscid
             end if
-            d = max(old%d, old%d + weight*(d - old%d)) + 0.0_dp
+            d_v = max(old%d, old%d + weight*(d - old%d)) + 0.0_dp
+            ! where the step is below the resolution of D_v (weight (D - D_v,n) < half an ulp: it
+            ! happens as D_v approaches D = 1, where the micromechanical stiffness still falls
+            ! like 1/ln(1/(1 - D_v)) and would stay at that of 1 - D_v = 1e-16), D_v takes D
+            if (.not. (d_v > old%d) .and. d > old%d) d_v = d
+            d = d_v
             dd_ds = weight*dd_ds
          end if
          call coefficients_at(params, d, c, dc, status)
@@ -144,9 +150,19 @@ contains
       new%slip = r%slip
       new%regime = r%regime
       traction(1:ntens) = r%traction(1:ntens)
-      do j = 1, ntens
-         tangent(1:ntens, j) = r%tangent(1:ntens, j) + r%dtrac_dd(1:ntens)*dd_ds(j)
-      end do
+      select case (params%stiffness)
+      case (STIFFNESS_FIXED_DAMAGE)
+         ! the tangent at fixed D, without the slipping crack's coupling of the shear traction to
+         ! s_N (through the friction bound mu sigma): symmetric, positive semi-definite
+         tangent(1:ntens, 1:ntens) = r%tangent(1:ntens, 1:ntens)
+         if (r%regime == REGIME_SLIP) tangent(2:ntens, 1) = 0.0_dp
+      case default
+         do j = 1, ntens
+            tangent(1:ntens, j) = r%tangent(1:ntens, j) + r%dtrac_dd(1:ntens)*dd_ds(j)
+         end do
+         if (params%stiffness == STIFFNESS_SYMMETRIC) &
+            tangent(1:ntens, 1:ntens) = 0.5_dp*(tangent(1:ntens, 1:ntens) + transpose(tangent(1:ntens, 1:ntens)))
+      end select
       psi = r%psi
    end subroutine interface_update
 

@@ -8,13 +8,15 @@ module interphase_layout
    use interphase_enums, only: TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, &
       DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, &
-      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, &
+      STIFFNESS_FIXED_DAMAGE
    implicit none
    private
    public :: TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, &
       DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, &
-      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, &
+      STIFFNESS_FIXED_DAMAGE
 
    ! ---- PROPS (material constants, `*USER MATERIAL, CONSTANTS=...`) --------------------------
    !> Model selector: MODEL_SIMPLIFIED or MODEL_MICROMECHANICAL.
@@ -71,8 +73,12 @@ module interphase_layout
    !> as Abaqus offers for its cohesive elements): D_v = (D_v,n + (dt/eta) D)/(1 + dt/eta), the
    !> response and the tangent at D_v; 0 (the default) is off. Displacement-driven law only.
    integer, parameter, public :: OPT_VISCOSITY = 3
+   !> Option offset: which stiffness DDSDDE is (STIFFNESS_*): the consistent tangent (0, the
+   !> default), its symmetric part (1), or the tangent at fixed damage without the friction's
+   !> normal coupling (2, symmetric and positive semi-definite). The traction is the same.
+   integer, parameter, public :: OPT_STIFFNESS = 4
    !> Number of option constants.
-   integer, parameter, public :: NPROPS_OPTIONS = 3
+   integer, parameter, public :: NPROPS_OPTIONS = 4
    !> Admissible contact band widths: chi = 0 or CONTACT_BAND_MIN <= chi <= CONTACT_BAND_MAX (-).
    !> Below 0.1 the band's normal stiffness, ~ q max|W''|/(2 chi^2), could exceed the intact
    !> crack's (which the VUMAT's stable increment assumes), and its energy is far from convex.
@@ -103,7 +109,10 @@ module interphase_layout
       option_spec_type('contact band chi', OPTION_SWITCHED_RANGE, 0.0_dp, CONTACT_BAND_MIN, CONTACT_BAND_MAX, &
          'must be 0 (the paper''s open/closed switch) or finite in [0.1, 10]'), &
       option_spec_type('viscosity eta', OPTION_SWITCHED_RANGE, 0.0_dp, 1.0e-20_dp, 1.0e20_dp, &
-         'must be 0 (no viscous regularisation) or finite in [1e-20, 1e20] s')]
+         'must be 0 (no viscous regularisation) or finite in [1e-20, 1e20] s'), &
+      option_spec_type('stiffness', OPTION_SELECTOR, real(STIFFNESS_CONSISTENT, dp), 0.0_dp, &
+         real(STIFFNESS_FIXED_DAMAGE, dp), 'use 0 (the consistent tangent), 1 (its symmetric part) or 2 '// &
+         '(the tangent at fixed damage without the friction''s normal coupling)')]
 
    ! ---- STATEV (solution-dependent state, `*DEPVAR`) -----------------------------------------
    ! The slots the UMAT and the VUMAT share come first (1 .. NSTATV_SHARED), the VUMAT's own after

@@ -8,7 +8,7 @@ module interphase_params
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
       PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, PROP_TABLE, NPROPS_MICROMECHANICAL, LFM_D0, &
       LFM_RCURVE, LFM_GC_I, LFM_GC_II, NPROPS_FRACTURE_EXTRA, OPT_GROWTH_SLIP, NPROPS_OPTIONS, &
-      OPT_CONTACT_BAND, OPT_VISCOSITY, OPTION_SPECS, OPTION_SELECTOR, option_spec_type
+      OPT_CONTACT_BAND, OPT_VISCOSITY, OPT_STIFFNESS, OPTION_SPECS, OPTION_SELECTOR, option_spec_type
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_CONSTANT, RCURVE_EQUIVALENT, &
       RCURVE_TABULATED, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
@@ -69,6 +69,7 @@ module interphase_params
       integer :: growth_slip = GROWTH_FIXED_PI       !! option: the crack faces' slip while the crack grows, GROWTH_*
       real(dp) :: contact_band = 0.0_dp              !! option: contact band width chi (-), 0 = the paper's two-state law
       real(dp) :: viscosity = 0.0_dp                 !! option: viscosity eta of the damage (s), 0 = none
+      integer :: stiffness = 0                       !! option: which stiffness DDSDDE is, STIFFNESS_*
       real(dp) :: eta_n = 0.0_dp                     !! eta_N = s0_N/sf_N (-), eq 13
       real(dp) :: eta_t = 0.0_dp                     !! eta_T = s0_T/sf_T (-), eq 13
       real(dp) :: inv_s0_n = 0.0_dp                  !! 1/s0_N (1/mm), for the damage law
@@ -196,6 +197,7 @@ contains
       params%growth_slip = nint(values(OPT_GROWTH_SLIP))
       params%contact_band = values(OPT_CONTACT_BAND)
       params%viscosity = values(OPT_VISCOSITY)
+      params%stiffness = nint(values(OPT_STIFFNESS))
    end subroutine set_options
 
    !> The PROPS array (docs/abaqus.md) of a parameter set: the one encoder of PROPS, the inverse
@@ -229,6 +231,7 @@ contains
       values(OPT_GROWTH_SLIP) = real(params%growth_slip, dp)
       values(OPT_CONTACT_BAND) = params%contact_band
       values(OPT_VISCOSITY) = params%viscosity
+      values(OPT_STIFFNESS) = real(params%stiffness, dp)
       nlast = 0
       do k = 1, NPROPS_OPTIONS
          if (.not. same_bits(values(k), OPTION_SPECS(k)%default)) nlast = k

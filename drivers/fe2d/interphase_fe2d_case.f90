@@ -61,11 +61,14 @@ module interphase_fe2d_case
       real(dp) :: min_increment = 1.0e-6_dp            !! smallest increment / nominal one
       character(len=:), allocatable :: output          !! CSV path (relative to --output-dir)
       logical :: plot = .true.                         !! PNG wanted
+      !> assemble only the symmetric part of DDSDDE (as CalculiX does, and Abaqus without
+      !> UNSYMM): `&loading assembly = 'symmetric'`; default 'unsymmetric'
+      logical :: symmetric_assembly = .false.
    end type fe2d_case_type
 
    !> The entries of the groups other than `&joint` (whose entries are the point driver's
    !> `&material` ones, `material_entry_kinds`) and their kinds, for the pre-check.
-   type(entry_kind_type), parameter :: FE2D_ENTRIES(20) = [ &
+   type(entry_kind_type), parameter :: FE2D_ENTRIES(21) = [ &
       entry_kind_type('geometry.bricks', KIND_INTEGER), entry_kind_type('geometry.brick_length', KIND_REAL), &
       entry_kind_type('geometry.brick_height', KIND_REAL), entry_kind_type('geometry.thickness', KIND_REAL), &
       entry_kind_type('geometry.sides', KIND_STRING), entry_kind_type('mesh.nx', KIND_INTEGER), &
@@ -76,7 +79,8 @@ module interphase_fe2d_case
       entry_kind_type('loading.history', KIND_STRING), entry_kind_type('loading.increments', KIND_INTEGER), &
       entry_kind_type('loading.tolerance', KIND_REAL), entry_kind_type('loading.displacement_tolerance', KIND_REAL), &
       entry_kind_type('loading.max_iterations', KIND_INTEGER), entry_kind_type('loading.min_increment', KIND_REAL), &
-      entry_kind_type('loading.output', KIND_STRING), entry_kind_type('loading.plot', KIND_LOGICAL)]
+      entry_kind_type('loading.output', KIND_STRING), entry_kind_type('loading.plot', KIND_LOGICAL), &
+      entry_kind_type('loading.assembly', KIND_STRING)]
 
 contains
 
@@ -261,8 +265,9 @@ contains
       type(material_entries_type) :: e
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
       real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band, viscosity
+      character(len=ENTRY_LEN) :: stiffness
       namelist /joint/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity
+         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity, stiffness
       integer :: ios
       character(len=512) :: iomsg
 
@@ -272,6 +277,7 @@ contains
       growth_slip = e%growth_slip
       contact_band = e%contact_band
       viscosity = e%viscosity
+      stiffness = e%stiffness
       rewind (unit)
       read (unit, nml=joint, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'joint', ios, iomsg, ok, message)
@@ -281,6 +287,7 @@ contains
       e%growth_slip = growth_slip
       e%contact_band = contact_band
       e%viscosity = viscosity
+      e%stiffness = stiffness
       call material_props(e, run%path//': &joint: ', directory_of(run%path), run%props, run%table_path, &
          run%rcurve_path, ok, message)
    end subroutine read_joint
@@ -292,11 +299,11 @@ contains
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       real(dp) :: precompression, tolerance, displacement_tolerance, min_increment
       integer :: precompression_increments, increments, max_iterations, ios
-      character(len=ENTRY_LEN) :: history, output
+      character(len=ENTRY_LEN) :: history, output, assembly
       logical :: plot
       character(len=512) :: iomsg
       namelist /loading/ precompression, precompression_increments, history, increments, &
-         tolerance, displacement_tolerance, max_iterations, min_increment, output, plot
+         tolerance, displacement_tolerance, max_iterations, min_increment, output, plot, assembly
       character(len=:), allocatable :: where
 
       where = run%path//': &loading: '
@@ -310,6 +317,7 @@ contains
       max_iterations = run%max_iterations
       min_increment = run%min_increment
       plot = run%plot
+      assembly = 'unsymmetric'
       rewind (unit)
       read (unit, nml=loading, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'loading', ios, iomsg, ok, message)
@@ -362,6 +370,16 @@ contains
          run%output = trim(adjustl(output))
       end if
       run%plot = plot
+      select case (trim(adjustl(assembly)))
+      case ('unsymmetric')
+         run%symmetric_assembly = .false.
+      case ('symmetric')
+         run%symmetric_assembly = .true.
+      case default
+         message = where//"assembly must be 'unsymmetric' (the default) or 'symmetric', got '"// &
+            trim(adjustl(assembly))//"'"
+         return
+      end select
       ok = .true.
    end subroutine read_loading
 

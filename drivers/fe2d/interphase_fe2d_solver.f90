@@ -483,6 +483,8 @@ contains
                   cycle
                end if
                fe = fe + matmul(transpose(bm), stress(:, ip))*area(ip)
+               ! a host that assembles only the symmetric part (CalculiX, Abaqus without UNSYMM)
+               if (run%symmetric_assembly) ddsdde = 0.5_dp*(ddsdde + transpose(ddsdde))
                ke = ke + matmul(transpose(bm), matmul(options%tangent_scale*ddsdde, bm))*area(ip)
             end do
             if (pnewdt < 1.0_dp) return
