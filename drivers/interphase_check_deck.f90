@@ -18,7 +18,7 @@ program interphase_check_deck
    use interphase_finite, only: is_finite
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
-      RCURVE_EQUIVALENT, &
+      RCURVE_EQUIVALENT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
       GROWTH_FIXED_LAMBDA
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props
@@ -254,6 +254,7 @@ contains
       else
          associate (mat => materials(m))
             where = path//':'//int_to_string(mat%user_line)//': *USER MATERIAL of '//trim(mat%name)
+            status = -1
             if (mat%nconstants /= mat%nread) then
                call record_failure(where//': CONSTANTS='//int_to_string(mat%nconstants)//' but '//int_to_string(mat%nread)// &
                   ' values follow', nfail)
@@ -288,14 +289,25 @@ contains
                end if
             end if
             depvar_needed = merge(NSTATV_VUMAT, NSTATV_REQUIRED, explicit)
+            ! (params is the decoded material when from_props succeeded above)
+            if (status == STATUS_OK .and. .not. explicit) then
+               if (params%viscosity > 0.0_dp) depvar_needed = NSTATV_VISCOUS
+            end if
             if (mat%depvar < 0) then
                call record_failure(where//': no *DEPVAR: '//trim(solver)//' needs at least '//int_to_string(depvar_needed), nfail)
             else if (mat%depvar < depvar_needed) then
                call record_failure(where//': *DEPVAR '//int_to_string(mat%depvar)//' but '//trim(solver)//' needs at least '// &
                   int_to_string(depvar_needed), nfail)
             end if
-            if (.not. explicit .and. .not. mat%unsymm) &
-               call record_failure(where//': no UNSYMM: the tangent DDSDDE is unsymmetric (friction, damage)', nfail)
+            if (.not. explicit .and. .not. mat%unsymm) then
+               if (status /= STATUS_OK) then
+                  call record_failure(where//': no UNSYMM: the tangent DDSDDE is unsymmetric (friction, damage)', nfail)
+               else if (params%stiffness == STIFFNESS_CONSISTENT) then
+                  call record_failure(where//': no UNSYMM: the consistent tangent DDSDDE is unsymmetric (friction, '// &
+                     'damage) and Abaqus would use its symmetric part, with which Newton fails where damage grows; '// &
+                     'add UNSYMM, or choose the stiffness option 2 (docs/abaqus.md)', nfail)
+               end if
+            end if
             if (explicit .and. .not. (is_finite(mat%density) .and. mat%density > 0.0_dp)) &
                call record_failure(where//': no *DENSITY > 0: the VUMAT energies are per unit mass', nfail)
          end associate
