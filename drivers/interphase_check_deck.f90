@@ -5,8 +5,9 @@
 !> For every *COHESIVE SECTION it checks what interphase requires (docs/abaqus.md):
 !> RESPONSE=TRACTION SEPARATION, THICKNESS=SPECIFIED with constitutive thickness 1, a material
 !> with *USER MATERIAL whose constants decode as interphase PROPS (the library's own decoder:
-!> the same messages the UMAT would give at the first increment), *DEPVAR at least 4 (UMAT) or 8
-!> (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for Abaqus/Standard and a
+!> the same messages the UMAT would give at the first increment), *DEPVAR at least 4 (UMAT; 5 with
+!> viscous regularisation) or 9 (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for
+!> Abaqus/Standard with the consistent tangent (stiffness option 0) and a
 !> *DENSITY > 0 for Abaqus/Explicit. It reads keywords and their data lines only (no *INCLUDE,
 !> no parts/assemblies resolution) and prints one line per cohesive section, and a note when the
 !> material needs a file loaded at start-up (a custom RVE table, a tabulated R-curve: the run

@@ -7,7 +7,8 @@
 !>
 !> Array conventions for C: separation and traction in the order (s_N, s_T[, s_T2]); the
 !> tangent is returned **row-major**, tangent[i*ntens + j] = d traction[i] / d separation[j];
-!> the state is the NSTATV_REQUIRED doubles of the UMAT's STATEV (docs/abaqus.md).
+!> the state is the UMAT's STATEV slots 1..4, or 1..5 with viscous regularisation (state_slots;
+!> docs/abaqus.md).
 module interphase_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_ptr, c_null_char, &
       c_associated, c_f_pointer
@@ -44,11 +45,11 @@ contains
       integer(c_int), value, intent(in) :: nprops          !! number of PROPS (docs/abaqus.md)
       real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
       integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
-      real(c_double), intent(in) :: state_old(*)           !! NSTATV_REQUIRED doubles
+      real(c_double), intent(in) :: state_old(*)           !! NSTATV_REQUIRED doubles (state_slots)
       real(c_double), intent(in) :: separation(*)          !! ntens doubles (mm)
       real(c_double), intent(inout) :: traction(*)         !! ntens doubles (MPa)
       real(c_double), intent(inout) :: tangent(*)          !! ntens*ntens doubles, row-major (MPa/mm)
-      real(c_double), intent(inout) :: state_new(*)        !! NSTATV_REQUIRED doubles
+      real(c_double), intent(inout) :: state_new(*)        !! NSTATV_REQUIRED doubles (state_slots)
       real(c_double), intent(inout) :: stored_energy       !! stored energy per unit area (N/mm)
       type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
       integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes

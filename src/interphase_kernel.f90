@@ -119,10 +119,13 @@ contains
                weight = 1.0_dp                ! dt/eta beyond the range of reals: inviscid
             end if
             d_v = max(old%d, old%d + weight*(d - old%d)) + 0.0_dp
-            ! where the step is below the resolution of D_v (weight (D - D_v,n) < half an ulp: it
-            ! happens as D_v approaches D = 1, where the micromechanical stiffness still falls
-            ! like 1/ln(1/(1 - D_v)) and would stay at that of 1 - D_v = 1e-16), D_v takes D
-            if (.not. (d_v > old%d) .and. d > old%d) d_v = d
+            ! D = 1 and D_v within 64 ulps of it, where the step is below the resolution of D_v
+            ! (weight (1 - D_v,n) < half an ulp): D_v takes 1. Without it D_v stops an ulp or so
+            ! below 1, where the micromechanical stiffness, falling only like 1/ln(1/(1 - D_v)), is
+            ! still 3 % of the intact one. (Anywhere else a step below the resolution leaves D_v
+            ! where it is: dt = 0 or a tiny dt/eta keeps the damage.)
+            if (weight > 0.0_dp .and. d >= 1.0_dp .and. .not. (d_v > old%d) .and. &
+               1.0_dp - old%d <= 64.0_dp*epsilon(1.0_dp)) d_v = 1.0_dp
             d = d_v
             dd_ds = weight*dd_ds
          end if

@@ -121,7 +121,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       end if
       if (nstatev < NSTATV_VUMAT) then
          write (message, '(a,i0,a,i0,a)') 'nstatev = ', nstatev, ' but the VUMAT needs at least ', &
-            NSTATV_VUMAT, ' (*DEPVAR)'
+            NSTATV_VUMAT, ' (*DEPVAR; since 2026-12 slots 6-9 hold the separations and the failure flag)'
          fatal_code = STATUS_BAD_NSTATV
          exit update
       end if
