@@ -113,6 +113,10 @@ module interphase_layout
       option_spec_type('stiffness', OPTION_SELECTOR, real(STIFFNESS_CONSISTENT, dp), 0.0_dp, &
          real(STIFFNESS_FIXED_DAMAGE, dp), 'use 0 (the consistent tangent), 1 (its symmetric part) or 2 '// &
          '(the tangent at fixed damage without the friction''s normal coupling)')]
+   !> The options' defaults, OPTION_SPECS%default as an array constant of its own (the update
+   !> decodes PROPS at every call: a reference to a component of OPTION_SPECS there made the
+   !> compiler build the whole table, strings included, each time).
+   real(dp), parameter, public :: OPTION_DEFAULTS(NPROPS_OPTIONS) = OPTION_SPECS%default
 
    ! ---- STATEV (solution-dependent state, `*DEPVAR`) -----------------------------------------
    ! The slots the UMAT and the VUMAT share come first (1 .. NSTATV_SHARED), the VUMAT's own after

@@ -8,7 +8,7 @@ module interphase_params
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
       PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, PROP_TABLE, NPROPS_MICROMECHANICAL, LFM_D0, &
       LFM_RCURVE, LFM_GC_I, LFM_GC_II, NPROPS_FRACTURE_EXTRA, OPT_GROWTH_SLIP, NPROPS_OPTIONS, &
-      OPT_CONTACT_BAND, OPT_VISCOSITY, OPT_STIFFNESS, OPTION_SPECS, OPTION_SELECTOR, option_spec_type
+      OPT_CONTACT_BAND, OPT_VISCOSITY, OPT_STIFFNESS, OPTION_SPECS, OPTION_DEFAULTS, OPTION_SELECTOR
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_CONSTANT, RCURVE_EQUIVALENT, &
       RCURVE_TABULATED, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
@@ -160,7 +160,6 @@ contains
       character(len=MESSAGE_LEN), intent(out) :: message
 
       real(dp) :: values(NPROPS_OPTIONS)
-      type(option_spec_type) :: spec
       logical :: valid
       integer :: k
 
@@ -173,17 +172,21 @@ contains
       end if
       ! every option from its entry in OPTION_SPECS: the default, or the value given when it
       ! passes the entry's check
-      values = OPTION_SPECS%default
+      values = OPTION_DEFAULTS
       do k = 1, size(options)
-         spec = OPTION_SPECS(k)
-         if (spec%kind == OPTION_SELECTOR) then
-            valid = selector_code(options(k)) >= nint(spec%lower) .and. selector_code(options(k)) <= nint(spec%upper)
+         ! (the table's components read in place: a local copy of an entry, a derived type with
+         ! default initialisation, was blank-filled at every call, options given or not)
+         if (OPTION_SPECS(k)%kind == OPTION_SELECTOR) then
+            valid = selector_code(options(k)) >= nint(OPTION_SPECS(k)%lower) .and. &
+               selector_code(options(k)) <= nint(OPTION_SPECS(k)%upper)
          else
             valid = finite_at_least(options(k), 0.0_dp)
-            if (valid) valid = .not. (options(k) > 0.0_dp) .or. (options(k) >= spec%lower .and. options(k) <= spec%upper)
+            if (valid) valid = .not. (options(k) > 0.0_dp) .or. &
+               (options(k) >= OPTION_SPECS(k)%lower .and. options(k) <= OPTION_SPECS(k)%upper)
          end if
          if (.not. valid) then
-            call reject(STATUS_BAD_OPTION, base + k, trim(spec%symbol), options(k), trim(spec%rule), status, message)
+            call reject(STATUS_BAD_OPTION, base + k, trim(OPTION_SPECS(k)%symbol), options(k), &
+               trim(OPTION_SPECS(k)%rule), status, message)
             return
          end if
          values(k) = options(k)
@@ -234,7 +237,7 @@ contains
       values(OPT_STIFFNESS) = real(params%stiffness, dp)
       nlast = 0
       do k = 1, NPROPS_OPTIONS
-         if (.not. same_bits(values(k), OPTION_SPECS(k)%default)) nlast = k
+         if (.not. same_bits(values(k), OPTION_DEFAULTS(k))) nlast = k
       end do
       props = [props, values(1:nlast)]
    contains
