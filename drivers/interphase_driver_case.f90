@@ -365,16 +365,9 @@ contains
       p%s0_t = e%s0_t
       p%sf_t = e%sf_t
       ! the option settings (their defaults unless given)
-      select case (to_lower(trim(adjustl(e%growth_slip))))
-      case ('', 'fixed-pi')
-         p%growth_slip = GROWTH_FIXED_PI
-      case ('fixed-lambda')
-         p%growth_slip = GROWTH_FIXED_LAMBDA
-      case default
-         message = where//"growth_slip must be 'fixed-pi' (the default) or 'fixed-lambda' (the paper's form), got '"// &
-            trim(adjustl(e%growth_slip))//"'"
-         return
-      end select
+      if (.not. keyword_entry('growth_slip', e%growth_slip, [character(len=12) :: 'fixed-pi', 'fixed-lambda'], &
+         [GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA], "'fixed-pi' (the default) or 'fixed-lambda' (the paper's form)", &
+         p%growth_slip)) return
       if (.not. is_unset(e%contact_band)) then
          if (.not. finite_entry('contact_band', e%contact_band)) return
          p%contact_band = e%contact_band
@@ -383,24 +376,38 @@ contains
          if (.not. finite_entry('viscosity', e%viscosity)) return
          p%viscosity = e%viscosity
       end if
-      select case (to_lower(trim(adjustl(e%stiffness))))
-      case ('', 'consistent')
-         p%stiffness = STIFFNESS_CONSISTENT
-      case ('symmetric')
-         p%stiffness = STIFFNESS_SYMMETRIC
-      case ('fixed-damage')
-         p%stiffness = STIFFNESS_FIXED_DAMAGE
-      case default
-         message = where//"stiffness must be 'consistent' (the default), 'symmetric' or 'fixed-damage', got '"// &
-            trim(adjustl(e%stiffness))//"'"
-         return
-      end select
+      if (.not. keyword_entry('stiffness', e%stiffness, [character(len=12) :: 'consistent', 'symmetric', &
+         'fixed-damage'], [STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE], &
+         "'consistent' (the default), 'symmetric' or 'fixed-damage'", p%stiffness)) return
       ! PROPS from the one encoder (interphase_params); the values are checked by the UMAT's
       ! decoder, whose message names the PROPS index
       props = to_props(p)
       ok = .true.
 
    contains
+
+      !> The code of an option entry given as one of `keywords` (any case; '' is the first, the
+      !> default); false (and the message set, naming the entry and `choices`) for another word.
+      logical function keyword_entry(name, value, keywords, codes, choices, code)
+         character(len=*), intent(in) :: name, value    !! entry name, its value as read
+         character(len=*), intent(in) :: keywords(:)    !! the words it takes
+         integer, intent(in) :: codes(:)                !! their codes
+         character(len=*), intent(in) :: choices        !! the words, for the message
+         integer, intent(inout) :: code                 !! the code, set when found
+         integer :: k
+         character(len=:), allocatable :: word
+         word = to_lower(trim(adjustl(value)))
+         if (len(word) == 0) word = trim(keywords(1))
+         keyword_entry = .false.
+         do k = 1, size(keywords)
+            if (word == trim(keywords(k))) then
+               code = codes(k)
+               keyword_entry = .true.
+               return
+            end if
+         end do
+         message = where//name//" must be "//choices//", got '"//trim(adjustl(value))//"'"
+      end function keyword_entry
 
       !> False (and the message set) when the entry is NaN or infinite.
       logical function finite_entry(name, value)

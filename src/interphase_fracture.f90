@@ -76,7 +76,7 @@ contains
       logical :: closed
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
       real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, a1, a2, b1, b2, lam_s, lam2, kappa, dkappa
-      real(dp) :: band_g, band_grad(3), band_hess(3, 3), q, dq, d2q
+      real(dp) :: band_g, band_grad(3), q, dq, d2q
       logical :: in_band
       integer :: nt
 
@@ -103,7 +103,7 @@ contains
       in_band = .false.
       if (params%contact_band > 0.0_dp .and. params%model == MODEL_MICROMECHANICAL .and. .not. closed &
          .and. params%rcurve /= RCURVE_EQUIVALENT) then
-         call contact_band_shape(params%contact_band, load%s_n, load%st, ntens, in_band, band_g, band_grad, band_hess)
+         call contact_band_shape(params%contact_band, load%s_n, load%st, ntens, in_band, band_g, band_grad)
          if (in_band) call band_stiffness(c, dc, d2c, q, dq, d2q)
       end if
 

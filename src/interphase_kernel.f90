@@ -26,7 +26,7 @@
 !> Stored energy: open or intact psi = 1/2 t.s; closed psi = 1/2 t.s + 1/2 C^f lambda.s_T
 !> - 1/2 D T^f ufbar |lambda|^2 (docs/theory.md).
 module interphase_kernel
-   use interphase_finite, only: is_finite
+   use interphase_finite, only: is_finite, is_within
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
@@ -63,7 +63,7 @@ contains
       type(coefficient_set_type) :: c, dc
       type(response_type) :: r
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
-      real(dp) :: d_law, ratio, weight, d_v
+      real(dp) :: d_law
       integer :: ntens, nt, j
 
       ntens = size(s)
@@ -72,13 +72,10 @@ contains
          status = STATUS_BAD_NTENS
          return
       end if
-      if (.not. all(is_finite(s))) then
-         status = STATUS_NONFINITE_SEPARATION
-         return
-      end if
-      ! beyond |s_i| = SEPARATION_MAX the arithmetic would overflow (interphase_params)
-      if (any(abs(s) > SEPARATION_MAX)) then
-         status = STATUS_SEPARATION_OUT_OF_RANGE
+      ! finite and within |s_i| <= SEPARATION_MAX (beyond, the arithmetic would overflow:
+      ! interphase_params), in one pass; which of the two failed is looked at only on failure
+      if (.not. all(is_within(s, SEPARATION_MAX))) then
+         status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s)))
          return
       end if
       s_n = s(1)
@@ -102,32 +99,8 @@ contains
          end if
          new%d_inviscid = d
          if (params%viscosity > 0.0_dp) then
-            ! Duvaut-Lions: D_v = (D_v,n + (dt/eta) D)/(1 + dt/eta), the response at D_v, and
-            ! dD_v/ds = (dt/eta)/(1 + dt/eta) dD/ds (docs/theory.md, 'Viscous regularisation')
-            if (.not. present(dt)) then
-               status = STATUS_BAD_TIME_INCREMENT
-               return
-            end if
-            if (.not. (is_finite(dt) .and. dt >= 0.0_dp)) then
-               status = STATUS_BAD_TIME_INCREMENT
-               return
-            end if
-            ratio = dt/params%viscosity
-            if (is_finite(ratio)) then
-               weight = ratio/(1.0_dp + ratio)
-            else
-               weight = 1.0_dp                ! dt/eta beyond the range of reals: inviscid
-            end if
-            d_v = max(old%d, old%d + weight*(d - old%d)) + 0.0_dp
-            ! D = 1 and D_v within 64 ulps of it, where the step is below the resolution of D_v
-            ! (weight (1 - D_v,n) < half an ulp): D_v takes 1. Without it D_v stops an ulp or so
-            ! below 1, where the micromechanical stiffness, falling only like 1/ln(1/(1 - D_v)), is
-            ! still 3 % of the intact one. (Anywhere else a step below the resolution leaves D_v
-            ! where it is: dt = 0 or a tiny dt/eta keeps the damage.)
-            if (weight > 0.0_dp .and. d >= 1.0_dp .and. .not. (d_v > old%d) .and. &
-               1.0_dp - old%d <= 64.0_dp*epsilon(1.0_dp)) d_v = 1.0_dp
-            d = d_v
-            dd_ds = weight*dd_ds
+            call regularise_damage(params%viscosity, old%d, d, dd_ds, status, dt)
+            if (status /= STATUS_OK) return
          end if
          call coefficients_at(params, d, c, dc, status)
          if (status /= STATUS_OK) return
@@ -168,6 +141,37 @@ contains
       end select
       psi = r%psi
    end subroutine interface_update
+
+   !> Viscous regularisation of the damage (Duvaut-Lions, docs/theory.md 'Viscous
+   !> regularisation'): from the damage law's D and dD/ds to the regularised
+   !> D_v = (D_v,n + (dt/eta) D)/(1 + dt/eta) and dD_v/ds = (dt/eta)/(1 + dt/eta) dD/ds.
+   !> STATUS_BAD_TIME_INCREMENT without a finite dt >= 0.
+   pure subroutine regularise_damage(eta, d_v_old, d, dd_ds, status, dt)
+      real(dp), intent(in) :: eta                     !! viscosity (s), > 0
+      real(dp), intent(in) :: d_v_old                 !! D_v,n (-)
+      real(dp), intent(inout) :: d                    !! in: the damage law's D; out: D_v (-)
+      real(dp), intent(inout) :: dd_ds(3)             !! in: dD/ds; out: dD_v/ds (1/mm)
+      integer, intent(out) :: status
+      real(dp), intent(in), optional :: dt            !! time increment (s)
+      real(dp) :: ratio, weight, d_v
+      status = STATUS_BAD_TIME_INCREMENT
+      if (.not. present(dt)) return
+      if (.not. (is_finite(dt) .and. dt >= 0.0_dp)) return
+      status = STATUS_OK
+      ratio = dt/eta
+      weight = 1.0_dp                                 ! dt/eta beyond the range of reals: inviscid
+      if (is_finite(ratio)) weight = ratio/(1.0_dp + ratio)
+      d_v = max(d_v_old, d_v_old + weight*(d - d_v_old)) + 0.0_dp
+      ! D = 1 and D_v within 64 ulps of it, where the step is below the resolution of D_v
+      ! (weight (1 - D_v,n) < half an ulp): D_v takes 1. Without it D_v stops an ulp or so below
+      ! 1, where the micromechanical stiffness, falling only like 1/ln(1/(1 - D_v)), is still
+      ! 3 % of the intact one. (Anywhere else a step below the resolution leaves D_v where it is:
+      ! dt = 0 or a tiny dt/eta keeps the damage.)
+      if (weight > 0.0_dp .and. d >= 1.0_dp .and. .not. (d_v > d_v_old) .and. &
+         1.0_dp - d_v_old <= 64.0_dp*epsilon(1.0_dp)) d_v = 1.0_dp
+      d = d_v
+      dd_ds = weight*dd_ds
+   end subroutine regularise_damage
 
    !> The fracture-mechanics law: D from g = 0, the response at that D, and dD/ds.
    pure subroutine fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, status)

@@ -199,20 +199,21 @@ contains
 
    !> The contact band's shape (docs/theory.md, 'The contact band'): g = |s_T|^2 (1 - W(t)),
    !> t = s_N/(chi |s_T|), W(t) = 10 t^3 - 15 t^4 + 6 t^5, with its gradient and Hessian in
-   !> s = (s_N, s_T[, s_T2]) (mm^2, mm, -). inside = .false. (and g = 0) outside the band
-   !> 0 < s_N < chi |s_T|.
+   !> s = (s_N, s_T[, s_T2]) (mm^2, mm, -; the Hessian only when asked for: the release rate
+   !> needs none). inside = .false. (and g = 0) outside the band 0 < s_N < chi |s_T|.
    pure subroutine contact_band_shape(chi, s_n, st, ntens, inside, g, grad, hess)
       real(dp), intent(in) :: chi                         !! band width chi (-), > 0
       real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
       integer, intent(in) :: ntens
       logical, intent(out) :: inside
-      real(dp), intent(out) :: g, grad(3), hess(3, 3)
+      real(dp), intent(out) :: g, grad(3)
+      real(dp), intent(out), optional :: hess(3, 3)
       real(dp) :: rho, tb, w, w1, w2, a_t, h_nt, h_tt, e(2)
       integer :: nt, i, j
       nt = ntens - 1
       g = 0.0_dp
       grad = 0.0_dp
-      hess = 0.0_dp
+      if (present(hess)) hess = 0.0_dp
       rho = sqrt(st(1)**2 + st(2)**2)
       inside = s_n > 0.0_dp .and. s_n < chi*rho
       if (.not. inside) return
@@ -223,12 +224,13 @@ contains
       w2 = 60.0_dp*tb*(1.0_dp - tb)*(1.0_dp - 2.0_dp*tb)
       g = rho**2*(1.0_dp - w)
       a_t = 2.0_dp*(1.0_dp - w) + tb*w1
+      grad(1) = -rho*w1/chi
+      grad(2:ntens) = a_t*st(1:nt)
+      if (.not. present(hess)) return
       ! (the Hessian's mixed and shear-shear parts written with e, not st/rho^k: no overflow
       ! for tiny |s_T|)
       h_nt = -(w1 - tb*w2)/chi
       h_tt = tb*(w1 - tb*w2)
-      grad(1) = -rho*w1/chi
-      grad(2:ntens) = a_t*st(1:nt)
       hess(1, 1) = -w2/chi**2
       do i = 1, nt
          hess(1, 1 + i) = h_nt*e(i)
