@@ -19,8 +19,9 @@ module interphase_driver_output
 contains
 
    !> The CSV header line for NTENS = 2 or 3.
-   pure function csv_header(ntens) result(header)
+   pure function csv_header(ntens, tangent_error) result(header)
       integer, intent(in) :: ntens                !! 2 (2-D) or 3 (3-D)
+      logical, intent(in), optional :: tangent_error  !! add the tangent check's column
       character(len=:), allocatable :: header
 
       if (ntens == 2) then
@@ -28,10 +29,13 @@ contains
       else
          header = 't,s_T1,s_T2,s_N,Sigma_T1,Sigma_T2,Sigma_N,D,slip_1,slip_2,state,psi,W_dis'
       end if
+      if (present(tangent_error)) then
+         if (tangent_error) header = header//',tangent_error'
+      end if
    end function csv_header
 
    !> Write one CSV row. Fails (ok false) if STATEV holds no known regime code.
-   subroutine write_csv_row(unit, time, separation, stress, statev, sse, spd, ok, message)
+   subroutine write_csv_row(unit, time, separation, stress, statev, sse, spd, ok, message, extra)
       integer, intent(in) :: unit                 !! open CSV file
       real(dp), intent(in) :: time                !! t
       real(dp), intent(in) :: separation(:)       !! s, UMAT order: normal first (mm)
@@ -41,8 +45,10 @@ contains
       real(dp), intent(in) :: spd                 !! dissipated energy per unit area (N/mm)
       logical, intent(out) :: ok                  !! false on an unknown regime code
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      real(dp), intent(in), optional :: extra(:)  !! more columns at the end of the row
       character(len=:), allocatable :: row, state
       character(len=1), parameter :: SEP = ','
+      integer :: i
 
       call regime_name(statev(SV_REGIME), state, ok)
       if (.not. ok) then
@@ -63,6 +69,11 @@ contains
             real_to_csv(stress(1))//SEP//real_to_csv(statev(SV_DAMAGE))//SEP// &
             real_to_csv(statev(SV_SLIP_1))//SEP//real_to_csv(statev(SV_SLIP_2))//SEP// &
             state//SEP//real_to_csv(sse)//SEP//real_to_csv(spd)
+      end if
+      if (present(extra)) then
+         do i = 1, size(extra)
+            row = row//SEP//real_to_csv(extra(i))
+         end do
       end if
       write (unit, '(a)') row
    end subroutine write_csv_row
