@@ -15,7 +15,7 @@ program interphase_fe2d
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
    use interphase_driver_case, only: load_start_up_data
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
-      gnuplot_available, run_gnuplot
+      gnuplot_available, run_gnuplot, exit_program, print_version
    use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
    use interphase_fe2d_solver, only: fe2d_options_type, fe2d_result_type, run_analysis, &
       CSV_COLUMNS, COL_SHEAR, COL_NORMAL, COL_STEP
@@ -37,7 +37,11 @@ program interphase_fe2d
    call parse_run_arguments(cli, ok, message)
    if (cli%help) then
       call print_usage(output_unit)
-      stop
+      call exit_program(0)
+   end if
+   if (cli%version) then
+      call print_version('interphase-fe2d')
+      call exit_program(0)
    end if
    if (.not. ok) call fail(message, usage=.true.)
    case_path = cli%case_path
@@ -94,16 +98,20 @@ contains
       if (present(usage)) then
          if (usage) call print_usage(error_unit)
       end if
-      stop 1
+      call exit_program(1)
    end subroutine fail
 
    subroutine print_usage(unit)
       integer, intent(in) :: unit                 !! where to print
 
       write (unit, '(a)') 'usage: interphase-fe2d CASE.nml [--output-dir DIR] [--no-plot]', &
+         '       interphase-fe2d --help | --version', &
          '  Runs the masonry shear test of CASE.nml (bricks: plane-strain Q4; joints: interface', &
          '  elements calling the interphase UMAT) and writes the load-displacement CSV, the', &
-         '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).'
+         '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).', &
+         '  CASE.nml groups: &geometry, &mesh, &brick, &joint (the &material entries of interphase-point),', &
+         '  &loading; documented in drivers/fe2d/README.md (installed: share/doc/interphase);', &
+         '  cases to start from in share/interphase/fe2d-cases.'
    end subroutine print_usage
 
    subroutine plot_csv()
