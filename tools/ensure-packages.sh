@@ -2,15 +2,16 @@
 # Install the optional Debian packages interphase uses, when they are missing and we can:
 #   freefem++   (FreeFem++: RVE coefficient tables and their tests)
 #   gnuplot-nox (gnuplot: PNG plots of the driver and of the tables)
-# Usage: tools/ensure-packages.sh [freefem] [gnuplot]   (default: both)
+#   pkgconf     (pkg-config: the test of the installed interphase.pc)
+# Usage: tools/ensure-packages.sh [freefem] [gnuplot] [pkgconfig]   (default: freefem gnuplot)
 # Never fails: where a package cannot be installed it says so, and the parts that need it
 # skip with their own clear message.
 set -u
 want=("$@")
 [ ${#want[@]} -eq 0 ] && want=(freefem gnuplot)
 
-declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot)
-declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox)
+declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot [pkgconfig]=pkg-config)
+declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox [pkgconfig]=pkgconf)
 
 missing=()
 for w in "${want[@]}"; do

@@ -8,7 +8,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 root=${1:-$here/build}
 jobs=$(nproc 2>/dev/null || echo 2)
 
-bash "$here/tools/ensure-packages.sh" freefem gnuplot
+bash "$here/tools/ensure-packages.sh" freefem gnuplot pkgconfig
 
 for type in Debug Release; do
   dir="$root/${type,,}"
