@@ -70,7 +70,8 @@ fi
 # E first slip after D; F damage grows again; G D = 1; H t = 4; I first slip after H; J t = 5;
 # K first slip after J; L end (t = 6).
 branch_points() {
-  awk -F, 'NR==1 {next}
+  awk -F, 'NR==1 { print "# the branch points of Fig 19 (docs/paper.md) on the micromechanical mixed history:"
+                   print "# columns: label  s_T (mm)  Sigma_T (MPa)"; next }
     { t=$1; s=$2; S=$4; d=$6; st=$8 }
     function mark(n) { printf "%s %.10g %.10g\n", n, s, S }
     NR==2 { mark("O") }
