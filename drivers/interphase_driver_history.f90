@@ -187,7 +187,7 @@ contains
    pure logical function is_columns_line(comment)
       character(len=*), intent(in) :: comment     !! text after '#'
       character(len=*), parameter :: KEY = 'columns:'
-      character(len=:), allocatable :: text
+      character(len=len(comment)) :: text
       text = adjustl(comment)
       is_columns_line = .false.
       if (len(text) < len(KEY)) return
@@ -203,7 +203,8 @@ contains
       logical, intent(out) :: traction(3)         !! file order: true for a Sigma_ column
       logical, intent(out) :: ok
       character(len=:), allocatable, intent(out) :: message
-      character(len=:), allocatable :: text, word, expected
+      character(len=len(comment)) :: text
+      character(len=:), allocatable :: expected
       character(len=16) :: words(4)
       integer, allocatable :: starts(:), ends(:)
       integer :: i, n, depth, k
@@ -212,7 +213,7 @@ contains
       ncolumns = 0
       traction = .false.
       text = adjustl(comment)
-      text = text(len('columns:') + 1:)
+      text(:len('columns:')) = ''
       ! drop the parenthesised words (units)
       depth = 0
       do i = 1, len(text)
@@ -230,9 +231,7 @@ contains
          return
       end if
       do i = 1, n
-         word = line_word(i)
-         if (len(word) > len(words(i))) word = word(:len(words(i)))
-         words(i) = word
+         words(i) = text(starts(i):min(ends(i), starts(i) + len(words(i)) - 1))
       end do
       if (trim(words(1)) /= 't') then
          message = '"# columns:" must start with t, got '''//trim(words(1))//''''
@@ -261,15 +260,6 @@ contains
       end do
       ncolumns = n
       ok = .true.
-
-   contains
-
-      function line_word(j) result(w)
-         integer, intent(in) :: j
-         character(len=:), allocatable :: w
-         w = text(starts(j):ends(j))
-      end function line_word
-
    end subroutine read_column_names
 
    !> Append one row; `shear_then_normal` is the file's order (s_T[1], [s_T2,] s_N).

@@ -76,6 +76,9 @@ module interphase_driver_replay
       integer :: checked_steps = 0                !! steps whose tangent was checked
       integer :: unchecked_steps = 0              !! steps where a perturbed call failed
       integer :: kink_steps = 0                   !! steps with a kink within +-tangent_step
+      !> UMAT order: whether the component's separation or traction changed during the written
+      !> part of the replay by more than 1e-9 of its size (else its panel is dropped)
+      logical :: moving(3) = .false.
    end type replay_report_type
 
 contains
@@ -91,10 +94,11 @@ contains
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       type(replay_report_type), intent(out), optional :: report  !! counts and the tangent check
-      type(point_state_type) :: point, trial, before
+      type(point_state_type) :: point, trial
       type(replay_report_type) :: counts
       real(dp), allocatable :: zero(:), start(:), tangent(:, :)
       real(dp), allocatable :: peak(:)     ! largest |traction| reached per component (MPa)
+      real(dp), allocatable :: s_low(:), s_high(:), t_low(:), t_high(:)  ! ranges of the written rows
       real(dp) :: pnewdt, last_error
       logical, allocatable :: no_control(:)
       integer :: ntens, k, j, i, clock_start, clock_last, clock_rate
@@ -141,6 +145,10 @@ contains
          if (present(report)) report = counts
          return
       end if
+      s_low = point%separation
+      s_high = point%separation
+      t_low = point%stress
+      t_high = point%stress
 
       do k = 1, history%nrows - 1
          ! the segment's start values: the previous row's where the control is the same
@@ -166,6 +174,8 @@ contains
          call show_progress(k)
       end do
       ok = .true.
+      counts%moving(:ntens) = s_high - s_low > 1.0e-9_dp*(abs(s_high) + abs(s_low)) .or. &
+         t_high - t_low > 1.0e-9_dp*(abs(t_high) + abs(t_low))
       if (present(report)) report = counts
 
    contains
@@ -226,7 +236,12 @@ contains
                cycle
             end if
             if (check) call check_tangent()
-            before = point
+            if (write_rows) then
+               s_low = min(s_low, trial%separation)
+               s_high = max(s_high, trial%separation)
+               t_low = min(t_low, trial%stress)
+               t_high = max(t_high, trial%stress)
+            end if
             point = trial
             where (abs(point%stress) > peak) peak = abs(point%stress)
             done = attempt
@@ -301,6 +316,7 @@ contains
 
          s_end = trial%separation
          h = run%tangent_step
+         pnewdt_probe = 1.0_dp
          scale = maxval(abs(tangent))
          kink = .false.
          do jcol = 1, ntens

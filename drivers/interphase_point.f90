@@ -143,7 +143,7 @@ contains
       stem = stem_of(csv_path)
       script_name = stem//'.gp'
       call write_plot_script(join_path(directory, script_name), base_name(csv_path), &
-         stem//'.png', run%name//': '//summary, history%ntens, ok, message)
+         stem//'.png', run%name, summary, history%ntens, ok, message, moving=report%moving)
       if (.not. ok) call fail(message)
       call run_gnuplot(directory, script_name, ok, message)
       if (.not. ok) call fail(message)
