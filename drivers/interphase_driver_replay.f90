@@ -44,6 +44,8 @@ module interphase_driver_replay
    use interphase_driver_output, only: write_csv_row
    use interphase_driver_text, only: int_to_string, real_to_string
    use interphase_driver_host, only: reset_fatal_message, fatal_message_reported, last_fatal_message
+   use interphase_replay_file, only: write_replay_group
+   use interphase_text_input, only: tried_path
    implicit none
    private
    public :: replay_history, MAX_HALVINGS, MAX_NEWTON, point_state_type, new_point, call_umat, &
@@ -86,7 +88,7 @@ contains
 
    !> Replay `history` through the UMAT with the case's material, writing the CSV rows (not the
    !> header) to `csv_unit`. On failure `ok` is false and `message` names the case file.
-   subroutine replay_history(run, history, csv_unit, nrows_written, ok, message, report)
+   subroutine replay_history(run, history, csv_unit, nrows_written, ok, message, report, replay_path)
       type(case_type), intent(in) :: run         !! material (PROPS), increments, options
       type(history_type), intent(in) :: history   !! prescribed separations and tractions
       integer, intent(in) :: csv_unit             !! open CSV file, header already written
@@ -94,6 +96,8 @@ contains
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       type(replay_report_type), intent(out), optional :: report  !! counts and the tangent check
+      !> where to write the replay file of a UMAT call that failed for good (none if absent)
+      character(len=*), intent(in), optional :: replay_path
       type(point_state_type) :: point, trial
       type(replay_report_type) :: counts
       real(dp), allocatable :: zero(:), start(:), tangent(:, :)
@@ -101,13 +105,19 @@ contains
       real(dp), allocatable :: s_low(:), s_high(:), t_low(:), t_high(:)  ! ranges of the written rows
       real(dp) :: pnewdt, last_error
       logical, allocatable :: no_control(:)
+      real(dp), allocatable :: failed_s(:)      ! the separation of the last UMAT call that failed (mm)
+      real(dp) :: failed_time                   ! and its time
+      logical :: umat_failed                    ! whether the last attempt's UMAT call failed
       integer :: ntens, k, j, i, clock_start, clock_last, clock_rate
       logical :: check
 
       ok = .false.
       nrows_written = 0
       ntens = history%ntens
-      allocate (zero(ntens), start(ntens), no_control(ntens), tangent(ntens, ntens), peak(ntens))
+      allocate (zero(ntens), start(ntens), no_control(ntens), tangent(ntens, ntens), peak(ntens), failed_s(ntens))
+      failed_s = 0.0_dp
+      failed_time = 0.0_dp
+      umat_failed = .false.
       zero = 0.0_dp
       no_control = .false.
       peak = 0.0_dp
@@ -224,12 +234,14 @@ contains
                message = run%path//': the UMAT stopped with a setup error from t = '// &
                   real_to_string(point%time)//' to t = '//real_to_string(time_new)// &
                   ' ('//values_text(target, controls)//'): '//last_fatal_message()
+               call write_failed_call()
                return
             end if
             if (.not. converged) then
                halvings = halvings + 1
                if (halvings > MAX_HALVINGS) then
                   message = failure_text(target, controls, time_new, residual, iterations)
+                  call write_failed_call()
                   return
                end if
                step = 0.5_dp*step
@@ -284,12 +296,18 @@ contains
             nfree = nfree + 1
             free(nfree) = i
          end do
+         umat_failed = .false.
          do
             trial = point
             call call_umat(run%props, trial, s, time_new, pnewdt, tangent)
             iterations = iterations + 1
             counts%umat_calls = counts%umat_calls + 1
-            if (pnewdt < 1.0_dp) return
+            if (pnewdt < 1.0_dp) then
+               umat_failed = .true.
+               failed_s = s
+               failed_time = time_new
+               return
+            end if
             if (nfree == 0) exit
             r(:nfree) = trial%stress(free(:nfree)) - target(free(:nfree))
             residual = maxval(abs(r(:nfree)))
@@ -422,6 +440,30 @@ contains
                int_to_string(MAX_HALVINGS)//' halvings of the sub-increment'
          end if
       end function failure_text
+
+      !> The replay file of the UMAT call that failed last (when the step failed in the UMAT and a
+      !> path was given): `interphase-point FILE` repeats it.
+      subroutine write_failed_call()
+         integer :: unit, ios
+         if (.not. (present(replay_path) .and. umat_failed)) return
+         open (newunit=unit, file=replay_path, status='replace', action='write', iostat=ios)
+         if (ios /= 0) return
+         call write_replay_group(unit, 'interphase-point', message, run%props, point%statev, point%stress, &
+            point%sse, point%spd, point%separation, failed_s - point%separation, [point%time, point%time], &
+            failed_time - point%time, 1, 1, point%kinc + 1, ios, table_file=absolute(run%table_path), &
+            rcurve_file=absolute(run%rcurve_path))
+         close (unit)
+         if (ios == 0) message = message//'; the failed UMAT call is in '//replay_path// &
+            ' (interphase-point '//replay_path//' repeats it)'
+      end subroutine write_failed_call
+
+      !> A path as the absolute path tried ('' stays '').
+      function absolute(path) result(full)
+         character(len=*), intent(in) :: path
+         character(len=:), allocatable :: full
+         full = ''
+         if (len(path) > 0) full = tried_path(path)
+      end function absolute
 
       !> Progress on standard error, every PROGRESS_SECONDS once a run has lasted that long.
       subroutine show_progress(segment)

@@ -20,6 +20,7 @@ program interphase_point
    use interphase_driver_history, only: history_type, read_history
    use interphase_driver_output, only: csv_header, write_plot_script
    use interphase_driver_replay, only: replay_history, replay_report_type
+   use interphase_driver_replay_call, only: replay_call_type, is_replay_file, read_replay_call, repeat_replay_call
    use interphase_driver_text, only: int_to_string, real_to_string, directory_of, base_name, stem_of, &
       join_path
    implicit none
@@ -48,6 +49,9 @@ program interphase_point
    output_dir = cli%output_dir
    no_plot = cli%no_plot
 
+   ! ---- a replay file: repeat its one UMAT call ----
+   if (is_replay_file(case_path)) call repeat_replay(case_path)
+
    ! ---- inputs ----
    call read_case(case_path, run, ok, message)
    if (.not. ok) call fail(message)
@@ -69,7 +73,8 @@ program interphase_point
       iostat=ios, iomsg=iomsg)
    if (ios /= 0) call fail(part_path//': cannot write the CSV file: '//trim(iomsg))
    write (unit, '(a)') csv_header(history%ntens, tangent_error=run%tangent_check > 0.0_dp)
-   call replay_history(run, history, unit, nrows, ok, message, report)
+   call replay_history(run, history, unit, nrows, ok, message, report, &
+      replay_path=join_path(directory_of(csv_path), stem_of(csv_path)//'.replay.nml'))
    close (unit)
    if (.not. ok) call fail(message//' (the rows up to the failure are in '//part_path// &
       '; '//csv_path//' was not written)')
@@ -112,6 +117,24 @@ contains
       call exit_program(1)
    end subroutine fail
 
+   !> Repeat the UMAT call of a replay file (`&replay`) and end: exit status 1 when it fails again.
+   subroutine repeat_replay(path)
+      character(len=*), intent(in) :: path
+      type(replay_call_type) :: replayed
+      logical :: failed
+      call read_replay_call(path, replayed, ok, message)
+      if (.not. ok) call fail(message)
+      write (output_unit, '(a)') path//': the '//trim(replayed%source)//' call of element '// &
+         int_to_string(replayed%noel)//', point '//int_to_string(replayed%npt)//', increment '// &
+         int_to_string(replayed%kinc)//' that failed with: '//trim(replayed%failure)
+      write (output_unit, '(a)') 'material: '//material_summary(replayed%props(1:replayed%nprops))
+      call load_start_up_data(trim(replayed%table), trim(replayed%rcurve), ok, message)
+      if (.not. ok) call fail(path//': the files the run had loaded: '//message)
+      call repeat_replay_call(replayed, failed)
+      if (failed) call exit_program(1)
+      call exit_program(0)
+   end subroutine repeat_replay
+
    !> Print how to call the program.
    subroutine print_usage(unit)
       integer, intent(in) :: unit                 !! where to print
@@ -127,6 +150,8 @@ contains
          '                       output_every, tangent_check, tangent_step', &
          '  History: columns t s_T s_N (3-D: t s_T1 s_T2 s_N); a line "# columns: t s_T Sigma_N"', &
          '  imposes a traction (Sigma_*) instead of a separation on a component.', &
+         '  interphase-point REPLAY.nml repeats the failed call of a replay file (&replay; written', &
+         '  next to the CSV when an update fails, and by the UMAT/VUMAT into INTERPHASE_REPLAY_DIR).', &
          '  Documented in drivers/README.md (installed: share/doc/interphase/drivers/README.md);', &
          '  cases to start from in share/interphase/cases.'
    end subroutine print_usage

@@ -8,7 +8,9 @@
 !> STATEV, DDSDDE, SSE or SPD. Setup errors (sizes, PROPS, data not loaded, a tabulated R-curve
 !> that does not cover D0 or the damage reached) and host inputs out of range (a NaN, an Inf or a
 !> magnitude beyond HOST_VALUE_MAX = 1e150 in the incoming STRESS, SSE or SPD) are reported as
-!> fatal, other failures as warnings (the increment is cut back). Thread-safe: no SAVE, COMMON or module data is written.
+!> fatal, other failures as warnings (the increment is cut back); with INTERPHASE_REPLAY_DIR set,
+!> a failed call's inputs are written there first (interphase_replay_file). Thread-safe: no SAVE,
+!> COMMON or module data is written.
 !> SSE returns the stored energy and SPD accumulates the dissipated energy per unit area
 !> (N/mm): SPD += 1/2 (t_n + t).ds - (psi - psi_n), with psi_n the SSE passed in.
 subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, &
@@ -26,6 +28,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_provider, only: check_run_time_data
    use interphase_rcurve, only: rcurve_coverage
    use interphase_abaqus_interfaces, only: interphase_host_message
+   use interphase_replay_file, only: write_replay
    implicit none
    integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, layer, kspt, kinc
    integer, intent(in) :: jstep(4)
@@ -120,13 +123,18 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
 
 contains
 
-   !> Lower PNEWDT and pass the message, with where it happened, to the host.
+   !> Lower PNEWDT and pass the message, with where it happened, to the host; with
+   !> INTERPHASE_REPLAY_DIR set, the call's inputs go to a replay file first (its path is named).
    subroutine fail(code, severity)
       integer, intent(in) :: code, severity
       character(len=2*MESSAGE_LEN) :: full
+      character(len=:), allocatable :: replay
       pnewdt = min(pnewdt, PNEWDT_CUTBACK)
       write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
          ': ', status_message(code), ': ', trim(message)
+      call write_replay('umat', trim(full), props, statev, stress, sse, spd, stran, dstran, time, dtime, &
+         noel, npt, kinc, replay)
+      if (len(replay) > 0) full = trim(full)//' (replay file: '//replay//')'
       call interphase_host_message(severity, trim(full))
    end subroutine fail
 
