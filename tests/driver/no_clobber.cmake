@@ -1,6 +1,7 @@
 # A failed run of interphase-point leaves a previous CSV of the same name as it was, and its own
 # rows in CSV.part.
-#   cmake -DPROGRAM=<interphase-point> -DGOOD=<case> -DBAD=<case writing the same CSV> -DWORK=<dir> -P no_clobber.cmake
+#   cmake -DPROGRAM=<interphase-point or -fe2d> -DGOOD=<case> -DBAD=<case writing the same CSV> -DWORK=<dir>
+#         [-DEXPECT=<the words before the .part file's name>] -P no_clobber.cmake
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 execute_process(COMMAND ${PROGRAM} ${GOOD} --no-plot --output-dir ${WORK} RESULT_VARIABLE status)
@@ -26,7 +27,10 @@ endif()
 if(NOT EXISTS ${WORK}/${csv}.part)
   message(FATAL_ERROR "the failed run left no ${csv}.part")
 endif()
-if(NOT "${err}" MATCHES "the rows up to the failure are in .*${csv}[.]part; .*${csv} was not written")
+if(NOT DEFINED EXPECT)
+  set(EXPECT "the rows up to the failure are in")
+endif()
+if(NOT "${err}" MATCHES "${EXPECT} .*${csv}[.]part; .*${csv} was not written")
   message(FATAL_ERROR "the message does not name the .part file")
 endif()
 message(STATUS "ok: ${csv} unchanged, rows of the failed run in ${csv}.part")
