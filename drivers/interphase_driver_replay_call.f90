@@ -17,9 +17,10 @@ module interphase_driver_replay_call
    type :: replay_call_type
       character(len=16) :: source = ''
       character(len=2048) :: failure = ''      !! the adapter's message
-      integer :: noel = 0, npt = 0, kinc = 0, ntens = 0, nprops = 0, nstatv = 0
+      integer :: noel = 0, npt = 0, kinc = 0, ntens = 0, ndi = 1, nshr = 1, nprops = 0, nstatv = 0
       real(dp) :: props(REPLAY_MAX_PROPS) = 0.0_dp, statev(REPLAY_MAX_STATEV) = 0.0_dp
-      real(dp) :: stress(3) = 0.0_dp, sse = 0.0_dp, spd = 0.0_dp, stran(3) = 0.0_dp, dstran(3) = 0.0_dp
+      !> (cohesive elements: 2 or 3 components, normal first; a thin layer's continuum: up to 6)
+      real(dp) :: stress(6) = 0.0_dp, sse = 0.0_dp, spd = 0.0_dp, stran(6) = 0.0_dp, dstran(6) = 0.0_dp
       real(dp) :: time(2) = 0.0_dp, dtime = 0.0_dp
       character(len=1024) :: table = '', rcurve = ''
    end type replay_call_type
@@ -57,11 +58,11 @@ contains
       character(len=:), allocatable, intent(out) :: message
       character(len=16) :: source
       character(len=2048) :: failure
-      integer :: noel, npt, kinc, ntens, nprops, nstatv
-      real(dp) :: props(REPLAY_MAX_PROPS), statev(REPLAY_MAX_STATEV), stress(3), sse, spd, stran(3), dstran(3)
+      integer :: noel, npt, kinc, ntens, ndi, nshr, nprops, nstatv
+      real(dp) :: props(REPLAY_MAX_PROPS), statev(REPLAY_MAX_STATEV), stress(6), sse, spd, stran(6), dstran(6)
       real(dp) :: time(2), dtime
       character(len=1024) :: table, rcurve
-      namelist /replay/ source, failure, noel, npt, kinc, ntens, nprops, nstatv, props, statev, stress, sse, spd, &
+      namelist /replay/ source, failure, noel, npt, kinc, ntens, ndi, nshr, nprops, nstatv, props, statev, stress, sse, spd, &
          stran, dstran, time, dtime, table, rcurve
       integer :: unit, ios
       character(len=512) :: iomsg
@@ -70,7 +71,7 @@ contains
       message = ''
       source = ''
       failure = ''
-      noel = 0; npt = 0; kinc = 0; ntens = 0; nprops = 0; nstatv = 0
+      noel = 0; npt = 0; kinc = 0; ntens = 0; ndi = -1; nshr = -1; nprops = 0; nstatv = 0
       props = 0.0_dp; statev = 0.0_dp; stress = 0.0_dp; sse = 0.0_dp; spd = 0.0_dp
       stran = 0.0_dp; dstran = 0.0_dp; time = 0.0_dp; dtime = 0.0_dp
       table = ''; rcurve = ''
@@ -88,16 +89,18 @@ contains
          message = path//': &replay: cannot read the group: '//trim(iomsg)
          return
       end if
-      if (ntens /= 2 .and. ntens /= 3) then
-         message = path//': &replay: ntens must be 2 or 3, got '//int_to_string(ntens)
+      if (ntens < 2 .or. ntens > 6) then
+         message = path//': &replay: ntens must be 2 to 6, got '//int_to_string(ntens)
          return
       end if
+      if (ndi < 0) ndi = 1
+      if (nshr < 0) nshr = ntens - ndi
       if (nprops < 1 .or. nprops > REPLAY_MAX_PROPS .or. nstatv < 1 .or. nstatv > REPLAY_MAX_STATEV) then
          message = path//': &replay: nprops = '//int_to_string(nprops)//', nstatv = '//int_to_string(nstatv)// &
             ' (1 to '//int_to_string(REPLAY_MAX_PROPS)//' each)'
          return
       end if
-      call_data = replay_call_type(source, failure, noel, npt, kinc, ntens, nprops, nstatv, props, statev, &
+      call_data = replay_call_type(source, failure, noel, npt, kinc, ntens, ndi, nshr, nprops, nstatv, props, statev, &
          stress, sse, spd, stran, dstran, time, dtime, table, rcurve)
       ok = .true.
    end subroutine read_replay_call
@@ -109,7 +112,7 @@ contains
       type(replay_call_type), intent(in) :: call_data
       logical, intent(out) :: failed
       character(len=80), parameter :: CMNAME = 'INTERPHASE-REPLAY'
-      real(dp) :: stress(3), statev(REPLAY_MAX_STATEV), sse, spd, scd, rpl, ddsddt(3), drplde(3)
+      real(dp) :: stress(6), statev(REPLAY_MAX_STATEV), sse, spd, scd, rpl, ddsddt(6), drplde(6)
       real(dp) :: drpldt, temp, dtemp, predef(1), dpred(1), coords(3), drot(3, 3), dfgrd(3, 3), pnewdt
       real(dp), allocatable :: ddsdde(:, :)
       integer :: n, i, jstep(4)
@@ -133,7 +136,7 @@ contains
       pnewdt = 1.0_dp
       call umat(stress(1:n), statev(1:call_data%nstatv), ddsdde, sse, spd, scd, rpl, ddsddt(1:n), &
          drplde(1:n), drpldt, call_data%stran(1:n), call_data%dstran(1:n), call_data%time, call_data%dtime, &
-         temp, dtemp, predef, dpred, CMNAME, 1, n - 1, n, call_data%nstatv, call_data%props(1:call_data%nprops), &
+         temp, dtemp, predef, dpred, CMNAME, call_data%ndi, call_data%nshr, n, call_data%nstatv, call_data%props(1:call_data%nprops), &
          call_data%nprops, coords, drot, pnewdt, 1.0_dp, dfgrd, dfgrd, call_data%noel, call_data%npt, 1, 1, &
          jstep, call_data%kinc)
       failed = pnewdt < 1.0_dp
@@ -141,11 +144,11 @@ contains
          write (output_unit, '(a)') 'the call fails again (PNEWDT = '//real_to_string(pnewdt)//'; its message above)'
       else
          write (output_unit, '(a)') 'the call succeeds here:'
-         write (output_unit, '(a,3es25.16e3)') '  STRESS (MPa, normal first) =', stress(1:n)
+         write (output_unit, '(a,6es25.16e3)') '  STRESS (MPa) =', stress(1:n)
          write (output_unit, '(a,16es25.16e3)') '  STATEV =', statev(1:min(call_data%nstatv, 16))
          write (output_unit, '(a,es25.16e3,a,es25.16e3)') '  SSE = ', sse, ', SPD = ', spd
          do i = 1, n
-            write (output_unit, '(a,i0,a,3es25.16e3)') '  DDSDDE(', i, ', :) =', ddsdde(i, 1:n)
+            write (output_unit, '(a,i0,a,6es25.16e3)') '  DDSDDE(', i, ', :) =', ddsdde(i, 1:n)
          end do
       end if
    end subroutine repeat_replay_call

@@ -26,7 +26,7 @@ contains
    !> Write the replay file of a failed call if INTERPHASE_REPLAY_DIR names a folder; `written`
    !> is its path ('' when none was written: no variable, or the file could not be opened).
    subroutine write_replay(source, message, props, statev, stress, sse, spd, stran, dstran, time, &
-         dtime, noel, npt, kinc, written)
+         dtime, noel, npt, kinc, written, ndi, nshr)
       character(len=*), intent(in) :: source       !! 'umat' or 'vumat'
       character(len=*), intent(in) :: message      !! why the call failed
       real(dp), intent(in) :: props(:), statev(:)  !! PROPS, the incoming STATEV
@@ -36,6 +36,7 @@ contains
       real(dp), intent(in) :: time(2), dtime       !! step and total time at the start, increment
       integer, intent(in) :: noel, npt, kinc       !! element, point, increment
       character(len=:), allocatable, intent(out) :: written
+      integer, intent(in), optional :: ndi, nshr  !! the host's NDI, NSHR (default 1, NTENS - 1)
       character(len=:), allocatable :: folder, path
       character(len=64) :: name
       integer :: unit, ios
@@ -51,14 +52,14 @@ contains
       open (newunit=unit, file=path, status='replace', action='write', form='formatted', iostat=ios)
       if (ios /= 0) return
       call write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, dstran, &
-         time, dtime, noel, npt, kinc, ios)
+         time, dtime, noel, npt, kinc, ios, ndi=ndi, nshr=nshr)
       close (unit)
       if (ios == 0) written = path
    end subroutine write_replay
 
    !> Write the `&replay` group on an open unit (`ios` /= 0 when a write failed).
    subroutine write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, &
-         dstran, time, dtime, noel, npt, kinc, ios, table_file, rcurve_file)
+         dstran, time, dtime, noel, npt, kinc, ios, table_file, rcurve_file, ndi, nshr)
       integer, intent(in) :: unit
       character(len=*), intent(in) :: source, message
       real(dp), intent(in) :: props(:), statev(:), stress(:), sse, spd, stran(:), dstran(:), time(2), dtime
@@ -67,7 +68,9 @@ contains
       !> the custom RVE table and R-curve files loaded (default: what INTERPHASE_TABLE and
       !> INTERPHASE_RCURVE name)
       character(len=*), intent(in), optional :: table_file, rcurve_file
+      integer, intent(in), optional :: ndi, nshr   !! the host's NDI, NSHR (default 1, NTENS - 1)
       character(len=:), allocatable :: table, rcurve
+      integer :: ndi_used, nshr_used
 
       if (present(table_file)) then
          table = table_file
@@ -81,15 +84,19 @@ contains
       end if
       write (unit, '(a)', iostat=ios) '! A failed '//source//' call of interphase. Repeat it through the UMAT with', &
          '!   interphase-point THIS_FILE', &
-         '! (drivers/README.md, ''Replay files''). Order of STRESS, STRAN, DSTRAN: normal first.', &
+         '! (drivers/README.md, ''Replay files''). STRESS, STRAN, DSTRAN in the host''s order.', &
          '&replay', &
          '  source = '''//source//'''', &
          '  failure = '''//quoted(message)//''''
       if (ios /= 0) return
       write (unit, '(a,i0,a,i0,a,i0)', iostat=ios) '  noel = ', noel, ', npt = ', npt, ', kinc = ', kinc
       if (ios /= 0) return
-      write (unit, '(a,i0,a,i0,a,i0)', iostat=ios) '  ntens = ', size(stran), ', nprops = ', size(props), &
-         ', nstatv = ', size(statev)
+      ndi_used = 1
+      nshr_used = size(stran) - 1
+      if (present(ndi)) ndi_used = ndi
+      if (present(nshr)) nshr_used = nshr
+      write (unit, '(a,i0,a,i0,a,i0,a,i0,a,i0)', iostat=ios) '  ntens = ', size(stran), ', ndi = ', ndi_used, &
+         ', nshr = ', nshr_used, ', nprops = ', size(props), ', nstatv = ', size(statev)
       if (ios /= 0) return
       call put('props', props)
       call put('statev', statev)
