@@ -136,7 +136,8 @@ contains
       pnewdt = 1.0_dp
       call umat(stress(1:n), statev(1:call_data%nstatv), ddsdde, sse, spd, scd, rpl, ddsddt(1:n), &
          drplde(1:n), drpldt, call_data%stran(1:n), call_data%dstran(1:n), call_data%time, call_data%dtime, &
-         temp, dtemp, predef, dpred, CMNAME, call_data%ndi, call_data%nshr, n, call_data%nstatv, call_data%props(1:call_data%nprops), &
+         temp, dtemp, predef, dpred, CMNAME, call_data%ndi, call_data%nshr, n, call_data%nstatv, &
+         call_data%props(1:call_data%nprops), &
          call_data%nprops, coords, drot, pnewdt, 1.0_dp, dfgrd, dfgrd, call_data%noel, call_data%npt, 1, 1, &
          jstep, call_data%kinc)
       failed = pnewdt < 1.0_dp
