@@ -90,6 +90,19 @@ function node(i, j, k) { return k*nrow*ncol + j*ncol + i + 1 }
 # Newton tolerances: the residual force below R times the mean force (ccx default 0.005) and the
 # correction below 10 R times the largest increment; with the symmetric fixed-damage stiffness
 # Newton converges linearly, so up to 200 iterations an increment before a cut-back
+# what run-case.sh reads: the total reaction of the top face, the displacement of its reference node,
+# the internal energy of the joint, and the strains, stresses and STATEV of the replay element
+function outputs() {
+   print "*NODE PRINT, NSET=TOP, TOTALS=ONLY"
+   print "RF"
+   print "*NODE PRINT, NSET=TOPREF"
+   print "U"
+   print "*EL PRINT, ELSET=JOINT, TOTALS=ONLY"
+   print "ELSE"
+   print "*EL PRINT, ELSET=REPLAY"
+   print "E, S, SDV"
+   print "*END STEP"
+}
 function controls() {
    print "*CONTROLS, PARAMETERS=FIELD"
    printf "%.3g, %.3g, 0., 0., 0.02, 1.e-5, 1.e-3, 1.e-8\n", tol, 10*tol
@@ -188,15 +201,7 @@ BEGIN {
    print "TOP, 1, 1, 0."
    print "*DLOAD"
    printf "TOPEL, P%d, 0.5\n", (dim == 3) ? 5 : 3
-   print "*NODE PRINT, NSET=TOP, TOTALS=ONLY"
-   print "RF"
-   print "*NODE PRINT, NSET=TOPREF"
-   print "U"
-   print "*EL PRINT, ELSET=JOINT, TOTALS=ONLY"
-   print "ELSE"
-   print "*EL PRINT, ELSET=REPLAY"
-   print "E, S, SDV"
-   print "*END STEP"
+   outputs()
    # steps 2, 3, ...: the shear history, one step per segment, so that every increment sequence
    # ends on the break points of the history (the reversals of a cyclic history) as interphase-fe2d
    # does; the amplitude runs in total time (the precompression step takes 0 to 1)
@@ -210,15 +215,8 @@ BEGIN {
       printf "%.10g, %.10g, %.10g, %.10g\n", dt, seg, seg*1.0e-6, dt
       print "*BOUNDARY, AMPLITUDE=SHEAR"
       print "TOP, 1, 1, 1."
-      print "*NODE PRINT, NSET=TOP, TOTALS=ONLY"
-      print "RF"
-      print "*NODE PRINT, NSET=TOPREF"
-      print "U"
-      print "*EL PRINT, ELSET=JOINT, TOTALS=ONLY"
-      print "ELSE"
-      print "*EL PRINT, ELSET=REPLAY"
-      print "E, S, SDV"
-      print "*END STEP"
+      outputs()
    }
 }' > "$output"
+[ -s "$output" ] || fail "writing $output failed"
 echo "make-deck.sh: wrote $output"
