@@ -117,14 +117,17 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       end if
    end if
    if (map%identity) then
+      ! a cohesive element: the separations themselves (NTENS = 2 or 3)
       s(1:ntens) = stran + dstran
+      call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
+         new, psi, status, dtime)
    else
       do i = 1, nsep
          s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
       end do
+      call interface_update(params, old, s(1:nsep), traction(1:nsep), tangent(1:nsep, 1:nsep), &
+         new, psi, status, dtime)
    end if
-   call interface_update(params, old, s(1:nsep), traction(1:nsep), tangent(1:nsep, 1:nsep), &
-      new, psi, status, dtime)
    if (status == STATUS_BAD_TIME_INCREMENT) then
       write (message, '(a,es12.4,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
       call fail(status, SEVERITY_FATAL)
