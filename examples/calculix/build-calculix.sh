@@ -9,8 +9,9 @@
 #      umat is the built-in example, bound inside the program). Cached: an existing DIR/ccx with
 #      external-behaviour support is kept.
 #   2. DIR/libINTERPHASE.so from the one-file user source (make-user-file.sh --calculix), the
-#      library a material named @ABAQUS_INTERPHASE_UMAT... loads (with DIR on LD_LIBRARY_PATH);
-#      rebuilt whenever a source is newer than it.
+#      library a material named @ABAQUS_INTERPHASE_UMAT... loads (with DIR on LD_LIBRARY_PATH),
+#      with the load-time hook src/abaqus/calculix_start.c that loads INTERPHASE_TABLE and
+#      INTERPHASE_RCURVE; rebuilt whenever a source is newer than it.
 #
 #   --cache-dir DIR  where ccx and the library go (default: <repository>/build/calculix)
 #   --build-dir DIR  a configured and built interphase build tree, for the generated sources (the
@@ -122,11 +123,13 @@ fi
 }
 lib=$cache/libINTERPHASE.so
 fc=${FC:-gfortran}
-if [ ! -f "$lib" ] || [ -n "$(find "$root/src" "$build_dir/generated" -name '*.f90' -newer "$lib" | head -n 1)" ]; then
+if [ ! -f "$lib" ] || [ -n "$(find "$root/src" "$build_dir/generated" \( -name '*.f90' -o -name '*.c' \) -newer "$lib" | head -n 1)" ]; then
    "$root/examples/abaqus/make-user-file.sh" --calculix --build-dir "$build_dir" -o "$cache/interphase_calculix.f90" >/dev/null
    # -O2 as a host's user-subroutine build; UMAT is the name the deck's material gives
    # (@ABAQUS_INTERPHASE_UMAT: the deck is upper-cased), umat_ the Fortran one
-   (cd "$cache" && "$fc" -O2 -fPIC -shared -ffree-line-length-none -o libINTERPHASE.so.new interphase_calculix.f90 \
+   # calculix_start.c: the load-time hook that loads INTERPHASE_TABLE / INTERPHASE_RCURVE
+   (cd "$cache" && "${CC:-cc}" -O2 -fPIC -c "$root/src/abaqus/calculix_start.c" -o calculix_start.o && \
+      "$fc" -O2 -fPIC -shared -ffree-line-length-none -o libINTERPHASE.so.new interphase_calculix.f90 calculix_start.o \
       -Wl,--defsym,UMAT=umat_ -llapack -lblas) || { echo "build-calculix.sh: compiling libINTERPHASE.so failed" >&2; exit 1; }
    rm -f "$cache"/*.mod
    mv "$lib.new" "$lib"
