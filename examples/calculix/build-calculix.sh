@@ -83,7 +83,8 @@ else
       if [ -f /etc/apt/sources.list.d/debian.sources ]; then
          sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources > "$src_list"
       elif [ -f /etc/apt/sources.list ]; then
-         sed -n 's/^deb /deb-src /p' /etc/apt/sources.list > /etc/apt/sources.list.d/interphase-deb-src.list
+         src_list=/etc/apt/sources.list.d/interphase-deb-src.list
+         sed -n 's/^deb /deb-src /p' /etc/apt/sources.list > "$src_list"
       else
          unavailable "no Debian source list to mirror as deb-src"
       fi
@@ -99,8 +100,9 @@ else
    say "fetching Debian's calculix-ccx source"
    (cd "$cache/source" && apt-get source -qq calculix-ccx >"$cache/source.log" 2>&1) || \
       unavailable "apt-get source calculix-ccx failed (see $cache/source.log)"
-   src=$(ls -d "$cache"/source/calculix-ccx-*/ccx_*/src | head -n 1)
-   [ -d "$src" ] || { echo "build-calculix.sh: no ccx_*/src in the source package" >&2; exit 1; }
+   src=""
+   for d in "$cache"/source/calculix-ccx-*/ccx_*/src; do [ -d "$d" ] && src=$d && break; done
+   [ -n "$src" ] || { echo "build-calculix.sh: no ccx_*/src in the source package (see $cache/source.log)" >&2; exit 1; }
    version=$(basename "$(dirname "$src")")
    say "building $version with external-behaviour support in $src (a few minutes)"
    # Debian's flags (debian/rules) plus the define and the dynamic loader, as upstream's

@@ -2,13 +2,20 @@
 # ctest calculix_custom_table: libINTERPHASE.so loads the custom RVE table named by
 # INTERPHASE_TABLE when ccx opens it (src/abaqus/calculix_start.c; CalculiX calls no UEXTERNALDB).
 # The 2-D micromechanical couplet with PROPS(8) = 1 and INTERPHASE_TABLE = tables/paper.dat must
-# give the built-in table's curve bit for bit (the built-in table is compiled from that file), and
+# give the built-in table's curve, the same CSV digit for digit (the built-in table is compiled from
+# that file), and
 # a table that cannot be read must stop the run with a message naming the file.
 #   custom-table.sh <repository> <cache> <work>
 set -uo pipefail
 root=$(cd "$1" && pwd)
-cache=$(cd "$2" && pwd)
+cache=$2
 work=$3
+# no ccx here (calculix_build skipped): skip too, but not in CI
+if [ ! -x "$cache/ccx" ] || [ ! -f "$cache/libINTERPHASE.so" ]; then
+   if [ "${CI:-}" = true ]; then echo "FAILED: no ccx or libINTERPHASE.so in $cache (calculix_build)"; exit 1; fi
+   echo "SKIP: no ccx or libINTERPHASE.so in $cache (calculix_build could not build them here)"; exit 77
+fi
+cache=$(cd "$cache" && pwd)
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
@@ -22,7 +29,7 @@ INTERPHASE_TABLE=$root/tables/paper.dat bash "$cx/run-case.sh" custom.inp --cach
    > /dev/null || { echo "FAILED: custom-table run"; exit 1; }
 grep -q "custom RVE table loaded from .*tables/paper.dat" custom/custom.log || { echo "FAILED: no load message"; status=1; }
 if cmp -s builtin/couplet2d-micromechanical-monotonic.csv custom/custom.csv; then
-   echo "the custom table tables/paper.dat gives the built-in table's curve bit for bit"
+   echo "the custom table tables/paper.dat gives the built-in table's curve (the same CSV)"
 else
    echo "FAILED: the custom-table curve differs from the built-in one"; status=1
 fi
