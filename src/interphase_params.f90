@@ -202,13 +202,15 @@ contains
             'the fracture law''s damage is a root of g(D) = 0 (docs/theory.md): set it to 0', status, message)
          return
       end if
-      params%growth_slip = nint(values(OPT_GROWTH_SLIP))
+      ! (the selectors hold exact small integers here: int, which compiles to one instruction,
+      ! where nint is a call of libm's lround)
+      params%growth_slip = int(values(OPT_GROWTH_SLIP))
       params%contact_band = values(OPT_CONTACT_BAND)
       params%viscosity = values(OPT_VISCOSITY)
-      params%stiffness = nint(values(OPT_STIFFNESS))
+      params%stiffness = int(values(OPT_STIFFNESS))
       params%layer_thickness = values(OPT_LAYER_THICKNESS)
-      params%layer_normal = nint(values(OPT_LAYER_NORMAL))
-      params%host = nint(values(OPT_HOST))
+      params%layer_normal = int(values(OPT_LAYER_NORMAL))
+      params%host = int(values(OPT_HOST))
    end subroutine set_options
 
    !> Entry points that take separations (the VUMAT, the C API) refuse a material that sets the

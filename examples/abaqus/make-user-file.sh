@@ -46,7 +46,9 @@ if [ $solver = standard ]; then
    roots=("$root/src/abaqus/umat.f90" "$root/src/abaqus/host_abaqus_standard.f90")
    if [ $with_uexternaldb = yes ]; then roots+=("$root/src/abaqus/uexternaldb.f90"); fi
 elif [ $solver = calculix ]; then
-   roots=("$root/src/abaqus/umat.f90" "$root/src/abaqus/host_calculix.f90")
+   # (calculix_start.f90: the loading of custom tables at start-up, called by the library's
+   # load-time hook src/abaqus/calculix_start.c, which build-calculix.sh compiles beside)
+   roots=("$root/src/abaqus/umat.f90" "$root/src/abaqus/host_calculix.f90" "$root/src/abaqus/calculix_start.f90")
    if [ $with_uexternaldb = yes ]; then
       echo "make-user-file.sh: CalculiX calls no UEXTERNALDB: --uexternaldb does not apply to --calculix" >&2
       exit 2

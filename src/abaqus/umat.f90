@@ -13,7 +13,8 @@
 !> This adapter only packs arguments and calls the pure kernel. On a failed update it asks for a
 !> cut-back through PNEWDT (0.25 unless the host already holds a smaller positive request: Abaqus
 !> passes PNEWDT large, CalculiX -1), reports through `interphase_host_message` and returns before
-!> touching STRESS, STATEV, DDSDDE, SSE or SPD. Setup errors (sizes, PROPS, data not loaded, a
+!> touching STRESS, STATEV, DDSDDE, SSE or SPD (with the CalculiX host option DDSDDE is set to
+!> zero then: CalculiX passes it uninitialised and stores it even so). Setup errors (sizes, PROPS, data not loaded, a
 !> tabulated R-curve that does not cover D0 or the damage reached) and host inputs out of range (a
 !> NaN, an Inf or a magnitude beyond HOST_VALUE_MAX = 1e150 in the incoming STRESS, SSE or SPD) are
 !> reported as fatal, other failures as warnings (the increment is cut back); with
@@ -62,9 +63,13 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6)
    integer :: status, nsep, i, j
    logical :: host_energies
+   !> the host is CalculiX (known once PROPS are decoded): its DDSDDE is uninitialised, and it
+   !> symmetrises and stores it even from a call that asks for a cut-back
+   logical :: calculix
    character(len=MESSAGE_LEN) :: message
    character(len=66) :: stress_text
 
+   calculix = .false.
    call from_props(props, params, status, message)
    if (status /= STATUS_OK) then
       call fail(status, SEVERITY_FATAL)
@@ -78,6 +83,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    end if
    nsep = map%nsep
    host_energies = params%host /= HOST_CALCULIX
+   calculix = .not. host_energies
    ! a custom table or R-curve that was not loaded at start-up: no smaller increment can help
    call check_run_time_data(params, status, message)
    if (status /= STATUS_OK) then
@@ -119,14 +125,17 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       end if
    end if
    if (map%identity) then
+      ! a cohesive element: the separations themselves (NTENS = 2 or 3)
       s(1:ntens) = stran + dstran
+      call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
+         new, psi, status, dtime)
    else
       do i = 1, nsep
          s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
       end do
+      call interface_update(params, old, s(1:nsep), traction(1:nsep), tangent(1:nsep, 1:nsep), &
+         new, psi, status, dtime)
    end if
-   call interface_update(params, old, s(1:nsep), traction(1:nsep), tangent(1:nsep, 1:nsep), &
-      new, psi, status, dtime)
    if (status == STATUS_BAD_TIME_INCREMENT) then
       write (message, '(a,es12.4,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
       call fail(status, SEVERITY_FATAL)
@@ -182,6 +191,9 @@ contains
       character(len=2*MESSAGE_LEN) :: full
       character(len=:), allocatable :: replay
       if (.not. (pnewdt > 0.0_dp .and. pnewdt <= PNEWDT_CUTBACK)) pnewdt = PNEWDT_CUTBACK
+      ! CalculiX: a defined (zero) stiffness rather than whatever its uninitialised DDSDDE held;
+      ! ccx discards the increment anyway
+      if (calculix) ddsdde = 0.0_dp
       write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
          ': ', status_message(code), ': ', trim(message)
       call write_replay('umat', trim(full), props, statev, stress, sse, spd, stran, dstran, time, dtime, &
