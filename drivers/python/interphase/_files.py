@@ -47,7 +47,7 @@ def read_history(path):
     return time, separation
 
 
-def _namelist_groups(path):
+def read_namelist(path):
     """{group: {entry: value}} of a namelist file (strings, numbers, logicals; one value each)."""
     text = open(path, encoding="utf-8").read()
     tokens = []
@@ -126,7 +126,7 @@ def read_case(path):
     The paths it names (history, table, rcurve_file) are taken relative to its folder, as the
     driver takes them.
     """
-    groups = _namelist_groups(path)
+    groups = read_namelist(path)
     base = os.path.dirname(os.path.abspath(path))
     if "material" not in groups or "loading" not in groups:
         raise ValueError(f"{path}: needs the groups &material and &loading")
