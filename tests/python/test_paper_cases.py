@@ -102,3 +102,37 @@ def test_more_combinations(point_driver, source_dir, tmp_path, name):
         history = source_dir / "drivers" / "cases" / f"{h}.txt"
         assert_same_csv(point_driver, write_case(tmp_path, f"{name}-{h}", history, material, increments=37),
                         tmp_path)
+
+
+def assert_same_partial_csv(driver, case, tmp_path, status, words):
+    """A run that fails: the driver stops with an error and an incomplete CSV; the package raises
+    the same failure, and the rows its error carries are that CSV's, byte for byte."""
+    done = subprocess.run([driver, str(case), "--output-dir", str(tmp_path), "--no-plot"],
+                          capture_output=True, text=True)
+    assert done.returncode != 0 and "incomplete" in done.stderr, done.stdout + done.stderr
+    c = interphase.read_case(case)
+    with pytest.raises(interphase.InterphaseError) as caught:
+        c.run()
+    error = caught.value
+    assert error.status == status and words in str(error), str(error)
+    ours = tmp_path / "python.csv"
+    error.result.to_csv(ours)
+    assert ours.read_bytes() == (tmp_path / c.output).read_bytes()
+    return error
+
+
+def test_halvings_as_the_driver(point_driver, tmp_path):
+    """A sub-increment that fails is halved: a halved step converges (its row is written), the
+    rest fails until the tenth halving, as in interphase-point."""
+    (tmp_path / "beyond.txt").write_text("0 0 0\n1 0 2e20\n2 0 0\n")
+    case = write_case(tmp_path, "beyond", tmp_path / "beyond.txt", dict(SIMPLIFIED, damage_law="displacement"),
+                      increments=3)
+    error = assert_same_partial_csv(point_driver, case, tmp_path, interphase.STATUS_SEPARATION_OUT_OF_RANGE,
+                                    "even after 10 halvings")
+    assert error.result.separation[-1, 0] == 1e20 and len(error.result) == 3
+
+
+def test_a_fatal_failure_as_the_driver(point_driver, source_dir, tmp_path):
+    """A tabulated R-curve that runs out: no halving, the run stops at once (driver: the same rows)."""
+    case = source_dir / "tests" / "driver" / "inputs" / "rcurve_runs_out.nml"
+    assert_same_partial_csv(point_driver, case, tmp_path, interphase.STATUS_RCURVE_OUT_OF_RANGE, "covers D from")

@@ -266,7 +266,9 @@ class Material:
         that fails is halved and retried, up to MAX_HALVINGS times, each converged step giving a
         row. The loop over the increments runs inside the library (interphase_run).
 
-        Returns a Result with one row per converged step, the start (time[0]) first.
+        Returns a Result with one row per converged step, the start (time[0]) first. On a failure
+        the InterphaseError raised carries the rows computed until then as its `result` (None
+        when there are none), as the driver's CSV holds them.
         """
         self._prepare()
         sep = np.array(separation, dtype=np.float64)
@@ -314,36 +316,41 @@ class Material:
         chunks = [] if npre else [_Rows.of_point(point, tangent)]
         i = 0
         nplan = plan_s.shape[0]
-        while i < nplan:
-            rows, status, done, detail = self._path(point, plan_s[i:], plan_t[i:], tangent)
-            converged = done - 1          # rows 1 .. converged: plan entries i .. i + converged - 1
-            if converged > 0:
-                if i >= npre:
-                    chunks.append(rows.slice(1, 1 + converged))
-                elif i + converged >= npre:
-                    chunks.append(rows.slice(npre - i, 1 + converged))
-                point = rows.point(converged)
-                i += converged
-            if status == st.STATUS_OK:
-                break
-            if done == 0 or status in _FATAL_STEP_STATUSES:
-                raise InterphaseError(status, detail)
-            # halve the failed sub-increment, as interphase-point does
-            point, extra = self._halve(point, segments[plan_seg[i]], int(plan_j[i]), increments, tangent)
-            if i >= npre:
-                chunks.extend(extra)
-            elif i == npre - 1:
-                chunks.append(extra[-1])
-            i += 1
-        return Result.concatenate(chunks, self)
+        try:
+            while i < nplan:
+                rows, status, done, detail = self._path(point, plan_s[i:], plan_t[i:], tangent)
+                converged = done - 1      # rows 1 .. converged: plan entries i .. i + converged - 1
+                if converged > 0:
+                    if i >= npre:
+                        chunks.append(rows.slice(1, 1 + converged))
+                    elif i + converged >= npre:
+                        chunks.append(rows.slice(npre - i, 1 + converged))
+                    point = rows.point(converged)
+                    i += converged
+                if status == st.STATUS_OK:
+                    break
+                if done == 0 or status in _FATAL_STEP_STATUSES:
+                    raise InterphaseError(status, _at_time(detail, point.time, plan_t[i]))
+                # halve the failed sub-increment, as interphase-point does; the preload's steps
+                # give no row, but its last one's end is the first row
+                preload = []
+                point = self._halve(point, segments[plan_seg[i]], int(plan_j[i]), increments, tangent,
+                                    chunks if i >= npre else preload)
+                if i == npre - 1:
+                    chunks.append(preload[-1])
+                i += 1
+        except InterphaseError as error:
+            error.result = Result.concatenate(chunks) if chunks else None
+            raise
+        return Result.concatenate(chunks)
 
-    def _halve(self, point, segment, j, increments, tangent):
-        """Sub-increment j of `segment` in halved steps (interphase-point's advance)."""
+    def _halve(self, point, segment, j, increments, tangent, sink):
+        """Sub-increment j of `segment` in halved steps (interphase-point's advance), the rows
+        of the converged steps appended to `sink`; the point reached."""
         s_a, s_b, t_a, t_b, _ = segment
         theta_from = float(j) / float(increments)
         theta_to = float(j + 1) / float(increments)
         done, step, halvings = 0.0, 1.0, 0
-        out = []
         while done < 1.0:
             attempt = min(1.0, done + step)
             theta = theta_to if attempt >= 1.0 else theta_from + attempt * (theta_to - theta_from)
@@ -354,18 +361,26 @@ class Material:
                 t_new = t_a + theta * (t_b - t_a)
             rows, code, done_rows, text = self._path(point, np.array([s_new]), np.array([t_new]), tangent)
             if code != st.STATUS_OK:
+                text = _at_time(text, point.time, t_new)
                 if done_rows == 0 or code in _FATAL_STEP_STATUSES:
                     raise InterphaseError(code, text)
                 halvings += 1
                 if halvings > MAX_HALVINGS:
-                    raise InterphaseError(code, f"{text}; no convergence from t = {point.time!r} to "
-                                          f"t = {t_new!r} even after {MAX_HALVINGS} halvings of the sub-increment")
+                    raise InterphaseError(code, f"{text}; no convergence even after {MAX_HALVINGS} halvings of "
+                                          "the sub-increment")
                 step *= 0.5
                 continue
-            out.append(rows.slice(1, 2))
+            sink.append(rows.slice(1, 2))
             point = rows.point(1)
             done = attempt
-        return point, out
+        return point
+
+
+def _at_time(detail, t_from, t_to):
+    """The library's detail of a failed step of interphase_run, with the step's times for its row."""
+    if detail.startswith("row ") and ": " in detail:
+        detail = detail.split(": ", 1)[1]
+    return f"from t = {t_from!r} to t = {float(t_to)!r}: {detail}"
 
 
 class Update:
@@ -432,7 +447,7 @@ class Result:
         self.regime = state[:, 3].astype(int)
 
     @classmethod
-    def concatenate(cls, chunks, material):
+    def concatenate(cls, chunks):
         def cat(name):
             return np.concatenate([getattr(c, name) for c in chunks])
         tangent = None if chunks[0].tangent is None else cat("tangent")
