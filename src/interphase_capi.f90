@@ -22,8 +22,8 @@ module interphase_capi
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_BAD_TIME_INCREMENT, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_coverage
-   use interphase_params, only: law_params_type, from_props, SEPARATION_MAX, HOST_VALUE_MAX
-   use interphase_finite, only: is_finite, is_within
+   use interphase_params, only: law_params_type, from_props, refuse_umat_options, SEPARATION_MAX, HOST_VALUE_MAX
+   use interphase_finite, only: is_within
    use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update
@@ -126,6 +126,7 @@ contains
       end if
       n = ntens
       call from_props(props(1:nprops), params, code, message)
+      if (code == STATUS_OK) call refuse_umat_options(params, 'the C API', code, message)
       if (code /= STATUS_OK) then
          call finish()
          return
@@ -261,6 +262,7 @@ contains
          return
       end if
       call from_props(props(1:nprops), params, code, message)
+      if (code == STATUS_OK) call refuse_umat_options(params, 'interphase_run', code, message)
       if (code /= STATUS_OK) then
          call finish()
          return
