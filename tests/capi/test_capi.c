@@ -551,6 +551,14 @@ static void test_run(const char *csv_path) {
                           detail, sizeof detail);
   CHECK(status == INTERPHASE_STATUS_BAD_SF_N && strstr(detail, "PROPS(5)") != NULL, "sf_N < s0_N: status %d: %s",
         status, detail);
+  /* the UMAT's own options (a thin layer's thickness, PROPS[13]) are refused, as by interphase_update */
+  double layer[INTERPHASE_NPROPS_SIMPLIFIED + 5] = {0.0};
+  paper_props(layer);
+  layer[13] = 2.0;
+  status = interphase_run(layer, INTERPHASE_NPROPS_SIMPLIFIED + 5, 2, 3, sep, tim, tra, NULL, sta, psi, wd, &done,
+                          detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_OPTION && strstr(detail, "UMAT only") != NULL,
+        "layer thickness: status %d: %s", status, detail);
   /* viscous regularisation needs the times: NULL is refused, as by interphase_update */
   double viscous[INTERPHASE_NPROPS_SIMPLIFIED + 3];
   paper_props(viscous);

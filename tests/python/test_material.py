@@ -222,3 +222,13 @@ def test_threads_give_the_numbers_of_one():
         th.join()
     for r in results:
         assert np.array_equal(r.traction, expected.traction) and np.array_equal(r.state, expected.state)
+
+
+def test_the_umats_own_options_are_refused():
+    """The thin-layer mode and the host conventions are options of the UMAT only: the C entry
+    points, and so the package, take separations and refuse them (STATUS_BAD_OPTION)."""
+    props = interphase.Material(**SIMPLIFIED).props.tolist() + [0, 0, 0, 0, 2.0]   # layer thickness t
+    with pytest.raises(interphase.InterphaseError, match="PROPS.14. layer thickness t is an option of the UMAT only") \
+            as caught:
+        interphase.Material.from_props(props)
+    assert caught.value.status == interphase.STATUS_BAD_OPTION
