@@ -105,19 +105,21 @@ def test_more_combinations(point_driver, source_dir, tmp_path, name):
 
 
 def assert_same_partial_csv(driver, case, tmp_path, status, words):
-    """A run that fails: the driver stops with an error and an incomplete CSV; the package raises
-    the same failure, and the rows its error carries are that CSV's, byte for byte."""
+    """A run that fails: the driver stops with an error, leaves the rows up to the failure in
+    OUTPUT.part and does not write OUTPUT; the package raises the same failure, and the rows its
+    error carries are that file's, byte for byte."""
     done = subprocess.run([driver, str(case), "--output-dir", str(tmp_path), "--no-plot"],
                           capture_output=True, text=True)
-    assert done.returncode != 0 and "incomplete" in done.stderr, done.stdout + done.stderr
     c = interphase.read_case(case)
+    assert done.returncode != 0 and (c.output + ".part") in done.stderr, done.stdout + done.stderr
+    assert not (tmp_path / c.output).exists()
     with pytest.raises(interphase.InterphaseError) as caught:
         c.run()
     error = caught.value
     assert error.status == status and words in str(error), str(error)
     ours = tmp_path / "python.csv"
     error.result.to_csv(ours)
-    assert ours.read_bytes() == (tmp_path / c.output).read_bytes()
+    assert ours.read_bytes() == (tmp_path / (c.output + ".part")).read_bytes()
     return error
 
 
