@@ -372,7 +372,7 @@ contains
       !> Points per group: the groups' working arrays stay in the L1 cache.
       integer, parameter :: SUB = 64
       real(dp) :: sn_w(SUB), st1_w(SUB), st2_w(SUB), lam1_w(SUB), lam2_w(SUB), t_sq_w(SUB), d_w(SUB)
-      real(dp) :: m_w(SUB)
+      real(dp) :: m_w(SUB), bad_w(SUB)
       real(dp), dimension(SUB) :: ck_n, ck_t, ckc_n, ckc_t, cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar
       logical :: ok_w(SUB), okc(SUB)
       real(dp) :: s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
@@ -537,9 +537,7 @@ contains
                regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
                open = d_k <= 0.0_dp .or. cdbar_n(i)*s_n_k > 0.0_dp
-               ok_k = ok_w(i) .and. (open .or. .not. slipping .or. kf > 0.0_dp)
-               ok(k) = ok_k
-               nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
+               bad_w(i) = merge(1.0_dp, 0.0_dp, .not. open .and. slipping .and. .not. (kf > 0.0_dp))
                d(k) = d_k
                t_n(k) = merge(tn_open, tn_closed, open)
                t_t1(k) = merge(tt1_open, tt1_closed, open)
@@ -597,9 +595,7 @@ contains
                regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
                open = d_k <= 0.0_dp .or. cdbar_n(i)*s_n_k > 0.0_dp
-               ok_k = ok_w(i) .and. (open .or. .not. slipping .or. kf > 0.0_dp)
-               ok(k) = ok_k
-               nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
+               bad_w(i) = merge(1.0_dp, 0.0_dp, .not. open .and. slipping .and. .not. (kf > 0.0_dp))
                d(k) = d_k
                t_n(k) = merge(tn_open, tn_closed, open)
                t_t1(k) = merge(tt1_open, tt1_closed, open)
@@ -610,6 +606,14 @@ contains
                regime(k) = merge(regime_if_open, regime_if_closed, open)
             end do
          end if
+         ! ok: the separation and the table at D (and D_n), and the return mapping's -T^f > 0
+         ! (respond's check; a flag of its own so that pass 2 has no logical arrays to vectorise)
+         do i = 1, m
+            k = c0 + i - 1
+            ok_k = ok_w(i) .and. bad_w(i) < 0.5_dp
+            ok(k) = ok_k
+            nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
+         end do
       end do
       nfailed = int(nfailed_count)
    end subroutine micromechanical_block_update
