@@ -81,7 +81,8 @@ awk '/^VUMAT, / {sub(/^VUMAT, /, ""); sub(/, mixed history.*/, ""); title=$0}
      $1 == 4096 {printf "%-46s %10.2f %10.2f %8.2f\n", title, $2, $3, $2/$3}' "$work/vumat.txt"
 
 # best ns per call of row `name`, `history` from interphase-bench output
-umat_ns() { awk -v name="$2" -v hist="$3" 'index($0, name) == 1 && index($0, hist) > 0 {print $(NF-2)}' "$1"; }
+# (the name is right-aligned in its column: matched anywhere in the line)
+umat_ns() { awk -v name="$2" -v hist="$3" 'index($0, name) > 0 && index($0, hist) > 0 {print $(NF-2)}' "$1"; }
 echo
 echo "UMAT, best ns per call of 5 runs ($calls calls each), and ratios within each build:"
 printf '%-34s %10s %10s %12s\n' "case" "LTO" "no LTO" "instr./call"
