@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Build interphase and run every test: a strict Debug build (-std=f2008 -Wall -Wextra
 # -fcheck=all, warnings are errors) with the full ctest suite, then an optimised Release build
-# (warnings are errors) with the suite except the slow RVE (FreeFEM) tests.
+# (warnings are errors) with the suite except the slow RVE (FreeFEM) tests. Both runs include
+# the Python package's suites (ctest label python, docs/python.md).
 # Usage: tools/run-tests.sh [BUILD_ROOT]   (default: ./build)
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 root=${1:-$here/build}
 jobs=$(nproc 2>/dev/null || echo 2)
 
-bash "$here/tools/ensure-packages.sh" freefem gnuplot
+bash "$here/tools/ensure-packages.sh" freefem gnuplot pkgconfig numpy scipy matplotlib pytest
 
 for type in Debug Release; do
   dir="$root/${type,,}"

@@ -11,7 +11,7 @@
 #                  (INTERPHASE_TABLE, INTERPHASE_RCURVE): src/abaqus/uexternaldb.f90 for
 #                  Abaqus/Standard, src/abaqus/vexternaldb.f90 with --explicit
 #   --build-dir    a configured and built interphase build directory, for the sources generated at
-#                  build time (the compiled-in RVE table, generated/*.f90); default ./build
+#                  build time (the compiled-in RVE table, generated/*.f90); default ./build/release
 #   -o FILE        output file (default interphase_abaqus_standard.f90 / _explicit.f90)
 #
 # The file holds the entry point, the Abaqus message hook and every module they use, directly or
@@ -25,7 +25,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 solver=standard
-build_dir=$PWD/build
+build_dir=$PWD/build/release
 with_uexternaldb=no
 output=""
 while [ $# -gt 0 ]; do
@@ -94,7 +94,7 @@ visit() {
       dep=${module_file[$m]:-}
       if [ -z "$dep" ]; then
          echo "make-user-file.sh: module '$m' used by $f is not in src/ or $build_dir/generated/" >&2
-         echo "  (generated sources need a built tree: cmake -B build && cmake --build build; then --build-dir build)" >&2
+         echo "  (generated sources need a built tree: cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release && cmake --build build/release; then --build-dir build/release)" >&2
          exit 1
       fi
       visit "$dep"
