@@ -7,7 +7,7 @@ module interphase_finite
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: is_finite, is_within, EXPONENT_MASK, MAGNITUDE_MASK
+   public :: is_finite, is_within, all_within, EXPONENT_MASK, MAGNITUDE_MASK
 
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
    integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
@@ -29,5 +29,19 @@ contains
       real(dp), intent(in) :: x, bound
       is_within = iand(transfer(x, 0_int64), MAGNITUDE_MASK) <= transfer(bound, 0_int64)
    end function is_within
+
+   !> all(is_within(x(1:n), bound)) in one call (a call per element costs more than the test where
+   !> the caller is in another translation unit and cannot inline it). A scalar loop that stops
+   !> at the first value out of range: the arrays are a host's 2 to 6 components.
+   pure logical function all_within(n, x, bound)
+      integer, intent(in) :: n            !! number of values
+      real(dp), intent(in) :: x(n), bound
+      integer :: i
+      all_within = .false.
+      do i = 1, n
+         if (.not. is_within(x(i), bound)) return
+      end do
+      all_within = .true.
+   end function all_within
 
 end module interphase_finite

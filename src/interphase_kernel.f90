@@ -26,7 +26,7 @@
 !> Stored energy: open or intact psi = 1/2 t.s; closed psi = 1/2 t.s + 1/2 C^f lambda.s_T
 !> - 1/2 D T^f ufbar |lambda|^2 (docs/theory.md).
 module interphase_kernel
-   use interphase_finite, only: is_finite, is_within
+   use interphase_finite, only: is_finite, all_within
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
@@ -74,7 +74,7 @@ contains
       end if
       ! finite and within |s_i| <= SEPARATION_MAX (beyond, the arithmetic would overflow:
       ! interphase_params), in one pass; which of the two failed is looked at only on failure
-      if (.not. all(is_within(s, SEPARATION_MAX))) then
+      if (.not. all_within(ntens, s, SEPARATION_MAX)) then
          status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s)))
          return
       end if
@@ -125,7 +125,10 @@ contains
       new%d = d
       new%slip = r%slip
       new%regime = r%regime
-      traction(1:ntens) = r%traction(1:ntens)
+      ! (component by component: a whole-array copy of 2 or 3 values is a library call)
+      traction(1) = r%traction(1)
+      traction(2) = r%traction(2)
+      if (ntens == 3) traction(3) = r%traction(3)
       select case (params%stiffness)
       case (STIFFNESS_FIXED_DAMAGE)
          ! the tangent at fixed D, without the slipping crack's coupling of the shear traction to

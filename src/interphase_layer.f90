@@ -50,15 +50,13 @@ contains
       type(layer_map_type), intent(out) :: map
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
-      integer :: n, base
+      integer :: n
 
       status = STATUS_OK
       map%nsep = 0
       map%component = 0
       map%thickness = 1.0_dp
       map%identity = .false.
-      base = merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, params%model == MODEL_MICROMECHANICAL)
-      if (params%damage_law == DAMAGE_FRACTURE) base = base + NPROPS_FRACTURE_EXTRA
       n = params%layer_normal
       if (ntens /= ndi + nshr) then
          status = STATUS_BAD_NTENS
@@ -71,7 +69,8 @@ contains
          ! a cohesive element: normal first
          if (n /= 0) then
             status = STATUS_BAD_OPTION
-            write (message, '(a,i0,a,i0,a)') 'PROPS(', base + OPT_LAYER_NORMAL, ') layer normal axis = ', n, &
+            write (message, '(a,i0,a,i0,a)') 'PROPS(', options_base(params) + OPT_LAYER_NORMAL, &
+               ') layer normal axis = ', n, &
                ' but the element is a cohesive one (NDI = 1, normal first): set it to 0'
             return
          end if
@@ -96,7 +95,8 @@ contains
          status = STATUS_BAD_OPTION
          write (message, '(a,i0,a,i0,a,i0,a,i0,a)') 'a continuum element (NDI = ', ndi, ', NSHR = ', nshr, &
             ') needs the thin-layer mode: set the layer thickness t > 0 (mm) in PROPS(', &
-            base + OPT_LAYER_THICKNESS, ') and its normal axis in PROPS(', base + OPT_LAYER_NORMAL, ')'
+            options_base(params) + OPT_LAYER_THICKNESS, ') and its normal axis in PROPS(', &
+            options_base(params) + OPT_LAYER_NORMAL, ')'
          return
       end if
       map%thickness = params%layer_thickness
@@ -105,7 +105,8 @@ contains
          ! layer's normal lies in the plane, the one shear is 12
          if (n /= 1 .and. n /= 2) then
             status = STATUS_BAD_OPTION
-            write (message, '(a,i0,a,i0,a)') 'PROPS(', base + OPT_LAYER_NORMAL, ') layer normal axis = ', n, &
+            write (message, '(a,i0,a,i0,a)') 'PROPS(', options_base(params) + OPT_LAYER_NORMAL, &
+               ') layer normal axis = ', n, &
                ' but a 2-D continuum element (NSHR = 1) needs the in-plane axis 1 or 2'
             return
          end if
@@ -122,12 +123,21 @@ contains
             map%component = [3, ndi + 2, ndi + 3]     ! gamma_13, gamma_23
          case default
             status = STATUS_BAD_OPTION
-            write (message, '(a,i0,a,i0,a)') 'PROPS(', base + OPT_LAYER_NORMAL, ') layer normal axis = ', n, &
+            write (message, '(a,i0,a,i0,a)') 'PROPS(', options_base(params) + OPT_LAYER_NORMAL, &
+               ') layer normal axis = ', n, &
                ' but a 3-D continuum element needs the axis 1, 2 or 3 of the layer''s normal'
             return
          end select
          map%nsep = 3
       end if
    end subroutine layer_map
+
+   !> The PROPS index before the option constants (for the messages; found only when one is
+   !> written).
+   pure integer function options_base(params) result(base)
+      type(law_params_type), intent(in) :: params
+      base = merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, params%model == MODEL_MICROMECHANICAL)
+      if (params%damage_law == DAMAGE_FRACTURE) base = base + NPROPS_FRACTURE_EXTRA
+   end function options_base
 
 end module interphase_layer

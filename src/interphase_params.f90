@@ -3,7 +3,7 @@
 !> symbol, the value and the admissible range; nothing is clamped.
 module interphase_params
    use, intrinsic :: iso_fortran_env, only: int64
-   use interphase_finite, only: is_finite
+   use interphase_finite, only: EXPONENT_MASK
    use interphase_kinds, only: dp
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
       PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, PROP_TABLE, NPROPS_MICROMECHANICAL, LFM_D0, &
@@ -51,6 +51,15 @@ module interphase_params
    real(dp), parameter, public :: DENSITY_MIN = 1.0e-50_dp, DENSITY_MAX = 1.0e50_dp
    !> The window [PROPS_VALUE_MIN, PROPS_VALUE_MAX] and its upper end as the messages show them.
    character(len=*), parameter :: WINDOW_TEXT = '[1e-20, 1e20]', RANGE_MAX_TEXT = '1e20'
+   !> The window's ends as bit patterns: positive reals are ordered like their bit patterns read
+   !> as signed integers, negative ones (sign bit set) lie below every positive one, +Inf and NaN
+   !> above every finite one; so a test on the bits is a range test raising no FP exception.
+   integer(int64), parameter :: WINDOW_MIN_BITS = transfer(PROPS_VALUE_MIN, 0_int64)
+   integer(int64), parameter :: WINDOW_MAX_BITS = transfer(PROPS_VALUE_MAX, 0_int64)
+   !> The largest selector code (PROPS values that select a model, a law, a table, an option)
+   !> and its bit pattern.
+   integer, parameter :: MAX_SELECTOR = 9
+   integer(int64), parameter :: MAX_SELECTOR_BITS = transfer(real(MAX_SELECTOR, dp), 0_int64)
 
    !> Parameters of one interface material (immutable once decoded).
    type :: law_params_type
@@ -415,45 +424,56 @@ contains
    end subroutine reject
 
    !> The selector code held by a PROPS value: c when `x` is exactly the real number c for a code
-   !> 0 <= c <= MAX_SELECTOR, else -1 (which no selector uses). The test compares bit patterns,
-   !> so NaN, Inf or a fractional value can raise no floating-point exception (a conversion
-   !> int(x) of a NaN would, even when guarded: the optimiser may hoist it).
+   !> 0 <= c <= MAX_SELECTOR, else -1 (which no selector uses). The range is tested on the bit
+   !> pattern first (+0 <= x <= MAX_SELECTOR: false for -0, NaN and Inf), so the conversion and
+   !> the comparison of bit patterns only ever see a finite x in that range: no floating-point
+   !> exception.
    pure integer function selector_code(x) result(code)
       real(dp), intent(in) :: x
-      integer, parameter :: MAX_SELECTOR = 9
-      integer :: candidate
+      integer(int64) :: b
+      integer :: k
       code = -1
-      do candidate = 0, MAX_SELECTOR
-         if (transfer(x, 0_int64) == transfer(real(candidate, dp), 0_int64)) code = candidate
-      end do
+      b = transfer(x, 0_int64)
+      if (b >= 0_int64 .and. b <= MAX_SELECTOR_BITS) then
+         k = int(x)
+         if (transfer(real(k, dp), 0_int64) == b) code = k
+      end if
    end function selector_code
 
    !> x lies in [PROPS_VALUE_MIN, PROPS_VALUE_MAX] (false for NaN and Inf, without an exception).
    pure logical function in_window(x)
       real(dp), intent(in) :: x
-      in_window = .false.
-      if (is_finite(x)) in_window = x >= PROPS_VALUE_MIN .and. x <= PROPS_VALUE_MAX
+      integer(int64) :: b
+      b = transfer(x, 0_int64)
+      in_window = b >= WINDOW_MIN_BITS .and. b <= WINDOW_MAX_BITS
    end function in_window
+
+   !> x is neither NaN nor Inf (interphase_finite's test, here where the decoder's checks can
+   !> inline it).
+   pure logical function finite(x)
+      real(dp), intent(in) :: x
+      finite = iand(transfer(x, 0_int64), EXPONENT_MASK) /= EXPONENT_MASK
+   end function finite
 
    !> x is finite and x > lower (false for NaN and Inf, without an invalid-operation exception).
    pure logical function finite_above(x, lower)
       real(dp), intent(in) :: x, lower
       finite_above = .false.
-      if (is_finite(x)) finite_above = x > lower
+      if (finite(x)) finite_above = x > lower
    end function finite_above
 
    !> x is finite and x <= upper.
    pure logical function finite_at_most(x, upper)
       real(dp), intent(in) :: x, upper
       finite_at_most = .false.
-      if (is_finite(x)) finite_at_most = x <= upper
+      if (finite(x)) finite_at_most = x <= upper
    end function finite_at_most
 
    !> x is finite and x >= lower.
    pure logical function finite_at_least(x, lower)
       real(dp), intent(in) :: x, lower
       finite_at_least = .false.
-      if (is_finite(x)) finite_at_least = x >= lower
+      if (finite(x)) finite_at_least = x >= lower
    end function finite_at_least
 
 end module interphase_params

@@ -30,10 +30,10 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, &
       layer, kspt, jstep, kinc)
    use interphase_kinds, only: dp
-   use interphase_finite, only: is_finite, is_within
+   use interphase_finite, only: is_finite, is_within, all_within
    use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
-      STATUS_BAD_TIME_INCREMENT, status_message
+      STATUS_BAD_TIME_INCREMENT
    use interphase_params, only: law_params_type, from_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_layer, only: layer_map_type, layer_map
    use interphase_layout, only: HOST_CALCULIX
@@ -41,8 +41,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_kernel, only: interface_update
    use interphase_provider, only: check_run_time_data
    use interphase_rcurve, only: rcurve_coverage
-   use interphase_abaqus_interfaces, only: interphase_host_message
-   use interphase_replay_file, only: write_replay
+   use interphase_umat_failure, only: umat_fail
    implicit none
    integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, layer, kspt, kinc
    integer, intent(in) :: jstep(4)
@@ -54,14 +53,11 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    real(dp), intent(in) :: celent, dfgrd0(3, 3), dfgrd1(3, 3)
    character(len=80), intent(in) :: cmname
 
-   !> Factor applied to PNEWDT when an update fails (Abaqus retries a smaller increment).
-   real(dp), parameter :: PNEWDT_CUTBACK = 0.25_dp
-
    type(law_params_type) :: params
    type(layer_map_type) :: map
    type(interface_state_type) :: old, new
    real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6)
-   integer :: status, nsep, i, j
+   integer :: status, severity, nsep, i, j
    logical :: host_energies
    !> the host is CalculiX (known once PROPS are decoded): its DDSDDE is uninitialised, and it
    !> symmetrises and stores it even from a call that asks for a cut-back
@@ -70,136 +66,120 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    character(len=66) :: stress_text
 
    calculix = .false.
-   call from_props(props, params, status, message)
-   if (status /= STATUS_OK) then
-      call fail(status, SEVERITY_FATAL)
-      return
-   end if
-   ! which components carry the separation: a cohesive element's, or a thin layer's
-   call layer_map(params, ndi, nshr, ntens, map, status, message)
-   if (status /= STATUS_OK) then
-      call fail(status, SEVERITY_FATAL)
-      return
-   end if
-   nsep = map%nsep
-   host_energies = params%host /= HOST_CALCULIX
-   calculix = .not. host_energies
-   ! a custom table or R-curve that was not loaded at start-up: no smaller increment can help
-   call check_run_time_data(params, status, message)
-   if (status /= STATUS_OK) then
-      call fail(status, SEVERITY_FATAL)
-      return
-   end if
-   call state_unpack(statev, nsep, old, status, message, viscous=params%viscosity > 0.0_dp)
-   if (status /= STATUS_OK) then
-      call fail(status, SEVERITY_FATAL)
-      return
-   end if
+   ! every failure leaves this block with status, severity and message set (reported below,
+   ! out of line, before STRESS, STATEV, DDSDDE, SSE or SPD are touched)
+   update: block
+      severity = SEVERITY_FATAL
+      call from_props(props, params, status, message)
+      if (status /= STATUS_OK) exit update
+      ! which components carry the separation: a cohesive element's, or a thin layer's
+      call layer_map(params, ndi, nshr, ntens, map, status, message)
+      if (status /= STATUS_OK) exit update
+      nsep = map%nsep
+      host_energies = params%host /= HOST_CALCULIX
+      calculix = .not. host_energies
+      ! a custom table or R-curve that was not loaded at start-up: no smaller increment can help
+      call check_run_time_data(params, status, message)
+      if (status /= STATUS_OK) exit update
+      call state_unpack(statev, nsep, old, status, message, viscous=params%viscosity > 0.0_dp)
+      if (status /= STATUS_OK) exit update
 
-   ! the host's values, before any arithmetic on them (so that none can raise an exception):
-   ! STRAN and DSTRAN as the separation is checked (within HOST_INCREMENT_MAX; a smaller
-   ! increment may help), STRESS, SSE and SPD within HOST_VALUE_MAX (the values the UMAT
-   ! returned last: fatal otherwise)
-   if (.not. (all(is_within(stran, HOST_INCREMENT_MAX)) .and. all(is_within(dstran, HOST_INCREMENT_MAX)))) then
-      write (message, '(a,6es12.4)') 'STRAN ', stran
-      write (stress_text, '(6es11.3)') dstran
-      message = trim(message)//', DSTRAN'//trim(stress_text)
-      call fail(merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
-         all(is_finite(stran)) .and. all(is_finite(dstran))), SEVERITY_WARNING)
-      return
-   end if
-   if (.not. all(is_within(stress, HOST_VALUE_MAX))) then
-      write (stress_text, '(6es11.3)') stress
-      write (message, '(a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), &
-         ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned last)'
-      call fail(STATUS_BAD_HOST_INPUT, SEVERITY_FATAL)
-      return
-   end if
-   if (host_energies) then
-      if (.not. (is_within(sse, HOST_VALUE_MAX) .and. is_within(spd, HOST_VALUE_MAX))) then
-         write (message, '(a,es11.3,a,es11.3,a,es9.1e3,a)') 'incoming SSE ', sse, ', SPD ', spd, &
-            ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned '// &
-            'last; a host that does not keep them, such as CalculiX, needs the host option 1)'
-         call fail(STATUS_BAD_HOST_INPUT, SEVERITY_FATAL)
-         return
+      ! the host's values, before any arithmetic on them (so that none can raise an exception):
+      ! STRAN and DSTRAN as the separation is checked (within HOST_INCREMENT_MAX; a smaller
+      ! increment may help), STRESS, SSE and SPD within HOST_VALUE_MAX (the values the UMAT
+      ! returned last: fatal otherwise)
+      if (.not. (all_within(ntens, stran, HOST_INCREMENT_MAX) .and. all_within(ntens, dstran, HOST_INCREMENT_MAX))) then
+         write (message, '(a,6es12.4)') 'STRAN ', stran
+         write (stress_text, '(6es11.3)') dstran
+         message = trim(message)//', DSTRAN'//trim(stress_text)
+         status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
+            all(is_finite(stran)) .and. all(is_finite(dstran)))
+         severity = SEVERITY_WARNING
+         exit update
       end if
-   end if
-   if (map%identity) then
-      ! a cohesive element: the separations themselves (NTENS = 2 or 3)
-      s(1:ntens) = stran + dstran
-      call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
-         new, psi, status, dtime)
-   else
-      do i = 1, nsep
-         s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
-      end do
+      if (.not. all_within(ntens, stress, HOST_VALUE_MAX)) then
+         write (stress_text, '(6es11.3)') stress
+         write (message, '(a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), &
+            ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned last)'
+         status = STATUS_BAD_HOST_INPUT
+         exit update
+      end if
+      if (host_energies) then
+         if (.not. (is_within(sse, HOST_VALUE_MAX) .and. is_within(spd, HOST_VALUE_MAX))) then
+            write (message, '(a,es11.3,a,es11.3,a,es9.1e3,a)') 'incoming SSE ', sse, ', SPD ', spd, &
+               ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned '// &
+               'last; a host that does not keep them, such as CalculiX, needs the host option 1)'
+            status = STATUS_BAD_HOST_INPUT
+            exit update
+         end if
+      end if
+      if (map%identity) then
+         ! a cohesive element: the separations themselves (NTENS = 2 or 3)
+         s(1:ntens) = stran + dstran
+      else
+         do i = 1, nsep
+            s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
+         end do
+      end if
       call interface_update(params, old, s(1:nsep), traction(1:nsep), tangent(1:nsep, 1:nsep), &
          new, psi, status, dtime)
-   end if
-   if (status == STATUS_BAD_TIME_INCREMENT) then
-      write (message, '(a,es12.4,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
-      call fail(status, SEVERITY_FATAL)
-      return
-   else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
-      ! the R-curve file does not reach the damage this point needs: a setup error
-      write (message, '(a,a,g0.6,a,3es12.4)', iostat=status) rcurve_coverage(), '; the crack grows beyond it from D = ', &
-         old%d, ' at separation (mm) ', s(1:nsep)
-      call fail(STATUS_RCURVE_OUT_OF_RANGE, SEVERITY_FATAL)
-      return
-   else if (status /= STATUS_OK) then
-      write (message, '(a,3es12.4)') 'update failed at separation (mm) ', s(1:nsep)
-      call fail(status, SEVERITY_WARNING)
-      return
-   end if
+      if (status == STATUS_BAD_TIME_INCREMENT) then
+         write (message, '(a,es12.4,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
+         exit update
+      else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
+         ! the R-curve file does not reach the damage this point needs: a setup error
+         write (message, '(a,a,g0.6,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+            old%d, ' at separation (mm) ', s(1:nsep)
+         exit update
+      else if (status /= STATUS_OK) then
+         write (message, '(a,3es12.4)') 'update failed at separation (mm) ', s(1:nsep)
+         severity = SEVERITY_WARNING
+         exit update
+      end if
 
-   ! every term bounded (|STRESS|, |SSE|, |SPD| <= HOST_VALUE_MAX, |DSTRAN| <= HOST_INCREMENT_MAX,
-   ! the kernel's outputs by the admissible ranges, t >= 1e-6 mm): no overflow
-   if (map%identity) then
-      if (host_energies) then
-         spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
-         sse = psi
-      end if
-      stress = traction(1:ntens)
-      ddsdde = tangent(1:ntens, 1:ntens)
-   else
-      ! the layer: tractions on its plane, no in-plane stress; energies per unit volume
-      sigma(1:ntens) = 0.0_dp
-      sigma(map%component(1:nsep)) = traction(1:nsep)
-      if (host_energies) then
-         spd = spd + 0.5_dp*sum((stress + sigma(1:ntens))*dstran) - (psi/map%thickness - sse)
-         sse = psi/map%thickness
-      end if
-      stress = sigma(1:ntens)
-      ddsdde = 0.0_dp
-      do j = 1, nsep
-         do i = 1, nsep
-            ddsdde(map%component(i), map%component(j)) = map%thickness*tangent(i, j)
+      ! every term bounded (|STRESS|, |SSE|, |SPD| <= HOST_VALUE_MAX, |DSTRAN| <= HOST_INCREMENT_MAX,
+      ! the kernel's outputs by the admissible ranges, t >= 1e-6 mm): no overflow
+      if (map%identity) then
+         if (host_energies) then
+            spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
+            sse = psi
+         end if
+         ! (component by component: a whole-array copy of 2 or 3 values is a library call)
+         stress(1) = traction(1)
+         stress(2) = traction(2)
+         ddsdde(1, 1) = tangent(1, 1)
+         ddsdde(2, 1) = tangent(2, 1)
+         ddsdde(1, 2) = tangent(1, 2)
+         ddsdde(2, 2) = tangent(2, 2)
+         if (ntens == 3) then
+            stress(3) = traction(3)
+            ddsdde(3, 1) = tangent(3, 1)
+            ddsdde(3, 2) = tangent(3, 2)
+            ddsdde(1, 3) = tangent(1, 3)
+            ddsdde(2, 3) = tangent(2, 3)
+            ddsdde(3, 3) = tangent(3, 3)
+         end if
+      else
+         ! the layer: tractions on its plane, no in-plane stress; energies per unit volume
+         sigma(1:ntens) = 0.0_dp
+         sigma(map%component(1:nsep)) = traction(1:nsep)
+         if (host_energies) then
+            spd = spd + 0.5_dp*sum((stress + sigma(1:ntens))*dstran) - (psi/map%thickness - sse)
+            sse = psi/map%thickness
+         end if
+         stress = sigma(1:ntens)
+         ddsdde = 0.0_dp
+         do j = 1, nsep
+            do i = 1, nsep
+               ddsdde(map%component(i), map%component(j)) = map%thickness*tangent(i, j)
+            end do
          end do
-      end do
-   end if
-   call state_pack(new, statev, viscous=params%viscosity > 0.0_dp)
+      end if
+      call state_pack(new, statev, viscous=params%viscosity > 0.0_dp)
+      return
+   end block update
 
-contains
-
-   !> Ask for a cut-back and pass the message, with where it happened, to the host. Abaqus
-   !> passes PNEWDT large and keeps the smallest value the points return; CalculiX passes -1 (no
-   !> request) and takes any value > 0 as the factor, the smallest over the points: so the request
-   !> is PNEWDT_CUTBACK unless a smaller positive one is there already. With
-   !> INTERPHASE_REPLAY_DIR set, the call's inputs go to a replay file first (its path is named).
-   subroutine fail(code, severity)
-      integer, intent(in) :: code, severity
-      character(len=2*MESSAGE_LEN) :: full
-      character(len=:), allocatable :: replay
-      if (.not. (pnewdt > 0.0_dp .and. pnewdt <= PNEWDT_CUTBACK)) pnewdt = PNEWDT_CUTBACK
-      ! CalculiX: a defined (zero) stiffness rather than whatever its uninitialised DDSDDE held;
-      ! ccx discards the increment anyway
-      if (calculix) ddsdde = 0.0_dp
-      write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
-         ': ', status_message(code), ': ', trim(message)
-      call write_replay('umat', trim(full), props, statev, stress, sse, spd, stran, dstran, time, dtime, &
-         noel, npt, kinc, replay, ndi, nshr)
-      if (len(replay) > 0) full = trim(full)//' (replay file: '//replay//')'
-      call interphase_host_message(severity, trim(full))
-   end subroutine fail
+   call umat_fail(status, severity, message, calculix, pnewdt, ddsdde, cmname, noel, npt, kinc, &
+      props, statev, stress, sse, spd, stran, dstran, time, dtime, ndi, nshr)
 
 end subroutine umat
