@@ -11,15 +11,17 @@ module interphase_micro_coefficients
    use interphase_logarithm, only: ln_positive
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
-      STATUS_TABLE_INTERPOLANT, status_message, message_path
+      STATUS_TABLE_INTERPOLANT, status_message, message_path, STATUS_SPLINE_OUT_OF_RANGE, &
+      STATUS_SPLINE_NONFINITE_ARGUMENT
    use interphase_coefficients, only: coefficient_set_type
+   use interphase_finite, only: is_finite
    use interphase_spline, only: spline_type, spline_build, spline_export, &
-      cubic_locate, cubic_eval
+      cubic_locate, cubic_eval, guide_build
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
       interpolation_data, crack_variable, N_COEFFICIENTS, TABLE_SPLINE_METHOD, VARIABLE_DAMAGE, IC_K_N, IC_K_T, &
       IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_CF_T, IC_DTF, IC_UFBAR
    use interphase_default_table, only: DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_SOURCE, &
-      DEFAULT_TABLE_VARIABLE
+      DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS
    implicit none
    private
    public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded, &
@@ -35,6 +37,10 @@ module interphase_micro_coefficients
    integer, protected :: custom_variable = 0
    real(dp), allocatable, protected :: custom_knots(:)
    real(dp), allocatable, protected :: custom_coef(:, :, :)
+   !> its knots' interval guide (interphase_spline's guide_build)
+   integer, allocatable, protected :: custom_guide(:)
+   real(dp), protected :: custom_guide_scale = 0.0_dp
+   integer, protected :: custom_guide_steps = 0
    character(len=:), allocatable, protected :: custom_source
 
 contains
@@ -53,10 +59,11 @@ contains
             return
          end if
          call table_coefficients(custom_variable, custom_knots, custom_coef, d, coef, dcoef_dd, status, &
-            d2coef_dd2)
+            d2coef_dd2, custom_guide, custom_guide_scale, custom_guide_steps)
       else
          call table_coefficients(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, d, &
-            coef, dcoef_dd, status, d2coef_dd2)
+            coef, dcoef_dd, status, d2coef_dd2, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, &
+            DEFAULT_TABLE_GUIDE_STEPS)
       end if
    end subroutine micro_coefficients
 
@@ -66,33 +73,71 @@ contains
    !> zero derivatives. Below D = D_MIN_CRACK (> 0) T^f ~ 1/D and its derivatives ~ 1/D^2,
    !> 1/D^3 would come close to overflow: STATUS_BAD_COEFFICIENTS (no update reaches such a D:
    !> the displacement law's first damage is above 1e-16, and D0 is the fracture law's start).
-   pure subroutine table_coefficients(variable, knots, coef_table, d, coef, dcoef_dd, status, d2coef_dd2)
+   pure subroutine table_coefficients(variable, knots, coef_table, d, coef, dcoef_dd, status, d2coef_dd2, &
+         guide, guide_scale, guide_steps)
       integer, intent(in) :: variable                        !! VARIABLE_* of the knots
-      real(dp), intent(in) :: knots(:)                       !! knots, ascending
-      real(dp), intent(in) :: coef_table(:, 0:, :)           !! cubic coefficients (column, power, interval)
+      real(dp), contiguous, intent(in) :: knots(:)           !! knots, ascending
+      !> cubic coefficients (column, power, interval), the columns IC_* (N_COEFFICIENTS of them)
+      real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)
       real(dp), intent(in) :: d
       type(coefficient_set_type), intent(out) :: coef
       type(coefficient_set_type), intent(out) :: dcoef_dd
       integer, intent(out) :: status
       type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives d2/dD2
+      !> the knots' interval guide (guide_build), all three or none: the interval from x's cell
+      !> (the same interval as cubic_locate's binary search, in fewer steps)
+      integer, intent(in), optional :: guide(:)
+      real(dp), intent(in), optional :: guide_scale
+      integer, intent(in), optional :: guide_steps
 
       real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS), d2v(N_COEFFICIENTS)
-      real(dp) :: tf, dtf, d2tf
-      integer :: interval
+      real(dp) :: tf, dtf, d2tf, t
+      integer :: interval, candidate, j, k
 
       if (d > 0.0_dp .and. d < D_MIN_CRACK) then
          status = STATUS_BAD_COEFFICIENTS
          return
       end if
       call crack_variable(variable, d, x, dx_dd, d2x_dd2)
-      call cubic_locate(knots, x, interval, status)
-      if (status /= STATUS_OK) return
-      if (present(d2coef_dd2)) then
-         call cubic_eval(knots, coef_table, interval, x, v, dv, d2v)
-         ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
-         d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
+      if (present(guide)) then
+         ! cubic_locate's checks, then the interval from the guide: the guide's interval for x's
+         ! cell, then guide_steps forward comparisons (guide_build); and cubic_eval's Horner
+         ! form, here where the loop knows its columns and the data's unit strides
+         if (.not. is_finite(x)) then
+            status = STATUS_SPLINE_NONFINITE_ARGUMENT
+            return
+         else if (x < knots(1) .or. x > knots(size(knots))) then
+            status = STATUS_SPLINE_OUT_OF_RANGE
+            return
+         end if
+         status = STATUS_OK
+         interval = guide(min(size(guide), max(1, int((x - knots(1))*guide_scale) + 1)))
+         do k = 1, guide_steps
+            candidate = min(interval + 1, size(knots) - 1)
+            interval = merge(candidate, interval, x >= knots(candidate))
+         end do
+         if (present(d2coef_dd2)) then
+            call cubic_eval(knots, coef_table, interval, x, v, dv, d2v)
+            d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
+         else
+            t = x - knots(interval)
+            do j = 1, N_COEFFICIENTS
+               v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
+                  + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
+               dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
+                  + 3.0_dp*t*coef_table(j, 3, interval))
+            end do
+         end if
       else
-         call cubic_eval(knots, coef_table, interval, x, v, dv)
+         call cubic_locate(knots, x, interval, status)
+         if (status /= STATUS_OK) return
+         if (present(d2coef_dd2)) then
+            call cubic_eval(knots, coef_table, interval, x, v, dv, d2v)
+            ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
+            d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
+         else
+            call cubic_eval(knots, coef_table, interval, x, v, dv)
+         end if
       end if
       dv = dv*dx_dd
       ! T^f = v/D, T^f' = (v' - T^f)/D, T^f'' = (v'' - 2 T^f')/D with v = D T^f
@@ -114,8 +159,8 @@ contains
    !> The coefficients at n damages D(1:n) from the selected table, values only (no derivatives):
    !> the vectorised block update's provider (interphase_block). Each value is bit for bit what
    !> `table_coefficients` returns at that D: the same interpolation variable, the same interval
-   !> (found here by a branch-free binary search of fixed length, which ends where the search of
-   !> `cubic_locate` does), the same Horner form, the same T^f = (D T^f)/D. ok(i) = .false. where
+   !> (from the knots' interval guide, which ends where the search of `cubic_locate` does), the
+   !> same Horner form, the same T^f = (D T^f)/D. ok(i) = .false. where
    !> `table_coefficients` would fail (0 < D < D_MIN_CRACK, the variable outside the knots, no
    !> custom table loaded); the values there are finite but meaningless. D must be finite in
    !> [0, 1] (the block update's damages are). Compiled with -fno-trapping-math (CMakeLists.txt):
@@ -134,26 +179,30 @@ contains
             tc_t = 0.0_dp; sc_n = 0.0_dp; cf_t = 0.0_dp; tf = -huge(1.0_dp); ufbar = 1.0_dp
             return
          end if
-         call block_values(custom_variable, custom_knots, custom_coef, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, &
-            tc_t, sc_n, cf_t, tf, ufbar, ok)
+         call block_values(custom_variable, custom_knots, custom_coef, custom_guide, custom_guide_scale, &
+            custom_guide_steps, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, ok)
       else
-         call block_values(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, n, d, k_n, k_t, kc_n, &
-            kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, ok)
+         call block_values(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_GUIDE, &
+            DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, &
+            tc_t, sc_n, cf_t, tf, ufbar, ok)
       end if
    end subroutine micro_block_coefficients
 
    !> `micro_block_coefficients` on given interpolation data.
-   pure subroutine block_values(variable, knots, coef_table, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, &
-         sc_n, cf_t, tf, ufbar, ok)
+   pure subroutine block_values(variable, knots, coef_table, guide, guide_scale, guide_steps, n, d, k_n, k_t, &
+         kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, ok)
       integer, intent(in) :: variable
       real(dp), intent(in) :: knots(:)
       real(dp), intent(in) :: coef_table(:, 0:, :)
+      integer, intent(in) :: guide(:)                        !! the knots' interval guide (guide_build)
+      real(dp), intent(in) :: guide_scale
+      integer, intent(in) :: guide_steps
       integer, intent(in) :: n
       real(dp), intent(in) :: d(n)
       real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
       logical, intent(out) :: ok(n)
       real(dp) :: x(n), t(n), dtf(n), x_k, d_k
-      integer :: lo(n), nk, step, cand, i
+      integer :: lo(n), nk, step, cand, i, ncells
       nk = size(knots)
       ! the interpolation variable (crack_variable: x = D, or w = 1/(1 - ln(1 - D)), 0 at D = 1),
       ! with crack_variable's logarithm (ln_positive: the same bits in scalar and vector code)
@@ -168,21 +217,20 @@ contains
          end do
       end if
       ! the interval: the largest lo in 1..nk-1 with knots(lo) <= x (cubic_locate's interval; at
-      ! x = knots(nk), nk - 1), by binary lifting over powers of two, one vector gather per step
+      ! x = knots(nk), nk - 1), from the interval guide: the guide's interval of x's cell
+      ! (guide_cell, of x clamped to the knots: where ok is false x may lie outside), then
+      ! guide_steps forward comparisons (guide_locate), one vector gather each
+      ncells = size(guide)
       do i = 1, n
          ok(i) = .not. (d(i) > 0.0_dp .and. d(i) < D_MIN_CRACK) .and. x(i) >= knots(1) .and. x(i) <= knots(nk)
-         lo(i) = 1
+         x_k = min(max(x(i), knots(1)), knots(nk))
+         lo(i) = guide(min(ncells, max(1, int((x_k - knots(1))*guide_scale) + 1)))
       end do
-      step = 1
-      do while (2*step < nk - 1)
-         step = 2*step
-      end do
-      do while (step >= 1)
+      do step = 1, guide_steps
          do i = 1, n
-            cand = min(lo(i) + step, nk - 1)
+            cand = min(lo(i) + 1, nk - 1)
             lo(i) = merge(cand, lo(i), x(i) >= knots(cand))
          end do
-         step = step/2
       end do
       do i = 1, n
          t(i) = x(i) - knots(lo(i))
@@ -308,6 +356,9 @@ contains
       integer :: n
       real(dp) :: bad_d, bad_value
       real(dp), allocatable :: knots(:), coef(:, :, :)
+      integer, allocatable :: guide(:)
+      real(dp) :: guide_scale
+      integer :: guide_steps
       character(len=32) :: bad_name
 
       call read_rve_table(path, table, status, message)
@@ -330,8 +381,12 @@ contains
             trim(bad_name), ' = ', bad_value, ' at D = ', bad_d, ' (a = ', bad_d*table%b, ' mm), not > 0: add rows there'
          return
       end if
+      call guide_build(knots, guide, guide_scale, guide_steps)
       call move_alloc(knots, custom_knots)
       call move_alloc(coef, custom_coef)
+      call move_alloc(guide, custom_guide)
+      custom_guide_scale = guide_scale
+      custom_guide_steps = guide_steps
       custom_variable = table%variable
       ! the file as it was tried (a relative path resolved against the current directory)
       custom_source = table%source

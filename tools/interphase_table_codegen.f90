@@ -10,13 +10,16 @@ program interphase_table_codegen
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
       interpolation_data, N_COEFFICIENTS, TABLE_SPLINE_METHOD
-   use interphase_spline, only: spline_type, spline_build, spline_export
+   use interphase_spline, only: spline_type, spline_build, spline_export, guide_build
    implicit none
 
    character(len=4096) :: table_path, output_path
    type(rve_table_type) :: table
    type(spline_type) :: spline
    real(dp), allocatable :: w(:), y(:, :), knots(:), coef(:, :, :)
+   integer, allocatable :: guide(:)
+   real(dp) :: guide_scale
+   integer :: guide_steps
    integer :: status, n, unit, ios, i, line_unit
    character(len=MESSAGE_LEN) :: message
    character(len=1024) :: line
@@ -74,6 +77,12 @@ program interphase_table_codegen
    write (unit, '(a)') '   character(len=*), parameter, public :: DEFAULT_TABLE_SOURCE = '''// &
       trim(base_name(table_path))//''''
    call write_array('DEFAULT_TABLE_KNOTS', knots, public=.true.)
+   ! the interval guide of the knots (interphase_spline's guide_build: the interval of a point
+   ! from its cell and `steps` comparisons)
+   call guide_build(knots, guide, guide_scale, guide_steps)
+   write (unit, '(a,a)') '   real(dp), parameter, public :: DEFAULT_TABLE_GUIDE_SCALE = ', literal(guide_scale)
+   write (unit, '(a,i0)') '   integer, parameter, public :: DEFAULT_TABLE_GUIDE_STEPS = ', guide_steps
+   call write_integer_array('DEFAULT_TABLE_GUIDE', guide)
    do i = 1, n - 1
       call write_array('INTERVAL_'//int_text(i), reshape(coef(:, :, i), [size(coef(:, :, i))]), public=.false.)
    end do
@@ -135,5 +144,23 @@ contains
          end if
       end do
    end subroutine write_array
+
+   !> `integer, parameter, public :: NAME(size) = [ ... ]`, twenty numbers a line.
+   subroutine write_integer_array(name, values)
+      character(len=*), intent(in) :: name
+      integer, intent(in) :: values(:)
+      integer :: k, last
+      write (unit, '(a,i0,a)') '   integer, parameter, public :: '//name//'(', size(values), ') = [ &'
+      do k = 1, size(values), 20
+         last = min(size(values), k + 19)
+         if (last < size(values)) then
+            write (unit, '(6x,*(i0,:,", "))', advance='no') values(k:last)
+            write (unit, '(a)') ', &'
+         else
+            write (unit, '(6x,*(i0,:,", "))', advance='no') values(k:last)
+            write (unit, '(a)') ']'
+         end if
+      end do
+   end subroutine write_integer_array
 
 end program interphase_table_codegen
