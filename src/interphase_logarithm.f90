@@ -15,7 +15,7 @@ module interphase_logarithm
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: ln_positive
+   public :: ln_positive, ln_positive_block
 
    !> ln 2 rounded to binary64.
    real(dp), parameter :: LN2 = 0.693147180559945309417232121458176568_dp
@@ -35,19 +35,62 @@ contains
    !> is the hot path; no floating-point exception for such y).
    elemental real(dp) function ln_positive(y) result(ln_y)
       real(dp), intent(in) :: y
-      integer(int64) :: bits, mantissa, up
-      real(dp) :: m, f, s, z, e
+      integer(int64) :: bits, up
       bits = transfer(y, 0_int64)
-      mantissa = iand(bits, MANTISSA_MASK)
-      up = merge(1_int64, 0_int64, mantissa > SQRT2_MANTISSA)
-      ! m = mantissa in [1, 2), halved (exponent field 1022) when above sqrt(2)
-      m = transfer(ior(mantissa, ONE_BITS - ishft(up, 52)), 0.0_dp)
-      e = real(ishft(bits, -52) - 1023_int64 + up, dp)
+      up = above_sqrt2(bits)
+      ln_y = ln_series(real(int(ishft(bits, -52)) - 1023 + int(up), dp), &
+         transfer(reduced_mantissa(bits, up), 0.0_dp))
+   end function ln_positive
+
+   !> ln_y(i) = ln_positive(y(i)), i = 1..n, in one call: the same operations on each element
+   !> (so the same bits), in loops the compiler vectorises where a caller's own loop could not
+   !> inline a function of another translation unit. The bit patterns are moved as whole arrays,
+   !> a chunk at a time on the stack: a TRANSFER of one element would keep the loops scalar.
+   pure subroutine ln_positive_block(n, y, ln_y)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: y(n)        !! positive, finite, normal
+      real(dp), intent(out) :: ln_y(n)
+      integer, parameter :: CHUNK = 128
+      integer(int64) :: bits(CHUNK), m_bits(CHUNK), up(CHUNK)
+      real(dp) :: m(CHUNK)
+      integer :: i, first, k
+      do first = 1, n, CHUNK
+         k = min(CHUNK, n - first + 1)
+         bits(1:k) = transfer(y(first:first + k - 1), bits, k)
+         do i = 1, k
+            up(i) = above_sqrt2(bits(i))
+            m_bits(i) = reduced_mantissa(bits(i), up(i))
+         end do
+         m(1:k) = transfer(m_bits(1:k), m, k)
+         do i = 1, k
+            ln_y(first + i - 1) = ln_series(real(int(ishft(bits(i), -52)) - 1023 + int(up(i)), dp), m(i))
+         end do
+      end do
+   end subroutine ln_positive_block
+
+   !> 1 when the mantissa of the number with bit pattern b lies above sqrt(2), else 0.
+   elemental integer(int64) function above_sqrt2(b)
+      integer(int64), intent(in) :: b
+      above_sqrt2 = merge(1_int64, 0_int64, iand(b, MANTISSA_MASK) > SQRT2_MANTISSA)
+   end function above_sqrt2
+
+   !> The bit pattern of m: the mantissa in [1, 2), halved (exponent field 1022) when above
+   !> sqrt(2) (up = 1).
+   elemental integer(int64) function reduced_mantissa(b, up)
+      integer(int64), intent(in) :: b, up
+      reduced_mantissa = ior(iand(b, MANTISSA_MASK), ONE_BITS - ishft(up, 52))
+   end function reduced_mantissa
+
+   !> ln y = e ln 2 + ln m, m in [1/sqrt(2), sqrt(2)]: ln m = 2 atanh(s), s = (m - 1)/(m + 1),
+   !> as its series to s^21.
+   elemental real(dp) function ln_series(e, m) result(ln_y)
+      real(dp), intent(in) :: e, m
+      real(dp) :: f, s, z
       f = m - 1.0_dp
       s = f/(2.0_dp + f)
       z = s*s
       ln_y = e*LN2 + (2.0_dp*s + s*(z*(C1 + z*(C2 + z*(C3 + z*(C4 + z*(C5 + z*(C6 + z*(C7 + z*(C8 + z*(C9 &
          + z*C10)))))))))))
-   end function ln_positive
+   end function ln_series
 
 end module interphase_logarithm

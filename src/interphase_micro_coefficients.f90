@@ -8,12 +8,12 @@
 !> file) into `protected` data that the pure update only reads.
 module interphase_micro_coefficients
    use interphase_kinds, only: dp
-   use interphase_logarithm, only: ln_positive
+   use interphase_logarithm, only: ln_positive_block
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
       STATUS_TABLE_INTERPOLANT, status_message, message_path, STATUS_SPLINE_OUT_OF_RANGE, &
       STATUS_SPLINE_NONFINITE_ARGUMENT
-   use interphase_coefficients, only: coefficient_set_type
+   use interphase_coefficients, only: coefficient_set_type, ZERO_COEFFICIENTS
    use interphase_finite, only: is_finite
    use interphase_spline, only: spline_type, spline_build, spline_export, &
       cubic_locate, cubic_eval, guide_build
@@ -192,8 +192,8 @@ contains
    pure subroutine block_values(variable, knots, coef_table, guide, guide_scale, guide_steps, n, d, k_n, k_t, &
          kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, ok)
       integer, intent(in) :: variable
-      real(dp), intent(in) :: knots(:)
-      real(dp), intent(in) :: coef_table(:, 0:, :)
+      real(dp), contiguous, intent(in) :: knots(:)
+      real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)
       integer, intent(in) :: guide(:)                        !! the knots' interval guide (guide_build)
       real(dp), intent(in) :: guide_scale
       integer, intent(in) :: guide_steps
@@ -201,19 +201,21 @@ contains
       real(dp), intent(in) :: d(n)
       real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
       logical, intent(out) :: ok(n)
-      real(dp) :: x(n), t(n), dtf(n), x_k, d_k
-      integer :: lo(n), nk, step, cand, i, ncells
+      real(dp) :: x(n), t(n), dtf(n), x_k, t_i, v(N_COEFFICIENTS)
+      integer :: lo(n), nk, step, cand, i, j, ncells
       nk = size(knots)
       ! the interpolation variable (crack_variable: x = D, or w = 1/(1 - ln(1 - D)), 0 at D = 1),
       ! with crack_variable's logarithm (ln_positive: the same bits in scalar and vector code)
       if (variable == VARIABLE_DAMAGE) then
          x = d
       else
+         ! (the argument is 1 - D for every D < 1; at D = 1, where x = 0, it stays > 0)
          do i = 1, n
-            d_k = d(i)
-            ! (the argument is 1 - D for every D < 1; at D = 1, where x = 0, it stays > 0)
-            x_k = 1.0_dp/(1.0_dp - ln_positive(1.0_dp - min(d_k, 1.0_dp - 0.5_dp*epsilon(1.0_dp))))
-            x(i) = merge(x_k, 0.0_dp, d_k < 1.0_dp)
+            t(i) = 1.0_dp - min(d(i), 1.0_dp - 0.5_dp*epsilon(1.0_dp))
+         end do
+         call ln_positive_block(n, t, x)
+         do i = 1, n
+            x(i) = merge(1.0_dp/(1.0_dp - x(i)), 0.0_dp, d(i) < 1.0_dp)
          end do
       end if
       ! the interval: the largest lo in 1..nk-1 with knots(lo) <= x (cubic_locate's interval; at
@@ -235,17 +237,29 @@ contains
       do i = 1, n
          t(i) = x(i) - knots(lo(i))
       end do
-      call horner_column(n, coef_table, IC_K_N, lo, t, k_n)
-      call horner_column(n, coef_table, IC_K_T, lo, t, k_t)
-      call horner_column(n, coef_table, IC_KC_N, lo, t, kc_n)
-      call horner_column(n, coef_table, IC_KC_T, lo, t, kc_t)
-      call horner_column(n, coef_table, IC_DBAR_N, lo, t, dbar_n)
-      call horner_column(n, coef_table, IC_DBAR_T, lo, t, dbar_t)
-      call horner_column(n, coef_table, IC_TC_T, lo, t, tc_t)
-      call horner_column(n, coef_table, IC_SC_N, lo, t, sc_n)
-      call horner_column(n, coef_table, IC_CF_T, lo, t, cf_t)
-      call horner_column(n, coef_table, IC_DTF, lo, t, dtf)
-      call horner_column(n, coef_table, IC_UFBAR, lo, t, ufbar)
+      ! the columns of one point together: a point's coefficients on its interval are contiguous
+      ! in the data (column fastest), so the columns are evaluated as one short vector each
+      ! power (cubic_eval's Horner form), where a loop over the points would gather every
+      ! coefficient of every column
+      !GCC$ novector
+      do i = 1, n
+         t_i = t(i)
+         do j = 1, N_COEFFICIENTS
+            v(j) = coef_table(j, 0, lo(i)) + t_i*(coef_table(j, 1, lo(i)) &
+               + t_i*(coef_table(j, 2, lo(i)) + t_i*coef_table(j, 3, lo(i))))
+         end do
+         k_n(i) = v(IC_K_N)
+         k_t(i) = v(IC_K_T)
+         kc_n(i) = v(IC_KC_N)
+         kc_t(i) = v(IC_KC_T)
+         dbar_n(i) = v(IC_DBAR_N)
+         dbar_t(i) = v(IC_DBAR_T)
+         tc_t(i) = v(IC_TC_T)
+         sc_n(i) = v(IC_SC_N)
+         cf_t(i) = v(IC_CF_T)
+         dtf(i) = v(IC_DTF)
+         ufbar(i) = v(IC_UFBAR)
+      end do
       ! T^f = (D T^f)/D; -huge at D = 0 (table_coefficients). The divisor is guarded by max, not
       ! by a selection (which the compiler may turn into two divisions under -fno-trapping-math):
       ! below D_MIN_CRACK (ok = .false.) the quotient could overflow
@@ -253,21 +267,6 @@ contains
          tf(i) = merge(dtf(i)/max(d(i), D_MIN_CRACK), -huge(1.0_dp), d(i) > 0.0_dp)
       end do
    end subroutine block_values
-
-   !> Column j of the interpolation data at n points of located intervals lo, t = x - knots(lo):
-   !> cubic_eval's Horner form.
-   pure subroutine horner_column(n, coef_table, j, lo, t, v)
-      integer, intent(in) :: n, j
-      real(dp), intent(in) :: coef_table(:, 0:, :)
-      integer, intent(in) :: lo(n)
-      real(dp), intent(in) :: t(n)
-      real(dp), intent(out) :: v(n)
-      integer :: k
-      do k = 1, n
-         v(k) = coef_table(j, 0, lo(k)) + t(k)*(coef_table(j, 1, lo(k)) &
-            + t(k)*(coef_table(j, 2, lo(k)) + t(k)*coef_table(j, 3, lo(k))))
-      end do
-   end subroutine horner_column
 
    !> The interpolated columns (IC_* order) as a coefficient set, with T^f given apart.
    pure function as_set(v, tf) result(c)
@@ -304,6 +303,7 @@ contains
       character(len=8), parameter :: NAMES(7) = [character(len=8) :: 'k_N', 'k_T', 'Dbar_NN', &
          'ufbar', '-T^f', 'S^c_N', 'T^c_T']
       status = STATUS_OK
+      c = ZERO_COEFFICIENTS    ! (set by every successful table_coefficients: for the compiler's flow analysis)
       bad_d = 0.0_dp
       bad_name = ''
       bad_value = 0.0_dp
