@@ -14,8 +14,13 @@
 #     simplified and micromechanical model, 2-D and 3-D;
 #   - the UMAT (best ns per call, interphase-bench, both builds): micromechanical against
 #     simplified, and the fracture-mechanics law (LFM) against the displacement law;
-#   - instructions per UMAT call (callgrind, no-LTO build, inclusive cost of umat_ over 6000
-#     calls of the mixed history), if valgrind is installed.
+#   - instructions per UMAT call (callgrind, inclusive cost of umat_ over 6000 calls of the
+#     mixed history) in DIR/callgrind, the no-LTO build for -march=x86-64-v2 (valgrind 3.19 does
+#     not decode every AVX instruction a -march=native build may use), if valgrind is installed;
+#   - instructions per VUMAT point (callgrind, nblock = 4096, 4096 points x 140 increments):
+#     vumat_ and the plain copy of its arrays, in the one-file Abaqus/Explicit source
+#     (examples/abaqus/make-user-file.sh --explicit) compiled as docs/abaqus.md recommends, with
+#     -march=x86-64-v3 (AVX2) for valgrind: the build an Abaqus/Explicit host makes.
 # --quick: fewer points and calls (a smoke test of the script, not figures to record).
 # Not a test: nothing is checked against a goal here; docs/performance.md records the figures.
 set -euo pipefail
@@ -35,11 +40,16 @@ while [ $# -gt 0 ]; do
 done
 rel=$root/release
 nolto=$root/nolto
+cgtree=$root/callgrind
 if [ $build = yes ]; then
    cmake -S "$here" -B "$rel" -DCMAKE_BUILD_TYPE=Release >/dev/null
    cmake --build "$rel" -j2 --target interphase-bench interphase-bench-vumat >/dev/null
    cmake -S "$here" -B "$nolto" -DCMAKE_BUILD_TYPE=Release -DINTERPHASE_LTO=OFF >/dev/null
    cmake --build "$nolto" -j2 --target interphase-bench >/dev/null
+   if command -v valgrind >/dev/null 2>&1; then
+      cmake -S "$here" -B "$cgtree" -DCMAKE_BUILD_TYPE=Release -DINTERPHASE_LTO=OFF -DINTERPHASE_ARCH=x86-64-v2 >/dev/null
+      cmake --build "$cgtree" -j2 --target interphase-bench >/dev/null
+   fi
 fi
 for exe in "$rel/tests/threads/interphase-bench-vumat" "$rel/drivers/interphase-bench" "$nolto/drivers/interphase-bench"; do
    if [ ! -x "$exe" ]; then
@@ -64,21 +74,51 @@ echo "interphase bench-ratios: $(date -u '+%Y-%m-%d %H:%M UTC'), commit $commit,
 "$nolto/drivers/interphase-bench" "$calls" 5 >"$work/umat-nolto.txt"
 
 have_valgrind=no
-if command -v valgrind >/dev/null 2>&1; then
+declare -A vir=() cir=()
+if command -v valgrind >/dev/null 2>&1 && [ -x "$cgtree/drivers/interphase-bench" ]; then
    have_valgrind=yes
    for c in 1 2 3 4 5 6 7 8; do
       valgrind --tool=callgrind --callgrind-out-file="$work/cg.$c" --toggle-collect=umat_ \
-         "$nolto/drivers/interphase-bench" "$callgrind_calls" 1 "$c" >/dev/null 2>"$work/cg.$c.log"
+         "$cgtree/drivers/interphase-bench" "$callgrind_calls" 1 "$c" >/dev/null 2>"$work/cg.$c.log"
       # the collected events: the totals line of the profile ("summary: Ir")
       awk -v calls=$((callgrind_calls + 1)) '/^summary:/ {printf "%.0f\n", $2/calls}' "$work/cg.$c" >"$work/ir.$c"
    done
+   # the VUMAT in the one-file Explicit source (needs the generated table of a build tree)
+   (cd "$work" && bash "$here/examples/abaqus/make-user-file.sh" --explicit --build-dir "$cgtree" \
+         -o explicit.f90 >/dev/null \
+      && printf '%s\n' 'subroutine xplb_abqerr(lop, string, intv, realv, charv)' \
+         '   integer, intent(in) :: lop, intv(*)' '   character(len=*), intent(in) :: string' \
+         '   double precision, intent(in) :: realv(*)' '   character(len=8), intent(in) :: charv(*)' \
+         'end subroutine xplb_abqerr' >stub.f90 \
+      && gfortran -O3 -march=x86-64-v3 -fno-trapping-math -ffp-contract=off -c explicit.f90 \
+      && gfortran -O2 -fno-inline -c stub.f90 "$here/tests/threads/bench_vumat.f90" \
+      && gfortran -o bench-vumat-explicit bench_vumat.o explicit.o stub.o -llapack) >"$work/explicit.log" 2>&1
+   if [ -x "$work/bench-vumat-explicit" ]; then
+      for c in 1 2 3 4; do
+         for what in vumat_ 'plain_copy*'; do
+            valgrind --tool=callgrind --callgrind-out-file="$work/cgv" --toggle-collect="$what" \
+               "$work/bench-vumat-explicit" 4096 "$c" >/dev/null 2>>"$work/explicit.log"
+            n=$(awk '/^summary:/ {printf "%.1f", $2/(4096*140)}' "$work/cgv")
+            if [ "$what" = vumat_ ]; then vir[$c]=$n; else cir[$c]=$n; fi
+         done
+      done
+   fi
 fi
 
 echo
-echo "VUMAT at nblock = 4096, ns per point, best of 5 each (interphase-bench-vumat $points):"
-printf '%-46s %10s %10s %8s\n' "case" "vumat" "copy" "ratio"
+echo "VUMAT at nblock = 4096, ns per point, best of 5 each (interphase-bench-vumat $points), and"
+echo "instructions per point (callgrind, the one-file Explicit source, x86-64-v3):"
+printf '%-46s %10s %10s %8s %10s %10s %8s\n' "case" "vumat" "copy" "ratio" "vumat Ir" "copy Ir" "ratio"
 awk '/^VUMAT, / {sub(/^VUMAT, /, ""); sub(/, mixed history.*/, ""); title=$0}
-     $1 == 4096 {printf "%-46s %10.2f %10.2f %8.2f\n", title, $2, $3, $2/$3}' "$work/vumat.txt"
+     $1 == 4096 {printf "%-46s %10.2f %10.2f %8.2f\n", title, $2, $3, $2/$3}' "$work/vumat.txt" >"$work/vumat-rows.txt"
+c=0
+while IFS= read -r line; do
+   c=$((c + 1))
+   vi=${vir[$c]:--}
+   ci=${cir[$c]:--}
+   r=$(awk -v a="$vi" -v b="$ci" 'BEGIN {if (a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.2f", a/b}')
+   printf '%s %10s %10s %8s\n' "$line" "$vi" "$ci" "$r"
+done <"$work/vumat-rows.txt"
 
 # best ns per call of row `name`, `history` from interphase-bench output
 # (the name is right-aligned in its column: matched anywhere in the line)
@@ -86,6 +126,7 @@ umat_ns() { awk -v name="$2" -v hist="$3" 'index($0, name) > 0 && index($0, hist
 echo
 echo "UMAT, best ns per call of 5 runs ($calls calls each), and ratios within each build:"
 printf '%-34s %10s %10s %12s\n' "case" "LTO" "no LTO" "instr./call"
+# (instructions: DIR/callgrind, no LTO, x86-64-v2)
 rows=("simplified + disp.|mixed 2-D" "simplified + disp.|mixed 3-D" "micromech. + disp.|mixed 2-D"
       "micromech. + disp.|mixed 3-D" "simplified + LFM|mixed 2-D" "simplified + LFM|mixed 3-D"
       "micromech. + LFM|mixed 2-D" "micromech. + LFM|mixed 3-D")
@@ -112,4 +153,7 @@ printf '%-50s %8s %8s %12s\n' "LFM / displacement law, simplified 2-D" "$(ratio 
    "$(ratio "${nol[5]}" "${nol[1]}")" "$(ratio "${ir[5]}" "${ir[1]}")"
 printf '%-50s %8s %8s %12s\n' "LFM / displacement law, micromechanical 2-D" "$(ratio "${lto[7]}" "${lto[3]}")" \
    "$(ratio "${nol[7]}" "${nol[3]}")" "$(ratio "${ir[7]}" "${ir[3]}")"
-if [ $have_valgrind = no ]; then echo "(valgrind not installed: no instruction counts)"; fi
+if [ $have_valgrind = no ]; then echo "(valgrind not installed, or no DIR/callgrind build: no instruction counts)"; fi
+if [ $have_valgrind = yes ] && [ ${#vir[@]} -eq 0 ]; then
+   echo "(the one-file Explicit benchmark did not build: see below)"; cat "$work/explicit.log"
+fi

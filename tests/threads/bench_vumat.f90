@@ -6,9 +6,13 @@
 !> model (built-in table) in 2-D and 3-D. Each figure is the best of
 !> NREPEAT measurements (each a fresh start of the whole history).
 !>
-!>   interphase-bench-vumat [points]      (default 65536 points; Release build recommended)
+!>   interphase-bench-vumat [points [case]]   (default 65536 points; Release build recommended)
+!>
+!> With a case (1 simplified 2-D, 2 simplified 3-D, 3 micromechanical 2-D, 4 micromechanical
+!> 3-D) only that case runs, at nblock = 4096 and once: for an instruction count under callgrind
+!> (tools/bench-ratios.sh counts `vumat_` and `plain_copy` per point that way).
 program bench_vumat
-   use, intrinsic :: iso_fortran_env, only: int64, output_unit
+   use, intrinsic :: iso_fortran_env, only: int64, output_unit, error_unit
    use interphase_kinds, only: dp
    use interphase_layout, only: NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, NSTATV_VUMAT
    use interphase_abaqus_interfaces, only: vumat
@@ -27,21 +31,51 @@ program bench_vumat
    real(dp), parameter :: MICRO_PROPS(NPROPS_MICROMECHANICAL) = [2.0_dp, 1.0_dp, 0.75_dp, 0.00044_dp, &
       0.04_dp, 0.00072_dp, 0.06_dp, 0.0_dp]
 
-   integer :: npoints, arg_len, arg_status
-   character(len=32) :: arg
+   integer :: npoints, only_case, nrepeat_used, nblock_first
+   character(len=*), parameter :: TITLES(4) = [character(len=44) :: 'simplified model, 2-D', &
+      'simplified model, 3-D', 'micromechanical model (built-in table), 2-D', &
+      'micromechanical model (built-in table), 3-D']
 
    npoints = 65536
-   if (command_argument_count() >= 1) then
-      call get_command_argument(1, arg, arg_len, arg_status)
-      if (arg_status == 0) read (arg, *) npoints
+   only_case = 0
+   nrepeat_used = NREPEAT
+   nblock_first = 1
+   if (command_argument_count() >= 1) npoints = positive_argument(1, 'points')
+   if (command_argument_count() >= 2) then
+      only_case = positive_argument(2, 'case')
+      if (only_case > 4) then
+         write (error_unit, '(a)') 'interphase-bench-vumat: case must be 1..4'
+         error stop 2
+      end if
+      nrepeat_used = 1
+      nblock_first = size(NBLOCK_SIZES)
    end if
 
-   call run_case('simplified model, 2-D', 1, SIMPLIFIED_PROPS)
-   call run_case('simplified model, 3-D', 2, SIMPLIFIED_PROPS)
-   call run_case('micromechanical model (built-in table), 2-D', 1, MICRO_PROPS)
-   call run_case('micromechanical model (built-in table), 3-D', 2, MICRO_PROPS)
+   if (only_case == 0 .or. only_case == 1) call run_case(trim(TITLES(1)), 1, SIMPLIFIED_PROPS)
+   if (only_case == 0 .or. only_case == 2) call run_case(trim(TITLES(2)), 2, SIMPLIFIED_PROPS)
+   if (only_case == 0 .or. only_case == 3) call run_case(trim(TITLES(3)), 1, MICRO_PROPS)
+   if (only_case == 0 .or. only_case == 4) call run_case(trim(TITLES(4)), 2, MICRO_PROPS)
 
 contains
+
+   !> Command argument `position` as a positive integer: the whole field must be one.
+   integer function positive_argument(position, name) result(value)
+      integer, intent(in) :: position
+      character(len=*), intent(in) :: name
+      character(len=32) :: text
+      integer :: length, status, ios
+      call get_command_argument(position, text, length, status)
+      value = 0
+      if (status == 0 .and. length > 0 .and. verify(trim(text), '0123456789') == 0) then
+         read (text, '(i32)', iostat=ios) value
+         if (ios /= 0) value = 0
+      end if
+      if (value < 1) then
+         write (error_unit, '(a)') 'interphase-bench-vumat: '//name//' must be a positive integer, not '''// &
+            trim(text)//''''
+         error stop 2
+      end if
+   end function positive_argument
 
    subroutine run_case(title, nshr, props)
       character(len=*), intent(in) :: title
@@ -50,13 +84,13 @@ contains
       real(dp) :: ns_vumat, ns_copy, best_vumat, best_copy
       integer :: i, rep
       write (output_unit, '(a,a,a,i0,a,i0,a,i0,a)') 'VUMAT, ', title, ', mixed history: ', npoints, &
-         ' points x ', NSWEEP, ' increments per measurement, best of ', NREPEAT
+         ' points x ', NSWEEP, ' increments per measurement, best of ', nrepeat_used
       write (output_unit, '(a)') '  nblock   ns/point (vumat)   ns/point (plain copy)   ratio'
-      do i = 1, size(NBLOCK_SIZES)
+      do i = nblock_first, size(NBLOCK_SIZES)
          ! the best of NREPEAT measurements of each (the machine's other work only adds time)
          best_vumat = huge(1.0_dp)
          best_copy = huge(1.0_dp)
-         do rep = 1, NREPEAT
+         do rep = 1, nrepeat_used
             call measure(NBLOCK_SIZES(i), npoints, nshr, props, ns_vumat, ns_copy)
             best_vumat = min(best_vumat, ns_vumat)
             best_copy = min(best_copy, ns_copy)
