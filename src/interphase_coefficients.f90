@@ -14,7 +14,7 @@ module interphase_coefficients
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: coefficient_set_type, simplified_coefficients, ZERO_COEFFICIENTS
+   public :: coefficient_set_type, simplified_coefficients, NO_COEFFICIENTS
 
    !> Coefficients at one damage D = a/b (or their derivatives d/dD, in the same type).
    type :: coefficient_set_type
@@ -34,7 +34,7 @@ module interphase_coefficients
    !> Every coefficient zero. (The type has no default initialisation: a coefficient set is a
    !> local of every update, which would otherwise be filled with zeros on each call before the
    !> provider sets all of it.)
-   type(coefficient_set_type), parameter :: ZERO_COEFFICIENTS = coefficient_set_type(0.0_dp, 0.0_dp, &
+   type(coefficient_set_type), parameter :: NO_COEFFICIENTS = coefficient_set_type(0.0_dp, 0.0_dp, &
       0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
 
 contains

@@ -13,7 +13,7 @@ module interphase_micro_coefficients
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
       STATUS_TABLE_INTERPOLANT, status_message, message_path, STATUS_SPLINE_OUT_OF_RANGE, &
       STATUS_SPLINE_NONFINITE_ARGUMENT
-   use interphase_coefficients, only: coefficient_set_type, ZERO_COEFFICIENTS
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
    use interphase_finite, only: is_finite
    use interphase_spline, only: spline_type, spline_build, spline_export, &
       cubic_locate, cubic_eval, guide_build
@@ -303,7 +303,7 @@ contains
       character(len=8), parameter :: NAMES(7) = [character(len=8) :: 'k_N', 'k_T', 'Dbar_NN', &
          'ufbar', '-T^f', 'S^c_N', 'T^c_T']
       status = STATUS_OK
-      c = ZERO_COEFFICIENTS    ! (set by every successful table_coefficients: for the compiler's flow analysis)
+      c = NO_COEFFICIENTS    ! (set by every successful table_coefficients: for the compiler's flow analysis)
       bad_d = 0.0_dp
       bad_name = ''
       bad_value = 0.0_dp
