@@ -32,7 +32,7 @@ module interphase_fracture
       band_stiffness
    implicit none
    private
-   public :: crack_load_type, growth_function, grow_crack
+   public :: crack_load_type, growth_point_type, growth_function, grow_crack
 
    !> What the crack sees in the increment: the separation at its end and the slip at its
    !> start (the friction step at each trial D starts from it, or from the slip that conserves
@@ -45,11 +45,24 @@ module interphase_fracture
       real(dp) :: m_from = 0.0_dp         !! m(D_n) = D_n ufbar(D_n) (-); set by grow_crack when the crack grows
    end type crack_load_type
 
-   !> Geometric scan towards D = 1 before the bracketed solve: points per run.
+   !> One evaluation of the growth function at D: g, its partial derivatives (as
+   !> `growth_function` returns them), its slope along the slip lambda(D), and the response at D.
+   type :: growth_point_type
+      real(dp) :: d                     !! damage D (-)
+      real(dp) :: g                     !! g(D) (-)
+      real(dp) :: g_s(3)                !! dg/ds at fixed lambda, D (1/mm)
+      real(dp) :: g_lam(2)              !! dg/dlambda at fixed s, D (1/mm)
+      real(dp) :: g_d                   !! dg/dD at fixed s, lambda (-)
+      real(dp) :: dg_dd                 !! dg/dD along lambda(D): g_d + g_lam . lambda_D (-)
+      real(dp) :: m                     !! m(D) = D ufbar(D) (-), as `slip_measure` gives it
+      type(response_type) :: r          !! the response at D (friction from the trial slip at D)
+   end type growth_point_type
+
+   !> Geometric scan towards D = 1 that bounds the root search: points per run.
    integer, parameter :: N_SCAN = 12
    !> The scan's last point: 1 - D is reduced by this factor.
    real(dp), parameter :: SCAN_DEPTH = 1.0e-7_dp
-   !> Root tolerance in D and the largest number of Illinois steps.
+   !> Root tolerance in D and the largest number of evaluations of g in the root search.
    real(dp), parameter :: ROOT_TOL = 1.0e-15_dp
    integer, parameter :: MAX_ROOT_ITERATIONS = 200
 
@@ -59,7 +72,7 @@ contains
    !> slip lambda(D), then the release rates at D with that slip (lambda frozen). With
    !> `want_derivatives`, also the partial derivatives dg/ds (Abaqus order, normal first),
    !> dg/dlambda and dg/dD at fixed lambda (these need the coefficients' second derivatives);
-   !> the caller adds the slip's dependence.
+   !> the caller adds the slip's dependence. (Without, they are returned as zero.)
    pure subroutine growth_function(params, d, load, ntens, g, status, want_derivatives, g_s, g_lam, g_d)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d
@@ -69,10 +82,32 @@ contains
       integer, intent(out) :: status
       logical, intent(in) :: want_derivatives
       real(dp), intent(out) :: g_s(3), g_lam(2), g_d
+      type(growth_point_type) :: at
+      call growth_point(params, d, load, ntens, at, status)
+      g = at%g
+      g_s = 0.0_dp
+      g_lam = 0.0_dp
+      g_d = 0.0_dp
+      if (want_derivatives) then
+         g_s = at%g_s
+         g_lam = at%g_lam
+         g_d = at%g_d
+      end if
+   end subroutine growth_function
+
+   !> g and its derivatives at D (as `growth_function`), with the response at D from the trial
+   !> slip of `growth_trial_slip` and its D-derivative (what the update returns when D is the
+   !> root), and dg/dD along lambda(D): the slope of the root search.
+   pure subroutine growth_point(params, d, load, ntens, at, status)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d
+      type(crack_load_type), intent(in) :: load
+      integer, intent(in) :: ntens
+      type(growth_point_type), intent(out) :: at
+      integer, intent(out) :: status
 
       type(coefficient_set_type) :: c, dc, d2c
-      type(response_type) :: r
-      real(dp) :: slip(2), slip_trial(2), dslip_dd(2)
+      real(dp) :: slip_trial(2), dslip_dd(2), slip(2), g, g_s(3), g_lam(2), g_d
       logical :: closed
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
       real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, a1, a2, b1, b2, lam_s, lam2, kappa, dkappa
@@ -81,24 +116,26 @@ contains
       integer :: nt
 
       nt = ntens - 1
-      g_s = 0.0_dp
-      g_lam = 0.0_dp
-      g_d = 0.0_dp
-      if (want_derivatives) then
-         call coefficients_at(params, d, c, dc, status, d2c)
-      else
-         call coefficients_at(params, d, c, dc, status)
-         d2c = coefficient_set_type()
-      end if
+      at%d = d
+      at%g = 0.0_dp
+      at%g_s = 0.0_dp
+      at%g_lam = 0.0_dp
+      at%g_d = 0.0_dp
+      at%dg_dd = 0.0_dp
+      at%m = 0.0_dp
+      call coefficients_at(params, d, c, dc, status, d2c)
       if (status /= STATUS_OK) return
+      if (d > 0.0_dp) at%m = d*c%ufbar
       t2 = load%st(1)**2 + load%st(2)**2
       ! friction with D frozen, from the slip the crack faces carry at D
       call growth_trial_slip(params%growth_slip, load%d_from, load%m_from, d, c, dc, load%slip_old, &
          slip_trial, dslip_dd)
-      call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, r, status)
+      call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, at%r, status, dslip_dd)
       if (status /= STATUS_OK) return
-      closed = r%closed
-      slip = r%slip
+      closed = at%r%closed
+      slip = at%r%slip
+      g_s = 0.0_dp
+      g_lam = 0.0_dp
       ! the contact band (open crack, 0 < s_N < chi |s_T|): psi holds 1/2 q g, so G_II holds -q' g
       in_band = .false.
       if (params%contact_band > 0.0_dp .and. params%model == MODEL_MICROMECHANICAL .and. .not. closed &
@@ -115,11 +152,13 @@ contains
          if (load%s_n > 0.0_dp) gi = (load%s_n/sig_n)**2
          gii = t2/sig_t**2
          g = gi + gii - 1.0_dp
-         if (want_derivatives) then
-            if (load%s_n > 0.0_dp) g_s(1) = 2.0_dp*load%s_n/sig_n**2
-            g_s(2:ntens) = 2.0_dp*load%st(1:nt)/sig_t**2
-            g_d = -2.0_dp*gi*dsig_n/sig_n - 2.0_dp*gii*dsig_t/sig_t
-         end if
+         if (load%s_n > 0.0_dp) g_s(1) = 2.0_dp*load%s_n/sig_n**2
+         g_s(2:ntens) = 2.0_dp*load%st(1:nt)/sig_t**2
+         g_d = -2.0_dp*gi*dsig_n/sig_n - 2.0_dp*gii*dsig_t/sig_t
+         at%g = g
+         at%g_s = g_s
+         at%g_d = g_d
+         at%dg_dd = g_d
          ! In the contact band G_II = -(k_t' + q'(1 - W)) |s_T|^2 and the equivalent R-curve's
          ! G_cII = -(k_t' + q'(1 - W)) sigma_T^2, so g is the same: it goes over continuously into
          ! the closed crack's (G_cII = kappa sigma_T^2, kappa = -(k_t' + q') in pure mode II), and
@@ -187,16 +226,20 @@ contains
       ! gi = 0 when the crack is closed or s_N <= 0 (no mode-I term then)
       g = gii/gc(2) - 1.0_dp
       if (abs(gi) > 0.0_dp) g = g + gi/gc(1)
-      if (want_derivatives) then
-         g_s = gii_s/gc(2)
-         g_lam = gii_lam/gc(2)
-         g_d = (gii_d*gc(2) - gii*dgc(2))/gc(2)**2
-         if (abs(gi) > 0.0_dp) then
-            g_s = g_s + gi_s/gc(1)
-            g_d = g_d + (gi_d*gc(1) - gi*dgc(1))/gc(1)**2
-         end if
+      g_s = gii_s/gc(2)
+      g_lam = gii_lam/gc(2)
+      g_d = (gii_d*gc(2) - gii*dgc(2))/gc(2)**2
+      if (abs(gi) > 0.0_dp) then
+         g_s = g_s + gi_s/gc(1)
+         g_d = g_d + (gi_d*gc(1) - gi*dgc(1))/gc(1)**2
       end if
-   end subroutine growth_function
+      ! along lambda(D): dg/dD = g_D + g_lambda . lambda_D
+      at%g = g
+      at%g_s = g_s
+      at%g_lam = g_lam
+      at%g_d = g_d
+      at%dg_dd = g_d + g_lam(1)*at%r%dlam_dd(1) + g_lam(2)*at%r%dlam_dd(2)
+   end subroutine growth_point
 
    !> The factors of the closed crack's release rate, G_II = -kk' s.s - 2 A lambda.s_T + B |lambda|^2,
    !> and their derivatives d/dD (a2 = A', b2 = B'; they need the second derivatives d2c, which
@@ -250,78 +293,126 @@ contains
    end subroutine equivalent_scale
 
    !> Crack growth in the increment from D_from (eqs 41-42, 50): the predictor keeps D_from when
-   !> g(D_from) < 0; otherwise the first root of g in (D_from, 1] is bracketed by a geometric scan
-   !> towards D = 1 and refined by the Illinois (modified regula falsi) method; with no root the
-   !> crack runs to b (D = 1). For a closed crack every evaluation of g alternates the two
-   !> sub-problems of the paper's staggered scheme (friction with D frozen, damage with lambda
-   !> frozen), so the root is the staggered scheme's fixed point; a bracket that does not shrink
-   !> to ROOT_TOL in MAX_ROOT_ITERATIONS is STATUS_STAGGER_NOT_CONVERGED.
-   pure subroutine grow_crack(params, d_from, load, ntens, d_new, status)
+   !> g(D_from) < 0; otherwise D is the first root of g in (D_from, 1], found by a safeguarded
+   !> Newton iteration from D_from on g(D) along the slip lambda(D) (slope dg/dD = g_D +
+   !> g_lambda . lambda_D, the tangent's denominator). The search never passes the points of a
+   !> geometric scan towards D = 1 (N_SCAN points per run, down to 1 - D = SCAN_DEPTH (1 -
+   !> D_from)) without evaluating them: a Newton step beyond the next scan point, or uphill
+   !> (dg/dD >= 0), is replaced by that point, or by the bisection of a bracket once g < 0 has been
+   !> seen; g >= 0 at every scan point lets the crack run to b (D = 1). Converged when the Newton
+   !> step |g/(dg/dD)| at a point is at most ROOT_TOL + 4 eps D (D is that point), or when a
+   !> bracket g(D_lo) >= 0 > g(D_hi) has shrunk to ROOT_TOL + 4 eps D_hi (D is D_lo). For a closed
+   !> crack every evaluation of g alternates the two sub-problems of the paper's staggered scheme
+   !> (friction with D frozen, damage with lambda frozen), so the root is the staggered scheme's
+   !> fixed point; no convergence in MAX_ROOT_ITERATIONS evaluations is
+   !> STATUS_STAGGER_NOT_CONVERGED. at(which) is the evaluation at the returned D (its response
+   !> and derivatives; two slots, so that the search copies none); which = 0 when D = 1.
+   pure subroutine grow_crack(params, d_from, load, ntens, d_new, status, at, which)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d_from
       type(crack_load_type), intent(inout) :: load    !! on return with m_from set when the crack grows
       integer, intent(in) :: ntens
       real(dp), intent(out) :: d_new
       integer, intent(out) :: status
+      type(growth_point_type), intent(out) :: at(2)   !! evaluations, at(which) the one at d_new
+      integer, intent(out) :: which                   !! 1 or 2: at(which) is at d_new; 0: none (D = 1)
 
-      real(dp) :: g_lo, g_hi, d_lo, d_hi, d_mid, g_mid, unused_s(3), unused_lam(2), unused_d
-      integer :: j, iter, side
+      real(dp) :: d_lo, d_hi, d_bound, d_next, step, width
+      integer :: iter, scan, how, newton_steps
+      logical :: have_hi
+      integer :: k, lo
+      integer, parameter :: BY_NEWTON = 1, BY_BISECTION = 2, BY_SCAN = 3
 
       d_new = d_from
+      which = 0
       load%d_from = d_from
       load%m_from = 0.0_dp
       status = STATUS_OK
       ! a crack that has reached b cannot grow: g is not evaluated there (the equivalent R-curve's
       ! closed-crack toughness vanishes at D = 1, and g would be 0/0)
       if (d_from >= 1.0_dp) return
-      call growth_function(params, d_from, load, ntens, g_lo, status, .false., unused_s, unused_lam, unused_d)
-      if (status /= STATUS_OK .or. g_lo < 0.0_dp) return
-      ! the crack grows: m(D_n) for the slip the faces carry at a larger D (growth_trial_slip)
-      if (params%growth_slip == GROWTH_FIXED_PI) then
-         call slip_measure(params, d_from, load%m_from, status)
-         if (status /= STATUS_OK) return
-      end if
-      d_lo = d_from
-      d_hi = 1.0_dp
-      g_hi = 0.0_dp
-      do j = 1, N_SCAN
-         d_hi = 1.0_dp - (1.0_dp - d_from)*SCAN_DEPTH**(real(j, dp)/real(N_SCAN, dp))
-         call growth_function(params, d_hi, load, ntens, g_hi, status, .false., unused_s, unused_lam, unused_d)
-         if (status /= STATUS_OK) return
-         if (g_hi < 0.0_dp) exit
-         d_lo = d_hi
-         g_lo = g_hi
-      end do
-      if (.not. (g_hi < 0.0_dp)) then
-         d_new = 1.0_dp                       ! no arrest: the crack runs to b
+      k = 1
+      call growth_point(params, d_from, load, ntens, at(k), status)
+      if (status /= STATUS_OK) return
+      if (at(k)%g < 0.0_dp) then
+         which = k
          return
       end if
-      ! Illinois: g(d_lo) >= 0 > g(d_hi)
-      side = 0
-      d_mid = d_lo
+      ! the crack grows: m(D_n) for the slip the faces carry at a larger D (growth_trial_slip);
+      ! at D_from itself the trial slip is lambda_n either way, so `at` stands
+      if (params%growth_slip == GROWTH_FIXED_PI) load%m_from = at(k)%m
+      d_lo = d_from
+      d_hi = 1.0_dp
+      have_hi = .false.
+      lo = k
+      width = 1.0_dp
+      newton_steps = 0
+      scan = 1
+      d_bound = scan_point(d_from, scan)
       do iter = 1, MAX_ROOT_ITERATIONS
-         d_mid = (d_lo*g_hi - d_hi*g_lo)/(g_hi - g_lo)
-         if (.not. (d_mid > d_lo .and. d_mid < d_hi)) d_mid = 0.5_dp*(d_lo + d_hi)
-         call growth_function(params, d_mid, load, ntens, g_mid, status, .false., unused_s, unused_lam, unused_d)
-         if (status /= STATUS_OK) return
-         if (g_mid >= 0.0_dp) then
-            d_lo = d_mid
-            g_lo = g_mid
-            if (side == -1) g_hi = 0.5_dp*g_hi
-            side = -1
-         else
-            d_hi = d_mid
-            g_hi = g_mid
-            if (side == 1) g_lo = 0.5_dp*g_lo
-            side = 1
+         ! at(k) is the latest evaluation, at(lo) the one at d_lo
+         how = BY_SCAN
+         if (have_hi) how = BY_BISECTION
+         if (at(k)%dg_dd < 0.0_dp) then
+            step = -at(k)%g/at(k)%dg_dd
+            if (abs(step) <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*at(k)%d) then
+               d_new = at(k)%d                  ! >= d_from: every point searched is
+               which = k
+               return
+            end if
+            d_next = at(k)%d + step
+            if (d_next > d_lo .and. d_next < min(d_hi, d_bound)) how = BY_NEWTON
          end if
-         if (d_hi - d_lo <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*d_hi) exit
-         if (iter == MAX_ROOT_ITERATIONS) then
-            status = STATUS_STAGGER_NOT_CONVERGED
-            return
+         if (how == BY_NEWTON .and. have_hi) then
+            ! inside a bracket, three Newton steps that have not halved it give way to a bisection
+            newton_steps = newton_steps + 1
+            if (newton_steps > 3) then
+               if (d_hi - d_lo > 0.5_dp*width) how = BY_BISECTION
+               newton_steps = 0
+               width = d_hi - d_lo
+            end if
+         end if
+         select case (how)
+         case (BY_NEWTON)
+         case (BY_BISECTION)
+            d_next = 0.5_dp*(d_lo + d_hi)
+         case default
+            d_next = d_bound
+         end select
+         ! the next evaluation goes to the slot that does not hold d_lo's
+         k = 3 - lo
+         call growth_point(params, d_next, load, ntens, at(k), status)
+         if (status /= STATUS_OK) return
+         if (at(k)%g >= 0.0_dp) then
+            d_lo = d_next
+            lo = k
+            if (how == BY_SCAN) then
+               if (scan == N_SCAN) then
+                  d_new = 1.0_dp              ! no arrest: the crack runs to b
+                  return
+               end if
+               scan = scan + 1
+               d_bound = scan_point(d_from, scan)
+            end if
+         else
+            d_hi = d_next
+            have_hi = .true.
+            if (d_hi - d_lo <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*d_hi) then
+               ! the bracket has closed: D is its lower end, evaluated before
+               d_new = d_lo
+               which = lo
+               return
+            end if
          end if
       end do
-      d_new = max(d_from, d_lo)
+      status = STATUS_STAGGER_NOT_CONVERGED
    end subroutine grow_crack
+
+   !> Point j of the geometric scan from D_from towards D = 1: 1 - D = (1 - D_from) SCAN_DEPTH^(j/N_SCAN).
+   pure real(dp) function scan_point(d_from, j)
+      real(dp), intent(in) :: d_from
+      integer, intent(in) :: j
+      scan_point = 1.0_dp - (1.0_dp - d_from)*SCAN_DEPTH**(real(j, dp)/real(N_SCAN, dp))
+   end function scan_point
 
 end module interphase_fracture
