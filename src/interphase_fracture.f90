@@ -307,7 +307,8 @@ contains
    !> geometric scan towards D = 1 (N_SCAN points per run, down to 1 - D = SCAN_DEPTH (1 -
    !> D_from)) without evaluating them: a Newton step beyond the next scan point, or uphill
    !> (dg/dD >= 0), is replaced by that point, or by the bisection of a bracket once g < 0 has been
-   !> seen; g >= 0 at every scan point lets the crack run to b (D = 1). Converged when the Newton
+   !> seen (as is a step inside the bracket longer than half the step before the last); g >= 0 at
+   !> every scan point lets the crack run to b (D = 1). Converged when the Newton
    !> step |g/(dg/dD)| at a point is at most ROOT_TOL + 4 eps D (D is that point), or when a
    !> bracket g(D_lo) >= 0 > g(D_hi) has shrunk to ROOT_TOL + 4 eps D_hi (D is D_lo). For a closed
    !> crack every evaluation of g alternates the two sub-problems of the paper's staggered scheme
@@ -325,8 +326,8 @@ contains
       type(growth_point_type), intent(out) :: at(2)   !! evaluations, at(which) the one at d_new
       integer, intent(out) :: which                   !! 1 or 2: at(which) is at d_new; 0: none (D = 1)
 
-      real(dp) :: d_lo, d_hi, d_bound, d_next, step, width
-      integer :: iter, scan, how, newton_steps
+      real(dp) :: d_lo, d_hi, d_bound, d_next, step, dx_last, dx_older
+      integer :: iter, scan, how
       logical :: have_hi
       integer :: k, lo
       integer, parameter :: BY_NEWTON = 1, BY_BISECTION = 2, BY_SCAN = 3
@@ -353,12 +354,13 @@ contains
       d_hi = 1.0_dp
       have_hi = .false.
       lo = k
-      width = 1.0_dp
-      newton_steps = 0
+      dx_last = 1.0_dp
+      dx_older = 1.0_dp
       scan = 1
       d_bound = scan_point(d_from, scan)
       do iter = 1, MAX_ROOT_ITERATIONS
          ! at(k) is the latest evaluation, at(lo) the one at d_lo
+         step = 0.0_dp
          how = BY_SCAN
          if (have_hi) how = BY_BISECTION
          if (at(k)%dg_dd < 0.0_dp) then
@@ -371,15 +373,9 @@ contains
             d_next = at(k)%d + step
             if (d_next > d_lo .and. d_next < min(d_hi, d_bound)) how = BY_NEWTON
          end if
-         if (how == BY_NEWTON .and. have_hi) then
-            ! inside a bracket, three Newton steps that have not halved it give way to a bisection
-            newton_steps = newton_steps + 1
-            if (newton_steps > 3) then
-               if (d_hi - d_lo > 0.5_dp*width) how = BY_BISECTION
-               newton_steps = 0
-               width = d_hi - d_lo
-            end if
-         end if
+         ! inside a bracket, a Newton step longer than half the step before the last gives way
+         ! to a bisection (the bracket then at least halves every other evaluation)
+         if (how == BY_NEWTON .and. have_hi .and. .not. (2.0_dp*abs(step) <= dx_older)) how = BY_BISECTION
          select case (how)
          case (BY_NEWTON)
          case (BY_BISECTION)
@@ -387,6 +383,8 @@ contains
          case default
             d_next = d_bound
          end select
+         dx_older = dx_last
+         dx_last = abs(d_next - at(k)%d)
          ! the next evaluation goes to the slot that does not hold d_lo's
          k = 3 - lo
          call growth_point(params, d_next, load, ntens, at(k), status)
@@ -405,12 +403,13 @@ contains
          else
             d_hi = d_next
             have_hi = .true.
-            if (d_hi - d_lo <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*d_hi) then
-               ! the bracket has closed: D is its lower end, evaluated before
-               d_new = d_lo
-               which = lo
-               return
-            end if
+         end if
+         if (have_hi .and. d_hi - d_lo <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*d_hi) then
+            ! the bracket has closed (where rounding in g keeps the Newton step above the
+            ! tolerance): D is its lower end
+            d_new = d_lo
+            which = lo
+            return
          end if
       end do
       status = STATUS_STAGGER_NOT_CONVERGED
