@@ -23,16 +23,16 @@ module interphase_fracture
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
    use interphase_enums, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI, &
-      MODEL_MICROMECHANICAL
+      MODEL_MICROMECHANICAL, REGIME_STICK, REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED
-   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
+   use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
    use interphase_rcurve, only: tabulated_rcurve
    use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure, contact_band_shape, &
       band_stiffness
    implicit none
    private
-   public :: crack_load_type, growth_function, grow_crack
+   public :: crack_load_type, growth_point_type, grow_crack
 
    !> What the crack sees in the increment: the separation at its end and the slip at its
    !> start (the friction step at each trial D starts from it, or from the slip that conserves
@@ -45,60 +45,75 @@ module interphase_fracture
       real(dp) :: m_from = 0.0_dp         !! m(D_n) = D_n ufbar(D_n) (-); set by grow_crack when the crack grows
    end type crack_load_type
 
-   !> Geometric scan towards D = 1 before the bracketed solve: points per run.
+   !> One evaluation of the growth function at D (`growth_point`): g, its partial derivatives,
+   !> its slope along the slip lambda(D), and the response at D.
+   type :: growth_point_type
+      real(dp) :: d                     !! damage D (-)
+      real(dp) :: g                     !! g(D) (-)
+      real(dp) :: g_s(3)                !! dg/ds at fixed lambda, D (1/mm)
+      real(dp) :: g_lam(2)              !! dg/dlambda at fixed s, D (1/mm)
+      real(dp) :: g_d                   !! dg/dD at fixed s, lambda (-)
+      real(dp) :: dg_dd                 !! dg/dD along lambda(D): g_d + g_lam . lambda_D (-)
+      real(dp) :: m                     !! m(D) = D ufbar(D) (-), as `slip_measure` gives it
+      type(response_type) :: r          !! the response at D (friction from the trial slip at D)
+   end type growth_point_type
+
+   !> Geometric scan towards D = 1 that bounds the root search: points per run.
    integer, parameter :: N_SCAN = 12
    !> The scan's last point: 1 - D is reduced by this factor.
    real(dp), parameter :: SCAN_DEPTH = 1.0e-7_dp
-   !> Root tolerance in D and the largest number of Illinois steps.
+   !> Root tolerance in D and the largest number of evaluations of g in the root search.
    real(dp), parameter :: ROOT_TOL = 1.0e-15_dp
    integer, parameter :: MAX_ROOT_ITERATIONS = 200
 
 contains
 
-   !> g(D) of eq 24 for the increment's separation: the friction step at D (D frozen) gives the
-   !> slip lambda(D), then the release rates at D with that slip (lambda frozen). With
-   !> `want_derivatives`, also the partial derivatives dg/ds (Abaqus order, normal first),
-   !> dg/dlambda and dg/dD at fixed lambda (these need the coefficients' second derivatives);
-   !> the caller adds the slip's dependence.
-   pure subroutine growth_function(params, d, load, ntens, g, status, want_derivatives, g_s, g_lam, g_d)
+   !> g(D) of eq 24 for the increment's separation: the friction step at D (D frozen, from the
+   !> trial slip of `growth_trial_slip` and its D-derivative) gives the slip lambda(D) and the
+   !> response at D (what the update returns when D is the root), then the release rates at D
+   !> with that slip (lambda frozen). Where the crack grows (g >= 0, or D > D_n) also the partial
+   !> derivatives dg/ds (Abaqus order, normal first), dg/dlambda and dg/dD at fixed lambda (these
+   !> need the coefficients' second derivatives), and dg/dD along lambda(D), the slope of the root
+   !> search (at D = D_n, that of the side D > D_n); elsewhere these are zero.
+   pure subroutine growth_point(params, d, load, ntens, at, status)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d
       type(crack_load_type), intent(in) :: load
       integer, intent(in) :: ntens
-      real(dp), intent(out) :: g
+      type(growth_point_type), intent(out) :: at
       integer, intent(out) :: status
-      logical, intent(in) :: want_derivatives
-      real(dp), intent(out) :: g_s(3), g_lam(2), g_d
 
       type(coefficient_set_type) :: c, dc, d2c
-      type(response_type) :: r
-      real(dp) :: slip(2), slip_trial(2), dslip_dd(2)
-      logical :: closed
+      real(dp) :: slip_trial(2), dslip_dd(2), slip(2), g, g_s(3), g_lam(2), g_d, dlam_dd(2)
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
       real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, a1, a2, b1, b2, lam_s, lam2, kappa, dkappa
-      real(dp) :: band_g, band_grad(3), q, dq, d2q
-      logical :: in_band
+      real(dp) :: ratio, dratio, band_g, band_grad(3), q, dq, d2q, tau(2), tau_norm, n_dir(2), n_dot
+      logical :: closed, in_band, equivalent_open
       integer :: nt
 
       nt = ntens - 1
-      g_s = 0.0_dp
-      g_lam = 0.0_dp
-      g_d = 0.0_dp
-      if (want_derivatives) then
-         call coefficients_at(params, d, c, dc, status, d2c)
-      else
-         call coefficients_at(params, d, c, dc, status)
-         d2c = NO_COEFFICIENTS
-      end if
+      a1 = 0.0_dp
+      b1 = 0.0_dp
+      a2 = 0.0_dp
+      b2 = 0.0_dp
+      at%d = d
+      at%g = 0.0_dp
+      at%g_s = 0.0_dp
+      at%g_lam = 0.0_dp
+      at%g_d = 0.0_dp
+      at%dg_dd = 0.0_dp
+      at%m = 0.0_dp
+      call coefficients_at(params, d, c, dc, status, d2c)
       if (status /= STATUS_OK) return
+      if (d > 0.0_dp) at%m = d*c%ufbar
       t2 = load%st(1)**2 + load%st(2)**2
       ! friction with D frozen, from the slip the crack faces carry at D
       call growth_trial_slip(params%growth_slip, load%d_from, load%m_from, d, c, dc, load%slip_old, &
          slip_trial, dslip_dd)
-      call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, r, status)
+      call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, at%r, status, dslip_dd)
       if (status /= STATUS_OK) return
-      closed = r%closed
-      slip = r%slip
+      closed = at%r%closed
+      slip = at%r%slip
       ! the contact band (open crack, 0 < s_N < chi |s_T|): psi holds 1/2 q g, so G_II holds -q' g
       in_band = .false.
       if (params%contact_band > 0.0_dp .and. params%model == MODEL_MICROMECHANICAL .and. .not. closed &
@@ -107,87 +122,99 @@ contains
          if (in_band) call band_stiffness(c, dc, d2c, q, dq, d2q)
       end if
 
-      if (params%rcurve == RCURVE_EQUIVALENT .and. .not. closed) then
+      ! g: energy release rates (eq-20 convention) over the R-curve
+      gi = 0.0_dp
+      equivalent_open = params%rcurve == RCURVE_EQUIVALENT .and. .not. closed
+      if (equivalent_open) then
          ! G/G_c with G_c = -k' sigma(D)^2: the provider's k' cancels, g = sum (s/sigma(D))^2 - 1
+         ! (in the contact band G_II = -(k_t' + q'(1 - W)) |s_T|^2 and the equivalent R-curve's
+         ! G_cII = -(k_t' + q'(1 - W)) sigma_T^2, so g is the same: it goes over continuously into
+         ! the closed crack's (G_cII = kappa sigma_T^2, kappa = -(k_t' + q') in pure mode II), and
+         ! the law stays equivalent to the displacement law, whose D the band does not change)
          call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
          call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
-         gi = 0.0_dp
          if (load%s_n > 0.0_dp) gi = (load%s_n/sig_n)**2
          gii = t2/sig_t**2
          g = gi + gii - 1.0_dp
-         if (want_derivatives) then
-            if (load%s_n > 0.0_dp) g_s(1) = 2.0_dp*load%s_n/sig_n**2
-            g_s(2:ntens) = 2.0_dp*load%st(1:nt)/sig_t**2
-            g_d = -2.0_dp*gi*dsig_n/sig_n - 2.0_dp*gii*dsig_t/sig_t
-         end if
-         ! In the contact band G_II = -(k_t' + q'(1 - W)) |s_T|^2 and the equivalent R-curve's
-         ! G_cII = -(k_t' + q'(1 - W)) sigma_T^2, so g is the same: it goes over continuously into
-         ! the closed crack's (G_cII = kappa sigma_T^2, kappa = -(k_t' + q') in pure mode II), and
-         ! the law stays equivalent to the displacement law, whose D the band does not change.
-         return
-      end if
-
-      ! energy release rates (eq-20 convention) and their derivatives
-      gi_s = 0.0_dp
-      gii_s = 0.0_dp
-      gii_lam = 0.0_dp
-      gi_d = 0.0_dp
-      if (.not. closed) then
-         gi = 0.0_dp
-         if (load%s_n > 0.0_dp) then
-            gi = -dc%k_n*load%s_n**2
-            gi_s(1) = -2.0_dp*dc%k_n*load%s_n
-            gi_d = -d2c%k_n*load%s_n**2
-         end if
-         gii = -dc%k_t*t2
-         gii_s(2:ntens) = -2.0_dp*dc%k_t*load%st(1:nt)
-         gii_d = -d2c%k_t*t2
-         if (in_band) then
-            gii = gii - dq*band_g
-            gii_s(1:ntens) = gii_s(1:ntens) - dq*band_grad(1:ntens)
-            gii_d = gii_d - d2q*band_g
-         end if
       else
-         call closed_release_factors(params%growth_slip, c, dc, d2c, d, a1, b1, a2, b2)
-         lam_s = slip(1)*load%st(1) + slip(2)*load%st(2)
-         lam2 = slip(1)**2 + slip(2)**2
-         gi = 0.0_dp
-         gii = -((dc%k_n + dc%kc_n)*load%s_n**2 + (dc%k_t + dc%kc_t)*t2) - 2.0_dp*a1*lam_s + b1*lam2
-         gii_s(1) = -2.0_dp*(dc%k_n + dc%kc_n)*load%s_n
-         gii_s(2:ntens) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1:nt) - 2.0_dp*a1*slip(1:nt)
-         gii_lam(1:nt) = -2.0_dp*a1*load%st(1:nt) + 2.0_dp*b1*slip(1:nt)
-         gii_d = -((d2c%k_n + d2c%kc_n)*load%s_n**2 + (d2c%k_t + d2c%kc_t)*t2) - 2.0_dp*a2*lam_s &
-            + b2*lam2
+         if (.not. closed) then
+            if (load%s_n > 0.0_dp) gi = -dc%k_n*load%s_n**2
+            gii = -dc%k_t*t2
+            if (in_band) gii = gii - dq*band_g
+         else
+            call closed_release_factors(params%growth_slip, c, dc, d, a1, b1)
+            lam_s = slip(1)*load%st(1) + slip(2)*load%st(2)
+            lam2 = slip(1)**2 + slip(2)**2
+            gii = -((dc%k_n + dc%kc_n)*load%s_n**2 + (dc%k_t + dc%kc_t)*t2) - 2.0_dp*a1*lam_s + b1*lam2
+         end if
+         ! R-curve
+         select case (params%rcurve)
+         ! gc is the toughness in the eq-20 convention of G: twice the toughness per unit crack
+         ! area that PROPS and R-curve files give
+         case (RCURVE_CONSTANT)
+            gc = 2.0_dp*[params%gc_i, params%gc_ii]
+            dgc = 0.0_dp
+         case (RCURVE_TABULATED)
+            call tabulated_rcurve(d, gc, dgc, status)
+            if (status /= STATUS_OK) return
+            gc = 2.0_dp*gc
+            dgc = 2.0_dp*dgc
+         case default     ! RCURVE_EQUIVALENT, closed crack (mode II only)
+            ! In pure mode II (s_N = 0) the closed crack slips without friction, tau = 0:
+            ! lambda = -(T^c_T/T^f) s_T, and G_II = kappa s_T^2 with
+            ! kappa = -kk_t' + 2 A (T^c_T/T^f) + B (T^c_T/T^f)^2. The equivalent R-curve of the
+            ! closed crack is therefore G_cII = kappa(D) sigma_T(D)^2 (for the simplified model
+            ! kappa = K_T = -k_t', the open crack's value, with either growth-slip rule).
+            call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
+            ratio = c%tc_t/c%tf
+            kappa = -(dc%k_t + dc%kc_t) + 2.0_dp*a1*ratio + b1*ratio*ratio
+            gc = [1.0_dp, kappa*sig_t**2]
+         end select
+         ! gi = 0 when the crack is closed or s_N <= 0 (no mode-I term then)
+         g = gii/gc(2) - 1.0_dp
+         if (abs(gi) > 0.0_dp) g = g + gi/gc(1)
       end if
+      at%g = g
+      ! no growth at D_n: neither the search nor the tangent needs the derivatives
+      if (g < 0.0_dp .and. .not. (d > load%d_from)) return
 
-      ! R-curve
-      select case (params%rcurve)
-      ! gc is the toughness in the eq-20 convention of G: twice the toughness per unit crack
-      ! area that PROPS and R-curve files give
-      case (RCURVE_CONSTANT)
-         gc = 2.0_dp*[params%gc_i, params%gc_ii]
-         dgc = 0.0_dp
-      case (RCURVE_TABULATED)
-         call tabulated_rcurve(d, gc, dgc, status)
-         if (status /= STATUS_OK) return
-         gc = 2.0_dp*gc
-         dgc = 2.0_dp*dgc
-      case default     ! RCURVE_EQUIVALENT, closed crack (mode II only)
-         ! In pure mode II (s_N = 0) the closed crack slips without friction, tau = 0:
-         ! lambda = -(T^c_T/T^f) s_T, and G_II = kappa s_T^2 with
-         ! kappa = -kk_t' + 2 A (T^c_T/T^f) + B (T^c_T/T^f)^2. The equivalent R-curve of the
-         ! closed crack is therefore G_cII = kappa(D) sigma_T(D)^2 (for the simplified model
-         ! kappa = K_T = -k_t', the open crack's value, with either growth-slip rule).
-         call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
-         call closed_mode_two_stiffness(params%growth_slip, c, dc, d2c, d, kappa, dkappa)
-         gc = [1.0_dp, kappa*sig_t**2]
-         dgc = [0.0_dp, dkappa*sig_t**2 + 2.0_dp*kappa*sig_t*dsig_t]
-      end select
-
-      ! gi = 0 when the crack is closed or s_N <= 0 (no mode-I term then)
-      g = gii/gc(2) - 1.0_dp
-      if (abs(gi) > 0.0_dp) g = g + gi/gc(1)
-      if (want_derivatives) then
+      g_s = 0.0_dp
+      g_lam = 0.0_dp
+      if (equivalent_open) then
+         if (load%s_n > 0.0_dp) g_s(1) = 2.0_dp*load%s_n/sig_n**2
+         g_s(2:ntens) = 2.0_dp*load%st(1:nt)/sig_t**2
+         g_d = -2.0_dp*gi*dsig_n/sig_n - 2.0_dp*gii*dsig_t/sig_t
+      else
+         gi_s = 0.0_dp
+         gii_s = 0.0_dp
+         gii_lam = 0.0_dp
+         gi_d = 0.0_dp
+         if (.not. closed) then
+            if (load%s_n > 0.0_dp) then
+               gi_s(1) = -2.0_dp*dc%k_n*load%s_n
+               gi_d = -d2c%k_n*load%s_n**2
+            end if
+            gii_s(2:ntens) = -2.0_dp*dc%k_t*load%st(1:nt)
+            gii_d = -d2c%k_t*t2
+            if (in_band) then
+               gii_s(1:ntens) = gii_s(1:ntens) - dq*band_grad(1:ntens)
+               gii_d = gii_d - d2q*band_g
+            end if
+         else
+            call closed_release_slopes(params%growth_slip, c, dc, d2c, d, a2, b2)
+            gii_s(1) = -2.0_dp*(dc%k_n + dc%kc_n)*load%s_n
+            gii_s(2:ntens) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1:nt) - 2.0_dp*a1*slip(1:nt)
+            gii_lam(1:nt) = -2.0_dp*a1*load%st(1:nt) + 2.0_dp*b1*slip(1:nt)
+            gii_d = -((d2c%k_n + d2c%kc_n)*load%s_n**2 + (d2c%k_t + d2c%kc_t)*t2) - 2.0_dp*a2*lam_s &
+               + b2*lam2
+         end if
+         if (params%rcurve /= RCURVE_CONSTANT .and. params%rcurve /= RCURVE_TABULATED) then
+            ! d kappa/dD of the closed crack's equivalent R-curve
+            dratio = dc%tc_t/c%tf - c%tc_t*dc%tf/c%tf**2
+            dkappa = -(d2c%k_t + d2c%kc_t) + 2.0_dp*(a2*ratio + a1*dratio) + b2*ratio*ratio &
+               + 2.0_dp*b1*ratio*dratio
+            dgc = [0.0_dp, dkappa*sig_t**2 + 2.0_dp*kappa*sig_t*dsig_t]
+         end if
          g_s = gii_s/gc(2)
          g_lam = gii_lam/gc(2)
          g_d = (gii_d*gc(2) - gii*dgc(2))/gc(2)**2
@@ -196,48 +223,72 @@ contains
             g_d = g_d + (gi_d*gc(1) - gi*dgc(1))/gc(1)**2
          end if
       end if
-   end subroutine growth_function
+      at%g_s = g_s
+      at%g_lam = g_lam
+      at%g_d = g_d
+      ! along lambda(D): dg/dD = g_D + g_lambda . lambda_D
+      dlam_dd = at%r%dlam_dd
+      if (closed .and. .not. (d > load%d_from) .and. params%growth_slip == GROWTH_FIXED_PI) then
+         ! At D_n itself the trial slip is lambda_n (the response without growth), but it falls
+         ! like 1/m(D) as soon as D grows: the search starts with the slope of the side D > D_n,
+         ! lambda_D changed by what the trial slip's derivative adds in the response (respond):
+         ! all of it in stick; in slip (1 - phi/|tau|) times its part across the shear stress
+         ! direction (none in 2-D).
+         dslip_dd = -load%slip_old*((c%ufbar + d*dc%ufbar)*(1.0_dp/max(d*c%ufbar, tiny(1.0_dp))))
+         if (at%r%regime == REGIME_STICK) then
+            dlam_dd = dlam_dd + dslip_dd
+         else if (at%r%regime == REGIME_SLIP .and. nt == 2) then
+            tau = c%tc_t*load%st + c%tf*slip_trial
+            tau_norm = sqrt(tau(1)**2 + tau(2)**2)
+            if (tau_norm > 0.0_dp) then
+               n_dir = tau/tau_norm
+               n_dot = n_dir(1)*dslip_dd(1) + n_dir(2)*dslip_dd(2)
+               dlam_dd = dlam_dd - (params%mu*c%sc_n*load%s_n/tau_norm)*(dslip_dd - n_dot*n_dir)
+            end if
+         end if
+      end if
+      at%dg_dd = g_d + g_lam(1)*dlam_dd(1) + g_lam(2)*dlam_dd(2)
+   end subroutine growth_point
 
-   !> The factors of the closed crack's release rate, G_II = -kk' s.s - 2 A lambda.s_T + B |lambda|^2,
-   !> and their derivatives d/dD (a2 = A', b2 = B'; they need the second derivatives d2c, which
-   !> may be zero when g_D is not wanted). With m = D ufbar:
-   !> GROWTH_FIXED_PI: A = C^f' - C^f m'/m, B = T^f' m - T^f m'; GROWTH_FIXED_LAMBDA: A = C^f',
-   !> B = q' with q = D T^f ufbar = T^f m.
-   pure subroutine closed_release_factors(growth_slip, c, dc, d2c, d, a1, b1, a2, b2)
+   !> The factors of the closed crack's release rate, G_II = -kk' s.s - 2 A lambda.s_T + B |lambda|^2.
+   !> With m = D ufbar: GROWTH_FIXED_PI: A = C^f' - C^f m'/m, B = T^f' m - T^f m';
+   !> GROWTH_FIXED_LAMBDA: A = C^f', B = q' with q = D T^f ufbar = T^f m.
+   pure subroutine closed_release_factors(growth_slip, c, dc, d, a1, b1)
+      integer, intent(in) :: growth_slip
+      type(coefficient_set_type), intent(in) :: c, dc
+      real(dp), intent(in) :: d
+      real(dp), intent(out) :: a1, b1
+      real(dp) :: m, m1
+      m = d*c%ufbar
+      m1 = c%ufbar + d*dc%ufbar
+      if (growth_slip == GROWTH_FIXED_PI) then
+         a1 = dc%cf_t - c%cf_t*m1/m
+         b1 = dc%tf*m - c%tf*m1
+      else
+         a1 = dc%cf_t
+         b1 = dc%tf*m + c%tf*m1
+      end if
+   end subroutine closed_release_factors
+
+   !> The derivatives d/dD of the factors A and B of `closed_release_factors`, a2 = A', b2 = B'
+   !> (d2c: the coefficients' second derivatives).
+   pure subroutine closed_release_slopes(growth_slip, c, dc, d2c, d, a2, b2)
       integer, intent(in) :: growth_slip
       type(coefficient_set_type), intent(in) :: c, dc, d2c
       real(dp), intent(in) :: d
-      real(dp), intent(out) :: a1, b1, a2, b2
+      real(dp), intent(out) :: a2, b2
       real(dp) :: m, m1, m2
       m = d*c%ufbar
       m1 = c%ufbar + d*dc%ufbar
       m2 = 2.0_dp*dc%ufbar + d*d2c%ufbar
       if (growth_slip == GROWTH_FIXED_PI) then
-         a1 = dc%cf_t - c%cf_t*m1/m
-         b1 = dc%tf*m - c%tf*m1
          a2 = d2c%cf_t - (dc%cf_t*m1 + c%cf_t*m2)/m + c%cf_t*(m1/m)**2
          b2 = d2c%tf*m - c%tf*m2
       else
-         a1 = dc%cf_t
-         b1 = dc%tf*m + c%tf*m1
          a2 = d2c%cf_t
          b2 = d2c%tf*m + 2.0_dp*dc%tf*m1 + c%tf*m2
       end if
-   end subroutine closed_release_factors
-
-   !> kappa(D) of the closed crack in pure mode II (see growth_function) and d kappa/dD.
-   pure subroutine closed_mode_two_stiffness(growth_slip, c, dc, d2c, d, kappa, dkappa)
-      integer, intent(in) :: growth_slip
-      type(coefficient_set_type), intent(in) :: c, dc, d2c
-      real(dp), intent(in) :: d
-      real(dp), intent(out) :: kappa, dkappa
-      real(dp) :: r, dr, a1, b1, a2, b2
-      r = c%tc_t/c%tf
-      dr = dc%tc_t/c%tf - c%tc_t*dc%tf/c%tf**2
-      call closed_release_factors(growth_slip, c, dc, d2c, d, a1, b1, a2, b2)
-      kappa = -(dc%k_t + dc%kc_t) + 2.0_dp*a1*r + b1*r*r
-      dkappa = -(d2c%k_t + d2c%kc_t) + 2.0_dp*(a2*r + a1*dr) + b2*r*r + 2.0_dp*b1*r*dr
-   end subroutine closed_mode_two_stiffness
+   end subroutine closed_release_slopes
 
    !> The separation at which the displacement-driven law reaches D in a pure mode,
    !> sigma(D) = s0/(1 - D(1 - eta)), and its derivative: the R-curve equivalent to that law
@@ -250,78 +301,125 @@ contains
    end subroutine equivalent_scale
 
    !> Crack growth in the increment from D_from (eqs 41-42, 50): the predictor keeps D_from when
-   !> g(D_from) < 0; otherwise the first root of g in (D_from, 1] is bracketed by a geometric scan
-   !> towards D = 1 and refined by the Illinois (modified regula falsi) method; with no root the
-   !> crack runs to b (D = 1). For a closed crack every evaluation of g alternates the two
-   !> sub-problems of the paper's staggered scheme (friction with D frozen, damage with lambda
-   !> frozen), so the root is the staggered scheme's fixed point; a bracket that does not shrink
-   !> to ROOT_TOL in MAX_ROOT_ITERATIONS is STATUS_STAGGER_NOT_CONVERGED.
-   pure subroutine grow_crack(params, d_from, load, ntens, d_new, status)
+   !> g(D_from) < 0; otherwise D is the first root of g in (D_from, 1], found by a safeguarded
+   !> Newton iteration from D_from on g(D) along the slip lambda(D) (slope dg/dD = g_D +
+   !> g_lambda . lambda_D, the tangent's denominator). The search never passes the points of a
+   !> geometric scan towards D = 1 (N_SCAN points per run, down to 1 - D = SCAN_DEPTH (1 -
+   !> D_from)) without evaluating them: a Newton step beyond the next scan point, or uphill
+   !> (dg/dD >= 0), is replaced by that point, or by the bisection of a bracket once g < 0 has been
+   !> seen (as is a step inside the bracket longer than half the step before the last); g >= 0 at
+   !> every scan point lets the crack run to b (D = 1). Converged when the Newton
+   !> step |g/(dg/dD)| at a point is at most ROOT_TOL + 4 eps D (D is that point), or when a
+   !> bracket g(D_lo) >= 0 > g(D_hi) has shrunk to ROOT_TOL + 4 eps D_hi (D is D_lo). For a closed
+   !> crack every evaluation of g alternates the two sub-problems of the paper's staggered scheme
+   !> (friction with D frozen, damage with lambda frozen), so the root is the staggered scheme's
+   !> fixed point; no convergence in MAX_ROOT_ITERATIONS evaluations is
+   !> STATUS_STAGGER_NOT_CONVERGED. at(which) is the evaluation at the returned D (its response
+   !> and derivatives; two slots, so that the search copies none); which = 0 when D = 1.
+   pure subroutine grow_crack(params, d_from, load, ntens, d_new, status, at, which)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d_from
       type(crack_load_type), intent(inout) :: load    !! on return with m_from set when the crack grows
       integer, intent(in) :: ntens
       real(dp), intent(out) :: d_new
       integer, intent(out) :: status
+      type(growth_point_type), intent(out) :: at(2)   !! evaluations, at(which) the one at d_new
+      integer, intent(out) :: which                   !! 1 or 2: at(which) is at d_new; 0: none (D = 1)
 
-      real(dp) :: g_lo, g_hi, d_lo, d_hi, d_mid, g_mid, unused_s(3), unused_lam(2), unused_d
-      integer :: j, iter, side
+      real(dp) :: d_lo, d_hi, d_bound, d_next, step, dx_last, dx_older
+      integer :: iter, scan, how
+      logical :: have_hi
+      integer :: k, lo
+      integer, parameter :: BY_NEWTON = 1, BY_BISECTION = 2, BY_SCAN = 3
 
       d_new = d_from
+      which = 0
       load%d_from = d_from
       load%m_from = 0.0_dp
       status = STATUS_OK
       ! a crack that has reached b cannot grow: g is not evaluated there (the equivalent R-curve's
       ! closed-crack toughness vanishes at D = 1, and g would be 0/0)
       if (d_from >= 1.0_dp) return
-      call growth_function(params, d_from, load, ntens, g_lo, status, .false., unused_s, unused_lam, unused_d)
-      if (status /= STATUS_OK .or. g_lo < 0.0_dp) return
-      ! the crack grows: m(D_n) for the slip the faces carry at a larger D (growth_trial_slip)
-      if (params%growth_slip == GROWTH_FIXED_PI) then
-         call slip_measure(params, d_from, load%m_from, status)
-         if (status /= STATUS_OK) return
-      end if
-      d_lo = d_from
-      d_hi = 1.0_dp
-      g_hi = 0.0_dp
-      do j = 1, N_SCAN
-         d_hi = 1.0_dp - (1.0_dp - d_from)*SCAN_DEPTH**(real(j, dp)/real(N_SCAN, dp))
-         call growth_function(params, d_hi, load, ntens, g_hi, status, .false., unused_s, unused_lam, unused_d)
-         if (status /= STATUS_OK) return
-         if (g_hi < 0.0_dp) exit
-         d_lo = d_hi
-         g_lo = g_hi
-      end do
-      if (.not. (g_hi < 0.0_dp)) then
-         d_new = 1.0_dp                       ! no arrest: the crack runs to b
+      k = 1
+      call growth_point(params, d_from, load, ntens, at(k), status)
+      if (status /= STATUS_OK) return
+      if (at(k)%g < 0.0_dp) then
+         which = k
          return
       end if
-      ! Illinois: g(d_lo) >= 0 > g(d_hi)
-      side = 0
-      d_mid = d_lo
+      ! the crack grows: m(D_n) for the slip the faces carry at a larger D (growth_trial_slip);
+      ! at D_from itself the trial slip is lambda_n either way, so `at` stands
+      if (params%growth_slip == GROWTH_FIXED_PI) load%m_from = at(k)%m
+      d_lo = d_from
+      d_hi = 1.0_dp
+      have_hi = .false.
+      lo = k
+      dx_last = 1.0_dp
+      dx_older = 1.0_dp
+      scan = 1
+      d_bound = scan_point(d_from, scan)
       do iter = 1, MAX_ROOT_ITERATIONS
-         d_mid = (d_lo*g_hi - d_hi*g_lo)/(g_hi - g_lo)
-         if (.not. (d_mid > d_lo .and. d_mid < d_hi)) d_mid = 0.5_dp*(d_lo + d_hi)
-         call growth_function(params, d_mid, load, ntens, g_mid, status, .false., unused_s, unused_lam, unused_d)
-         if (status /= STATUS_OK) return
-         if (g_mid >= 0.0_dp) then
-            d_lo = d_mid
-            g_lo = g_mid
-            if (side == -1) g_hi = 0.5_dp*g_hi
-            side = -1
-         else
-            d_hi = d_mid
-            g_hi = g_mid
-            if (side == 1) g_lo = 0.5_dp*g_lo
-            side = 1
+         ! at(k) is the latest evaluation, at(lo) the one at d_lo
+         step = 0.0_dp
+         how = BY_SCAN
+         if (have_hi) how = BY_BISECTION
+         if (at(k)%dg_dd < 0.0_dp) then
+            step = -at(k)%g/at(k)%dg_dd
+            if (abs(step) <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*at(k)%d) then
+               d_new = at(k)%d                  ! >= d_from: every point searched is
+               which = k
+               return
+            end if
+            d_next = at(k)%d + step
+            if (d_next > d_lo .and. d_next < min(d_hi, d_bound)) how = BY_NEWTON
          end if
-         if (d_hi - d_lo <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*d_hi) exit
-         if (iter == MAX_ROOT_ITERATIONS) then
-            status = STATUS_STAGGER_NOT_CONVERGED
+         ! inside a bracket, a Newton step longer than half the step before the last gives way
+         ! to a bisection (the bracket then at least halves every other evaluation)
+         if (how == BY_NEWTON .and. have_hi .and. .not. (2.0_dp*abs(step) <= dx_older)) how = BY_BISECTION
+         select case (how)
+         case (BY_NEWTON)
+         case (BY_BISECTION)
+            d_next = 0.5_dp*(d_lo + d_hi)
+         case default
+            d_next = d_bound
+         end select
+         dx_older = dx_last
+         dx_last = abs(d_next - at(k)%d)
+         ! the next evaluation goes to the slot that does not hold d_lo's
+         k = 3 - lo
+         call growth_point(params, d_next, load, ntens, at(k), status)
+         if (status /= STATUS_OK) return
+         if (at(k)%g >= 0.0_dp) then
+            d_lo = d_next
+            lo = k
+            if (how == BY_SCAN) then
+               if (scan == N_SCAN) then
+                  d_new = 1.0_dp              ! no arrest: the crack runs to b
+                  return
+               end if
+               scan = scan + 1
+               d_bound = scan_point(d_from, scan)
+            end if
+         else
+            d_hi = d_next
+            have_hi = .true.
+         end if
+         if (have_hi .and. d_hi - d_lo <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*d_hi) then
+            ! the bracket has closed (where rounding in g keeps the Newton step above the
+            ! tolerance): D is its lower end
+            d_new = d_lo
+            which = lo
             return
          end if
       end do
-      d_new = max(d_from, d_lo)
+      status = STATUS_STAGGER_NOT_CONVERGED
    end subroutine grow_crack
+
+   !> Point j of the geometric scan from D_from towards D = 1: 1 - D = (1 - D_from) SCAN_DEPTH^(j/N_SCAN).
+   pure real(dp) function scan_point(d_from, j)
+      real(dp), intent(in) :: d_from
+      integer, intent(in) :: j
+      scan_point = 1.0_dp - (1.0_dp - d_from)*SCAN_DEPTH**(real(j, dp)/real(N_SCAN, dp))
+   end function scan_point
 
 end module interphase_fracture

@@ -36,7 +36,7 @@ module interphase_kernel
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
    use interphase_damage, only: displacement_damage
-   use interphase_fracture, only: crack_load_type, growth_function, grow_crack
+   use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
    use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure
    use interphase_state, only: interface_state_type
    implicit none
@@ -176,7 +176,8 @@ contains
       dd_ds = weight*dd_ds
    end subroutine regularise_damage
 
-   !> The fracture-mechanics law: D from g = 0, the response at that D, and dD/ds.
+   !> The fracture-mechanics law: D from g = 0, the response at that D, and dD/ds (the root
+   !> search returns both from its last evaluation; only D = 1 needs its own).
    pure subroutine fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, status)
       type(law_params_type), intent(in) :: params
       type(interface_state_type), intent(in) :: old
@@ -187,38 +188,57 @@ contains
       real(dp), intent(out) :: dd_ds(3)               !! dD/ds (0 unless the crack grows)
       integer, intent(out) :: status
 
-      type(coefficient_set_type) :: c, dc
       type(crack_load_type) :: load
-      real(dp) :: d_n, g, g_s(3), g_lam(2), g_d, denominator, numerator(3), slip_trial(2), dslip_dd(2)
-      integer :: j, nt
+      type(growth_point_type) :: at(2)
+      real(dp) :: d_n, denominator, numerator(3)
+      integer :: j, nt, which
 
       nt = ntens - 1
       d_n = max(old%d, params%d0)                     ! the initial crack a0 = D0 b
       load%s_n = s_n
       load%st = st
       load%slip_old = old%slip
-      call grow_crack(params, d_n, load, ntens, d, status)
+      call grow_crack(params, d_n, load, ntens, d, status, at, which)
       if (status /= STATUS_OK) return
-      call coefficients_at(params, d, c, dc, status)
-      if (status /= STATUS_OK) return
-      call growth_trial_slip(params%growth_slip, d_n, load%m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
-      call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
-      if (status /= STATUS_OK) return
+      dd_ds = 0.0_dp
+      if (which == 0) then
+         ! D = 1 (the crack ran to b)
+         call broken_response(params, d_n, load%m_from, d, old%slip, s_n, st, ntens, r, status)
+         return
+      end if
+      r = at(which)%r
 
       ! dD/ds from g(D, s, lambda(D, s)) = 0 while the crack grows
-      dd_ds = 0.0_dp
       if (d > d_n .and. d < 1.0_dp) then
-         call growth_function(params, d, load, ntens, g, status, .true., g_s, g_lam, g_d)
-         if (status /= STATUS_OK) return
-         numerator = g_s
-         denominator = g_d
+         numerator = at(which)%g_s
+         denominator = at(which)%g_d
          do j = 1, nt
-            numerator = numerator + g_lam(j)*r%dlam_ds(j, :)
-            denominator = denominator + g_lam(j)*r%dlam_dd(j)
+            numerator = numerator + at(which)%g_lam(j)*r%dlam_ds(j, :)
+            denominator = denominator + at(which)%g_lam(j)*r%dlam_dd(j)
          end do
          if (abs(denominator) > 0.0_dp) dd_ds(1:ntens) = -numerator(1:ntens)/denominator
       end if
    end subroutine fracture_update
+
+   !> The response of the fracture law's crack that has run to b in the increment (D = 1), its
+   !> trial slip from D_n (a routine of its own: the update does not set up its coefficient sets
+   !> otherwise).
+   pure subroutine broken_response(params, d_n, m_n, d, slip_old, s_n, st, ntens, r, status)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d_n, m_n                !! D_n and m(D_n) (-)
+      real(dp), intent(in) :: d                       !! D = 1 (-)
+      real(dp), intent(in) :: slip_old(2)             !! lambda_n (mm)
+      real(dp), intent(in) :: s_n, st(2)
+      integer, intent(in) :: ntens
+      type(response_type), intent(out) :: r
+      integer, intent(out) :: status
+      type(coefficient_set_type) :: c, dc
+      real(dp) :: slip_trial(2), dslip_dd(2)
+      call coefficients_at(params, d, c, dc, status)
+      if (status /= STATUS_OK) return
+      call growth_trial_slip(params%growth_slip, d_n, m_n, d, c, dc, slip_old, slip_trial, dslip_dd)
+      call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
+   end subroutine broken_response
 
 
 end module interphase_kernel

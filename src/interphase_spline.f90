@@ -428,15 +428,20 @@ contains
       integer :: j
 
       t = x - knots(interval)
-      do j = 1, size(coef, 1)
-         values(j) = coef(j, 0, interval) + t*(coef(j, 1, interval) &
-            + t*(coef(j, 2, interval) + t*coef(j, 3, interval)))
-         derivatives(j) = coef(j, 1, interval) + t*(2.0_dp*coef(j, 2, interval) &
-            + 3.0_dp*t*coef(j, 3, interval))
-      end do
       if (present(second_derivatives)) then
          do j = 1, size(coef, 1)
+            values(j) = coef(j, 0, interval) + t*(coef(j, 1, interval) &
+               + t*(coef(j, 2, interval) + t*coef(j, 3, interval)))
+            derivatives(j) = coef(j, 1, interval) + t*(2.0_dp*coef(j, 2, interval) &
+               + 3.0_dp*t*coef(j, 3, interval))
             second_derivatives(j) = 2.0_dp*coef(j, 2, interval) + 6.0_dp*t*coef(j, 3, interval)
+         end do
+      else
+         do j = 1, size(coef, 1)
+            values(j) = coef(j, 0, interval) + t*(coef(j, 1, interval) &
+               + t*(coef(j, 2, interval) + t*coef(j, 3, interval)))
+            derivatives(j) = coef(j, 1, interval) + t*(2.0_dp*coef(j, 2, interval) &
+               + 3.0_dp*t*coef(j, 3, interval))
          end do
       end if
    end subroutine cubic_eval
