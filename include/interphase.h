@@ -7,12 +7,11 @@
  * `target_link_libraries(app PRIVATE interphase::interphase)`, or the shared
  * `libinterphase.so`, `interphase::shared`), plus the Fortran runtime (`-lgfortran`) and LAPACK
  * when linking the static library by hand. interphase_update, interphase_update_dt,
- * interphase_run, interphase_run_history and interphase_status_message are re-entrant and thread-safe: they keep no
- * state; the caller owns every array. The loaders interphase_load_table and
- * interphase_load_rcurve are not: they write
- * library-wide data (the custom RVE table, the tabulated R-curve) that every later update reads.
- * Call them once, from one thread, before any thread calls interphase_update (and never while
- * an update runs).
+ * interphase_run, interphase_run_history and interphase_status_message are re-entrant and
+ * thread-safe: they keep no state; the caller owns every array. The loaders
+ * interphase_load_table and interphase_load_rcurve are not: they write library-wide data (the
+ * custom RVE table, the tabulated R-curve) that every later update reads. Call them once, from
+ * one thread, before any thread calls interphase_update (and never while an update runs).
  *
  * Units: separations mm, tractions MPa, stiffness MPa/mm, energy per unit area N/mm.
  * Component order: normal first, then the shear(s): (s_N, s_T) in 2-D, (s_N, s_T1, s_T2) in
