@@ -456,7 +456,7 @@ contains
                ' = ', failure%target(c), ' MPa is beyond the peak the material can carry (the largest |', name, &
                '| reached is ', failure%peak(c), ' MPa)'
          else if (failure%status == STATUS_MIXED_NOT_CONVERGED) then
-            write (long, '(a,1x,a,i0,a,es10.3,a,i0,a,es9.2,a,i0,a)', iostat=ios) trim(long), &
+            write (long, '(a,1x,a,i0,a,es9.3,a,i0,a,es8.2,a,i0,a)', iostat=ios) trim(long), &
                'no converged step even after ', MAX_HALVINGS, ' halvings of the sub-increment: Newton on the '// &
                'tangent left a traction residual of ', failure%residual, ' MPa after ', failure%iterations, &
                ' iteration(s) (traction tolerance ', tolerance, ' MPa, at most ', MAX_NEWTON, ')'
