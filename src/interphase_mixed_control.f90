@@ -224,7 +224,8 @@ contains
          logical, intent(out) :: success          !! false: `failure` set
          type(path_point_type) :: trial
          real(dp) :: done, step, attempt, theta, time_new, residual
-         real(dp) :: target(ntens), tangent(ntens, ntens)
+         ! fixed sizes, the first ntens used: no allocation per step
+         real(dp) :: target(3), tangent(3, 3)
          integer :: halvings, iterations, status
          logical :: converged, fatal
 
@@ -242,30 +243,30 @@ contains
             end if
             ! Exact at both ends of the segment, and constant components stay exactly constant.
             if (theta >= 1.0_dp) then
-               target = v_b
+               target(:ntens) = v_b
                time_new = time_b
             else
-               target = v_a + theta*(v_b - v_a)
+               target(:ntens) = v_a + theta*(v_b - v_a)
                time_new = time_a + theta*(time_b - time_a)
             end if
-            call solve_step(law, point, target, controls, time_new, tolerance, trial, tangent, converged, &
-               status, fatal, residual, iterations)
+            call solve_step(law, point, target(:ntens), controls, time_new, tolerance, trial, &
+               tangent(:ntens, :ntens), converged, status, fatal, residual, iterations)
             if (.not. converged) then
                if (status /= STATUS_OK .and. fatal) then
-                  call record_failure(failure, FAILURE_FATAL, status, time_new, target, controls, residual, &
+                  call record_failure(failure, FAILURE_FATAL, status, time_new, target(:ntens), controls, residual, &
                      iterations, point)
                   return
                end if
                halvings = halvings + 1
                if (halvings > MAX_HALVINGS) then
-                  call record_failure(failure, FAILURE_HALVINGS, status, time_new, target, controls, residual, &
+                  call record_failure(failure, FAILURE_HALVINGS, status, time_new, target(:ntens), controls, residual, &
                      iterations, point)
                   return
                end if
                step = 0.5_dp*step
                cycle
             end if
-            call law%accept(point, trial, tangent, output_part)
+            call law%accept(point, trial, tangent(:ntens, :ntens), output_part)
             point = trial
             where (abs(point%traction(:ntens)) > failure%peak(:ntens)) failure%peak(:ntens) = abs(point%traction(:ntens))
             done = attempt
@@ -332,15 +333,16 @@ contains
       logical, intent(in) :: controls(:)          !! true where `target` is a traction
       real(dp), intent(in) :: time_new            !! time at the end of the step
       real(dp), intent(in) :: tolerance           !! MPa
-      type(path_point_type), intent(out) :: trial  !! the state at the end of the step
+      type(path_point_type), intent(inout) :: trial  !! the state at the end of the step
       real(dp), intent(out) :: tangent(:, :)      !! its tangent (MPa/mm)
       logical, intent(out) :: converged
       integer, intent(out) :: status              !! the last update's status
       logical, intent(out) :: fatal               !! the last update failed for good
       real(dp), intent(out) :: residual           !! max |traction - imposed| of the last iteration (MPa)
       integer, intent(out) :: iterations          !! updates made
-      real(dp) :: s(size(target)), r(size(target)), delta(size(target))
-      integer :: free(size(target))
+      ! fixed sizes, the first ntens (nfree) used: no allocation per iteration
+      real(dp) :: s(3), r(3), delta(3), block(3, 3)
+      integer :: free(3)
       integer :: nfree, i, ntens
       logical :: solved
 
@@ -350,8 +352,8 @@ contains
       status = STATUS_OK
       residual = 0.0_dp
       iterations = 0
-      s = point%separation(:ntens)
-      where (.not. controls) s = target
+      s(:ntens) = point%separation(:ntens)
+      where (.not. controls) s(:ntens) = target
       nfree = 0
       do i = 1, ntens
          if (.not. controls(i)) cycle
@@ -360,7 +362,7 @@ contains
       end do
       do
          trial = point
-         call law%step(trial, s, time_new, tangent, status, fatal)
+         call law%step(trial, s(:ntens), time_new, tangent, status, fatal)
          iterations = iterations + 1
          if (status /= STATUS_OK) return
          if (nfree == 0) exit
@@ -368,7 +370,8 @@ contains
          residual = maxval(abs(r(:nfree)))
          if (residual <= tolerance) exit
          if (iterations >= MAX_NEWTON) return
-         call solve_small(tangent(free(:nfree), free(:nfree)), r(:nfree), delta(:nfree), solved)
+         block(:nfree, :nfree) = tangent(free(:nfree), free(:nfree))
+         call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved)
          if (.not. solved) return
          s(free(:nfree)) = s(free(:nfree)) - delta(:nfree)
       end do
@@ -382,33 +385,33 @@ contains
       real(dp), intent(in) :: b(:)                !! right-hand side (MPa)
       real(dp), intent(out) :: x(:)               !! solution (mm), size(b)
       logical, intent(out) :: solved
-      real(dp) :: m(size(b), size(b)), row(size(b))
+      real(dp) :: m(3, 3), row(3)   ! the first n x n used (n <= 3): no allocation
       real(dp) :: factor
       integer :: n, i, p, r
 
       n = size(b)
-      m = a
+      m(:n, :n) = a
       x = b
       solved = .false.
       do i = 1, n
-         p = i - 1 + maxloc(abs(m(i:, i)), 1)
+         p = i - 1 + maxloc(abs(m(i:n, i)), 1)
          if (.not. abs(m(p, i)) > 0.0_dp) return
          if (p /= i) then
-            row = m(i, :)
-            m(i, :) = m(p, :)
-            m(p, :) = row
+            row(:n) = m(i, :n)
+            m(i, :n) = m(p, :n)
+            m(p, :n) = row(:n)
             factor = x(i)
             x(i) = x(p)
             x(p) = factor
          end if
          do r = i + 1, n
             factor = m(r, i)/m(i, i)
-            m(r, i:) = m(r, i:) - factor*m(i, i:)
+            m(r, i:n) = m(r, i:n) - factor*m(i, i:n)
             x(r) = x(r) - factor*x(i)
          end do
       end do
       do i = n, 1, -1
-         x(i) = (x(i) - sum(m(i, i + 1:)*x(i + 1:)))/m(i, i)
+         x(i) = (x(i) - sum(m(i, i + 1:n)*x(i + 1:n)))/m(i, i)
       end do
       solved = all(ieee_is_finite(x))
    end subroutine solve_small
