@@ -1,4 +1,7 @@
-!> Replay of a history through the UMAT at one material point.
+!> Replay of a history through the UMAT at one material point. The algorithm (preload,
+!> sub-increments, mixed control, halvings) is the library's `interphase_mixed_control`, shared with
+!> the C entry interphase_run_history; this module gives it the UMAT as the update and writes the
+!> CSV rows, the tangent check, the progress lines and the messages.
 !>
 !> The material starts virgin (D = 0, no slip, zero traction and energies) at zero separation.
 !> If the history's first row is not at zero, the driver first loads the point from zero to it,
@@ -35,7 +38,6 @@
 !> as a kink in the summary).
 module interphase_driver_replay
    use, intrinsic :: iso_fortran_env, only: error_unit
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_VISCOUS, SV_DAMAGE
    use interphase_abaqus_interfaces, only: umat
@@ -46,15 +48,17 @@ module interphase_driver_replay
    use interphase_driver_host, only: reset_fatal_message, fatal_message_reported, last_fatal_message
    use interphase_replay_file, only: write_replay_group
    use interphase_text_input, only: tried_path
+   use interphase_status, only: STATUS_OK, STATUS_BEYOND_PEAK
+   use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
+      component_name, MAX_HALVINGS, MAX_NEWTON, FAILURE_NONE, FAILURE_OUTPUT, FAILURE_FATAL
    implicit none
    private
    public :: replay_history, MAX_HALVINGS, MAX_NEWTON, point_state_type, new_point, call_umat, &
       replay_report_type
 
-   !> Largest number of halvings of one sub-increment before the driver gives up.
-   integer, parameter :: MAX_HALVINGS = 10
-   !> Largest number of Newton iterations (UMAT calls) of one mixed-control step.
-   integer, parameter :: MAX_NEWTON = 25
+   !> The status of `umat_step` when the UMAT asks for a smaller increment (PNEWDT < 1), and of
+   !> `umat_output` when a CSV row cannot be written: the driver words those failures itself.
+   integer, parameter :: UMAT_CUT_BACK = -1
    !> Seconds between two progress lines (and before the first).
    real(dp), parameter :: PROGRESS_SECONDS = 2.0_dp
 
@@ -83,8 +87,30 @@ module interphase_driver_replay
       logical :: moving(3) = .false.
    end type replay_report_type
 
-contains
+   !> The UMAT as the update of interphase_mixed_control's replay, with what the driver does with
+   !> each converged step: the tangent check, the CSV rows, the progress lines.
+   type, extends(point_law_type) :: umat_law_type
+      type(case_type) :: run                      !! the case
+      integer :: csv_unit = 0                     !! open CSV file
+      integer :: ntens = 2
+      integer :: nsegments = 0                    !! history segments
+      logical :: check = .false.                  !! the tangent check is on
+      type(replay_report_type) :: counts
+      integer :: nrows_written = 0
+      real(dp) :: last_error = 0.0_dp             !! the tangent check's error of the last step
+      real(dp), allocatable :: s_low(:), s_high(:), t_low(:), t_high(:)  ! ranges of the written rows
+      real(dp) :: failed_s(3) = 0.0_dp            !! the separation of the last UMAT call that failed (mm)
+      real(dp) :: failed_time = 0.0_dp            !! and its time
+      character(len=:), allocatable :: message    !! why a CSV row could not be written
+      integer :: clock_start = 0, clock_last = 0, clock_rate = 1
+   contains
+      procedure :: step => umat_step
+      procedure :: accept => umat_accept
+      procedure :: output => umat_output
+      procedure :: segment_done => umat_segment_done
+   end type umat_law_type
 
+contains
 
    !> Replay `history` through the UMAT with the case's material, writing the CSV rows (not the
    !> header) to `csv_unit`. On failure `ok` is false and `message` names the case file.
@@ -98,246 +124,253 @@ contains
       type(replay_report_type), intent(out), optional :: report  !! counts and the tangent check
       !> where to write the replay file of a UMAT call that failed for good (none if absent)
       character(len=*), intent(in), optional :: replay_path
-      type(point_state_type) :: point, trial
-      type(replay_report_type) :: counts
-      real(dp), allocatable :: zero(:), start(:), tangent(:, :)
-      real(dp), allocatable :: peak(:)     ! largest |traction| reached per component (MPa)
-      real(dp), allocatable :: s_low(:), s_high(:), t_low(:), t_high(:)  ! ranges of the written rows
-      real(dp) :: pnewdt, last_error
-      logical, allocatable :: no_control(:)
-      real(dp), allocatable :: failed_s(:)      ! the separation of the last UMAT call that failed (mm)
-      real(dp) :: failed_time                   ! and its time
-      logical :: umat_failed                    ! whether the last attempt's UMAT call failed
-      integer :: ntens, k, j, i, clock_start, clock_last, clock_rate
-      logical :: check
+      type(umat_law_type) :: law
+      type(point_state_type) :: trial
+      type(path_point_type) :: last
+      type(path_failure_type) :: failure
+      real(dp), allocatable :: zero(:)
+      real(dp) :: pnewdt
+      integer :: ntens
 
       ok = .false.
       nrows_written = 0
       ntens = history%ntens
-      allocate (zero(ntens), start(ntens), no_control(ntens), tangent(ntens, ntens), peak(ntens), failed_s(ntens))
-      failed_s = 0.0_dp
-      failed_time = 0.0_dp
-      umat_failed = .false.
+      allocate (zero(ntens))
       zero = 0.0_dp
-      no_control = .false.
-      peak = 0.0_dp
-      check = run%tangent_check > 0.0_dp
-      last_error = 0.0_dp
-      point = new_point(ntens, history%time(1))
-      call system_clock(clock_start, clock_rate)
-      clock_last = clock_start
+      law%run = run
+      law%csv_unit = csv_unit
+      law%ntens = ntens
+      law%nsegments = history%nrows - 1
+      law%check = run%tangent_check > 0.0_dp
+      call system_clock(law%clock_start, law%clock_rate)
+      law%clock_last = law%clock_start
 
       ! Probe: a zero increment on the virgin state checks PROPS and sizes before anything else.
-      trial = point
+      trial = new_point(ntens, history%time(1))
       call call_umat(run%props, trial, zero, history%time(1), pnewdt)
-      counts%umat_calls = 1
+      law%counts%umat_calls = 1
       if (pnewdt < 1.0_dp) then
          message = run%path//': the UMAT rejected the material data or sizes (NTENS = '// &
             int_to_string(ntens)//', NPROPS = '//int_to_string(size(run%props))// &
             '); see its message above'
-         if (present(report)) report = counts
+         if (present(report)) report = law%counts
          return
       end if
 
-      if (any(abs(history%separation(:, 1)) > 0.0_dp)) then
-         do j = 1, run%increments
-            call advance(zero, history%separation(:, 1), history%traction(:, 1), history%time(1), &
-               history%time(1), real(j - 1, dp)/real(run%increments, dp), &
-               real(j, dp)/real(run%increments, dp), .false., .false., ok)
-            if (.not. ok) then
-               if (present(report)) report = counts
-               return
-            end if
-         end do
-      end if
-      call write_row(ok)
-      if (.not. ok) then
-         if (present(report)) report = counts
-         return
-      end if
-      s_low = point%separation
-      s_high = point%separation
-      t_low = point%stress
-      t_high = point%stress
-
-      do k = 1, history%nrows - 1
-         ! the segment's start values: the previous row's where the control is the same
-         do i = 1, ntens
-            if (history%traction(i, k) .eqv. history%traction(i, k + 1)) then
-               start(i) = history%separation(i, k)
-            else if (history%traction(i, k + 1)) then
-               start(i) = point%stress(i)
-            else
-               start(i) = point%separation(i)
-            end if
-         end do
-         do j = 1, run%increments
-            call advance(start, history%separation(:, k + 1), history%traction(:, k + 1), &
-               history%time(k), history%time(k + 1), &
-               real(j - 1, dp)/real(run%increments, dp), real(j, dp)/real(run%increments, dp), &
-               .true., j == run%increments, ok)
-            if (.not. ok) then
-               if (present(report)) report = counts
-               return
-            end if
-         end do
-         call show_progress(k)
-      end do
-      ok = .true.
-      counts%moving(:ntens) = s_high - s_low > 1.0e-9_dp*(abs(s_high) + abs(s_low)) .or. &
-         t_high - t_low > 1.0e-9_dp*(abs(t_high) + abs(t_low))
-      if (present(report)) report = counts
+      ! the replay itself: interphase_mixed_control, the algorithm of the C API's
+      ! interphase_run_history, with the UMAT as the update
+      call replay_history_path(law, history%time, history%separation, history%traction, run%increments, &
+         run%traction_tolerance, run%output_every, last, failure)
+      nrows_written = law%nrows_written
+      law%counts%converged_steps = failure%converged_steps
+      if (present(report)) report = law%counts
+      select case (failure%kind)
+      case (FAILURE_NONE)
+         ok = .true.
+         law%counts%moving(:ntens) = law%s_high - law%s_low > 1.0e-9_dp*(abs(law%s_high) + abs(law%s_low)) .or. &
+            law%t_high - law%t_low > 1.0e-9_dp*(abs(law%t_high) + abs(law%t_low))
+         if (present(report)) report = law%counts
+      case (FAILURE_OUTPUT)
+         message = law%message
+      case (FAILURE_FATAL)
+         message = run%path//': the UMAT stopped with a setup error from t = '// &
+            real_to_string(last%time)//' to t = '//real_to_string(failure%time_to)// &
+            ' ('//values_text(failure%target(:ntens), failure%controls(:ntens))//'): '//last_fatal_message()
+         call write_failed_call()
+      case default
+         message = failure_text()
+         call write_failed_call()
+      end select
 
    contains
 
-      !> Move the point from fraction theta_from to theta_to of the segment from (time_a, v_a)
-      !> to (time_b, v_b), halving the step when the UMAT asks for it or Newton fails.
-      subroutine advance(v_a, v_b, controls, time_a, time_b, theta_from, theta_to, write_rows, &
-            segment_end, success)
-         real(dp), intent(in) :: v_a(:)           !! values at the segment start (mm or MPa)
-         real(dp), intent(in) :: v_b(:)           !! values at the segment end (mm or MPa)
-         logical, intent(in) :: controls(:)       !! true where the value is a traction
-         real(dp), intent(in) :: time_a           !! time at the segment start
-         real(dp), intent(in) :: time_b           !! time at the segment end
-         real(dp), intent(in) :: theta_from       !! fraction of the segment already done
-         real(dp), intent(in) :: theta_to         !! fraction to reach
-         logical, intent(in) :: write_rows        !! write CSV rows (thinned by output_every)
-         logical, intent(in) :: segment_end       !! theta_to closes the history segment
-         logical, intent(out) :: success          !! false: message set
-         real(dp) :: done, step, attempt, theta, time_new, residual
-         real(dp), allocatable :: target(:)
-         integer :: halvings, iterations
-         logical :: converged
+      !> The message of a step that did not converge even after MAX_HALVINGS halvings.
+      function failure_text() result(text)
+         character(len=:), allocatable :: text
+         logical :: separations(ntens), tractions(ntens)
+         integer :: i
 
-         success = .false.
-         done = 0.0_dp
-         step = 1.0_dp
-         halvings = 0
-         do while (done < 1.0_dp)
-            ! done and step are dyadic fractions, so done + step reaches 1 exactly.
-            attempt = min(1.0_dp, done + step)
-            if (attempt >= 1.0_dp) then
-               theta = theta_to
-            else
-               theta = theta_from + attempt*(theta_to - theta_from)
-            end if
-            ! Exact at both ends of the segment, and constant components stay exactly constant.
-            if (theta >= 1.0_dp) then
-               target = v_b
-               time_new = time_b
-            else
-               target = v_a + theta*(v_b - v_a)
-               time_new = time_a + theta*(time_b - time_a)
-            end if
-            call solve_step(target, controls, time_new, converged, residual, iterations)
-            if (.not. converged .and. fatal_message_reported()) then
-               message = run%path//': the UMAT stopped with a setup error from t = '// &
-                  real_to_string(point%time)//' to t = '//real_to_string(time_new)// &
-                  ' ('//values_text(target, controls)//'): '//last_fatal_message()
-               call write_failed_call()
+         separations = .false.
+         tractions = .true.
+         text = run%path//': '
+         if (any(failure%controls(:ntens))) then
+            if (failure%status == STATUS_BEYOND_PEAK) then
+               i = failure%component
+               text = text//'no solution from t = '//real_to_string(last%time)//' to t = '// &
+                  real_to_string(failure%time_to)//': the imposed traction '//component_name(i, .true., ntens)// &
+                  ' = '//real_to_string(failure%target(i))//' MPa is beyond the peak the material can carry '// &
+                  '(the largest |'//component_name(i, .true., ntens)//'| reached is '// &
+                  real_to_string(failure%peak(i))//' MPa; last converged state: '// &
+                  values_text(last%separation(:ntens), separations)//', '// &
+                  values_text(last%traction(:ntens), tractions)//', D = '// &
+                  real_to_string(last%state(SV_DAMAGE))//')'
                return
             end if
-            if (.not. converged) then
-               halvings = halvings + 1
-               if (halvings > MAX_HALVINGS) then
-                  message = failure_text(target, controls, time_new, residual, iterations)
-                  call write_failed_call()
-                  return
-               end if
-               step = 0.5_dp*step
-               cycle
-            end if
-            if (check) call check_tangent()
-            if (write_rows) then
-               s_low = min(s_low, trial%separation)
-               s_high = max(s_high, trial%separation)
-               t_low = min(t_low, trial%stress)
-               t_high = max(t_high, trial%stress)
-            end if
-            point = trial
-            where (abs(point%stress) > peak) peak = abs(point%stress)
-            done = attempt
-            counts%converged_steps = counts%converged_steps + 1
-            if (write_rows) then
-               if (mod(counts%converged_steps, run%output_every) == 0 .or. (segment_end .and. done >= 1.0_dp)) then
-                  call write_row(success)
-                  if (.not. success) return
-                  success = .false.
-               end if
-            end if
-         end do
-         success = .true.
-      end subroutine advance
+            text = text//'no converged step from t = '//real_to_string(last%time)//' to t = '// &
+               real_to_string(failure%time_to)//' ('//values_text(failure%target(:ntens), failure%controls(:ntens))// &
+               ') even after '//int_to_string(MAX_HALVINGS)//' halvings of the sub-increment: Newton on the '// &
+               'UMAT tangent left a traction residual of '//real_to_string(failure%residual)//' MPa after '// &
+               int_to_string(failure%iterations)//' iteration(s) (traction_tolerance = '// &
+               real_to_string(run%traction_tolerance)//' MPa, at most '//int_to_string(MAX_NEWTON)//')'
+         else
+            text = text//'the UMAT did not converge from t = '// &
+               real_to_string(last%time)//' to t = '//real_to_string(failure%time_to)// &
+               ' ('//values_text(failure%target(:ntens), failure%controls(:ntens))//') even after '// &
+               int_to_string(MAX_HALVINGS)//' halvings of the sub-increment'
+         end if
+      end function failure_text
 
-      !> One step from `point` to the targets at `time_new`; `trial` holds the result. Without a
-      !> traction-controlled component, one UMAT call; with one, Newton's method on the
-      !> traction-controlled block of DDSDDE. `converged` false: a smaller step is needed.
-      subroutine solve_step(target, controls, time_new, converged, residual, iterations)
-         real(dp), intent(in) :: target(:)        !! separation (mm) or traction (MPa) per component
-         logical, intent(in) :: controls(:)       !! true where `target` is a traction
-         real(dp), intent(in) :: time_new         !! time at the end of the step
-         logical, intent(out) :: converged
-         real(dp), intent(out) :: residual        !! max |traction - imposed| of the last iteration (MPa)
-         integer, intent(out) :: iterations       !! UMAT calls made
-         real(dp) :: s(ntens), r(ntens), delta(ntens)
-         integer :: free(ntens)
-         integer :: nfree, i
-         logical :: solved
+      !> The replay file of the UMAT call that failed last (when the step failed in the UMAT and a
+      !> path was given): `interphase-point FILE` repeats it.
+      subroutine write_failed_call()
+         type(point_state_type) :: point
+         integer :: unit, ios
+         if (.not. (present(replay_path) .and. failure%update_status /= STATUS_OK)) return
+         point = driver_point(last)
+         open (newunit=unit, file=replay_path, status='replace', action='write', iostat=ios)
+         if (ios /= 0) return
+         call write_replay_group(unit, 'interphase-point', message, run%props, point%statev, point%stress, &
+            point%sse, point%spd, point%separation, law%failed_s(:ntens) - point%separation, [point%time, point%time], &
+            law%failed_time - point%time, 1, 1, point%kinc + 1, ios, table_file=absolute(run%table_path), &
+            rcurve_file=absolute(run%rcurve_path))
+         close (unit)
+         if (ios == 0) message = message//'; the failed UMAT call is in '//replay_path// &
+            ' (interphase-point '//replay_path//' repeats it)'
+      end subroutine write_failed_call
 
-         converged = .false.
-         residual = 0.0_dp
-         iterations = 0
-         call reset_fatal_message()
-         s = point%separation
-         where (.not. controls) s = target
-         nfree = 0
-         do i = 1, ntens
-            if (.not. controls(i)) cycle
-            nfree = nfree + 1
-            free(nfree) = i
-         end do
-         umat_failed = .false.
-         do
-            trial = point
-            call call_umat(run%props, trial, s, time_new, pnewdt, tangent)
-            iterations = iterations + 1
-            counts%umat_calls = counts%umat_calls + 1
-            if (pnewdt < 1.0_dp) then
-               umat_failed = .true.
-               failed_s = s
-               failed_time = time_new
-               return
-            end if
-            if (nfree == 0) exit
-            r(:nfree) = trial%stress(free(:nfree)) - target(free(:nfree))
-            residual = maxval(abs(r(:nfree)))
-            if (residual <= run%traction_tolerance) exit
-            if (iterations >= MAX_NEWTON) return
-            call solve_small(tangent(free(:nfree), free(:nfree)), r(:nfree), delta(:nfree), solved)
-            if (.not. solved) return
-            s(free(:nfree)) = s(free(:nfree)) - delta(:nfree)
-         end do
-         ! the traction-controlled components' imposed values: the converged tractions are
-         ! within the tolerance of them
-         converged = .true.
-      end subroutine solve_step
+      !> A path as the absolute path tried ('' stays '').
+      function absolute(path) result(full)
+         character(len=*), intent(in) :: path
+         character(len=:), allocatable :: full
+         full = ''
+         if (len(path) > 0) full = tried_path(path)
+      end function absolute
 
-      !> Compare the converged step's DDSDDE (`tangent`) with the central finite difference over
-      !> the same increment from the same incoming state (`point`, before the step is kept).
-      subroutine check_tangent()
-         type(point_state_type) :: probe
-         real(dp) :: plus(ntens), minus(ntens), s_end(ntens), central(ntens), forward(ntens), backward(ntens)
-         real(dp) :: h, pnewdt_probe, scale, error_j
-         real(dp) :: column_error(ntens)
-         logical :: kink
-         integer :: jcol
+   end subroutine replay_history
 
+   !> The driver's update: one UMAT call (`call_umat`) from `point`.
+   subroutine umat_step(law, point, separation_new, time_new, tangent, status, fatal)
+      class(umat_law_type), intent(inout) :: law
+      type(path_point_type), intent(inout) :: point
+      real(dp), intent(in) :: separation_new(:)   !! mm
+      real(dp), intent(in) :: time_new
+      real(dp), intent(out) :: tangent(:, :)      !! DDSDDE (MPa/mm)
+      integer, intent(out) :: status              !! STATUS_OK, or UMAT_CUT_BACK
+      logical, intent(out) :: fatal               !! the UMAT reported a fatal (setup) error
+      type(point_state_type) :: p
+      real(dp) :: pnewdt
+
+      p = driver_point(point)
+      call reset_fatal_message()
+      call call_umat(law%run%props, p, separation_new, time_new, pnewdt, tangent)
+      law%counts%umat_calls = law%counts%umat_calls + 1
+      status = STATUS_OK
+      fatal = .false.
+      if (pnewdt < 1.0_dp) then
+         status = UMAT_CUT_BACK
+         fatal = fatal_message_reported()
+         law%failed_s(:law%ntens) = separation_new
+         law%failed_time = time_new
+         return
+      end if
+      point%time = p%time
+      point%separation(:law%ntens) = p%separation
+      point%traction(:law%ntens) = p%stress
+      point%state = p%statev
+      point%stored_energy = p%sse
+      point%dissipated_energy = p%spd
+      point%updates = p%kinc
+   end subroutine umat_step
+
+   !> A converged step: the tangent check, the ranges of the written part.
+   subroutine umat_accept(law, old, new, tangent, output_part)
+      class(umat_law_type), intent(inout) :: law
+      type(path_point_type), intent(in) :: old, new
+      real(dp), intent(in) :: tangent(:, :)
+      logical, intent(in) :: output_part
+      integer :: n
+      n = law%ntens
+      if (law%check) call check_tangent(law, driver_point(old), driver_point(new), tangent)
+      if (output_part) then
+         law%s_low = min(law%s_low, new%separation(:n))
+         law%s_high = max(law%s_high, new%separation(:n))
+         law%t_low = min(law%t_low, new%traction(:n))
+         law%t_high = max(law%t_high, new%traction(:n))
+      end if
+   end subroutine umat_accept
+
+   !> One CSV row of the point (with the tangent check's error when it is on).
+   subroutine umat_output(law, point, status)
+      class(umat_law_type), intent(inout) :: law
+      type(path_point_type), intent(in) :: point
+      integer, intent(out) :: status
+      character(len=:), allocatable :: message
+      logical :: written
+      integer :: n
+      n = law%ntens
+      if (law%check) then
+         call write_csv_row(law%csv_unit, point%time, point%separation(:n), point%traction(:n), point%state, &
+            point%stored_energy, point%dissipated_energy, written, message, extra=[law%last_error])
+      else
+         call write_csv_row(law%csv_unit, point%time, point%separation(:n), point%traction(:n), point%state, &
+            point%stored_energy, point%dissipated_energy, written, message)
+      end if
+      if (.not. written) then
+         law%message = law%run%path//': '//message
+         status = UMAT_CUT_BACK
+         return
+      end if
+      status = STATUS_OK
+      law%nrows_written = law%nrows_written + 1
+      if (.not. allocated(law%s_low)) then
+         law%s_low = point%separation(:n)
+         law%s_high = point%separation(:n)
+         law%t_low = point%traction(:n)
+         law%t_high = point%traction(:n)
+      end if
+   end subroutine umat_output
+
+   !> Progress on standard error, every PROGRESS_SECONDS once a run has lasted that long.
+   subroutine umat_segment_done(law, segment, point)
+      class(umat_law_type), intent(inout) :: law
+      integer, intent(in) :: segment              !! history segments done
+      type(path_point_type), intent(in) :: point  !! the state at its end
+      integer :: clock_now
+      real(dp) :: elapsed
+      call system_clock(clock_now)
+      if (real(clock_now - law%clock_last, dp) < PROGRESS_SECONDS*real(law%clock_rate, dp)) return
+      if (segment >= law%nsegments) return
+      law%clock_last = clock_now
+      elapsed = real(clock_now - law%clock_start, dp)/real(law%clock_rate, dp)
+      write (error_unit, '(a,i0,a,i0,a,f0.0,a,i0,a)') law%run%name//': segment ', segment, ' of ', &
+         law%nsegments, ' done (t = '//real_to_string(point%time)//'), ', &
+         100.0_dp*real(segment, dp)/real(law%nsegments, dp), ' %, ', law%counts%umat_calls, &
+         ' UMAT calls, '//real_to_string(real(nint(elapsed), dp))//' s'
+      flush (error_unit)
+   end subroutine umat_segment_done
+
+   !> Compare the converged step's DDSDDE (`tangent`) with the central finite difference over
+   !> the same increment from the same incoming state (`point`, before the step is kept).
+   subroutine check_tangent(law, point, trial, tangent)
+      type(umat_law_type), intent(inout) :: law
+      type(point_state_type), intent(in) :: point   !! the state before the step
+      type(point_state_type), intent(in) :: trial   !! the state after it
+      real(dp), intent(in) :: tangent(:, :)         !! the step's DDSDDE
+      type(point_state_type) :: probe
+      real(dp) :: plus(law%ntens), minus(law%ntens), s_end(law%ntens), central(law%ntens), &
+         forward(law%ntens), backward(law%ntens)
+      real(dp) :: h, pnewdt_probe, scale, error_j
+      real(dp) :: column_error(law%ntens)
+      logical :: kink
+      integer :: jcol
+
+      associate (counts => law%counts, run => law%run)
          s_end = trial%separation
          h = run%tangent_step
          pnewdt_probe = 1.0_dp
          scale = maxval(abs(tangent))
          kink = .false.
-         do jcol = 1, ntens
+         do jcol = 1, law%ntens
             probe = point
             s_end(jcol) = trial%separation(jcol) + h
             call call_umat(run%props, probe, s_end, trial%time, pnewdt_probe)
@@ -367,179 +400,35 @@ contains
          end do
          if (pnewdt_probe < 1.0_dp) then
             counts%unchecked_steps = counts%unchecked_steps + 1
-            last_error = -1.0_dp
+            law%last_error = -1.0_dp
             return
          end if
          if (scale > 0.0_dp) then
-            last_error = maxval(column_error)/scale
+            law%last_error = maxval(column_error)/scale
          else
-            last_error = 0.0_dp
+            law%last_error = 0.0_dp
          end if
          counts%checked_steps = counts%checked_steps + 1
          if (kink) counts%kink_steps = counts%kink_steps + 1
-         if (last_error > counts%worst_tangent_error) then
-            counts%worst_tangent_error = last_error
+         if (law%last_error > counts%worst_tangent_error) then
+            counts%worst_tangent_error = law%last_error
             counts%worst_tangent_time = trial%time
          end if
-      end subroutine check_tangent
+      end associate
+   end subroutine check_tangent
 
-      !> One CSV row of the current point (with the tangent check's error when it is on).
-      subroutine write_row(written)
-         logical, intent(out) :: written
-         if (check) then
-            call write_csv_row(csv_unit, point%time, point%separation, point%stress, point%statev, &
-               point%sse, point%spd, written, message, extra=[last_error])
-         else
-            call write_csv_row(csv_unit, point%time, point%separation, point%stress, point%statev, &
-               point%sse, point%spd, written, message)
-         end if
-         if (.not. written) then
-            message = run%path//': '//message
-            return
-         end if
-         nrows_written = nrows_written + 1
-      end subroutine write_row
-
-      !> The message of a step that did not converge even after MAX_HALVINGS halvings.
-      function failure_text(target, controls, time_new, residual, iterations) result(text)
-         real(dp), intent(in) :: target(:)
-         logical, intent(in) :: controls(:)
-         real(dp), intent(in) :: time_new, residual
-         integer, intent(in) :: iterations
-         character(len=:), allocatable :: text
-         logical :: separations(ntens), tractions(ntens)
-         integer :: i
-
-         separations = .false.
-         tractions = .true.
-         text = run%path//': '
-         if (any(controls)) then
-            do i = 1, size(controls)
-               if (.not. controls(i)) cycle
-               if (abs(target(i)) > peak(i) .and. target(i)*point%stress(i) >= 0.0_dp) then
-                  text = text//'no solution from t = '//real_to_string(point%time)//' to t = '// &
-                     real_to_string(time_new)//': the imposed traction '//component_name(i, .true., ntens)//' = '// &
-                     real_to_string(target(i))//' MPa is beyond the peak the material can carry (the '// &
-                     'largest |'//component_name(i, .true., ntens)//'| reached is '//real_to_string(peak(i))// &
-                     ' MPa; last converged state: '//values_text(point%separation, separations)// &
-                     ', '//values_text(point%stress, tractions)//', D = '// &
-                     real_to_string(point%statev(SV_DAMAGE))//')'
-                  return
-               end if
-            end do
-            text = text//'no converged step from t = '//real_to_string(point%time)//' to t = '// &
-               real_to_string(time_new)//' ('//values_text(target, controls)//') even after '// &
-               int_to_string(MAX_HALVINGS)//' halvings of the sub-increment: Newton on the UMAT tangent '// &
-               'left a traction residual of '//real_to_string(residual)//' MPa after '// &
-               int_to_string(iterations)//' iteration(s) (traction_tolerance = '// &
-               real_to_string(run%traction_tolerance)//' MPa, at most '//int_to_string(MAX_NEWTON)//')'
-         else
-            text = text//'the UMAT did not converge from t = '// &
-               real_to_string(point%time)//' to t = '//real_to_string(time_new)// &
-               ' ('//values_text(target, controls)//') even after '// &
-               int_to_string(MAX_HALVINGS)//' halvings of the sub-increment'
-         end if
-      end function failure_text
-
-      !> The replay file of the UMAT call that failed last (when the step failed in the UMAT and a
-      !> path was given): `interphase-point FILE` repeats it.
-      subroutine write_failed_call()
-         integer :: unit, ios
-         if (.not. (present(replay_path) .and. umat_failed)) return
-         open (newunit=unit, file=replay_path, status='replace', action='write', iostat=ios)
-         if (ios /= 0) return
-         call write_replay_group(unit, 'interphase-point', message, run%props, point%statev, point%stress, &
-            point%sse, point%spd, point%separation, failed_s - point%separation, [point%time, point%time], &
-            failed_time - point%time, 1, 1, point%kinc + 1, ios, table_file=absolute(run%table_path), &
-            rcurve_file=absolute(run%rcurve_path))
-         close (unit)
-         if (ios == 0) message = message//'; the failed UMAT call is in '//replay_path// &
-            ' (interphase-point '//replay_path//' repeats it)'
-      end subroutine write_failed_call
-
-      !> A path as the absolute path tried ('' stays '').
-      function absolute(path) result(full)
-         character(len=*), intent(in) :: path
-         character(len=:), allocatable :: full
-         full = ''
-         if (len(path) > 0) full = tried_path(path)
-      end function absolute
-
-      !> Progress on standard error, every PROGRESS_SECONDS once a run has lasted that long.
-      subroutine show_progress(segment)
-         integer, intent(in) :: segment           !! history segments done
-         integer :: clock_now
-         real(dp) :: elapsed
-         call system_clock(clock_now)
-         if (real(clock_now - clock_last, dp) < PROGRESS_SECONDS*real(clock_rate, dp)) return
-         if (segment >= history%nrows - 1) return
-         clock_last = clock_now
-         elapsed = real(clock_now - clock_start, dp)/real(clock_rate, dp)
-         write (error_unit, '(a,i0,a,i0,a,f0.0,a,i0,a)') run%name//': segment ', segment, ' of ', &
-            history%nrows - 1, ' done (t = '//real_to_string(point%time)//'), ', &
-            100.0_dp*real(segment, dp)/real(history%nrows - 1, dp), ' %, ', counts%umat_calls, &
-            ' UMAT calls, '//real_to_string(real(nint(elapsed), dp))//' s'
-         flush (error_unit)
-      end subroutine show_progress
-
-   end subroutine replay_history
-
-   !> Solve the small system a x = b (n <= 3) by Gaussian elimination with partial pivoting;
-   !> `solved` false when a pivot is zero or the result is not finite.
-   pure subroutine solve_small(a, b, x, solved)
-      real(dp), intent(in) :: a(:, :)             !! the matrix (MPa/mm)
-      real(dp), intent(in) :: b(:)                !! right-hand side (MPa)
-      real(dp), intent(out) :: x(:)               !! solution (mm), size(b)
-      logical, intent(out) :: solved
-      real(dp) :: m(size(b), size(b)), row(size(b))
-      real(dp) :: factor
-      integer :: n, i, p, r
-
-      n = size(b)
-      m = a
-      x = b
-      solved = .false.
-      do i = 1, n
-         p = i - 1 + maxloc(abs(m(i:, i)), 1)
-         if (.not. abs(m(p, i)) > 0.0_dp) return
-         if (p /= i) then
-            row = m(i, :)
-            m(i, :) = m(p, :)
-            m(p, :) = row
-            factor = x(i)
-            x(i) = x(p)
-            x(p) = factor
-         end if
-         do r = i + 1, n
-            factor = m(r, i)/m(i, i)
-            m(r, i:) = m(r, i:) - factor*m(i, i:)
-            x(r) = x(r) - factor*x(i)
-         end do
-      end do
-      do i = n, 1, -1
-         x(i) = (x(i) - sum(m(i, i + 1:)*x(i + 1:)))/m(i, i)
-      end do
-      solved = all(ieee_is_finite(x))
-   end subroutine solve_small
-
-   !> The name of component i (UMAT order) in the history's words, s_N or Sigma_N etc.
-   pure function component_name(i, traction, ntens) result(name)
-      integer, intent(in) :: i                    !! component, UMAT order (normal first)
-      logical, intent(in) :: traction             !! Sigma_ (true) or s_ (false)
-      integer, intent(in) :: ntens                !! 2 or 3
-      character(len=:), allocatable :: name
-      character(len=3), parameter :: SUFFIX(3) = [character(len=3) :: 'N', 'T1', 'T2']
-      if (traction) then
-         name = 'Sigma_'
-      else
-         name = 's_'
-      end if
-      if (ntens == 2 .and. i == 2) then
-         name = name//'T'
-         return
-      end if
-      name = name//trim(SUFFIX(i))
-   end function component_name
+   !> The driver's form of a point of the replay (arrays of NTENS components, the UMAT's STATEV).
+   pure function driver_point(point) result(p)
+      type(path_point_type), intent(in) :: point
+      type(point_state_type) :: p
+      p = new_point(point%ntens, point%time)
+      p%separation(:) = point%separation(:point%ntens)
+      p%stress(:) = point%traction(:point%ntens)
+      p%statev(:) = point%state
+      p%sse = point%stored_energy
+      p%spd = point%dissipated_energy
+      p%kinc = point%updates
+   end function driver_point
 
    !> One UMAT call taking `point` from its separation and time to `separation_new` at
    !> `time_new`. `point` is updated in place (callers pass a copy and keep it only if

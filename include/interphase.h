@@ -7,12 +7,11 @@
  * `target_link_libraries(app PRIVATE interphase::interphase)`, or the shared
  * `libinterphase.so`, `interphase::shared`), plus the Fortran runtime (`-lgfortran`) and LAPACK
  * when linking the static library by hand. interphase_update, interphase_update_dt,
- * interphase_run and interphase_status_message are re-entrant and thread-safe: they keep no
- * state; the caller owns every array. The loaders interphase_load_table and
- * interphase_load_rcurve are not: they write
- * library-wide data (the custom RVE table, the tabulated R-curve) that every later update reads.
- * Call them once, from one thread, before any thread calls interphase_update (and never while
- * an update runs).
+ * interphase_run, interphase_run_history and interphase_status_message are re-entrant and
+ * thread-safe: they keep no state; the caller owns every array. The loaders
+ * interphase_load_table and interphase_load_rcurve are not: they write library-wide data (the
+ * custom RVE table, the tabulated R-curve) that every later update reads. Call them once, from
+ * one thread, before any thread calls interphase_update (and never while an update runs).
  *
  * Units: separations mm, tractions MPa, stiffness MPa/mm, energy per unit area N/mm.
  * Component order: normal first, then the shear(s): (s_N, s_T) in 2-D, (s_N, s_T1, s_T2) in
@@ -77,6 +76,11 @@ extern "C" {
 #define INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE 25     /**< a separation component |s_i| > 1e20 mm */
 #define INTERPHASE_STATUS_BAD_HOST_INPUT 26              /**< adapters: host stress/energy not finite */
 #define INTERPHASE_STATUS_BAD_TIME_INCREMENT 27          /**< time increment missing, negative or not finite (viscosity) */
+/* history replays (interphase_run_history) */
+#define INTERPHASE_STATUS_BEYOND_PEAK 28                 /**< an imposed traction beyond the peak the material can carry */
+#define INTERPHASE_STATUS_MIXED_NOT_CONVERGED 29         /**< imposed traction not met (Newton), even in halved steps */
+#define INTERPHASE_STATUS_BAD_HISTORY 30                 /**< history (times, controls) or replay setting not admissible */
+#define INTERPHASE_STATUS_OUTPUT_FULL 31                 /**< output arrays too short: call again with more rows */
 /* interpolation tables: construction, then evaluation */
 #define INTERPHASE_STATUS_SPLINE_TOO_FEW_POINTS 40       /**< too few table points */
 #define INTERPHASE_STATUS_SPLINE_BAD_SHAPE 41            /**< table values do not match the knots */
@@ -187,6 +191,72 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
                    const double *time, double *traction, double *tangent, double *state,
                    double *stored_energy, double *dissipated_energy, size_t *rows_done, char *detail,
                    size_t detail_len);
+
+/**
+ * A whole loading history replayed at one point as the single-point driver interphase-point
+ * replays it (drivers/README.md), with the numbers of the Abaqus UMAT, the loop inside the
+ * library: each component of each row is given either as its separation (mm) or as its traction
+ * (MPa) (mixed control: e.g. a normal compression held while the shear separation is driven),
+ * and the control may change from one row to the next. Re-entrant and thread-safe, as
+ * interphase_update (the same interphase_mixed_control algorithm as the driver's).
+ *
+ * The point starts virgin at zero separation at time[0]; a first row away from zero is reached
+ * first in @p increments steps at time[0] (dt = 0; no output row). Each segment between two rows
+ * is split into @p increments equal sub-increments, controlled as the segment's end row says; an
+ * imposed traction runs linearly from the previous row's value (same control there) or from the
+ * point's traction. A traction-controlled component's separation is found by Newton's method on
+ * the tangent, from the last converged state, to within @p traction_tolerance (MPa), in at most
+ * 25 updates. A step whose update fails or whose Newton iteration does not converge is halved
+ * and retried, up to 10 times; a failure that no smaller step can cure (a bad time increment, a
+ * tabulated R-curve that does not cover the damage reached) ends the replay at once. Each step is
+ * the increment the UMAT would take (DSTRAN = s - s_old, the update at STRAN + DSTRAN, DTIME =
+ * t - t_old) and the dissipated energy is accumulated as its SPD.
+ *
+ * The output is one row for the start (time[0]) and one for every @p output_every -th converged
+ * step (counted from the first, the preload's included) and for the end of every segment: the
+ * rows of the driver's CSV file.
+ *
+ * @param props, nprops, ntens  the material and the size, as interphase_update
+ * @param nrows                 rows of the history (>= 1)
+ * @param time                  @p nrows doubles, finite and strictly increasing (s)
+ * @param value                 @p nrows * @p ntens doubles, row-major, each row normal first:
+ *                              the separation (mm), or the traction (MPa) where control is 1
+ * @param control               NULL (every component separation-controlled) or @p nrows * @p ntens
+ *                              ints, row-major: 0 separation, 1 traction
+ * @param increments            sub-increments per segment (>= 1)
+ * @param traction_tolerance    MPa, finite, > 0 (interphase-point's default: 1e-12)
+ * @param output_every          a row every k-th converged step (>= 1; 1: every step)
+ * @param capacity              rows each output array holds
+ * @param out_time              out, NULL or @p capacity doubles: t of each row
+ * @param out_separation        out, NULL or @p capacity * @p ntens doubles (mm)
+ * @param out_traction          out, NULL or @p capacity * @p ntens doubles (MPa)
+ * @param out_state             out, NULL or @p capacity * nstate doubles (INTERPHASE_NSTATE, or
+ *                              INTERPHASE_NSTATE_VISCOUS with viscous regularisation)
+ * @param out_stored_energy     out, NULL or @p capacity doubles (N/mm): the UMAT's SSE
+ * @param out_dissipated_energy out, NULL or @p capacity doubles (N/mm): the UMAT's SPD
+ * @param out_tangent           out, NULL or @p capacity * @p ntens * @p ntens doubles: the
+ *                              tangent of the step that reached each row, row-major; NaN for a
+ *                              start at zero (no step reached it)
+ * @param rows_done             out, may be NULL: the rows written (also on failure: the rows up
+ *                              to it, those of the driver's incomplete CSV)
+ * @param detail                out, may be NULL: on failure, the message (the step's times, the
+ *                              imposed values or the update's detail)
+ * @param detail_len            size of @p detail in bytes (257 holds any message)
+ * @return INTERPHASE_STATUS_OK; a material status as interphase_update;
+ *         INTERPHASE_STATUS_BAD_HISTORY (nrows 0, times, controls, increments, output_every,
+ *         traction_tolerance); INTERPHASE_STATUS_BEYOND_PEAK (an imposed traction is raised
+ *         beyond the largest the point reached: no solution), INTERPHASE_STATUS_MIXED_NOT_CONVERGED
+ *         (Newton failed even after the halvings), or the status of an update that failed even
+ *         after the halvings or for good; INTERPHASE_STATUS_OUTPUT_FULL when the replay has more
+ *         rows than @p capacity (the arrays hold the first @p capacity rows: call again with
+ *         longer ones; without halvings 1 + (nrows - 1) * increments rows suffice).
+ */
+int interphase_run_history(const double *props, int nprops, int ntens, size_t nrows, const double *time,
+                           const double *value, const int *control, int increments,
+                           double traction_tolerance, int output_every, size_t capacity,
+                           double *out_time, double *out_separation, double *out_traction,
+                           double *out_state, double *out_stored_energy, double *out_dissipated_energy,
+                           double *out_tangent, size_t *rows_done, char *detail, size_t detail_len);
 
 /**
  * Load the custom RVE table that the micromechanical model uses where PROPS[7] = 1 (what

@@ -14,6 +14,7 @@
 module interphase_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_ptr, c_null_char, &
       c_associated, c_f_pointer
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE
    use interphase_provider, only: check_run_time_data
@@ -27,10 +28,34 @@ module interphase_capi
    use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update
+   use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
+      describe_failure, FAILURE_OUTPUT
+   use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL
    implicit none
    private
    public :: interphase_update_c, interphase_update_dt_c, interphase_status_message_c, interphase_load_table_c, &
-      interphase_load_rcurve_c, interphase_run_c
+      interphase_load_rcurve_c, interphase_run_c, interphase_run_history_c
+
+   !> The update of interphase_run_history: the kernel as the Abaqus UMAT calls it (the update at
+   !> STRAN + DSTRAN with DTIME, the dissipated energy accumulated as its SPD, the state carried
+   !> through its STATEV slots), and the output rows written into the caller's arrays.
+   type, extends(point_law_type) :: capi_law_type
+      type(law_params_type) :: params
+      integer :: nsv = NSTATV_REQUIRED                 !! state slots (state_slots)
+      logical :: viscous = .false.
+      integer(c_size_t) :: capacity = 0                !! rows the output arrays hold
+      integer(c_size_t) :: rows = 0                    !! rows written
+      real(c_double), pointer :: out_time(:) => null(), out_separation(:) => null(), &
+         out_traction(:) => null(), out_state(:) => null(), out_stored_energy(:) => null(), &
+         out_dissipated_energy(:) => null(), out_tangent(:) => null()
+      real(dp) :: last_tangent(3, 3) = 0.0_dp          !! the tangent of the last converged step
+      logical :: stepped = .false.                     !! a step has converged
+      character(len=MESSAGE_LEN) :: detail = ''        !! the last failed update's message
+   contains
+      procedure :: step => capi_step
+      procedure :: accept => capi_accept
+      procedure :: output => capi_output
+   end type capi_law_type
 
    !> Longest path (bytes, without the NUL) the loaders accept from C.
    integer, parameter :: MAX_PATH_LEN = 4096
@@ -317,6 +342,245 @@ contains
       end subroutine finish
 
    end function interphase_run_c
+
+   !> C: `int interphase_run_history(const double *props, int nprops, int ntens, size_t nrows,
+   !>    const double *time, const double *value, const int *control, int increments,
+   !>    double traction_tolerance, int output_every, size_t capacity, double *out_time,
+   !>    double *out_separation, double *out_traction, double *out_state, double *out_stored_energy,
+   !>    double *out_dissipated_energy, double *out_tangent, size_t *rows_done, char *detail,
+   !>    size_t detail_len)`: a whole loading history replayed at one point as interphase-point
+   !> replays it (interphase_mixed_control: mixed control, sub-increments, halvings), with the
+   !> numbers of the UMAT. Inputs row-major, one row per history row: value nrows*ntens (mm, or
+   !> MPa where control is 1), control nrows*ntens (0: separation, 1: traction; NULL: all 0).
+   !> Outputs (each may be NULL) row-major, `capacity` rows: time, separation and traction
+   !> (ntens per row), state (state_slots per row), the energies, the tangent (ntens*ntens per
+   !> row, row-major; NaN for a start that no step reached). Returns STATUS_OK, or the status of
+   !> the failure that ended the replay, with its message; rows_done (may be NULL) the rows written.
+   function interphase_run_history_c(props, nprops, ntens, nrows, time, value, control, increments, &
+         traction_tolerance, output_every, capacity, out_time, out_separation, out_traction, out_state, &
+         out_stored_energy, out_dissipated_energy, out_tangent, rows_done, detail, detail_len) result(status) &
+         bind(C, name="interphase_run_history")
+      real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
+      integer(c_int), value, intent(in) :: nprops          !! number of PROPS
+      integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
+      integer(c_size_t), value, intent(in) :: nrows        !! rows of the history (>= 1)
+      type(c_ptr), value, intent(in) :: time               !! nrows doubles, strictly increasing (s)
+      type(c_ptr), value, intent(in) :: value              !! nrows*ntens doubles (mm or MPa)
+      type(c_ptr), value, intent(in) :: control            !! nrows*ntens ints (0, 1) or NULL
+      integer(c_int), value, intent(in) :: increments      !! sub-increments per segment (>= 1)
+      real(c_double), value, intent(in) :: traction_tolerance  !! MPa (> 0)
+      integer(c_int), value, intent(in) :: output_every    !! a row every k-th converged step (>= 1)
+      integer(c_size_t), value, intent(in) :: capacity     !! rows the output arrays hold
+      type(c_ptr), value, intent(in) :: out_time, out_separation, out_traction, out_state, &
+         out_stored_energy, out_dissipated_energy, out_tangent   !! output arrays or NULL
+      type(c_ptr), value, intent(in) :: rows_done          !! size_t out, or NULL
+      type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
+      integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
+      integer(c_int) :: status
+
+      type(capi_law_type) :: law
+      type(path_point_type) :: point
+      type(path_failure_type) :: failure
+      real(c_double), pointer :: times(:), values(:, :)
+      integer(c_int), pointer :: controls(:, :)
+      logical, allocatable :: traction_control(:, :)
+      integer(c_size_t), pointer :: done
+      integer(c_size_t) :: row
+      integer :: code, n, ios
+      character(len=MESSAGE_LEN) :: message
+
+      message = ''
+      n = ntens
+      call decode_material(props, nprops, ntens, 'interphase_run_history', law%params, code, message)
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      code = STATUS_BAD_HISTORY
+      if (nrows < 1_c_size_t) then
+         message = 'nrows = 0: the history needs at least one row'
+      else if (.not. (c_associated(time) .and. c_associated(value))) then
+         message = 'time and value must not be NULL'
+      else if (increments < 1) then
+         write (message, '(a,i0,a)') 'increments = ', increments, ' must be at least 1'
+      else if (output_every < 1) then
+         write (message, '(a,i0,a)') 'output_every = ', output_every, ' must be at least 1'
+      else if (.not. (traction_tolerance > 0.0_dp .and. ieee_is_finite(traction_tolerance))) then
+         write (message, '(a,es12.4,a)') 'traction_tolerance = ', traction_tolerance, &
+            ' MPa must be a finite number > 0'
+      else
+         code = STATUS_OK
+      end if
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      call c_f_pointer(time, times, [nrows])
+      call c_f_pointer(value, values, [int(n, c_size_t), nrows])
+      allocate (traction_control(n, nrows))
+      traction_control = .false.
+      do row = 1, nrows
+         if (.not. ieee_is_finite(times(row))) then
+            write (message, '(a,i0,a,es12.4,a)', iostat=ios) 'time[', row - 1, '] = ', times(row), ' is not finite'
+         else if (row > 1) then
+            if (.not. times(row) > times(row - 1)) write (message, '(a,i0,a,g0.10,a,g0.10,a)', iostat=ios) &
+               'time[', row - 1, '] = ', times(row), ' is not greater than the previous time ', times(row - 1), &
+               '; times must increase strictly'
+         end if
+         if (len_trim(message) > 0) exit
+      end do
+      if (len_trim(message) == 0 .and. c_associated(control)) then
+         call c_f_pointer(control, controls, [int(n, c_size_t), nrows])
+         if (any(controls /= 0 .and. controls /= 1)) then
+            row = int(findloc(any(controls /= 0 .and. controls /= 1, dim=1), .true., dim=1), c_size_t)
+            write (message, '(a,i0,a)', iostat=ios) 'control row ', row - 1, &
+               ' holds a value other than 0 (separation) and 1 (traction)'
+         else
+            traction_control = controls == 1
+         end if
+      end if
+      if (len_trim(message) > 0) then
+         code = STATUS_BAD_HISTORY
+         call finish()
+         return
+      end if
+
+      law%viscous = law%params%viscosity > 0.0_dp
+      law%nsv = state_slots(law%params)
+      law%capacity = capacity
+      if (c_associated(out_time)) call c_f_pointer(out_time, law%out_time, [capacity])
+      if (c_associated(out_separation)) call c_f_pointer(out_separation, law%out_separation, [capacity*n])
+      if (c_associated(out_traction)) call c_f_pointer(out_traction, law%out_traction, [capacity*n])
+      if (c_associated(out_state)) call c_f_pointer(out_state, law%out_state, [capacity*law%nsv])
+      if (c_associated(out_stored_energy)) call c_f_pointer(out_stored_energy, law%out_stored_energy, [capacity])
+      if (c_associated(out_dissipated_energy)) &
+         call c_f_pointer(out_dissipated_energy, law%out_dissipated_energy, [capacity])
+      if (c_associated(out_tangent)) call c_f_pointer(out_tangent, law%out_tangent, [capacity*n*n])
+
+      call replay_history_path(law, times, values, traction_control, int(increments), traction_tolerance, &
+         int(output_every), point, failure)
+      code = failure%status
+      if (failure%kind == FAILURE_OUTPUT) then
+         write (message, '(a,i0,a)', iostat=ios) 'the output arrays hold capacity = ', capacity, &
+            ' rows, and the replay has more: call again with longer arrays'
+      else if (code /= STATUS_OK) then
+         message = describe_failure(failure, point, traction_tolerance, law%detail)
+      end if
+      call finish()
+
+   contains
+
+      !> Set the result and rows_done; the detailed message into the caller's buffer on failure.
+      subroutine finish()
+         status = int(code, c_int)
+         if (c_associated(rows_done)) then
+            call c_f_pointer(rows_done, done)
+            done = law%rows
+         end if
+         if (code /= STATUS_OK) call copy_to_c(trim(message), detail, detail_len)
+      end subroutine finish
+
+   end function interphase_run_history_c
+
+   !> interphase_run_history's update: one kernel update as the UMAT makes it.
+   subroutine capi_step(law, point, separation_new, time_new, tangent, status, fatal)
+      class(capi_law_type), intent(inout) :: law
+      type(path_point_type), intent(inout) :: point
+      real(dp), intent(in) :: separation_new(:)   !! mm
+      real(dp), intent(in) :: time_new            !! s
+      real(dp), intent(out) :: tangent(:, :)      !! MPa/mm
+      integer, intent(out) :: status
+      logical, intent(out) :: fatal
+      type(interface_state_type) :: old, new
+      real(dp) :: s(3), ds(3), t(3), psi, dt
+      integer :: n, ios
+
+      n = point%ntens
+      fatal = .false.
+      tangent = 0.0_dp
+      call state_unpack(point%state(1:law%nsv), n, old, status, law%detail, law%viscous)
+      if (status /= STATUS_OK) then
+         fatal = .true.
+         return
+      end if
+      ! the UMAT's increment: DSTRAN = s_new - s, the update at STRAN + DSTRAN, DTIME
+      ds(1:n) = separation_new - point%separation(1:n)
+      s(1:n) = point%separation(1:n) + ds(1:n)
+      dt = time_new - point%time
+      call interface_update(law%params, old, s(1:n), t(1:n), tangent, new, psi, status, dt)
+      if (status == STATUS_BAD_TIME_INCREMENT) then
+         write (law%detail, '(a,es12.4,a)', iostat=ios) 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
+         fatal = .true.
+         return
+      else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
+         write (law%detail, '(a,a,g0.6,a,3es12.4)', iostat=ios) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+            old%d, ' at separation (mm) ', s(1:n)
+         fatal = .true.
+         return
+      else if (status /= STATUS_OK) then
+         write (law%detail, '(a,3es12.4)', iostat=ios) 'update failed at separation (mm) ', s(1:n)
+         return
+      end if
+      ! the UMAT's SPD and SSE
+      point%dissipated_energy = point%dissipated_energy + 0.5_dp*sum((point%traction(1:n) + t(1:n))*ds(1:n)) &
+         - (psi - point%stored_energy)
+      point%stored_energy = psi
+      point%traction(1:n) = t(1:n)
+      call state_pack(new, point%state(1:law%nsv), law%viscous)
+      point%separation(1:n) = separation_new
+      point%time = time_new
+      point%updates = point%updates + 1
+   end subroutine capi_step
+
+   !> interphase_run_history: keep the converged step's tangent for its row.
+   subroutine capi_accept(law, old, new, tangent, output_part)
+      class(capi_law_type), intent(inout) :: law
+      type(path_point_type), intent(in) :: old, new
+      real(dp), intent(in) :: tangent(:, :)
+      logical, intent(in) :: output_part
+      integer :: n
+      n = new%ntens
+      law%last_tangent(1:n, 1:n) = tangent
+      law%stepped = .true.
+      associate (unused_old => old, unused_output_part => output_part)   ! every row has its step's tangent
+      end associate
+   end subroutine capi_accept
+
+   !> interphase_run_history: one output row into the caller's arrays (STATUS_OUTPUT_FULL when
+   !> they hold no more).
+   subroutine capi_output(law, point, status)
+      class(capi_law_type), intent(inout) :: law
+      type(path_point_type), intent(in) :: point
+      integer, intent(out) :: status
+      integer(c_size_t) :: r, at, n, nsv, i, j
+      if (law%rows >= law%capacity) then
+         status = STATUS_OUTPUT_FULL
+         return
+      end if
+      status = STATUS_OK
+      r = law%rows
+      n = int(point%ntens, c_size_t)
+      nsv = int(law%nsv, c_size_t)
+      if (associated(law%out_time)) law%out_time(r + 1) = point%time
+      if (associated(law%out_separation)) law%out_separation(r*n + 1:r*n + n) = point%separation(1:n)
+      if (associated(law%out_traction)) law%out_traction(r*n + 1:r*n + n) = point%traction(1:n)
+      if (associated(law%out_state)) law%out_state(r*nsv + 1:r*nsv + nsv) = point%state(1:nsv)
+      if (associated(law%out_stored_energy)) law%out_stored_energy(r + 1) = point%stored_energy
+      if (associated(law%out_dissipated_energy)) law%out_dissipated_energy(r + 1) = point%dissipated_energy
+      if (associated(law%out_tangent)) then
+         at = r*n*n
+         do i = 1, n
+            do j = 1, n
+               if (law%stepped) then
+                  law%out_tangent(at + (i - 1)*n + j) = law%last_tangent(i, j)
+               else
+                  law%out_tangent(at + (i - 1)*n + j) = ieee_value(0.0_dp, ieee_quiet_nan)
+               end if
+            end do
+         end do
+      end if
+      law%rows = r + 1
+   end subroutine capi_output
 
    !> C: `size_t interphase_status_message(int status, char *buf, size_t len)`. Writes the
    !> generic message of `status` into `buf` (at most len - 1 characters and a NUL; nothing if

@@ -38,6 +38,11 @@ module interphase_status
    integer, parameter, public :: STATUS_SEPARATION_OUT_OF_RANGE = 25
    integer, parameter, public :: STATUS_BAD_HOST_INPUT = 26
    integer, parameter, public :: STATUS_BAD_TIME_INCREMENT = 27
+   ! ---- history replays (interphase_mixed_control, the C entry interphase_run_history) ----
+   integer, parameter, public :: STATUS_BEYOND_PEAK = 28
+   integer, parameter, public :: STATUS_MIXED_NOT_CONVERGED = 29
+   integer, parameter, public :: STATUS_BAD_HISTORY = 30
+   integer, parameter, public :: STATUS_OUTPUT_FULL = 31
    ! ---- interpolation tables (interphase_spline): construction, then evaluation ----
    integer, parameter, public :: STATUS_SPLINE_TOO_FEW_POINTS = 40
    integer, parameter, public :: STATUS_SPLINE_BAD_SHAPE = 41
@@ -128,6 +133,11 @@ contains
          'or the energy it gives overflows'
       case (STATUS_BAD_TIME_INCREMENT);    message = 'time increment missing, negative or not finite (viscous regularisation)'
       case (STATUS_BAD_STATE);             message = 'state variables out of range or not finite'
+      case (STATUS_BEYOND_PEAK);           message = 'imposed traction beyond the peak the material can carry'
+      case (STATUS_MIXED_NOT_CONVERGED);   message = 'imposed traction not met: Newton on the tangent did not '// &
+         'converge, even in halved steps'
+      case (STATUS_BAD_HISTORY);           message = 'loading history or replay setting not admissible'
+      case (STATUS_OUTPUT_FULL);           message = 'output arrays too short for the rows of the replay'
       case (STATUS_BAD_COEFFICIENTS);      message = 'coefficient set not admissible at this damage'
       case (STATUS_SPLINE_TOO_FEW_POINTS); message = 'too few table points for the interpolation method'
       case (STATUS_SPLINE_BAD_SHAPE);      message = 'table values do not match the knots (rows) or have no column'

@@ -24,6 +24,10 @@
  *    load keeps the table loaded before; paper-resolution.dat then gives a different response.
  *    A tabulated constant R-curve gives the constant R-curve's update.
  *
+ * 6. interphase_run_history: the mixed history replayed as interphase-point replays it, the
+ *    reference CSV's rows; a shear test under an imposed precompression (mixed
+ *    control); the statuses of a traction beyond the peak, a bad history, short output arrays.
+ *
  * Exits 0 when every check passes, 1 otherwise, printing each failed check.
  */
 #include <math.h>
@@ -576,6 +580,90 @@ static void test_run(const char *csv_path) {
   printf("interphase_run: %zu rows, equal to interphase_update_dt step by step\n", n);
 }
 
+/* interphase_run_history: the paper's mixed history (separations only, a preload to s_N = -0.005
+ * mm, 200 increments per segment) gives the driver's reference CSV; a shear test
+ * under an imposed precompression holds Sigma_N to the tolerance and ends on the friction plateau;
+ * an imposed traction beyond the peak, a bad history and arrays that are too short fail with
+ * their statuses. */
+static void test_run_history(const char *csv_path) {
+  enum { ROWS = 1201 };
+  static double ref[ROWS][7], o_t[ROWS], o_s[ROWS * 2], o_tr[ROWS * 2], o_st[ROWS * INTERPHASE_NSTATE], o_psi[ROWS],
+      o_w[ROWS];
+  FILE *f = fopen(csv_path, "r");
+  CHECK(f != NULL, "cannot open %s", csv_path);
+  if (f == NULL) return;
+  char header[256];
+  CHECK(fgets(header, sizeof header, f) != NULL, "no header in %s", csv_path);
+  size_t n = 0;
+  double t, s_t, s_n, sig_t, sig_n, d, slip, psi_ref, w_dis;
+  char regime[32];
+  while (n < ROWS && fscanf(f, " %lf,%lf,%lf,%lf,%lf,%lf,%lf,%31[^,],%lf,%lf", &t, &s_t, &s_n, &sig_t, &sig_n, &d,
+                            &slip, regime, &psi_ref, &w_dis) == 10) {
+    ref[n][0] = t, ref[n][1] = s_n, ref[n][2] = s_t, ref[n][3] = sig_n, ref[n][4] = sig_t, ref[n][5] = d;
+    ref[n][6] = w_dis;
+    ++n;
+  }
+  fclose(f);
+  CHECK(n == ROWS, "%zu rows read from %s, expected %d", n, csv_path, ROWS);
+  double props[INTERPHASE_NPROPS_SIMPLIFIED];
+  paper_props(props);
+  const double time[7] = {0, 1, 2, 3, 4, 5, 6};
+  const double value[14] = {-0.005, 0, -0.005, 0, -0.005, 0.05, -0.005, 0, -0.005, 0.08, -0.005, -0.05, -0.005, 0};
+  size_t done = 0;
+  char detail[257] = "";
+  int status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 7, time, value, NULL, 200, 1e-12, 1,
+                                      ROWS, o_t, o_s, o_tr, o_st, o_psi, o_w, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == n, "interphase_run_history: status %d, %zu rows: %s", status, done,
+        detail);
+  /* the rows' times and separations exactly; the rest within the reference files' tolerance
+   * (tests/driver/reference/README.md: the files are compared across builds; bit for bit against
+   * the driver of the same build: tests/python/test_paper_cases.py) */
+  int same_rows = 1, close_values = 1;
+  for (size_t i = 0; i < n && i < done; ++i) {
+    same_rows &= o_t[i] == ref[i][0] && o_s[2 * i] == ref[i][1] && o_s[2 * i + 1] == ref[i][2];
+    close_values &= close_to(o_tr[2 * i], ref[i][3], 1e-12, 1e-9) && close_to(o_tr[2 * i + 1], ref[i][4], 1e-12, 1e-9) &&
+                    close_to(o_st[INTERPHASE_NSTATE * i], ref[i][5], 1e-12, 1e-9) &&
+                    close_to(o_w[i], ref[i][6], 1e-12, 1e-9);
+  }
+  CHECK(same_rows, "interphase_run_history: the rows' times or separations differ from %s", csv_path);
+  CHECK(close_values, "interphase_run_history: tractions, damage or energy differ from %s", csv_path);
+
+  /* mixed control: Sigma_N = -0.5 MPa imposed, s_T driven to 0.1 mm (beyond sf_T) */
+  const double t3[3] = {0, 1, 2};
+  const double shear[6] = {0, 0, -0.5, 0, -0.5, 0.1};
+  const int control[6] = {1, 0, 1, 0, 1, 0};
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, shear, control, 200, 1e-15, 1, ROWS,
+                                  o_t, o_s, o_tr, o_st, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == 401, "shear under precompression: status %d, %zu rows: %s", status,
+        done, detail);
+  double drift = 0.0;
+  for (size_t i = 200; i < done; ++i) drift = fmax(drift, fabs(o_tr[2 * i] + 0.5));
+  CHECK(drift <= 1e-15, "Sigma_N left -0.5 MPa by %g MPa", drift);
+  CHECK(done == 401 && close_to(o_tr[2 * 400 + 1], MU * 0.5, 0.0, 1e-12) && o_st[INTERPHASE_NSTATE * 400] == 1.0,
+        "the friction plateau: Sigma_T = %g MPa, D = %g", o_tr[801], o_st[INTERPHASE_NSTATE * 400]);
+
+  /* an imposed normal traction beyond the peak K_N s0_N: no solution */
+  const double beyond[4] = {0, 0, 0.25, 0};
+  const int both[4] = {1, 1, 1, 1};
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, t3, beyond, both, 200, 1e-12, 1, ROWS,
+                                  NULL, NULL, o_tr, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BEYOND_PEAK && strstr(detail, "beyond the peak the material can carry") &&
+            done > 1 && done < 201 && o_tr[2 * (done - 1)] <= K_N * 0.00044,
+        "beyond the peak: status %d, %zu rows: %s", status, done, detail);
+
+  /* a bad history, arrays that are too short */
+  const double back[3] = {0, 2, 1};
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, back, shear, control, 10, 1e-12, 1, ROWS,
+                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 && strstr(detail, "time[2]"),
+        "times not increasing: status %d: %s", status, detail);
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, shear, control, 200, 1e-15, 1, 10,
+                                  NULL, NULL, o_tr, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OUTPUT_FULL && done == 10, "capacity 10: status %d, %zu rows: %s", status, done,
+        detail);
+  printf("interphase_run_history: the driver's %zu rows; mixed control, beyond the peak, bad input\n", n);
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--load") == 0) {
     test_load_table(argv[2], argv[3]);
@@ -584,6 +672,7 @@ int main(int argc, char **argv) {
     test_mixed_history(argv[1]);
     test_failures();
     test_run(argv[1]);
+    test_run_history(argv[1]);
   } else {
     fprintf(stderr, "usage: %s <tests/driver/reference/mixed.csv>\n"
                     "       %s --load <tables/paper.dat> <tables/paper-resolution.dat>\n", argv[0], argv[0]);

@@ -2,6 +2,7 @@
 3-D against closed forms and finite differences, the run's contract (rows, halvings, failures),
 table and R-curve loading, and concurrent use from threads."""
 
+import ctypes
 import threading
 
 import numpy as np
@@ -232,3 +233,91 @@ def test_the_umats_own_options_are_refused():
             as caught:
         interphase.Material.from_props(props)
     assert caught.value.status == interphase.STATUS_BAD_OPTION
+
+
+def test_mixed_control_from_arrays():
+    """control=: the normal traction imposed (a precompression held while the shear separation
+    is driven), met to the tolerance at every row; the same run as a case file's."""
+    m = interphase.Material(**SIMPLIFIED)
+    history = [[0.0, 0.0], [-0.5, 0.0], [-0.5, 0.1]]            # (Sigma_N, s_T)
+    r = m.run(history, increments=100, control=[True, False], traction_tolerance=1e-15)
+    assert len(r) == 201
+    assert np.abs(r.traction[100:, 0] + 0.5).max() <= 1e-15
+    assert r.separation[-1, 1] == 0.1 and r.separation[-1, 0] < 0
+    assert r.traction[-1, 1] == pytest.approx(0.75 * 0.5, rel=1e-12)    # the friction plateau mu p
+    # the same, with the control given row by row
+    per_row = np.array([[True, False]] * 3)
+    same = m.run(history, increments=100, control=per_row, traction_tolerance=1e-15)
+    assert np.array_equal(same.traction, r.traction) and np.array_equal(same.separation, r.separation)
+    # output_every thins the rows (and keeps the ends of the segments)
+    thin = m.run(history, increments=100, control=per_row, traction_tolerance=1e-15, output_every=7)
+    assert thin.time[-1] == 2.0 and 1.0 in thin.time.tolist()
+    kept = np.isin(r.time, thin.time)
+    assert np.array_equal(r.traction[kept], thin.traction)
+
+
+def test_mixed_control_errors_carry_the_library_status():
+    m = interphase.Material(**SIMPLIFIED)
+    peak = K_N * 0.00044                                       # the mode-I peak K_N s0_N (MPa)
+    with pytest.raises(interphase.InterphaseError, match="beyond the peak the material can carry") as caught:
+        m.run([[0.0, 0.0], [1.2 * peak, 0.0]], increments=20, control=[True, True])
+    error = caught.value
+    assert error.status == interphase.STATUS_BEYOND_PEAK and "Sigma_N" in error.detail
+    assert error.result is not None and error.result.traction[-1, 0] <= peak
+    assert np.all(np.diff(error.result.time) > 0)
+    with pytest.raises(interphase.InterphaseError, match="traction_tolerance") as caught:
+        m.run([[0.0, 0.0], [0.1, 0.0]], control=[True, False], traction_tolerance=0.0)
+    assert caught.value.status == interphase.STATUS_BAD_HISTORY
+    with pytest.raises(interphase.InterphaseError, match="output_every") as caught:
+        m.run([[0.0, 0.0], [0.1, 0.0]], output_every=0)
+    assert caught.value.status == interphase.STATUS_BAD_HISTORY
+    with pytest.raises(ValueError, match="control must have shape"):
+        m.run([[0.0, 0.0], [0.1, 0.0]], control=[True, False, False])
+    with pytest.raises(ValueError, match="booleans"):
+        m.run([[0.0, 0.0], [0.1, 0.0]], control=[1, 0])
+
+
+def test_run_history_c_entry(tmp_path):
+    """interphase_run_history directly: arrays that are too short give STATUS_OUTPUT_FULL with
+    the first rows of the replay in them; NULL outputs are not written; a control value other
+    than 0 and 1 is refused."""
+    lib = interphase._library.lib
+    m = interphase.Material(**SIMPLIFIED)
+    full = m.run([[0.0, 0.0], [-0.3, 0.05]], increments=30, control=[True, False])
+    props = np.ascontiguousarray(m.props)
+    time = np.array([0.0, 1.0])
+    value = np.array([[0.0, 0.0], [-0.3, 0.05]])
+    control = np.array([[1, 0], [1, 0]], dtype=np.intc)
+    out = np.empty((5, 2))
+    done = ctypes.c_size_t(0)
+    detail = ctypes.create_string_buffer(257)
+    status = lib.interphase_run_history(props.ctypes.data, props.size, 2, 2, time.ctypes.data, value.ctypes.data,
+                                        control.ctypes.data, 30, 1e-12, 1, 5, None, None, out.ctypes.data, None,
+                                        None, None, None, ctypes.byref(done), detail, 257)
+    assert status == interphase.STATUS_OUTPUT_FULL and done.value == 5, detail.value
+    assert np.array_equal(out, full.traction[:5])
+    control[1, 1] = 2
+    status = lib.interphase_run_history(props.ctypes.data, props.size, 2, 2, time.ctypes.data, value.ctypes.data,
+                                        control.ctypes.data, 30, 1e-12, 1, 5, None, None, None, None,
+                                        None, None, None, ctypes.byref(done), detail, 257)
+    assert status == interphase.STATUS_BAD_HISTORY and done.value == 0
+    assert b"control row 1" in detail.value
+
+
+def test_read_mixed_history(source_dir, tmp_path):
+    path = source_dir / "drivers" / "cases" / "shear" / "shear-0.5.txt"
+    with pytest.raises(ValueError, match="imposes tractions"):
+        interphase.read_history(path)
+    t, v, c = interphase.read_history(path, control=True)
+    assert t.tolist() == [0, 1, 2] and v[:, 0].tolist() == [0, -0.5, -0.5] and v[:, 1].tolist() == [0, 0, 0.1]
+    assert c[:, 0].all() and not c[:, 1].any()
+    switch = tmp_path / "switch.txt"
+    switch.write_text("# columns: t s_T1 s_T2 s_N\n0 0 0 0\n1 0 0 0.001\n# columns: t Sigma_T1 s_T2 Sigma_N\n"
+                      "2 0.01 0.002 0.001\n")
+    t, v, c = interphase.read_history(switch, control=True)
+    assert c.tolist() == [[False] * 3, [False] * 3, [True, True, False]]
+    assert v[2].tolist() == [0.001, 0.01, 0.002]
+    bad = tmp_path / "bad.txt"
+    bad.write_text("# columns: t s_T Tau_N\n0 0 0\n1 0 1\n")
+    with pytest.raises(ValueError, match="bad.txt:1: .*column 3 is 'Tau_N'; expected s_N or Sigma_N"):
+        interphase.read_history(bad, control=True)

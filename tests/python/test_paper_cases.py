@@ -1,8 +1,11 @@
 """Material.run reproduces interphase-point's CSV files bit for bit: the paper's five histories
 (h1I, h2I, h1II, h2II, mixed) and the 3-D mixed case with every case file of
 tools/run-paper-cases.sh (simplified and micromechanical models, displacement-driven and
-fracture-mechanics laws), and with further combinations written here (the simplified model with
-the fracture law, a custom RVE table, the options, viscous regularisation in time). The driver
+fracture-mechanics laws), the shear tests under an imposed precompression (drivers/cases/shear,
+mixed control), and further combinations written here (the simplified model with the fracture
+law, a custom RVE table, the options, viscous regularisation in time; mixed-control histories
+that switch control between segments, in 2-D and 3-D, with output_every; a failure beyond the
+peak). The driver
 of the same build writes its CSV; the package writes the same table with Result.to_csv; the two
 files must be equal byte for byte (17 significant digits: every number equal to the last bit)."""
 
@@ -21,7 +24,7 @@ MICRO = dict(model="micromechanical", mu=0.75, s0_n=0.00044, sf_n=0.04, s0_t=0.0
 def shipped_cases(source_dir):
     cases = source_dir / "drivers" / "cases"
     return sorted(cases.glob("*.nml")) + sorted((cases / "micro").glob("*.nml")) + \
-        sorted((cases / "fracture").glob("*.nml"))
+        sorted((cases / "fracture").glob("*.nml")) + sorted((cases / "shear").glob("*.nml"))
 
 
 def run_driver(driver, case, out_dir):
@@ -53,11 +56,22 @@ def assert_same_csv(driver, case, tmp_path):
 
 def test_the_shipped_cases_are_all_there(source_dir):
     names = {p.stem for p in shipped_cases(source_dir)}
-    assert {"h1I", "h2I", "h1II", "h2II", "mixed", "mixed3d"} <= names
-    assert len(shipped_cases(source_dir)) >= 5 + 1 + 5 + 10
+    assert {"h1I", "h2I", "h1II", "h2II", "mixed", "mixed3d", "shear-0.5", "micro-shear-0.5"} <= names
+    assert len(shipped_cases(source_dir)) >= 5 + 1 + 5 + 10 + 6
+    assert len(shipped_cases(source_dir)) <= 32, "more shipped cases than test_shipped_case runs"
 
 
-@pytest.mark.parametrize("index", range(21))
+def test_the_shear_cases_impose_the_precompression(source_dir):
+    """The shipped shear cases are mixed-control: Sigma_N imposed (the Python run follows it)."""
+    for case in sorted((source_dir / "drivers" / "cases" / "shear").glob("*.nml")):
+        c = interphase.read_case(case)
+        assert c.control[:, 0].all() and not c.control[:, 1].any(), case.name
+        r = c.run()
+        p = -c.value[-1, 0]
+        assert p > 0 and np.abs(r.traction[r.time >= 1.0, 0] + p).max() <= c.traction_tolerance, case.name
+
+
+@pytest.mark.parametrize("index", range(32))
 def test_shipped_case(point_driver, source_dir, tmp_path, index):
     cases = shipped_cases(source_dir)
     if index >= len(cases):
@@ -71,10 +85,10 @@ def entry(value):
     return repr(float(value))
 
 
-def write_case(tmp_path, name, history, material, increments=200):
+def write_case(tmp_path, name, history, material, increments=200, **loading):
     text = "&material\n" + "".join(f"  {k} = {entry(v)}\n" for k, v in material.items()) + "/\n"
     text += f"&loading\n  history = '{history}'\n  increments = {increments}\n  output = '{name}.csv'\n" \
-            "  plot = .false.\n/\n"
+            "  plot = .false.\n" + "".join(f"  {k} = {v}\n" for k, v in loading.items()) + "/\n"
     path = tmp_path / f"{name}.nml"
     path.write_text(text)
     return path
@@ -138,3 +152,61 @@ def test_a_fatal_failure_as_the_driver(point_driver, source_dir, tmp_path):
     """A tabulated R-curve that runs out: no halving, the run stops at once (driver: the same rows)."""
     case = source_dir / "tests" / "driver" / "inputs" / "rcurve_runs_out.nml"
     assert_same_partial_csv(point_driver, case, tmp_path, interphase.STATUS_RCURVE_OUT_OF_RANGE, "covers D from")
+
+
+# mixed-control histories (drivers/README.md, 'Mixed control'): the control switches between
+# segments; 3-D with two imposed tractions
+MIXED_HISTORIES = {
+    "switch": """# tension, then a shear traction on the open crack, then back to separations
+# columns: t s_T s_N
+0 0 0
+1 0 0.002
+# columns: t Sigma_T s_N
+2 0.02 0.002
+3 -0.01 0.002
+# columns: t s_T s_N
+4 0 0
+""",
+    "precompressed3d": """# 3-D shear under precompression, the second shear traction held at zero
+# columns: t s_T1 Sigma_T2 Sigma_N
+0 0 0 0
+1 0 0 -0.3
+2 0.08 0 -0.3
+# columns: t s_T1 s_T2 Sigma_N
+3 0.08 0.03 -0.3
+""",
+    "preloaded": """# a first row away from zero: the precompression reached in the preload steps
+# columns: t (s) s_T (mm) Sigma_N (MPa)
+0 0 -0.4
+1 0.05 -0.4
+2 0.0 -0.4
+""",
+}
+
+MIXED_MATERIALS = {
+    "simplified": dict(SIMPLIFIED, damage_law="displacement"),
+    "micro-fracture": dict(MICRO, damage_law="fracture", d0=0.02, rcurve="equivalent"),
+    "micro-viscous": dict(MICRO, damage_law="displacement", viscosity=0.05),
+}
+
+
+@pytest.mark.parametrize("history", sorted(MIXED_HISTORIES))
+@pytest.mark.parametrize("material", sorted(MIXED_MATERIALS))
+def test_mixed_control_as_the_driver(point_driver, tmp_path, history, material):
+    path = tmp_path / f"{history}.txt"
+    path.write_text(MIXED_HISTORIES[history])
+    case = write_case(tmp_path, f"{material}-{history}", path, MIXED_MATERIALS[material], increments=40,
+                      traction_tolerance="1e-13", output_every=3)
+    assert interphase.read_case(case).control.any()
+    assert_same_csv(point_driver, case, tmp_path)
+
+
+def test_beyond_the_peak_as_the_driver(point_driver, source_dir, tmp_path):
+    """An imposed normal traction raised beyond the peak: no solution; the library's status and
+    message, and the rows up to there as in the driver's OUTPUT.part."""
+    case = source_dir / "tests" / "driver" / "inputs" / "beyond_peak.nml"
+    error = assert_same_partial_csv(point_driver, case, tmp_path, interphase.STATUS_BEYOND_PEAK,
+                                    "the imposed traction Sigma_N = ")
+    assert "beyond the peak the material can carry" in error.detail
+    assert error.name == "STATUS_BEYOND_PEAK"
+    assert error.result.traction[-1, 0] < 0.25

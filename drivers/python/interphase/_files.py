@@ -5,7 +5,7 @@ import re
 
 import numpy as np
 
-from ._material import Material
+from ._material import Material, DEFAULT_TRACTION_TOLERANCE
 
 _NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eEdD][+-]?\d+)?$")
 
@@ -19,32 +19,93 @@ def _number(text, where):
     return value
 
 
-def read_history(path):
-    """A history file of interphase-point (`t s_T s_N` or `t s_T1 s_T2 s_N` rows, `#` comments).
+# the names of a `# columns:` line after t (file order): separation, traction
+_NAMES = {3: (("s_T", "Sigma_T"), ("s_N", "Sigma_N")),
+          4: (("s_T1", "Sigma_T1"), ("s_T2", "Sigma_T2"), ("s_N", "Sigma_N"))}
 
-    Returns (time, separation): separation is (nrows, ntens) in the C interface's order, normal
-    first ((s_N, s_T) or (s_N, s_T1, s_T2)), ready for Material.run.
+
+def _column_names(text, where):
+    """The traction flags (file order: shear(s), normal) of a `# columns:` comment."""
+    depth, kept = 0, []
+    for ch in text.split(":", 1)[1]:
+        if ch == "(":
+            depth += 1
+        if depth > 0:
+            if ch == ")":
+                depth -= 1
+            kept.append(" ")
+        else:
+            kept.append(ch)
+    words = "".join(kept).split()
+    if len(words) not in (3, 4):
+        raise ValueError(f'{where}: "# columns:" names {len(words)} columns; expected t and 2 (2-D) or 3 '
+                         '(3-D) components, e.g. "# columns: t s_T Sigma_N"')
+    if words[0] != "t":
+        raise ValueError(f'{where}: "# columns:" must start with t, got {words[0]!r}')
+    flags = []
+    for i, word in enumerate(words[1:]):
+        names = _NAMES[len(words)][i]
+        if word.lower() not in (names[0].lower(), names[1].lower()):
+            raise ValueError(f'{where}: "# columns:" column {i + 2} is {word!r}; expected {names[0]} or '
+                             f'{names[1]} (t, the shear component(s), then the normal one)')
+        flags.append(word.lower() == names[1].lower())
+    return len(words), flags
+
+
+def read_history(path, control=False):
+    """A history file of interphase-point (drivers/README.md): rows `t s_T s_N` or
+    `t s_T1 s_T2 s_N`, `#` comments; a comment line `# columns: t s_T Sigma_N` names the columns
+    of the rows below it, each component a separation (s_X, mm) or a traction (Sigma_X, MPa).
+
+    Returns (time, separation) (control=False; a file that imposes a traction is then an error)
+    or (time, value, control) (control=True; control (nrows, ntens) booleans, true where the
+    value is a traction). Values and controls are in the C interface's order, normal first
+    ((s_N, s_T) or (s_N, s_T1, s_T2)), ready for Material.run.
     """
-    rows = []
+    rows, flags, lines = [], [], []
+    named, names_line = None, 0
     with open(path, encoding="utf-8") as f:
         for number, line in enumerate(f, 1):
-            words = line.split("#", 1)[0].split()
+            where = f"{path}:{number}"
+            head, hash_, comment = line.partition("#")
+            if hash_ and comment.lstrip().lower().startswith("columns:"):
+                ncolumns, named = _column_names(comment.lstrip(), where)
+                names_line = number
+                if rows and ncolumns != len(rows[0]):
+                    raise ValueError(f'{where}: the "# columns:" line names {ncolumns} columns, but the data '
+                                     f'lines have {len(rows[0])}')
+                named = (ncolumns, named)
+                continue
+            words = head.split()
             if not words:
                 continue
-            where = f"{path}:{number}"
             if len(words) not in (3, 4):
                 raise ValueError(f"{where}: {len(words)} columns; a history row is 't s_T s_N' or 't s_T1 s_T2 s_N'")
             if rows and len(words) != len(rows[0]):
                 raise ValueError(f"{where}: {len(words)} columns, the first row has {len(rows[0])}")
+            if named is not None and named[0] != len(words):
+                raise ValueError(f'{where}: {len(words)} columns, but the "# columns:" line (line {names_line}) '
+                                 f'names {named[0]}')
             rows.append([_number(w, where) for w in words])
+            flags.append(named[1] if named is not None else [False] * (len(words) - 1))
+            lines.append(number)
     if len(rows) < 2:
         raise ValueError(f"{path}: needs at least 2 data rows, found {len(rows)}")
     table = np.array(rows)
     time = table[:, 0]
     if not np.all(np.diff(time) > 0.0):
-        raise ValueError(f"{path}: times must increase strictly")
-    separation = np.concatenate([table[:, -1:], table[:, 1:-1]], axis=1)
-    return time, separation
+        bad = int(np.argmin(np.diff(time) > 0.0)) + 1
+        raise ValueError(f"{path}:{lines[bad]}: time {time[bad]!r} is not greater than the previous time "
+                         f"{time[bad - 1]!r}; times must increase strictly")
+    value = np.concatenate([table[:, -1:], table[:, 1:-1]], axis=1)
+    f = np.array(flags, dtype=bool)
+    traction = np.concatenate([f[:, -1:], f[:, :-1]], axis=1)
+    if control:
+        return time, value, traction
+    if traction.any():
+        raise ValueError(f"{path}: the history imposes tractions (Sigma_ columns): read it with "
+                         "read_history(path, control=True), which returns (time, value, control)")
+    return time, value
 
 
 def read_namelist(path):
@@ -108,23 +169,34 @@ def read_namelist(path):
 
 
 class Case:
-    """A case file of interphase-point: `material` (Material), `time` and `separation` (the
-    history, normal first), `increments` and `output` (the CSV name the driver writes)."""
+    """A case file of interphase-point: `material` (Material), `time`, `value` and `control` (the
+    history, normal first: separations, or tractions where `control` is true), `increments`,
+    `traction_tolerance`, `output_every` and `output` (the CSV name the driver writes).
+    `separation` is `value` (a history without traction control holds separations only)."""
 
-    def __init__(self, material, time, separation, increments, output):
-        self.material, self.time, self.separation = material, time, separation
+    def __init__(self, material, time, value, increments, output, control=None,
+                 traction_tolerance=DEFAULT_TRACTION_TOLERANCE, output_every=1):
+        self.material, self.time, self.value = material, time, value
+        self.control = np.zeros(value.shape, dtype=bool) if control is None else control
         self.increments, self.output = increments, output
+        self.traction_tolerance, self.output_every = traction_tolerance, output_every
+
+    @property
+    def separation(self):
+        return self.value
 
     def run(self, tangent=False):
         """Material.run on the case's history, as interphase-point replays it."""
-        return self.material.run(self.separation, self.time, self.increments, tangent=tangent)
+        return self.material.run(self.value, self.time, self.increments, tangent=tangent,
+                                 control=self.control if self.control.any() else None,
+                                 traction_tolerance=self.traction_tolerance, output_every=self.output_every)
 
 
 def read_case(path):
     """Read an interphase-point case file (drivers/README.md): its &material and &loading.
 
     The paths it names (history, table, rcurve_file) are taken relative to its folder, as the
-    driver takes them.
+    driver takes them. The history may impose tractions (`# columns:` lines).
     """
     groups = read_namelist(path)
     base = os.path.dirname(os.path.abspath(path))
@@ -136,5 +208,7 @@ def read_case(path):
             entries[key] = os.path.join(base, entries[key])
     material = Material(**entries)
     loading = groups["loading"]
-    time, separation = read_history(os.path.join(base, loading["history"]))
-    return Case(material, time, separation, int(loading["increments"]), loading.get("output"))
+    time, value, control = read_history(os.path.join(base, loading["history"]), control=True)
+    return Case(material, time, value, int(loading["increments"]), loading.get("output"), control=control,
+                traction_tolerance=float(loading.get("traction_tolerance", DEFAULT_TRACTION_TOLERANCE)),
+                output_every=int(loading.get("output_every", 1)))

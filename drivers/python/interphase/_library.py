@@ -66,6 +66,10 @@ lib.interphase_update.argtypes = [_ptr, _int, _int, _ptr, _ptr, _ptr, _ptr, _ptr
 lib.interphase_run.restype = _int
 lib.interphase_run.argtypes = [_ptr, _int, _int, _size, _ptr, _ptr, _ptr, _ptr, _ptr, _ptr, _ptr,
                                _c_size_t_p, ctypes.c_char_p, _size]
+lib.interphase_run_history.restype = _int
+lib.interphase_run_history.argtypes = [_ptr, _int, _int, _size, _ptr, _ptr, _ptr, _int, _dbl, _int, _size,
+                                       _ptr, _ptr, _ptr, _ptr, _ptr, _ptr, _ptr, _c_size_t_p,
+                                       ctypes.c_char_p, _size]
 lib.interphase_status_message.restype = _size
 lib.interphase_status_message.argtypes = [_int, ctypes.c_char_p, _size]
 lib.interphase_load_table.restype = _int

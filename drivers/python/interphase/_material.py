@@ -21,10 +21,12 @@ STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE = 0, 1, 2
 REGIME_NAMES = ("intact", "open", "stick", "slip")
 #: state doubles: without / with viscous regularisation (INTERPHASE_NSTATE[_VISCOUS])
 NSTATE, NSTATE_VISCOUS = 4, 5
-#: halvings of one sub-increment before a replay gives up (interphase-point's MAX_HALVINGS)
+#: halvings of one sub-increment before a replay gives up (interphase_mixed_control's MAX_HALVINGS)
 MAX_HALVINGS = 10
-# statuses after which no smaller step can help (the UMAT reports them as fatal)
-_FATAL_STEP_STATUSES = {st.STATUS_BAD_TIME_INCREMENT, st.STATUS_RCURVE_OUT_OF_RANGE}
+#: Newton iterations (updates) of one mixed-control step at most (MAX_NEWTON)
+MAX_NEWTON = 25
+#: interphase-point's default traction_tolerance (MPa)
+DEFAULT_TRACTION_TOLERANCE = 1.0e-12
 
 # the keyword entries of the driver's &material (drivers/interphase_driver_case.f90)
 _REQUIRED = ("model", "damage_law", "mu", "s0_n", "sf_n", "s0_t", "sf_t")
@@ -225,56 +227,37 @@ class Material:
             raise InterphaseError(status, text_of(detail))
         return Update(traction, tangent, new, psi.value)
 
-    def _path(self, start, separation, time, tangent):
-        """interphase_run over `separation` (rows 1..) from the point `start` (row 0): the rows
-        computed and the status, rows_done and detail of the first failure (status 0: none)."""
-        n = start.separation.size
-        m = separation.shape[0] + 1
-        sep = np.empty((m, n))
-        sep[0] = start.separation
-        sep[1:] = separation
-        times = np.empty(m)
-        times[0] = start.time
-        times[1:] = time
-        traction = np.empty((m, n))
-        traction[0] = start.traction
-        state = np.empty((m, self.nstate))
-        state[0] = start.state
-        psi = np.empty(m)
-        psi[0] = start.stored_energy
-        w = np.empty(m)
-        w[0] = start.dissipated_energy
-        k = np.empty((m, n, n)) if tangent else None
-        props, props_p = _as_c(self.props)
-        done = ctypes.c_size_t(0)
-        detail = detail_buffer()
-        status = lib.interphase_run(props_p, props.size, n, m, sep.ctypes.data, times.ctypes.data,
-                                    traction.ctypes.data, None if k is None else k.ctypes.data,
-                                    state.ctypes.data, psi.ctypes.data, w.ctypes.data, ctypes.byref(done),
-                                    detail, DETAIL_LEN)
-        rows = _Rows(times, sep, traction, state, psi, w, k)
-        return rows, status, done.value, text_of(detail)
+    def run(self, history, time=None, increments=1, tangent=False, control=None,
+            traction_tolerance=DEFAULT_TRACTION_TOLERANCE, output_every=1):
+        """Replay a history at one point, as interphase-point does (drivers/README.md).
 
-    def run(self, separation, time=None, increments=1, tangent=False):
-        """Replay a separation history at one point, as interphase-point does (drivers/README.md).
+        history: (nrows, ntens) array, each row normal first as in the C interface, (s_N, s_T) or
+        (s_N, s_T1, s_T2): the separation (mm), or the traction (MPa) where `control` is true (a
+        history file lists the shear first: read_history turns it). control: None (every component
+        separation-controlled), or booleans of shape (ntens,) (the same for every row) or (nrows,
+        ntens), true where the component is traction-controlled; the segment that ends at a row is
+        controlled as that row says (mixed control: a traction-controlled component's separation is
+        found by Newton's method on the tangent, to within traction_tolerance (MPa), in at most 25
+        updates per step). time: nrows strictly increasing times (default 0, 1, 2, ...);
+        increments: equal sub-increments per segment; output_every: a row every k-th converged step
+        (and at the end of every segment).
 
-        separation: (nrows, ntens) array, each row (s_N, s_T) or (s_N, s_T1, s_T2) (mm), normal
-        first as in the C interface (a history file lists the shear first: read_history turns it);
-        time: nrows strictly increasing times (default 0, 1, 2, ...); increments: equal
-        sub-increments per segment. The point starts virgin at zero separation; a first row away
-        from zero is reached first in `increments` radial steps at time[0] (not returned). A step
-        that fails is halved and retried, up to MAX_HALVINGS times, each converged step giving a
-        row. The loop over the increments runs inside the library (interphase_run).
+        The point starts virgin at zero separation; a first row away from zero is reached first in
+        `increments` steps at time[0] (not returned). A step that fails is halved and retried, up to
+        MAX_HALVINGS times, each converged step giving a row. The whole loop runs inside the library
+        (interphase_run_history, the algorithm of interphase-point).
 
         Returns a Result with one row per converged step, the start (time[0]) first. On a failure
-        the InterphaseError raised carries the rows computed until then as its `result` (None
-        when there are none), as the driver's CSV holds them.
+        the InterphaseError raised carries the library's status and message (e.g.
+        STATUS_BEYOND_PEAK: an imposed traction beyond the peak the material can carry) and the rows
+        computed until then as its `result` (None when there are none), as the driver's CSV holds
+        them.
         """
         self._prepare()
-        sep = np.array(separation, dtype=np.float64)
-        if sep.ndim != 2 or sep.shape[1] not in (2, 3) or sep.shape[0] < 1:
-            raise ValueError(f"separation must be an (nrows, 2) or (nrows, 3) array, got shape {sep.shape}")
-        nrows, n = sep.shape
+        value = np.array(history, dtype=np.float64)
+        if value.ndim != 2 or value.shape[1] not in (2, 3) or value.shape[0] < 1:
+            raise ValueError(f"history must be an (nrows, 2) or (nrows, 3) array, got shape {value.shape}")
+        nrows, n = value.shape
         t = np.arange(nrows, dtype=np.float64) if time is None else np.array(time, dtype=np.float64)
         if t.shape != (nrows,):
             raise ValueError(f"time must hold {nrows} values, got shape {t.shape}")
@@ -285,102 +268,50 @@ class Material:
         increments = int(increments)
         if increments < 1:
             raise ValueError(f"increments must be at least 1, got {increments}")
-        # the sub-increments of every segment, as the driver computes them: theta = j/n, exact
-        # at the segment's end
-        theta = np.arange(1, increments + 1, dtype=np.float64) / float(increments)
-        zero = np.zeros(n)
-        segments = []                   # (s_a, s_b, t_a, t_b, write rows)
-        if np.any(np.abs(sep[0]) > 0.0):
-            segments.append((zero, sep[0], t[0], t[0], False))
-        for k in range(nrows - 1):
-            segments.append((sep[k], sep[k + 1], t[k], t[k + 1], True))
-        plan_s, plan_t, plan_j, plan_seg = [], [], [], []
-        for i, (s_a, s_b, t_a, t_b, _) in enumerate(segments):
-            s_new = s_a + theta[:, None] * (s_b - s_a)
-            t_new = t_a + theta * (t_b - t_a)
-            s_new[-1] = s_b
-            t_new[-1] = t_b
-            plan_s.append(s_new)
-            plan_t.append(t_new)
-            plan_j.append(np.arange(increments))
-            plan_seg.append(np.full(increments, i))
-        plan_s = np.concatenate(plan_s) if plan_s else np.empty((0, n))
-        plan_t = np.concatenate(plan_t) if plan_t else np.empty(0)
-        plan_j = np.concatenate(plan_j) if plan_j else np.empty(0, int)
-        plan_seg = np.concatenate(plan_seg) if plan_seg else np.empty(0, int)
-
-        point = _Point(t[0], zero, zero, self.initial_state(), 0.0, 0.0, np.full((n, n), np.nan))
-        # plan entries 0 .. npre-1 are the preload's (not returned); the point they reach, at
-        # time[0], is the first row
-        npre = increments if segments and not segments[0][4] else 0
-        chunks = [] if npre else [_Rows.of_point(point, tangent)]
-        i = 0
-        nplan = plan_s.shape[0]
-        try:
-            while i < nplan:
-                rows, status, done, detail = self._path(point, plan_s[i:], plan_t[i:], tangent)
-                converged = done - 1      # rows 1 .. converged: plan entries i .. i + converged - 1
-                if converged > 0:
-                    if i >= npre:
-                        chunks.append(rows.slice(1, 1 + converged))
-                    elif i + converged >= npre:
-                        chunks.append(rows.slice(npre - i, 1 + converged))
-                    point = rows.point(converged)
-                    i += converged
-                if status == st.STATUS_OK:
-                    break
-                if done == 0 or status in _FATAL_STEP_STATUSES:
-                    raise InterphaseError(status, _at_time(detail, point.time, plan_t[i]))
-                # halve the failed sub-increment, as interphase-point does; the preload's steps
-                # give no row, but its last one's end is the first row
-                preload = []
-                point = self._halve(point, segments[plan_seg[i]], int(plan_j[i]), increments, tangent,
-                                    chunks if i >= npre else preload)
-                if i == npre - 1:
-                    chunks.append(preload[-1])
-                i += 1
-        except InterphaseError as error:
-            error.result = Result.concatenate(chunks) if chunks else None
-            raise
-        return Result.concatenate(chunks)
-
-    def _halve(self, point, segment, j, increments, tangent, sink):
-        """Sub-increment j of `segment` in halved steps (interphase-point's advance), the rows
-        of the converged steps appended to `sink`; the point reached."""
-        s_a, s_b, t_a, t_b, _ = segment
-        theta_from = float(j) / float(increments)
-        theta_to = float(j + 1) / float(increments)
-        done, step, halvings = 0.0, 1.0, 0
-        while done < 1.0:
-            attempt = min(1.0, done + step)
-            theta = theta_to if attempt >= 1.0 else theta_from + attempt * (theta_to - theta_from)
-            if theta >= 1.0:
-                s_new, t_new = s_b, t_b
-            else:
-                s_new = s_a + theta * (s_b - s_a)
-                t_new = t_a + theta * (t_b - t_a)
-            rows, code, done_rows, text = self._path(point, np.array([s_new]), np.array([t_new]), tangent)
-            if code != st.STATUS_OK:
-                text = _at_time(text, point.time, t_new)
-                if done_rows == 0 or code in _FATAL_STEP_STATUSES:
-                    raise InterphaseError(code, text)
-                halvings += 1
-                if halvings > MAX_HALVINGS:
-                    raise InterphaseError(code, f"{text}; no convergence even after {MAX_HALVINGS} halvings of "
-                                          "the sub-increment")
-                step *= 0.5
-                continue
-            sink.append(rows.slice(1, 2))
-            point = rows.point(1)
-            done = attempt
-        return point
-
-
-def _at_time(detail, t_from, t_to):
-    """The library's detail of a failed step of interphase_run, with the step's times for its row."""
-    if detail.startswith("row ") and ": " in detail:
-        detail = detail.split(": ", 1)[1]
-    return f"from t = {t_from!r} to t = {float(t_to)!r}: {detail}"
+        if control is None:
+            ctrl = None
+        else:
+            c = np.asarray(control)
+            if c.dtype != np.bool_:
+                raise ValueError(f"control must hold booleans (true: traction-controlled), got {c.dtype}")
+            if c.shape not in ((n,), (nrows, n)):
+                raise ValueError(f"control must have shape ({n},) or ({nrows}, {n}), got {c.shape}")
+            ctrl = np.ascontiguousarray(np.broadcast_to(c, (nrows, n)), dtype=np.intc)
+        value = np.ascontiguousarray(value)
+        t = np.ascontiguousarray(t)
+        props, props_p = _as_c(self.props)
+        # rows: the start and one per sub-increment; more where steps are halved
+        capacity = 1 + (nrows - 1) * increments
+        capacity += capacity // 8 + 16
+        while True:
+            out_t = np.empty(capacity)
+            out_s = np.empty((capacity, n))
+            out_tr = np.empty((capacity, n))
+            out_state = np.empty((capacity, self.nstate))
+            out_psi = np.empty(capacity)
+            out_w = np.empty(capacity)
+            out_k = np.empty((capacity, n, n)) if tangent else None
+            done = ctypes.c_size_t(0)
+            detail = detail_buffer()
+            status = lib.interphase_run_history(
+                props_p, props.size, n, nrows, t.ctypes.data, value.ctypes.data,
+                None if ctrl is None else ctrl.ctypes.data, increments, float(traction_tolerance),
+                int(output_every), capacity, out_t.ctypes.data, out_s.ctypes.data, out_tr.ctypes.data,
+                out_state.ctypes.data, out_psi.ctypes.data, out_w.ctypes.data,
+                None if out_k is None else out_k.ctypes.data, ctypes.byref(done), detail, DETAIL_LEN)
+            if status != st.STATUS_OUTPUT_FULL:
+                break
+            capacity *= 4
+        k = done.value
+        result = None
+        if k > 0:
+            result = Result(out_t[:k].copy(), out_s[:k].copy(), out_tr[:k].copy(), out_state[:k].copy(),
+                            out_psi[:k].copy(), out_w[:k].copy(), None if out_k is None else out_k[:k].copy())
+        if status != st.STATUS_OK:
+            error = InterphaseError(status, text_of(detail))
+            error.result = result
+            raise error
+        return result
 
 
 class Update:
@@ -399,36 +330,6 @@ class Update:
                 f"stored_energy={self.stored_energy!r})")
 
 
-class _Point:
-    __slots__ = ("time", "separation", "traction", "state", "stored_energy", "dissipated_energy", "tangent")
-
-    def __init__(self, time, separation, traction, state, stored_energy, dissipated_energy, tangent):
-        self.time, self.separation, self.traction, self.state = time, separation, traction, state
-        self.stored_energy, self.dissipated_energy, self.tangent = stored_energy, dissipated_energy, tangent
-
-
-class _Rows:
-    """Rows of a path (arrays with one row per point)."""
-
-    def __init__(self, time, separation, traction, state, psi, w, tangent):
-        self.time, self.separation, self.traction, self.state = time, separation, traction, state
-        self.psi, self.w, self.tangent = psi, w, tangent
-
-    @classmethod
-    def of_point(cls, p, tangent):
-        return cls(np.array([p.time]), p.separation[None, :].copy(), p.traction[None, :].copy(),
-                   p.state[None, :].copy(), np.array([p.stored_energy]), np.array([p.dissipated_energy]),
-                   np.full((1,) + p.tangent.shape, np.nan) if tangent else None)
-
-    def slice(self, a, b):
-        return _Rows(self.time[a:b], self.separation[a:b], self.traction[a:b], self.state[a:b],
-                     self.psi[a:b], self.w[a:b], None if self.tangent is None else self.tangent[a:b])
-
-    def point(self, r):
-        return _Point(self.time[r], self.separation[r].copy(), self.traction[r].copy(), self.state[r].copy(),
-                      self.psi[r], self.w[r], None if self.tangent is None else self.tangent[r])
-
-
 class Result:
     """A replayed history: one row per converged step, numpy arrays.
 
@@ -445,13 +346,6 @@ class Result:
         self.damage = state[:, 0]
         self.slip = state[:, 1:self.ntens]
         self.regime = state[:, 3].astype(int)
-
-    @classmethod
-    def concatenate(cls, chunks):
-        def cat(name):
-            return np.concatenate([getattr(c, name) for c in chunks])
-        tangent = None if chunks[0].tangent is None else cat("tangent")
-        return cls(cat("time"), cat("separation"), cat("traction"), cat("state"), cat("psi"), cat("w"), tangent)
 
     def __len__(self):
         return self.time.size
