@@ -116,11 +116,18 @@ contains
             candidate = min(interval + 1, size(knots) - 1)
             interval = merge(candidate, interval, x >= knots(candidate))
          end do
+         t = x - knots(interval)
          if (present(d2coef_dd2)) then
-            call cubic_eval(knots, coef_table, interval, x, v, dv, d2v)
+            do j = 1, N_COEFFICIENTS
+               v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
+                  + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
+               dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
+                  + 3.0_dp*t*coef_table(j, 3, interval))
+               d2v(j) = 2.0_dp*coef_table(j, 2, interval) + 6.0_dp*t*coef_table(j, 3, interval)
+            end do
+            ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
             d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
          else
-            t = x - knots(interval)
             do j = 1, N_COEFFICIENTS
                v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
                   + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
