@@ -11,7 +11,8 @@
 module interphase_driver_history
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
-   use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words
+   use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, text_file_type, &
+      open_line_file, close_text_file
    use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES
    implicit none
    private
@@ -42,14 +43,14 @@ contains
       character(len=:), allocatable :: line, where, shown
       integer, allocatable :: starts(:), ends(:)
       real(dp) :: values(4)
-      integer :: unit, ios, line_number, ncolumns, first_data_line, comment, i
+      integer :: ios, line_number, ncolumns, first_data_line, comment, i
+      type(text_file_type) :: unit
       integer(int64) :: bytes
       character(len=512) :: iomsg
 
       ok = .false.
       shown = tried_path(path)
-      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
-         iostat=ios, iomsg=iomsg)
+      call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = shown//': cannot open the history file: '//trim(iomsg)
          return
@@ -67,13 +68,13 @@ contains
          where = shown//':'//int_to_string(line_number)//': '
          if (ios /= 0) then
             message = where//'cannot read the line: '//trim(iomsg)
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          bytes = bytes + len(line) + 1
          if (bytes > MAX_FILE_BYTES) then
             message = where//'the file is larger than '//int_to_string(int(MAX_FILE_BYTES))//' bytes'
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          comment = index(line, '#')
@@ -85,7 +86,7 @@ contains
             if (size(starts) /= 3 .and. size(starts) /= 4) then
                message = where//'found '//int_to_string(size(starts))//' columns; expected 3 '// &
                   '(t s_T s_N, 2-D) or 4 (t s_T1 s_T2 s_N, 3-D)'
-               close (unit)
+               call close_text_file(unit)
                return
             end if
             ncolumns = size(starts)
@@ -94,14 +95,14 @@ contains
             message = where//'found '//int_to_string(size(starts))//' columns, but line '// &
                int_to_string(first_data_line)//' has '//int_to_string(ncolumns)// &
                '; every data line must have the same number of columns'
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          do i = 1, ncolumns
             call parse_number(line(starts(i):ends(i)), values(i), ok, message)
             if (.not. ok) then
                message = where//'column '//int_to_string(i)//': '//message
-               close (unit)
+               call close_text_file(unit)
                return
             end if
          end do
@@ -113,13 +114,13 @@ contains
                   ' is not greater than the previous time '// &
                   real_to_string(history%time(history%nrows))//' (line '// &
                   int_to_string(history%line(history%nrows))//'); times must increase strictly'
-               close (unit)
+               call close_text_file(unit)
                return
             end if
          end if
          call append_row(history, line_number, values(1), values(2:ncolumns))
       end do
-      close (unit)
+      call close_text_file(unit)
 
       if (history%nrows < 2) then
          message = shown//': needs at least 2 data rows, found '//int_to_string(history%nrows)

@@ -5,6 +5,7 @@ module interphase_params
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
+   use interphase_real_text, only: real_text
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
       PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, PROP_TABLE, NPROPS_MICROMECHANICAL, LFM_D0, &
       LFM_RCURVE, LFM_GC_I, LFM_GC_II, NPROPS_FRACTURE_EXTRA, OPT_GROWTH_SLIP, NPROPS_OPTIONS, &
@@ -98,15 +99,15 @@ contains
       model = selector_code(props(PROP_MODEL))
       if (model /= MODEL_SIMPLIFIED .and. model /= MODEL_MICROMECHANICAL) then
          status = STATUS_BAD_MODEL
-         write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_MODEL, ') model = ', props(PROP_MODEL), &
+         write (message, '(a,i0,a,a,a)') 'PROPS(', PROP_MODEL, ') model = ', real_text(props(PROP_MODEL)), &
             ' is not a model: use 1 (simplified spring model) or 2 (micromechanical)'
          return
       end if
       damage_law = selector_code(props(PROP_DAMAGE_LAW))
       if (damage_law /= DAMAGE_DISPLACEMENT .and. damage_law /= DAMAGE_FRACTURE) then
          status = STATUS_BAD_DAMAGE_LAW
-         write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_DAMAGE_LAW, ') damage law = ', &
-            props(PROP_DAMAGE_LAW), ' is not a damage law: use 1 (displacement-driven, eqs 13-18) '// &
+         write (message, '(a,i0,a,a,a)') 'PROPS(', PROP_DAMAGE_LAW, ') damage law = ', &
+            real_text(props(PROP_DAMAGE_LAW)), ' is not a damage law: use 1 (displacement-driven, eqs 13-18) '// &
             'or 2 (fracture mechanics, eqs 20-24)'
          return
       end if
@@ -133,7 +134,7 @@ contains
          table = selector_code(props(PROP_TABLE))
          if (table /= TABLE_DEFAULT_CODE .and. table /= TABLE_CUSTOM_CODE) then
             status = STATUS_BAD_TABLE_SELECTOR
-            write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_TABLE, ') table = ', props(PROP_TABLE), &
+            write (message, '(a,i0,a,a,a)') 'PROPS(', PROP_TABLE, ') table = ', real_text(props(PROP_TABLE)), &
                ' is not a table selector: use 0 (built-in table) or 1 (custom table loaded at start-up)'
             return
          end if

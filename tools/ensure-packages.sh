@@ -2,20 +2,30 @@
 # Install the optional Debian packages interphase uses, when they are missing and we can:
 #   freefem++   (FreeFem++: RVE coefficient tables and their tests)
 #   gnuplot-nox (gnuplot: PNG plots of the driver and of the tables)
-# Usage: tools/ensure-packages.sh [freefem] [gnuplot]   (default: both)
+#   flang-19 and libomp-19-dev (LLVM flang 19 with its OpenMP: the second compiler of
+#               tools/run-tests.sh; asked for by name only, not by default)
+# Usage: tools/ensure-packages.sh [freefem] [gnuplot] [flang]   (default: freefem gnuplot)
 # Never fails: where a package cannot be installed it says so, and the parts that need it
 # skip with their own clear message.
 set -u
 want=("$@")
 [ ${#want[@]} -eq 0 ] && want=(freefem gnuplot)
 
-declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot)
-declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox)
+declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot [flang]=flang-new-19)
+declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox [flang]="flang-19 libomp-19-dev")
 
 missing=()
 for w in "${want[@]}"; do
   c=${cmd_of[$w]:-}
   if [ -z "$c" ]; then echo "ensure-packages: unknown component '$w'" >&2; continue; fi
+  if [ "$w" = flang ]; then
+    # the compiler and the OpenMP runtime it links (the thread-safety test needs both)
+    if ! command -v "$c" >/dev/null 2>&1 || [ ! -e /usr/lib/llvm-19/lib/libomp.so ]; then
+      # shellcheck disable=SC2206  # two package names
+      missing+=(${pkg_of[$w]})
+    fi
+    continue
+  fi
   command -v "$c" >/dev/null 2>&1 || missing+=("${pkg_of[$w]}")
 done
 [ ${#missing[@]} -eq 0 ] && exit 0

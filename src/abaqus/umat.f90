@@ -17,6 +17,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       layer, kspt, jstep, kinc)
    use interphase_kinds, only: dp
    use interphase_finite, only: is_finite, is_within
+   use interphase_real_text, only: real_text, es_field
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
       STATUS_BAD_TIME_INCREMENT, status_message
@@ -75,8 +76,11 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    ! increment may help), STRESS, SSE and SPD within HOST_VALUE_MAX (the values the UMAT
    ! returned last: fatal otherwise)
    if (.not. (all(is_within(stran, HOST_INCREMENT_MAX)) .and. all(is_within(dstran, HOST_INCREMENT_MAX)))) then
-      write (message, '(a,3es12.4)') 'STRAN (mm) ', stran
-      write (stress_text, '(3es11.3)') dstran
+      ! (es_field: an infinity reads Infinity with every compiler)
+      message = 'STRAN (mm) '//es_field(stran(1), 12, 4)//es_field(stran(2), 12, 4)
+      if (ntens == 3) message = trim(message)//es_field(stran(3), 12, 4)
+      stress_text = es_field(dstran(1), 11, 3)//es_field(dstran(2), 11, 3)
+      if (ntens == 3) stress_text = trim(stress_text)//es_field(dstran(3), 11, 3)
       message = trim(message)//', DSTRAN'//trim(stress_text)
       call fail(merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
          all(is_finite(stran)) .and. all(is_finite(dstran))), SEVERITY_WARNING)
@@ -84,9 +88,11 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    end if
    if (.not. (all(is_within(stress, HOST_VALUE_MAX)) .and. is_within(sse, HOST_VALUE_MAX) .and. &
          is_within(spd, HOST_VALUE_MAX))) then
-      write (stress_text, '(3es11.3)') stress
-      write (message, '(a,a,a,es11.3,a,es11.3,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), ', SSE ', sse, &
-         ', SPD ', spd, ' (N/mm): the host must pass finite values within ', HOST_VALUE_MAX, &
+      ! (es_field: an infinity reads Infinity with every compiler)
+      stress_text = es_field(stress(1), 11, 3)//es_field(stress(2), 11, 3)
+      if (ntens == 3) stress_text = trim(stress_text)//es_field(stress(3), 11, 3)
+      write (message, '(a,a,a,a,a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), ', SSE ', &
+         es_field(sse, 11, 3), ', SPD ', es_field(spd, 11, 3), ' (N/mm): the host must pass finite values within ', HOST_VALUE_MAX, &
          ' (those the UMAT returned last)'
       call fail(STATUS_BAD_HOST_INPUT, SEVERITY_FATAL)
       return
@@ -100,8 +106,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       return
    else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
       ! the R-curve file does not reach the damage this point needs: a setup error
-      write (message, '(a,a,g0.6,a,3es12.4)', iostat=status) rcurve_coverage(), '; the crack grows beyond it from D = ', &
-         old%d, ' at separation (mm) ', s(1:ntens)
+      write (message, '(a,a,a,a,3es12.4)', iostat=status) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+         real_text(old%d, 6), ' at separation (mm) ', s(1:ntens)
       call fail(STATUS_RCURVE_OUT_OF_RANGE, SEVERITY_FATAL)
       return
    else if (status /= STATUS_OK) then

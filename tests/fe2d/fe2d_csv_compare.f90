@@ -23,10 +23,10 @@ program fe2d_csv_compare
    end if
    call get_command_argument(1, length=length)
    allocate (character(len=length) :: actual_path)
-   call get_command_argument(1, actual_path)
+   call get_command_argument(1, actual_path(:))
    call get_command_argument(2, length=length)
    allocate (character(len=length) :: reference_path)
-   call get_command_argument(2, reference_path)
+   call get_command_argument(2, reference_path(:))
    call read_table(actual_path, header_a, a)
    call read_table(reference_path, header_r, r)
    if (header_a /= header_r) call fail('headers differ: '//header_a//' | '//header_r)
