@@ -21,7 +21,7 @@ module interphase_capi
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_BAD_TIME_INCREMENT, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_coverage
-   use interphase_params, only: law_params_type, from_props
+   use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update
    implicit none
@@ -123,6 +123,7 @@ contains
       end if
       n = ntens
       call from_props(props(1:nprops), params, code, message)
+      if (code == STATUS_OK) call refuse_umat_options(params, 'the C API', code, message)
       if (code /= STATUS_OK) then
          call finish()
          return

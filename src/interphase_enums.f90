@@ -51,5 +51,11 @@ module interphase_enums
    !> friction's coupling of the shear traction to s_N: symmetric and positive semi-definite
    !> (for hosts that assemble only a symmetric stiffness; Newton then converges linearly).
    integer, parameter, public :: STIFFNESS_FIXED_DAMAGE = 2
+   !> PROPS(nb + OPT_HOST) value, the default: Abaqus's conventions (SSE and SPD are the values
+   !> the UMAT returned last, kept by the host; PNEWDT arrives large).
+   integer, parameter, public :: HOST_ABAQUS = 0
+   !> PROPS(nb + OPT_HOST) value: CalculiX's conventions (SSE and SPD arrive uninitialised and
+   !> are not kept between calls; PNEWDT arrives as -1, and any value > 0 is a cut-back factor).
+   integer, parameter, public :: HOST_CALCULIX = 1
 
 end module interphase_enums

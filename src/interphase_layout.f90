@@ -9,14 +9,14 @@ module interphase_layout
       DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, &
       REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, &
-      STIFFNESS_FIXED_DAMAGE
+      STIFFNESS_FIXED_DAMAGE, HOST_ABAQUS, HOST_CALCULIX
    implicit none
    private
    public :: TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, &
       DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, &
       REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, &
-      STIFFNESS_FIXED_DAMAGE
+      STIFFNESS_FIXED_DAMAGE, HOST_ABAQUS, HOST_CALCULIX
 
    ! ---- PROPS (material constants, `*USER MATERIAL, CONSTANTS=...`) --------------------------
    !> Model selector: MODEL_SIMPLIFIED or MODEL_MICROMECHANICAL.
@@ -77,8 +77,26 @@ module interphase_layout
    !> default), its symmetric part (1), or the tangent at fixed damage without the friction's
    !> normal coupling (2, symmetric and positive semi-definite). The traction is the same.
    integer, parameter, public :: OPT_STIFFNESS = 4
+   !> Option offset: the thickness t (mm) of a thin continuum joint layer (the UMAT's layer
+   !> mode, docs/abaqus.md 'Thin continuum layers'): the UMAT reads STRAN and DSTRAN as strains
+   !> of a layer of thickness t and maps them to separations, s_N = t eps_nn and s_T = t gamma
+   !> (engineering shears); STRESS = the tractions, DDSDDE = t dT/ds, SSE and SPD per unit
+   !> volume of the layer. 0 (the default) is the cohesive element with constitutive
+   !> thickness 1: STRAN and DSTRAN are the separations. UMAT only.
+   integer, parameter, public :: OPT_LAYER_THICKNESS = 5
+   !> Option offset: the layer's normal axis, 1, 2 or 3, the direct strain component that is the
+   !> layer's through-thickness strain in a continuum element (NDI = 2 or 3); 0 (the default)
+   !> for a cohesive element (NDI = 1), whose components are normal first. UMAT only.
+   integer, parameter, public :: OPT_LAYER_NORMAL = 6
+   !> Option offset: the host's conventions (HOST_*): Abaqus (0, the default: SSE and SPD are
+   !> kept by the host between calls and accumulated) or CalculiX (1: SSE and SPD arrive
+   !> uninitialised and are not kept, so the UMAT neither reads nor writes them). UMAT only.
+   integer, parameter, public :: OPT_HOST = 7
    !> Number of option constants.
-   integer, parameter, public :: NPROPS_OPTIONS = 4
+   integer, parameter, public :: NPROPS_OPTIONS = 7
+   !> Admissible layer thicknesses: t = 0 or LAYER_THICKNESS_MIN <= t <= LAYER_THICKNESS_MAX (mm).
+   real(dp), parameter, public :: LAYER_THICKNESS_MIN = 1.0e-6_dp
+   real(dp), parameter, public :: LAYER_THICKNESS_MAX = 1.0e3_dp
    !> Admissible contact band widths: chi = 0 or CONTACT_BAND_MIN <= chi <= CONTACT_BAND_MAX (-).
    !> Below 0.1 the band's normal stiffness, ~ q max|W''|/(2 chi^2), could exceed the intact
    !> crack's (which the VUMAT's stable increment assumes), and its energy is far from convex.
@@ -112,7 +130,16 @@ module interphase_layout
          'must be 0 (no viscous regularisation) or finite in [1e-20, 1e20] s'), &
       option_spec_type('stiffness', OPTION_SELECTOR, real(STIFFNESS_CONSISTENT, dp), 0.0_dp, &
          real(STIFFNESS_FIXED_DAMAGE, dp), 'use 0 (the consistent tangent), 1 (its symmetric part) or 2 '// &
-         '(the tangent at fixed damage without the friction''s normal coupling)')]
+         '(the tangent at fixed damage without the friction''s normal coupling)'), &
+      option_spec_type('layer thickness t', OPTION_SWITCHED_RANGE, 0.0_dp, LAYER_THICKNESS_MIN, &
+         LAYER_THICKNESS_MAX, 'must be 0 (a cohesive element: STRAN is the separation) or finite in '// &
+         '[1e-6, 1e3] mm'), &
+      option_spec_type('layer normal axis', OPTION_SELECTOR, 0.0_dp, 0.0_dp, 3.0_dp, &
+         'use 0 (a cohesive element, normal first) or the axis 1, 2 or 3 of the layer''s normal '// &
+         'in a continuum element'), &
+      option_spec_type('host', OPTION_SELECTOR, real(HOST_ABAQUS, dp), 0.0_dp, real(HOST_CALCULIX, dp), &
+         'use 0 (Abaqus: the host keeps SSE and SPD) or 1 (CalculiX: SSE and SPD are neither read '// &
+         'nor written)')]
    !> The options' defaults, OPTION_SPECS%default as an array constant of its own (the update
    !> decodes PROPS at every call: a reference to a component of OPTION_SPECS there made the
    !> compiler build the whole table, strings included, each time).

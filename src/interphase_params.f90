@@ -9,7 +9,8 @@ module interphase_params
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
       PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, PROP_TABLE, NPROPS_MICROMECHANICAL, LFM_D0, &
       LFM_RCURVE, LFM_GC_I, LFM_GC_II, NPROPS_FRACTURE_EXTRA, OPT_GROWTH_SLIP, NPROPS_OPTIONS, &
-      OPT_CONTACT_BAND, OPT_VISCOSITY, OPT_STIFFNESS, OPTION_SPECS, OPTION_DEFAULTS, OPTION_SELECTOR
+      OPT_CONTACT_BAND, OPT_VISCOSITY, OPT_STIFFNESS, OPTION_SPECS, OPTION_DEFAULTS, OPTION_SELECTOR, &
+      OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, OPT_HOST
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_CONSTANT, RCURVE_EQUIVALENT, &
       RCURVE_TABULATED, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
@@ -19,7 +20,8 @@ module interphase_params
       STATUS_BAD_D0, STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION
    implicit none
    private
-   public :: law_params_type, from_props, params_from_values, set_fracture_params, set_options, to_props
+   public :: law_params_type, from_props, params_from_values, set_fracture_params, set_options, to_props, &
+      refuse_umat_options
 
    !> Admissible magnitudes of the dimensional PROPS (s0, sf in mm; K in MPa/mm; G_c in N/mm) and
    !> the largest friction coefficient: every product the update forms of up to eight such
@@ -71,6 +73,9 @@ module interphase_params
       real(dp) :: contact_band = 0.0_dp              !! option: contact band width chi (-), 0 = the paper's two-state law
       real(dp) :: viscosity = 0.0_dp                 !! option: viscosity eta of the damage (s), 0 = none
       integer :: stiffness = 0                       !! option: which stiffness DDSDDE is, STIFFNESS_*
+      real(dp) :: layer_thickness = 0.0_dp           !! UMAT option: thin-layer thickness t (mm), 0 = cohesive
+      integer :: layer_normal = 0                    !! UMAT option: the layer's normal axis (1-3), 0 = cohesive
+      integer :: host = 0                            !! UMAT option: the host's conventions, HOST_*
       real(dp) :: eta_n = 0.0_dp                     !! eta_N = s0_N/sf_N (-), eq 13
       real(dp) :: eta_t = 0.0_dp                     !! eta_T = s0_T/sf_T (-), eq 13
       real(dp) :: inv_s0_n = 0.0_dp                  !! 1/s0_N (1/mm), for the damage law
@@ -198,11 +203,44 @@ contains
             'the fracture law''s damage is a root of g(D) = 0 (docs/theory.md): set it to 0', status, message)
          return
       end if
-      params%growth_slip = nint(values(OPT_GROWTH_SLIP))
+      ! (the selectors hold exact small integers here: int, which compiles to one instruction,
+      ! where nint is a call of libm's lround)
+      params%growth_slip = int(values(OPT_GROWTH_SLIP))
       params%contact_band = values(OPT_CONTACT_BAND)
       params%viscosity = values(OPT_VISCOSITY)
-      params%stiffness = nint(values(OPT_STIFFNESS))
+      params%stiffness = int(values(OPT_STIFFNESS))
+      params%layer_thickness = values(OPT_LAYER_THICKNESS)
+      params%layer_normal = int(values(OPT_LAYER_NORMAL))
+      params%host = int(values(OPT_HOST))
    end subroutine set_options
+
+   !> Entry points that take separations (the VUMAT, the C API) refuse a material that sets the
+   !> UMAT's own options, the thin-layer mode (OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL) and the
+   !> host conventions (OPT_HOST), rather than ignoring them: STATUS_BAD_OPTION naming the first.
+   !> `entry` names the caller in the message.
+   pure subroutine refuse_umat_options(params, entry, status, message)
+      type(law_params_type), intent(in) :: params
+      character(len=*), intent(in) :: entry
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+      integer :: k, base
+      status = STATUS_OK
+      k = 0
+      if (params%layer_thickness > 0.0_dp) then
+         k = OPT_LAYER_THICKNESS
+      else if (params%layer_normal /= 0) then
+         k = OPT_LAYER_NORMAL
+      else if (params%host /= 0) then
+         k = OPT_HOST
+      end if
+      if (k == 0) return
+      base = merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, params%model == MODEL_MICROMECHANICAL)
+      if (params%damage_law == DAMAGE_FRACTURE) base = base + NPROPS_FRACTURE_EXTRA
+      status = STATUS_BAD_OPTION
+      write (message, '(a,i0,a,a,a,a,a)') 'PROPS(', base + k, ') ', trim(OPTION_SPECS(k)%symbol), &
+         ' is an option of the UMAT only (thin continuum layers, host conventions); ', entry, &
+         ' takes separations: leave it 0'
+   end subroutine refuse_umat_options
 
    !> The PROPS array (docs/abaqus.md) of a parameter set: the one encoder of PROPS, the inverse
    !> of `from_props` for every set it accepts. The option constants are written up to the last
@@ -236,6 +274,9 @@ contains
       values(OPT_CONTACT_BAND) = params%contact_band
       values(OPT_VISCOSITY) = params%viscosity
       values(OPT_STIFFNESS) = real(params%stiffness, dp)
+      values(OPT_LAYER_THICKNESS) = params%layer_thickness
+      values(OPT_LAYER_NORMAL) = real(params%layer_normal, dp)
+      values(OPT_HOST) = real(params%host, dp)
       nlast = 0
       do k = 1, NPROPS_OPTIONS
          if (.not. same_bits(values(k), OPTION_DEFAULTS(k))) nlast = k

@@ -11,7 +11,7 @@ module interphase_real_text
    implicit none
    private
 
-   public :: real_text, es_field
+   public :: real_text, es_field, es_fields
 
 contains
 
@@ -70,6 +70,20 @@ contains
          text = repeat(' ', len(text) - len(word))//word
       end if
    end function es_field
+
+   !> es_field of each value, one after the other.
+   pure function es_fields(values, width, decimals) result(text)
+      real(dp), intent(in) :: values(:)           !! the numbers
+      integer, intent(in) :: width                !! width of each field (characters), 1..60
+      integer, intent(in) :: decimals             !! digits after the point
+      character(len=:), allocatable :: text
+      integer :: i, w
+      w = max(1, min(60, width))
+      allocate (character(len=w*size(values)) :: text)
+      do i = 1, size(values)
+         text((i - 1)*w + 1:i*w) = es_field(values(i), w, decimals)
+      end do
+   end function es_fields
 
    !> NaN, Infinity or -Infinity.
    pure function non_finite_text(value) result(text)

@@ -2,7 +2,7 @@
 # Build interphase and run every test, with each supported compiler in turn:
 #  1. gfortran: a strict Debug build (-std=f2008 -Wall -Wextra -fcheck=all, warnings are errors)
 #     with the full ctest suite, then an optimised Release build (warnings are errors) with the
-#     suite except the slow RVE (FreeFEM) tests;
+#     suite except the slow RVE (FreeFEM) and CalculiX tests (CalculiX: gfortran only);
 #  2. LLVM flang 19 (flang-new-19, installed from Debian's flang-19 and libomp-19-dev when
 #     missing and possible): the same two builds and suites in BUILD_ROOT/flang-debug and
 #     BUILD_ROOT/flang-release (-std=f2018 -pedantic, warnings are errors).
@@ -22,12 +22,12 @@ suite() {
     dir="$root/$prefix${type,,}"
     echo "== $type build with $compiler in $dir"
     cmake -S "$here" -B "$dir" -DCMAKE_BUILD_TYPE=$type -DCMAKE_Fortran_COMPILER="$compiler" \
-      -DINTERPHASE_WERROR=ON >/dev/null
+      -DINTERPHASE_WERROR=ON -DINTERPHASE_CALCULIX_CACHE="$root/calculix" >/dev/null
     cmake --build "$dir" -j "$jobs"
     if [ "$type" = Debug ]; then
       ctest --test-dir "$dir" --output-on-failure -j "$jobs"
     else
-      ctest --test-dir "$dir" --output-on-failure -j "$jobs" -LE rve
+      ctest --test-dir "$dir" --output-on-failure -j "$jobs" -LE "rve|calculix"
     fi
   done
 }

@@ -1,27 +1,41 @@
-!> Abaqus/Standard UMAT for cohesive elements (RESPONSE=TRACTION SEPARATION, constitutive
-!> thickness 1): STRAN and DSTRAN are separations (mm), normal first, then the shear(s);
-!> STRESS are tractions (MPa); DDSDDE = d(traction)/d(separation) (MPa/mm), unsymmetric
-!> (use *USER MATERIAL, UNSYMM). PROPS and STATEV are documented in docs/abaqus.md.
+!> Abaqus/Standard UMAT, for two kinds of element (docs/abaqus.md):
+!> - cohesive elements (RESPONSE=TRACTION SEPARATION, constitutive thickness 1): STRAN and DSTRAN
+!>   are separations (mm), normal first, then the shear(s); STRESS are tractions (MPa); DDSDDE =
+!>   d(traction)/d(separation) (MPa/mm);
+!> - thin continuum joint layers (the layer mode: option constants layer thickness t and normal
+!>   axis; CPE4, C3D8, or cohesive elements with a continuum response): STRAN and DSTRAN are the
+!>   layer's strains, s_N = t eps_nn, s_T = t gamma (interphase_layer); STRESS holds the tractions
+!>   on the layer's plane and zero in-plane stress; DDSDDE = t dT/ds there, zero elsewhere.
+!> DDSDDE is unsymmetric (use *USER MATERIAL, UNSYMM), unless the stiffness option asks for a
+!> symmetric one (hosts that assemble only a symmetric stiffness, such as CalculiX). PROPS and
+!> STATEV are documented in docs/abaqus.md.
 !>
-!> This adapter only packs arguments and calls the pure kernel. On a failed update it lowers
-!> PNEWDT, reports through `interphase_host_message` and returns before touching STRESS,
-!> STATEV, DDSDDE, SSE or SPD. Setup errors (sizes, PROPS, data not loaded, a tabulated R-curve
-!> that does not cover D0 or the damage reached) and host inputs out of range (a NaN, an Inf or a
-!> magnitude beyond HOST_VALUE_MAX = 1e150 in the incoming STRESS, SSE or SPD) are reported as
-!> fatal, other failures as warnings (the increment is cut back). Thread-safe: no SAVE, COMMON or module data is written.
-!> SSE returns the stored energy and SPD accumulates the dissipated energy per unit area
-!> (N/mm): SPD += 1/2 (t_n + t).ds - (psi - psi_n), with psi_n the SSE passed in.
+!> This adapter only packs arguments and calls the pure kernel. On a failed update it asks for a
+!> cut-back through PNEWDT (0.25 unless the host already holds a smaller positive request: Abaqus
+!> passes PNEWDT large, CalculiX -1), reports through `interphase_host_message` and returns before
+!> touching STRESS, STATEV, DDSDDE, SSE or SPD. Setup errors (sizes, PROPS, data not loaded, a
+!> tabulated R-curve that does not cover D0 or the damage reached) and host inputs out of range (a
+!> NaN, an Inf or a magnitude beyond HOST_VALUE_MAX = 1e150 in the incoming STRESS, SSE or SPD) are
+!> reported as fatal, other failures as warnings (the increment is cut back). Thread-safe: no
+!> SAVE, COMMON or module data is written.
+!> SSE returns the stored energy and SPD accumulates the dissipated energy, per unit area of a
+!> cohesive element (N/mm) or per unit volume of a layer (N/mm^2 = MPa):
+!> SPD += 1/2 (sigma_n + sigma).deps - (psi - psi_n), with psi_n the SSE passed in. With the host
+!> option CalculiX (which neither initialises nor keeps them) SSE and SPD are neither read nor
+!> written.
 subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, &
       stran, dstran, time, dtime, temp, dtemp, predef, dpred, cmname, ndi, nshr, ntens, &
       nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, &
       layer, kspt, jstep, kinc)
    use interphase_kinds, only: dp
    use interphase_finite, only: is_finite, is_within
-   use interphase_real_text, only: real_text, es_field
-   use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
+   use interphase_real_text, only: real_text, es_fields
+   use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
       STATUS_BAD_TIME_INCREMENT, status_message
    use interphase_params, only: law_params_type, from_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX
+   use interphase_layer, only: layer_map_type, layer_map
+   use interphase_layout, only: HOST_CALCULIX
    use interphase_state, only: interface_state_type, state_unpack, state_pack
    use interphase_kernel, only: interface_update
    use interphase_provider, only: check_run_time_data
@@ -42,30 +56,34 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    real(dp), parameter :: PNEWDT_CUTBACK = 0.25_dp
 
    type(law_params_type) :: params
+   type(layer_map_type) :: map
    type(interface_state_type) :: old, new
-   real(dp) :: s(3), traction(3), tangent(3, 3), psi
-   integer :: status
+   real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6)
+   integer :: status, nsep, i, j
+   logical :: host_energies
    character(len=MESSAGE_LEN) :: message
-   character(len=33) :: stress_text
+   character(len=66) :: stress_text
 
-   if ((ntens /= 2 .and. ntens /= 3) .or. ndi /= 1 .or. nshr /= ntens - 1) then
-      write (message, '(a,i0,a,i0,a,i0,a)') 'NTENS = ', ntens, ', NDI = ', ndi, ', NSHR = ', nshr, &
-         ': interphase needs a cohesive element with NDI = 1 and NSHR = 1 (2-D) or 2 (3-D)'
-      call fail(STATUS_BAD_NTENS, SEVERITY_FATAL)
-      return
-   end if
    call from_props(props, params, status, message)
    if (status /= STATUS_OK) then
       call fail(status, SEVERITY_FATAL)
       return
    end if
+   ! which components carry the separation: a cohesive element's, or a thin layer's
+   call layer_map(params, ndi, nshr, ntens, map, status, message)
+   if (status /= STATUS_OK) then
+      call fail(status, SEVERITY_FATAL)
+      return
+   end if
+   nsep = map%nsep
+   host_energies = params%host /= HOST_CALCULIX
    ! a custom table or R-curve that was not loaded at start-up: no smaller increment can help
    call check_run_time_data(params, status, message)
    if (status /= STATUS_OK) then
       call fail(status, SEVERITY_FATAL)
       return
    end if
-   call state_unpack(statev, ntens, old, status, message, viscous=params%viscosity > 0.0_dp)
+   call state_unpack(statev, nsep, old, status, message, viscous=params%viscosity > 0.0_dp)
    if (status /= STATUS_OK) then
       call fail(status, SEVERITY_FATAL)
       return
@@ -76,30 +94,43 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    ! increment may help), STRESS, SSE and SPD within HOST_VALUE_MAX (the values the UMAT
    ! returned last: fatal otherwise)
    if (.not. (all(is_within(stran, HOST_INCREMENT_MAX)) .and. all(is_within(dstran, HOST_INCREMENT_MAX)))) then
-      ! (es_field: an infinity reads Infinity with every compiler)
-      message = 'STRAN (mm) '//es_field(stran(1), 12, 4)//es_field(stran(2), 12, 4)
-      if (ntens == 3) message = trim(message)//es_field(stran(3), 12, 4)
-      stress_text = es_field(dstran(1), 11, 3)//es_field(dstran(2), 11, 3)
-      if (ntens == 3) stress_text = trim(stress_text)//es_field(dstran(3), 11, 3)
+      ! (es_fields: an infinity reads Infinity with every compiler)
+      message = 'STRAN '//es_fields(stran, 12, 4)
+      stress_text = es_fields(dstran, 11, 3)
       message = trim(message)//', DSTRAN'//trim(stress_text)
       call fail(merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
          all(is_finite(stran)) .and. all(is_finite(dstran))), SEVERITY_WARNING)
       return
    end if
-   if (.not. (all(is_within(stress, HOST_VALUE_MAX)) .and. is_within(sse, HOST_VALUE_MAX) .and. &
-         is_within(spd, HOST_VALUE_MAX))) then
-      ! (es_field: an infinity reads Infinity with every compiler)
-      stress_text = es_field(stress(1), 11, 3)//es_field(stress(2), 11, 3)
-      if (ntens == 3) stress_text = trim(stress_text)//es_field(stress(3), 11, 3)
-      write (message, '(a,a,a,a,a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), ', SSE ', &
-         es_field(sse, 11, 3), ', SPD ', es_field(spd, 11, 3), ' (N/mm): the host must pass finite values within ', HOST_VALUE_MAX, &
-         ' (those the UMAT returned last)'
+   if (.not. all(is_within(stress, HOST_VALUE_MAX))) then
+      stress_text = es_fields(stress, 11, 3)
+      write (message, '(a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), &
+         ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned last)'
       call fail(STATUS_BAD_HOST_INPUT, SEVERITY_FATAL)
       return
    end if
-   s(1:ntens) = stran + dstran
-   call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
-      new, psi, status, dtime)
+   if (host_energies) then
+      if (.not. (is_within(sse, HOST_VALUE_MAX) .and. is_within(spd, HOST_VALUE_MAX))) then
+         write (message, '(a,a,a,a,a,es9.1e3,a)') 'incoming SSE ', es_fields([sse], 11, 3), ', SPD ', &
+            es_fields([spd], 11, 3), &
+            ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned '// &
+            'last; a host that does not keep them, such as CalculiX, needs the host option 1)'
+         call fail(STATUS_BAD_HOST_INPUT, SEVERITY_FATAL)
+         return
+      end if
+   end if
+   if (map%identity) then
+      ! a cohesive element: the separations themselves (NTENS = 2 or 3)
+      s(1:ntens) = stran + dstran
+      call interface_update(params, old, s(1:ntens), traction(1:ntens), tangent(1:ntens, 1:ntens), &
+         new, psi, status, dtime)
+   else
+      do i = 1, nsep
+         s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
+      end do
+      call interface_update(params, old, s(1:nsep), traction(1:nsep), tangent(1:nsep, 1:nsep), &
+         new, psi, status, dtime)
+   end if
    if (status == STATUS_BAD_TIME_INCREMENT) then
       write (message, '(a,es12.4,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
       call fail(status, SEVERITY_FATAL)
@@ -107,30 +138,52 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
       ! the R-curve file does not reach the damage this point needs: a setup error
       write (message, '(a,a,a,a,3es12.4)', iostat=status) rcurve_coverage(), '; the crack grows beyond it from D = ', &
-         real_text(old%d, 6), ' at separation (mm) ', s(1:ntens)
+         real_text(old%d, 6), ' at separation (mm) ', s(1:nsep)
       call fail(STATUS_RCURVE_OUT_OF_RANGE, SEVERITY_FATAL)
       return
    else if (status /= STATUS_OK) then
-      write (message, '(a,3es12.4)') 'update failed at separation (mm) ', s(1:ntens)
+      write (message, '(a,3es12.4)') 'update failed at separation (mm) ', s(1:nsep)
       call fail(status, SEVERITY_WARNING)
       return
    end if
 
    ! every term bounded (|STRESS|, |SSE|, |SPD| <= HOST_VALUE_MAX, |DSTRAN| <= HOST_INCREMENT_MAX,
-   ! the kernel's outputs by the admissible ranges): no overflow
-   spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
-   sse = psi
-   stress = traction(1:ntens)
-   ddsdde = tangent(1:ntens, 1:ntens)
+   ! the kernel's outputs by the admissible ranges, t >= 1e-6 mm): no overflow
+   if (map%identity) then
+      if (host_energies) then
+         spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
+         sse = psi
+      end if
+      stress = traction(1:ntens)
+      ddsdde = tangent(1:ntens, 1:ntens)
+   else
+      ! the layer: tractions on its plane, no in-plane stress; energies per unit volume
+      sigma(1:ntens) = 0.0_dp
+      sigma(map%component(1:nsep)) = traction(1:nsep)
+      if (host_energies) then
+         spd = spd + 0.5_dp*sum((stress + sigma(1:ntens))*dstran) - (psi/map%thickness - sse)
+         sse = psi/map%thickness
+      end if
+      stress = sigma(1:ntens)
+      ddsdde = 0.0_dp
+      do j = 1, nsep
+         do i = 1, nsep
+            ddsdde(map%component(i), map%component(j)) = map%thickness*tangent(i, j)
+         end do
+      end do
+   end if
    call state_pack(new, statev, viscous=params%viscosity > 0.0_dp)
 
 contains
 
-   !> Lower PNEWDT and pass the message, with where it happened, to the host.
+   !> Ask for a cut-back and pass the message, with where it happened, to the host. Abaqus
+   !> passes PNEWDT large and keeps the smallest value the points return; CalculiX passes -1 (no
+   !> request) and takes any value > 0 as the factor, the smallest over the points: so the request
+   !> is PNEWDT_CUTBACK unless a smaller positive one is there already.
    subroutine fail(code, severity)
       integer, intent(in) :: code, severity
       character(len=2*MESSAGE_LEN) :: full
-      pnewdt = min(pnewdt, PNEWDT_CUTBACK)
+      if (.not. (pnewdt > 0.0_dp .and. pnewdt <= PNEWDT_CUTBACK)) pnewdt = PNEWDT_CUTBACK
       write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
          ': ', status_message(code), ': ', trim(message)
       call interphase_host_message(severity, trim(full))

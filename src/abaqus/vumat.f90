@@ -46,7 +46,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_finite, only: is_finite, is_within
    use interphase_real_text, only: real_text
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
-   use interphase_params, only: law_params_type, from_props
+   use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states, state_slots
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
@@ -127,6 +127,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          exit update
       end if
       call from_props(props, params, status, message)
+      if (status == STATUS_OK) call refuse_umat_options(params, 'the VUMAT', status, message)
       if (status /= STATUS_OK) then
          fatal_code = status
          exit update
