@@ -7,7 +7,8 @@
 !> the leading zero always and an infinity always as Infinity (docs/compilers.md).
 module interphase_real_text
    use interphase_kinds, only: dp
-   use interphase_finite, only: is_finite
+   use, intrinsic :: iso_fortran_env, only: int64
+   use interphase_finite, only: is_finite, EXPONENT_MASK, MAGNITUDE_MASK
    implicit none
    private
 
@@ -89,9 +90,10 @@ contains
    pure function non_finite_text(value) result(text)
       real(dp), intent(in) :: value               !! a value that is not finite
       character(len=:), allocatable :: text
-      if (value /= value) then
+      ! (bit tests: a NaN's magnitude bits lie above the exponent mask, an infinity's equal it)
+      if (iand(transfer(value, 0_int64), MAGNITUDE_MASK) > EXPONENT_MASK) then
          text = 'NaN'
-      else if (value > 0.0_dp) then
+      else if (transfer(value, 0_int64) >= 0_int64) then
          text = 'Infinity'
       else
          text = '-Infinity'

@@ -58,7 +58,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    type(law_params_type) :: params
    type(layer_map_type) :: map
    type(interface_state_type) :: old, new
-   real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6)
+   real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6), work
    integer :: status, nsep, i, j
    logical :: host_energies
    character(len=MESSAGE_LEN) :: message
@@ -151,7 +151,13 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    ! the kernel's outputs by the admissible ranges, t >= 1e-6 mm): no overflow
    if (map%identity) then
       if (host_energies) then
-         spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
+         ! the work in element order, not with SUM (flang's SUM is compensated: the zeros of a
+         ! layer's in-plane components would change its last bit, docs/compilers.md)
+         work = 0.0_dp
+         do i = 1, ntens
+            work = work + (stress(i) + traction(i))*dstran(i)
+         end do
+         spd = spd + 0.5_dp*work - (psi - sse)
          sse = psi
       end if
       stress = traction(1:ntens)
@@ -161,7 +167,11 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       sigma(1:ntens) = 0.0_dp
       sigma(map%component(1:nsep)) = traction(1:nsep)
       if (host_energies) then
-         spd = spd + 0.5_dp*sum((stress + sigma(1:ntens))*dstran) - (psi/map%thickness - sse)
+         work = 0.0_dp
+         do i = 1, ntens
+            work = work + (stress(i) + sigma(i))*dstran(i)
+         end do
+         spd = spd + 0.5_dp*work - (psi/map%thickness - sse)
          sse = psi/map%thickness
       end if
       stress = sigma(1:ntens)
