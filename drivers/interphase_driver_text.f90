@@ -9,7 +9,8 @@ module interphase_driver_text
    implicit none
    private
    public :: int_to_string, real_to_string, real_to_csv, to_lower
-   public :: text_file_type, open_line_file, read_line, close_text_file, split_words, directory_of, base_name, stem_of, join_path, shell_quote
+   public :: text_file_type, open_line_file, read_line, close_text_file
+   public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote
 
 contains
 
