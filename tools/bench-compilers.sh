@@ -4,6 +4,10 @@
 #
 #   tools/bench-compilers.sh [GFORTRAN_BUILD FLANG_BUILD]   (default: build/release build/flang-release)
 #
+# Sizes (smaller than the benchmarks' defaults: the flang build is far slower, docs/compilers.md):
+# UMAT_CALLS calls per run and UMAT_RUNS runs (default 120000 and 3), VUMAT_POINTS points
+# (default 4096), USER_FILE_FLAGS for flang's one-file source (default one set).
+#
 # Both build directories must be configured and built (tools/run-tests.sh makes them). Runs, in
 # turn, each build's interphase-bench (UMAT, best of 5 per case) twice, alternating the builds;
 # each build's interphase-bench-vumat (VUMAT, best of 5 per case) twice, alternating; then the
@@ -28,17 +32,18 @@ echo "== flang build:    $llvm ($(compiler_of "$llvm"))"
 for round in 1 2; do
   for dir in "$gnu" "$llvm"; do
     echo "== UMAT, round $round: $dir"
-    "$dir/drivers/interphase-bench"
+    "$dir/drivers/interphase-bench" "${UMAT_CALLS:-120000}" "${UMAT_RUNS:-3}"
   done
 done
 for round in 1 2; do
   for dir in "$gnu" "$llvm"; do
     echo "== VUMAT, round $round: $dir"
-    "$dir/tests/threads/interphase-bench-vumat"
+    "$dir/tests/threads/interphase-bench-vumat" "${VUMAT_POINTS:-4096}"
   done
 done
 echo "== one-file Abaqus/Explicit source, gfortran"
 FC=$(compiler_of "$gnu") bash "$here/examples/abaqus/bench-user-file.sh" --build-dir "$gnu"
 echo "== one-file Abaqus/Explicit source, flang"
-FC=$(compiler_of "$llvm") bash "$here/examples/abaqus/bench-user-file.sh" --build-dir "$llvm"
+FC=$(compiler_of "$llvm") bash "$here/examples/abaqus/bench-user-file.sh" --build-dir "$llvm" \
+  "${USER_FILE_FLAGS:--O3 -march=native -ffp-contract=off}"
 echo "== load at the end: $(cut -d' ' -f1-3 /proc/loadavg)"
