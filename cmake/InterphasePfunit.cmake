@@ -133,6 +133,10 @@ end program funit_driver
   set_target_properties(${test_name} PROPERTIES Fortran_MODULE_DIRECTORY "${module_dir}")
   target_include_directories(${test_name} PRIVATE "${module_dir}")
   target_compile_options(${test_name} PRIVATE ${INTERPHASE_PFUNIT_CHECK_FLAGS})
+  # warnings are errors in the test code too when they are in the library's (INTERPHASE_WERROR)
+  if(INTERPHASE_WERROR AND CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")
+    target_compile_options(${test_name} PRIVATE -Werror)
+  endif()
   # Plain signature, as pFUnit's add_pfunit_ctest: callers may add libraries the same way.
   target_link_libraries(${test_name} pfunit_lite_funit ${PF_LINK_LIBRARIES})
 

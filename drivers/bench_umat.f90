@@ -16,6 +16,7 @@ program bench_umat
       RCURVE_EQUIVALENT, DAMAGE_DISPLACEMENT
    use interphase_params, only: law_params_type, to_props
    use interphase_abaqus_interfaces, only: umat
+   use interphase_driver_version, only: INTERPHASE_VERSION
    implicit none
 
    !> Number of history segments of the mixed-mode history.
@@ -41,6 +42,16 @@ program bench_umat
    runs = 5
    if (command_argument_count() >= 1) then
       call get_command_argument(1, argument)
+      if (argument == '-h' .or. argument == '--help') then
+         write (*, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS]]', &
+            '       interphase-bench --help | --version', &
+            '  ns per umat call over the paper''s mixed history, 2-D and 3-D, both models; build it', &
+            '  in a Release tree. Figures and commands: docs/performance.md.'
+         stop
+      else if (argument == '--version') then
+         write (*, '(a)') 'interphase-bench (interphase) '//INTERPHASE_VERSION
+         stop
+      end if
       calls_per_run = parse_positive(argument, 'CALLS_PER_RUN')
    end if
    if (command_argument_count() >= 2) then

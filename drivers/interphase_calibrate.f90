@@ -21,7 +21,7 @@ program interphase_calibrate
    use interphase_driver_case, only: case_type, read_case, load_start_up_data
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
    use interphase_driver_text, only: int_to_string
-   use interphase_driver_cli, only: get_argument
+   use interphase_driver_cli, only: get_argument, exit_program, print_version
    implicit none
 
    type(case_type) :: run
@@ -39,6 +39,12 @@ program interphase_calibrate
       i = i + 1
       call get_argument(i, argument)
       select case (argument)
+      case ('-h', '--help')
+         call print_usage(output_unit)
+         call exit_program(0)
+      case ('--version')
+         call print_version('interphase-calibrate')
+         call exit_program(0)
       case ('--increments')
          i = i + 1
          call get_argument(i, argument)
@@ -53,7 +59,11 @@ program interphase_calibrate
          case_path = argument
       end select
    end do
-   if (len(case_path) == 0) call fail('usage: interphase-calibrate CASE.nml [--increments N] [--write FILE.nml]')
+   if (len(case_path) == 0) then
+      write (error_unit, '(a)') 'interphase-calibrate: error: no case file given'
+      call print_usage(error_unit)
+      call exit_program(1)
+   end if
 
    call read_case(case_path, run, ok, message)
    if (.not. ok) call fail(message)
@@ -135,7 +145,20 @@ contains
    subroutine fail(text)
       character(len=*), intent(in) :: text
       write (error_unit, '(a)') 'interphase-calibrate: error: '//text
-      stop 1
+      call exit_program(1)
    end subroutine fail
+
+   !> How to call the program.
+   subroutine print_usage(unit)
+      integer, intent(in) :: unit                 !! where to print
+      write (unit, '(a)') 'usage: interphase-calibrate MICRO_CASE.nml [--increments N] [--write SIMPLIFIED.nml]', &
+         '       interphase-calibrate --help | --version', &
+         '  Runs the monotonic mode-I and mode-II tests of a micromechanical case to full damage and', &
+         '  prints K_N, K_T, G_I, G_II, the peaks and the simplified model''s s0_N, s0_T with the same', &
+         '  fracture energies (the paper''s section 5.2); --write saves that simplified &material.', &
+         '  --increments N: steps per test (default 20000, at least 10).', &
+         '  MICRO_CASE.nml: an interphase-point case (its &material is used), e.g.', &
+         '  share/interphase/cases/micro/h1I.nml; documented in drivers/README.md.'
+   end subroutine print_usage
 
 end program interphase_calibrate

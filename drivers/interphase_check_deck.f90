@@ -23,7 +23,7 @@ program interphase_check_deck
       GROWTH_FIXED_LAMBDA
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props
-   use interphase_driver_cli, only: get_argument
+   use interphase_driver_cli, only: get_argument, exit_program, print_version
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
       tried_path, clip_text, TEXT_LINE, TEXT_END
    use interphase_driver_text, only: int_to_string, real_to_string
@@ -62,21 +62,51 @@ program interphase_check_deck
    integer :: iarg, nfail, status
 
    if (command_argument_count() < 1) then
-      write (error_unit, '(a)') 'interphase-check-deck: usage: interphase-check-deck deck.inp [more.inp ...]'
-      error stop 2
+      write (error_unit, '(a)') 'interphase-check-deck: error: no deck given'
+      call print_usage(error_unit)
+      call exit_program(2)
    end if
+   ! options first: --help and --version answer alone, anything else starting with '-' is refused
+   do iarg = 1, command_argument_count()
+      call get_argument(iarg, path)
+      if (path == '-h' .or. path == '--help') then
+         call print_usage(output_unit)
+         call exit_program(0)
+      else if (path == '--version') then
+         call print_version('interphase-check-deck')
+         call exit_program(0)
+      else if (len(path) > 0) then
+         if (path(1:1) == '-') then
+            write (error_unit, '(a)') 'interphase-check-deck: error: unknown option '//path
+            call print_usage(error_unit)
+            call exit_program(2)
+         end if
+      end if
+   end do
    nfail = 0
    do iarg = 1, command_argument_count()
       call get_argument(iarg, path)
       call check_deck(path, nfail, status)
-      if (status /= 0) error stop 2
+      if (status /= 0) call exit_program(2)
    end do
    if (nfail > 0) then
-      write (error_unit, '(a,i0,a)') 'interphase-check-deck: ', nfail, ' check(s) failed'
-      error stop 1
+      write (output_unit, '(a,i0,a)') 'interphase-check-deck: ', nfail, ' check(s) failed'
+      call exit_program(1)
    end if
 
 contains
+
+   !> How to call the program.
+   subroutine print_usage(unit)
+      integer, intent(in) :: unit                 !! where to print
+      write (unit, '(a)') 'usage: interphase-check-deck DECK.inp [MORE.inp ...]', &
+         '       interphase-check-deck --help | --version', &
+         '  Checks every *COHESIVE SECTION of an Abaqus deck that uses interphase: RESPONSE, THICKNESS,', &
+         '  *USER MATERIAL constants decoded as interphase PROPS, *DEPVAR, UNSYMM, *DENSITY (Explicit).', &
+         '  *INCLUDE files are not read (each is named: check it on its own).', &
+         '  Exit status: 0 all checks pass, 1 a check failed, 2 a file cannot be read.', &
+         '  Documented in drivers/README.md and docs/abaqus.md.'
+   end subroutine print_usage
 
    !> Read one deck and check its cohesive sections; nfail counts the failed checks.
    subroutine check_deck(path, nfail, status)
@@ -162,6 +192,10 @@ contains
                end if
             end select
             select case (trim(keyword))
+            case ('INCLUDE')
+               write (output_unit, '(a)') path//':'//int_to_string(lineno)//': note: *INCLUDE, INPUT='// &
+                  trim(parameter_value(line, 'INPUT'))//' is not read: what it holds is not checked '// &
+                  '(run interphase-check-deck on it too)'
             case ('USERMATERIAL')
                if (current > 0) then
                   materials(current)%user_line = lineno

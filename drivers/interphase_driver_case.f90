@@ -19,8 +19,8 @@ module interphase_driver_case
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, &
       GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE
-   use interphase_params, only: law_params_type, to_props
-   use interphase_driver_text, only: int_to_string, to_lower, directory_of, stem_of, join_path
+   use interphase_params, only: law_params_type, to_props, from_props
+   use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, stem_of, join_path
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
@@ -30,7 +30,8 @@ module interphase_driver_case
    implicit none
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, &
-      load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset, precheck_case_file, material_entry_kinds
+      load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset, precheck_case_file, material_entry_kinds, &
+      material_summary
 
    !> Length of the character entries of the namelists (model names, paths).
    integer, parameter :: ENTRY_LEN = 1024
@@ -38,6 +39,12 @@ module interphase_driver_case
    real(dp), parameter :: UNSET_REAL = -huge(1.0_dp)
    !> Marks an integer entry the case file did not set.
    integer, parameter :: UNSET_INTEGER = -huge(1)
+   !> Default of `traction_tolerance` (MPa): a few units in the last place of tractions of order
+   !> 1 MPa, so that an imposed traction is met to round-off.
+   real(dp), parameter, public :: DEFAULT_TRACTION_TOLERANCE = 1.0e-12_dp
+   !> Default of `tangent_step` (mm): small against s0 (4.4e-4 mm in the paper's data), large
+   !> against the round-off of the separation.
+   real(dp), parameter, public :: DEFAULT_TANGENT_STEP = 1.0e-8_dp
 
    !> The entries of a material group (`&material` of interphase-point, `&joint` of
    !> interphase-fe2d) as read, before `material_props` checks them and packs PROPS.
@@ -89,13 +96,25 @@ module interphase_driver_case
       !> Tabulated R-curve of the fracture-mechanics law, resolved against the case file's
       !> directory; empty when not used.
       character(len=:), allocatable :: rcurve_path
+      !> Mixed control: an increment has converged when every traction-controlled component is
+      !> within this of its imposed value (MPa).
+      real(dp) :: traction_tolerance = DEFAULT_TRACTION_TOLERANCE
+      !> Write every k-th converged step (and the end of every history segment).
+      integer :: output_every = 1
+      !> Tangent check: the largest relative error of DDSDDE against the central finite
+      !> difference allowed (0: no check).
+      real(dp) :: tangent_check = 0.0_dp
+      !> Tangent check: the finite-difference step on each separation component (mm).
+      real(dp) :: tangent_step = DEFAULT_TANGENT_STEP
    end type case_type
 
    !> The entries of interphase-point's `&loading` group and their kinds (checked before the
    !> namelist read, with those of `material_entry_kinds('material')`).
-   type(entry_kind_type), parameter :: LOADING_ENTRIES(4) = [ &
+   type(entry_kind_type), parameter :: LOADING_ENTRIES(8) = [ &
       entry_kind_type('loading.history', KIND_STRING), entry_kind_type('loading.output', KIND_STRING), &
-      entry_kind_type('loading.increments', KIND_INTEGER), entry_kind_type('loading.plot', KIND_LOGICAL)]
+      entry_kind_type('loading.increments', KIND_INTEGER), entry_kind_type('loading.plot', KIND_LOGICAL), &
+      entry_kind_type('loading.traction_tolerance', KIND_REAL), entry_kind_type('loading.output_every', KIND_INTEGER), &
+      entry_kind_type('loading.tangent_check', KIND_REAL), entry_kind_type('loading.tangent_step', KIND_REAL)]
 
 contains
 
@@ -427,9 +446,11 @@ contains
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       character(len=ENTRY_LEN) :: history, output
-      integer :: increments
+      integer :: increments, output_every
       logical :: plot
-      namelist /loading/ history, increments, output, plot
+      real(dp) :: traction_tolerance, tangent_check, tangent_step
+      namelist /loading/ history, increments, output, plot, traction_tolerance, output_every, tangent_check, &
+         tangent_step
       character(len=:), allocatable :: missing, where
       integer :: ios
       character(len=512) :: iomsg
@@ -440,6 +461,10 @@ contains
       output = ''
       increments = UNSET_INTEGER
       plot = .true.
+      traction_tolerance = DEFAULT_TRACTION_TOLERANCE
+      output_every = 1
+      tangent_check = 0.0_dp
+      tangent_step = DEFAULT_TANGENT_STEP
       read (unit, nml=loading, iostat=ios, iomsg=iomsg)
       if (ios == iostat_end) then
          message = where//'group not found (expected "&loading ... /")'
@@ -466,12 +491,100 @@ contains
          return
       end if
 
+      if (.not. (traction_tolerance > 0.0_dp .and. ieee_is_finite(traction_tolerance))) then
+         message = where//'traction_tolerance must be a finite number > 0 (MPa), got '//real_to_string(traction_tolerance)
+         return
+      end if
+      if (output_every < 1) then
+         message = where//'output_every must be at least 1, got '//int_to_string(output_every)
+         return
+      end if
+      if (.not. (tangent_check >= 0.0_dp .and. ieee_is_finite(tangent_check))) then
+         message = where//'tangent_check must be a finite number >= 0 (0: no check), got '//real_to_string(tangent_check)
+         return
+      end if
+      if (.not. (tangent_step > 0.0_dp .and. ieee_is_finite(tangent_step))) then
+         message = where//'tangent_step must be a finite number > 0 (mm), got '//real_to_string(tangent_step)
+         return
+      end if
+      run%traction_tolerance = traction_tolerance
+      run%output_every = output_every
+      run%tangent_check = tangent_check
+      run%tangent_step = tangent_step
       run%history_path = join_path(directory_of(run%path), trim(adjustl(history)))
       run%output = trim(adjustl(output))
       run%increments = increments
       run%plot = plot
       ok = .true.
    end subroutine read_loading
+
+   !> One line naming the material of PROPS for consoles and plot titles: model, damage law and
+   !> key parameters, e.g. 'simplified model, displacement law: mu = 0.75, s0_N = 0.00044 mm,
+   !> ..., K_N = 482.7 MPa/mm'. PROPS that do not decode give the model code only.
+   function material_summary(props) result(text)
+      real(dp), intent(in) :: props(:)            !! PROPS (interphase_layout)
+      character(len=:), allocatable :: text
+      type(law_params_type) :: p
+      integer :: status
+      character(len=MESSAGE_LEN) :: why
+
+      call from_props(props, p, status, why)
+      if (status /= STATUS_OK) then
+         text = 'PROPS that do not decode ('//trim(why)//')'
+         return
+      end if
+      if (p%model == MODEL_SIMPLIFIED) then
+         text = 'simplified model'
+      else
+         text = 'micromechanical model'
+         if (p%table == TABLE_CUSTOM_CODE) then
+            text = text//' (custom RVE table)'
+         else
+            text = text//' (built-in RVE table)'
+         end if
+      end if
+      if (p%damage_law == DAMAGE_FRACTURE) then
+         text = text//', fracture law'
+      else
+         text = text//', displacement law'
+      end if
+      text = text//': mu = '//short(p%mu)//', s0_N = '//short(p%s0_n)//', sf_N = '//short(p%sf_n)// &
+         ', s0_T = '//short(p%s0_t)//', sf_T = '//short(p%sf_t)//' mm'
+      if (p%model == MODEL_SIMPLIFIED) text = text//', K_N = '//short(p%k_n)//', K_T = '//short(p%k_t)//' MPa/mm'
+      if (p%damage_law == DAMAGE_FRACTURE) text = text//', D0 = '//short(p%d0)
+      if (p%viscosity > 0.0_dp) text = text//', eta = '//short(p%viscosity)//' s'
+      if (p%contact_band > 0.0_dp) text = text//', chi = '//short(p%contact_band)
+   contains
+      !> Four significant digits, plain for 1e-5 <= |value| < 1e6 (0.00044, 482.7), else 1.234E-07.
+      function short(value) result(t)
+         real(dp), intent(in) :: value
+         character(len=:), allocatable :: t
+         character(len=32) :: buffer
+         character(len=16) :: form
+         integer :: decimals
+         if (abs(value) >= 1.0e-5_dp .and. abs(value) < 1.0e6_dp) then
+            decimals = max(0, 3 - floor(log10(abs(value))))
+            write (form, '(a,i0,a)') '(f0.', decimals, ')'
+            write (buffer, form) value
+            t = trim(adjustl(buffer))
+            if (index(t, '.') > 0) then
+               do while (t(len(t):len(t)) == '0')
+                  t = t(:len(t) - 1)
+               end do
+               if (t(len(t):len(t)) == '.') t = t(:len(t) - 1)
+            end if
+            if (t(1:1) == '.') t = '0'//t
+            if (len(t) > 1) then
+               if (t(1:2) == '-.') t = '-0'//t(2:)
+            end if
+         else if (.not. abs(value) > 0.0_dp) then
+            t = '0'
+         else
+            write (buffer, '(es10.3)') value
+            t = trim(adjustl(buffer))
+         end if
+      end function short
+   end function material_summary
 
    !> True when a real entry still holds UNSET_REAL (a NaN from the file is not "unset").
    pure logical function is_unset(value)

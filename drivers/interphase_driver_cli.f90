@@ -2,18 +2,40 @@
 !> `interphase-calibrate`): arguments of any length, the common `CASE.nml [--output-dir DIR]
 !> [--no-plot]` form, creating an output folder, and running gnuplot when it is there.
 module interphase_driver_cli
+   use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    use interphase_driver_text, only: int_to_string, shell_quote
+   use interphase_driver_version, only: INTERPHASE_VERSION
    implicit none
    private
    public :: run_arguments_type, parse_run_arguments, get_argument, make_directory, gnuplot_available, &
-      run_gnuplot
+      run_gnuplot, exit_program, rename_file, remove_file, file_exists, print_version
 
-   !> `PROGRAM CASE.nml [--output-dir DIR] [--no-plot]` (or `-h`/`--help`).
+   interface
+      !> C's exit(): ends the program with a status and no "STOP" line or backtrace.
+      subroutine c_exit(status) bind(c, name='exit')
+         import :: c_int
+         integer(c_int), value :: status
+      end subroutine c_exit
+      !> C's rename(): atomic within one file system.
+      integer(c_int) function c_rename(from, to) bind(c, name='rename')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: from(*), to(*)
+      end function c_rename
+      !> C's remove().
+      integer(c_int) function c_remove(path) bind(c, name='remove')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+      end function c_remove
+   end interface
+
+   !> `PROGRAM CASE.nml [--output-dir DIR] [--no-plot]` (or `-h`/`--help`, `--version`).
    type :: run_arguments_type
       character(len=:), allocatable :: case_path     !! the case file
       character(len=:), allocatable :: output_dir    !! '' = current directory
       logical :: no_plot = .false.                   !! --no-plot given
       logical :: help = .false.                      !! -h or --help given
+      logical :: version = .false.                   !! --version given
    end type run_arguments_type
 
 contains
@@ -38,6 +60,10 @@ contains
          select case (argument)
          case ('-h', '--help')
             args%help = .true.
+            ok = .true.
+            return
+         case ('--version')
+            args%version = .true.
             ok = .true.
             return
          case ('--no-plot')
@@ -145,5 +171,43 @@ contains
          ok = .true.
       end if
    end subroutine run_gnuplot
+
+   !> End the program with exit status `status`, after flushing standard output and error,
+   !> without the "STOP n" line of Fortran's stop.
+   subroutine exit_program(status)
+      integer, intent(in) :: status               !! exit status
+      flush (output_unit)
+      flush (error_unit)
+      call c_exit(int(status, c_int))
+   end subroutine exit_program
+
+   !> Rename (move) a file, replacing `to` if it exists.
+   subroutine rename_file(from, to, ok, message)
+      character(len=*), intent(in) :: from, to    !! paths
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+      ok = c_rename(from//c_null_char, to//c_null_char) == 0
+      message = ''
+      if (.not. ok) message = 'cannot rename '//from//' to '//to
+   end subroutine rename_file
+
+   !> Remove a file if it exists (nothing happens otherwise).
+   subroutine remove_file(path)
+      character(len=*), intent(in) :: path        !! the file
+      integer(c_int) :: status
+      if (file_exists(path)) status = c_remove(path//c_null_char)
+   end subroutine remove_file
+
+   !> Whether a file exists.
+   logical function file_exists(path)
+      character(len=*), intent(in) :: path        !! the file
+      inquire (file=path, exist=file_exists)
+   end function file_exists
+
+   !> `PROGRAM VERSION` on standard output (the answer to --version).
+   subroutine print_version(program_name)
+      character(len=*), intent(in) :: program_name  !! e.g. 'interphase-point'
+      write (output_unit, '(a)') program_name//' (interphase) '//INTERPHASE_VERSION
+   end subroutine print_version
 
 end module interphase_driver_cli

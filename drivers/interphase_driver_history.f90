@@ -8,11 +8,18 @@
 !> or `t s_T1 s_T2 s_N` (3-D, NTENS = 3). Times are arbitrary units, strictly increasing;
 !> separations in mm. Every data line has the same number of columns. Errors name the file and
 !> the line. The table is stored in the UMAT's component order: normal first, then shear(s).
+!>
+!> Mixed control: a comment line `# columns: t s_T Sigma_N` names the columns; each component
+!> is given either as its separation (`s_T`, `s_T1`, `s_T2`, `s_N`; mm) or as its traction
+!> (`Sigma_T`, `Sigma_T1`, `Sigma_T2`, `Sigma_N`; MPa), in the order t, shear(s), normal, and a
+!> word in parentheses (a unit) is skipped. The names hold for the rows below the line, up to
+!> the next `# columns:` line: the segment that ends at a row is controlled as that row's names
+!> say. Without such a line every column is a separation.
 module interphase_driver_history
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
-   use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, text_file_type, &
-      open_line_file, close_text_file
+   use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, to_lower, &
+      text_file_type, open_line_file, close_text_file
    use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES
    implicit none
    private
@@ -26,11 +33,23 @@ module interphase_driver_history
       integer :: nrows = 0
       !> Time of each row (strictly increasing).
       real(dp), allocatable :: time(:)
-      !> Separation of each row, (ntens, nrows), UMAT order: normal first, then shear(s) (mm).
+      !> Value of each row, (ntens, nrows), UMAT order: normal first, then shear(s): the
+      !> separation (mm), or the traction (MPa) where `traction` is true.
       real(dp), allocatable :: separation(:, :)
       !> Line number of each row in the file (for messages).
       integer, allocatable :: line(:)
+      !> (ntens, nrows), UMAT order: true where the row's value is a traction (MPa), false
+      !> where it is a separation (mm). The segment from row k to k + 1 is controlled as row
+      !> k + 1 says.
+      logical, allocatable :: traction(:, :)
    end type history_type
+
+   !> Column names of a `# columns:` line, file order after t: 2-D and 3-D, separation then
+   !> traction form.
+   character(len=*), parameter :: NAMES_2D(2, 2) = reshape([character(len=8) :: 's_T', 's_N', &
+      'Sigma_T', 'Sigma_N'], [2, 2])
+   character(len=*), parameter :: NAMES_3D(3, 2) = reshape([character(len=8) :: 's_T1', 's_T2', 's_N', &
+      'Sigma_T1', 'Sigma_T2', 'Sigma_N'], [3, 2])
 
 contains
 
@@ -43,7 +62,8 @@ contains
       character(len=:), allocatable :: line, where, shown
       integer, allocatable :: starts(:), ends(:)
       real(dp) :: values(4)
-      integer :: ios, line_number, ncolumns, first_data_line, comment, i
+      logical :: named(3), controls(3)
+      integer :: ios, line_number, ncolumns, first_data_line, comment, i, named_columns, names_line
       type(text_file_type) :: unit
       integer(int64) :: bytes
       character(len=512) :: iomsg
@@ -56,7 +76,10 @@ contains
          return
       end if
 
-      allocate (history%time(16), history%separation(3, 16), history%line(16))
+      allocate (history%time(16), history%separation(3, 16), history%line(16), history%traction(3, 16))
+      named_columns = 0
+      names_line = 0
+      named = .false.
       ncolumns = 0
       first_data_line = 0
       line_number = 0
@@ -78,7 +101,26 @@ contains
             return
          end if
          comment = index(line, '#')
-         if (comment > 0) line = line(:comment - 1)
+         if (comment > 0) then
+            if (is_columns_line(line(comment + 1:))) then
+               call read_column_names(line(comment + 1:), named_columns, named, ok, message)
+               if (.not. ok) then
+                  message = where//message
+                  call close_text_file(unit)
+                  return
+               end if
+               ok = .false.
+               if (ncolumns > 0 .and. named_columns /= ncolumns) then
+                  message = where//'the "# columns:" line names '//int_to_string(named_columns)// &
+                     ' columns, but the data lines have '//int_to_string(ncolumns)
+                  call close_text_file(unit)
+                  return
+               end if
+               names_line = line_number
+               cycle
+            end if
+            line = line(:comment - 1)
+         end if
          call split_words(line, starts, ends)
          if (size(starts) == 0) cycle
 
@@ -91,6 +133,12 @@ contains
             end if
             ncolumns = size(starts)
             first_data_line = line_number
+            if (named_columns > 0 .and. named_columns /= ncolumns) then
+               message = where//'found '//int_to_string(ncolumns)//' columns, but the "# columns:" line '// &
+                  '(line '//int_to_string(names_line)//') names '//int_to_string(named_columns)
+               call close_text_file(unit)
+               return
+            end if
          else if (size(starts) /= ncolumns) then
             message = where//'found '//int_to_string(size(starts))//' columns, but line '// &
                int_to_string(first_data_line)//' has '//int_to_string(ncolumns)// &
@@ -118,7 +166,9 @@ contains
                return
             end if
          end if
-         call append_row(history, line_number, values(1), values(2:ncolumns))
+         controls = .false.
+         if (named_columns > 0) controls(:ncolumns - 1) = named(:ncolumns - 1)
+         call append_row(history, line_number, values(1), values(2:ncolumns), controls(:ncolumns - 1))
       end do
       call close_text_file(unit)
 
@@ -130,25 +180,110 @@ contains
       history%time = history%time(:history%nrows)
       history%line = history%line(:history%nrows)
       history%separation = history%separation(:history%ntens, :history%nrows)
+      history%traction = history%traction(:history%ntens, :history%nrows)
       ok = .true.
    end subroutine read_history
 
+   !> Whether a comment (the text after '#') is a `columns:` line.
+   pure logical function is_columns_line(comment)
+      character(len=*), intent(in) :: comment     !! text after '#'
+      character(len=*), parameter :: KEY = 'columns:'
+      character(len=len(comment)) :: text
+      text = adjustl(comment)
+      is_columns_line = .false.
+      if (len(text) < len(KEY)) return
+      is_columns_line = to_lower(text(:len(KEY))) == KEY
+   end function is_columns_line
+
+   !> Read the names of a `columns:` comment: t, then the shear component(s) and the normal one,
+   !> each `s_X` (separation) or `Sigma_X` (traction); words in parentheses are skipped.
+   !> `traction` is in file order (shear(s) first).
+   subroutine read_column_names(comment, ncolumns, traction, ok, message)
+      character(len=*), intent(in) :: comment     !! text after '#', starting with 'columns:'
+      integer, intent(out) :: ncolumns            !! number of columns named (t included)
+      logical, intent(out) :: traction(3)         !! file order: true for a Sigma_ column
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+      character(len=len(comment)) :: text
+      character(len=:), allocatable :: expected
+      character(len=16) :: words(4)
+      integer, allocatable :: starts(:), ends(:)
+      integer :: i, n, depth, k
+
+      ok = .false.
+      ncolumns = 0
+      traction = .false.
+      text = adjustl(comment)
+      text(:len('columns:')) = ''
+      ! drop the parenthesised words (units)
+      depth = 0
+      do i = 1, len(text)
+         if (text(i:i) == '(') depth = depth + 1
+         if (depth > 0) then
+            if (text(i:i) == ')') depth = depth - 1
+            text(i:i) = ' '
+         end if
+      end do
+      call split_words(text, starts, ends)
+      n = size(starts)
+      if (n /= 3 .and. n /= 4) then
+         message = '"# columns:" names '//int_to_string(n)//' columns; expected t and 2 (2-D) or 3 (3-D) '// &
+            'components, e.g. "# columns: t s_T Sigma_N"'
+         return
+      end if
+      do i = 1, n
+         words(i) = text(starts(i):min(ends(i), starts(i) + len(words(i)) - 1))
+      end do
+      if (trim(words(1)) /= 't') then
+         message = '"# columns:" must start with t, got '''//trim(words(1))//''''
+         return
+      end if
+      do i = 2, n
+         traction(i - 1) = .false.
+         do k = 1, 2
+            if (n == 3) then
+               if (to_lower(trim(words(i))) == to_lower(trim(NAMES_2D(i - 1, k)))) exit
+            else
+               if (to_lower(trim(words(i))) == to_lower(trim(NAMES_3D(i - 1, k)))) exit
+            end if
+         end do
+         if (k > 2) then
+            if (n == 3) then
+               expected = trim(NAMES_2D(i - 1, 1))//' or '//trim(NAMES_2D(i - 1, 2))
+            else
+               expected = trim(NAMES_3D(i - 1, 1))//' or '//trim(NAMES_3D(i - 1, 2))
+            end if
+            message = '"# columns:" column '//int_to_string(i)//' is '''//trim(words(i))//'''; expected '// &
+               expected//' (t, the shear component(s), then the normal one)'
+            return
+         end if
+         traction(i - 1) = k == 2
+      end do
+      ncolumns = n
+      ok = .true.
+   end subroutine read_column_names
+
    !> Append one row; `shear_then_normal` is the file's order (s_T[1], [s_T2,] s_N).
-   subroutine append_row(history, line_number, time, shear_then_normal)
+   subroutine append_row(history, line_number, time, shear_then_normal, traction_then_normal)
       type(history_type), intent(inout) :: history  !! table being built
       integer, intent(in) :: line_number          !! line of the row in the file
       real(dp), intent(in) :: time                !! t
-      real(dp), intent(in) :: shear_then_normal(:)  !! separations in file order (mm)
+      real(dp), intent(in) :: shear_then_normal(:)  !! separations (mm) or tractions (MPa), file order
+      logical, intent(in) :: traction_then_normal(:)  !! file order: true where a traction
       real(dp), allocatable :: time_new(:), separation_new(:, :)
       integer, allocatable :: line_new(:)
+      logical, allocatable :: traction_new(:, :)
       integer :: n, capacity
 
       capacity = size(history%time)
       if (history%nrows == capacity) then
-         allocate (time_new(2*capacity), separation_new(3, 2*capacity), line_new(2*capacity))
+         allocate (time_new(2*capacity), separation_new(3, 2*capacity), line_new(2*capacity), &
+            traction_new(3, 2*capacity))
          time_new(:capacity) = history%time
          separation_new(:, :capacity) = history%separation
          line_new(:capacity) = history%line
+         traction_new(:, :capacity) = history%traction
+         call move_alloc(traction_new, history%traction)
          call move_alloc(time_new, history%time)
          call move_alloc(separation_new, history%separation)
          call move_alloc(line_new, history%line)
@@ -160,6 +295,9 @@ contains
       history%separation(:, history%nrows) = 0.0_dp
       history%separation(1, history%nrows) = shear_then_normal(n)
       history%separation(2:n, history%nrows) = shear_then_normal(1:n - 1)
+      history%traction(:, history%nrows) = .false.
+      history%traction(1, history%nrows) = traction_then_normal(n)
+      history%traction(2:n, history%nrows) = traction_then_normal(1:n - 1)
    end subroutine append_row
 
    !> Parse one number: the whole word one real literal (interphase_text_input: digits, sign,

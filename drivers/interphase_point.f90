@@ -3,25 +3,31 @@
 !>     interphase-point CASE.nml [--output-dir DIR] [--no-plot]
 !>
 !> Reads the case file (namelists `&material` and `&loading`, see `interphase_driver_case`),
-!> replays its separation history (see `interphase_driver_history`) through `umat` and writes a
-!> CSV table (see `interphase_driver_output`); when `plot` is true, `--no-plot` is not given and
-!> gnuplot is on PATH, also a gnuplot script and a PNG of the traction-separation curves next
-!> to the CSV. Relative `output` paths are taken relative to DIR, or to the current directory.
-!> Every error is printed to standard error and ends the program with exit status 1 (`stop 1`).
+!> replays its history of separations and tractions (see `interphase_driver_history`,
+!> `interphase_driver_replay`) through `umat` and writes a CSV table (see
+!> `interphase_driver_output`); when `plot` is true, `--no-plot` is not given and gnuplot is on
+!> PATH, also a gnuplot script and a PNG next to the CSV. Relative `output` paths are taken
+!> relative to DIR, or to the current directory. The CSV is written to `CSV.part` and renamed to
+!> `CSV` when the run succeeds: a failed run leaves a previous CSV as it was and its own rows in
+!> `CSV.part`. Every error is printed to standard error and ends the program with exit status 1;
+!> a tangent check above its tolerance also gives exit status 1, after the CSV is written.
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-   use interphase_driver_case, only: case_type, read_case, load_start_up_data
+   use interphase_kinds, only: dp
+   use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
-      gnuplot_available, run_gnuplot
+      gnuplot_available, run_gnuplot, exit_program, rename_file, print_version
    use interphase_driver_history, only: history_type, read_history
    use interphase_driver_output, only: csv_header, write_plot_script
-   use interphase_driver_replay, only: replay_history
-   use interphase_driver_text, only: int_to_string, directory_of, base_name, stem_of, &
+   use interphase_driver_replay, only: replay_history, replay_report_type
+   use interphase_driver_replay_call, only: replay_call_type, is_replay_file, read_replay_call, repeat_replay_call
+   use interphase_driver_text, only: int_to_string, real_to_string, directory_of, base_name, stem_of, &
       join_path
    implicit none
 
-   character(len=:), allocatable :: case_path, output_dir, csv_path, message
+   character(len=:), allocatable :: case_path, output_dir, csv_path, part_path, message, summary
    type(run_arguments_type) :: cli
+   type(replay_report_type) :: report
    type(case_type) :: run
    type(history_type) :: history
    logical :: no_plot, ok
@@ -32,12 +38,19 @@ program interphase_point
    call parse_run_arguments(cli, ok, message)
    if (cli%help) then
       call print_usage(output_unit)
-      stop
+      call exit_program(0)
+   end if
+   if (cli%version) then
+      call print_version('interphase-point')
+      call exit_program(0)
    end if
    if (.not. ok) call fail(message, usage=.true.)
    case_path = cli%case_path
    output_dir = cli%output_dir
    no_plot = cli%no_plot
+
+   ! ---- a replay file: repeat its one UMAT call ----
+   if (is_replay_file(case_path)) call repeat_replay(case_path)
 
    ! ---- inputs ----
    call read_case(case_path, run, ok, message)
@@ -47,23 +60,48 @@ program interphase_point
    ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does)
    call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
    if (.not. ok) call fail(message)
+   summary = material_summary(run%props)
+   write (output_unit, '(a)') run%name//': '//summary
 
    ! ---- replay into the CSV ----
    csv_path = join_path(output_dir, run%output)
    call make_directory(directory_of(csv_path), ok, message)
    if (.not. ok) call fail(message)
-   open (newunit=unit, file=csv_path, status='replace', action='write', form='formatted', &
+   ! the rows go to CSV.part, renamed to CSV at the end: a failed run leaves a previous CSV as it was
+   part_path = csv_path//'.part'
+   open (newunit=unit, file=part_path, status='replace', action='write', form='formatted', &
       iostat=ios, iomsg=iomsg)
-   if (ios /= 0) call fail(csv_path//': cannot write the CSV file: '//trim(iomsg))
-   write (unit, '(a)') csv_header(history%ntens)
-   call replay_history(run, history, unit, nrows, ok, message)
+   if (ios /= 0) call fail(part_path//': cannot write the CSV file: '//trim(iomsg))
+   write (unit, '(a)') csv_header(history%ntens, tangent_error=run%tangent_check > 0.0_dp)
+   call replay_history(run, history, unit, nrows, ok, message, report, &
+      replay_path=join_path(directory_of(csv_path), stem_of(csv_path)//'.replay.nml'))
    close (unit)
-   if (.not. ok) call fail(message//' (the CSV '//csv_path//' is incomplete)')
+   if (.not. ok) call fail(message//' (the rows up to the failure are in '//part_path// &
+      '; '//csv_path//' was not written)')
+   call rename_file(part_path, csv_path, ok, message)
+   if (.not. ok) call fail(message)
    write (output_unit, '(a)') run%name//': '//int_to_string(nrows)//' rows ('// &
       int_to_string(history%ntens)//'-D) written to '//csv_path
 
    ! ---- plot ----
    if (run%plot .and. .not. no_plot) call plot_csv()
+
+   ! ---- tangent check ----
+   if (run%tangent_check > 0.0_dp) then
+      write (output_unit, '(a)') run%name//': tangent check: worst relative error of DDSDDE against the '// &
+         'central finite difference '//real_to_string(report%worst_tangent_error)//' at t = '// &
+         real_to_string(report%worst_tangent_time)//' over '//int_to_string(report%checked_steps)// &
+         ' steps (step '//real_to_string(run%tangent_step)//' mm; '//int_to_string(report%kink_steps)// &
+         ' with a kink within the step, compared one-sided; '//int_to_string(report%unchecked_steps)// &
+         ' not checked: a perturbed call failed); tolerance '//real_to_string(run%tangent_check)
+      if (report%worst_tangent_error > run%tangent_check) then
+         write (error_unit, '(a)') 'interphase-point: error: '//run%path//': the tangent check failed: '// &
+            'worst relative error '//real_to_string(report%worst_tangent_error)//' at t = '// &
+            real_to_string(report%worst_tangent_time)//' is above tangent_check = '// &
+            real_to_string(run%tangent_check)//' (column tangent_error of '//csv_path//')'
+         call exit_program(1)
+      end if
+   end if
 
 contains
 
@@ -76,16 +114,46 @@ contains
       if (present(usage)) then
          if (usage) call print_usage(error_unit)
       end if
-      stop 1
+      call exit_program(1)
    end subroutine fail
+
+   !> Repeat the UMAT call of a replay file (`&replay`) and end: exit status 1 when it fails again.
+   subroutine repeat_replay(path)
+      character(len=*), intent(in) :: path
+      type(replay_call_type) :: replayed
+      logical :: failed
+      call read_replay_call(path, replayed, ok, message)
+      if (.not. ok) call fail(message)
+      write (output_unit, '(a)') path//': the '//trim(replayed%source)//' call of element '// &
+         int_to_string(replayed%noel)//', point '//int_to_string(replayed%npt)//', increment '// &
+         int_to_string(replayed%kinc)//' that failed with: '//trim(replayed%failure)
+      write (output_unit, '(a)') 'material: '//material_summary(replayed%props(1:replayed%nprops))
+      call load_start_up_data(trim(replayed%table), trim(replayed%rcurve), ok, message)
+      if (.not. ok) call fail(path//': the files the run had loaded: '//message)
+      call repeat_replay_call(replayed, failed)
+      if (failed) call exit_program(1)
+      call exit_program(0)
+   end subroutine repeat_replay
 
    !> Print how to call the program.
    subroutine print_usage(unit)
       integer, intent(in) :: unit                 !! where to print
 
       write (unit, '(a)') 'usage: interphase-point CASE.nml [--output-dir DIR] [--no-plot]', &
-         '  Replays the separation history of CASE.nml through the interphase UMAT and writes', &
-         '  a CSV table (and a PNG of the traction-separation curves if gnuplot is on PATH).'
+         '       interphase-point --help | --version', &
+         '  Replays the history of CASE.nml through the interphase UMAT at one material point and', &
+         '  writes a CSV table (and a PNG of the curves if gnuplot is on PATH).', &
+         '  CASE.nml: &material  model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t (simplified),', &
+         '                       table, d0, rcurve, rcurve_file, g_ci, g_cii, growth_slip,', &
+         '                       contact_band, viscosity, stiffness', &
+         '            &loading   history, increments, output, plot, traction_tolerance,', &
+         '                       output_every, tangent_check, tangent_step', &
+         '  History: columns t s_T s_N (3-D: t s_T1 s_T2 s_N); a line "# columns: t s_T Sigma_N"', &
+         '  imposes a traction (Sigma_*) instead of a separation on a component.', &
+         '  interphase-point REPLAY.nml repeats the failed call of a replay file (&replay; written', &
+         '  next to the CSV when an update fails, and by the UMAT/VUMAT into INTERPHASE_REPLAY_DIR).', &
+         '  Documented in drivers/README.md (installed: share/doc/interphase/drivers/README.md);', &
+         '  cases to start from in share/interphase/cases.'
    end subroutine print_usage
 
    !> Write the gnuplot script next to the CSV and run it, or say why not.
@@ -100,7 +168,7 @@ contains
       stem = stem_of(csv_path)
       script_name = stem//'.gp'
       call write_plot_script(join_path(directory, script_name), base_name(csv_path), &
-         stem//'.png', run%name, history%ntens, ok, message)
+         stem//'.png', run%name, summary, history%ntens, ok, message, moving=report%moving)
       if (.not. ok) call fail(message)
       call run_gnuplot(directory, script_name, ok, message)
       if (.not. ok) call fail(message)

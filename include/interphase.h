@@ -4,10 +4,12 @@
  *        Coulomb friction) at one integration point, for C and C++ finite-element codes.
  *
  * Link with the core library `libinterphase` (CMake: `find_package(interphase)` and
- * `target_link_libraries(app PRIVATE interphase::interphase)`), plus the Fortran runtime
- * (`-lgfortran`) and LAPACK when linking by hand. interphase_update and
- * interphase_status_message are re-entrant and thread-safe: they keep no state; the caller owns
- * every array. The loaders interphase_load_table and interphase_load_rcurve are not: they write
+ * `target_link_libraries(app PRIVATE interphase::interphase)`, or the shared
+ * `libinterphase.so`, `interphase::shared`), plus the Fortran runtime (`-lgfortran`) and LAPACK
+ * when linking the static library by hand. interphase_update, interphase_update_dt,
+ * interphase_run and interphase_status_message are re-entrant and thread-safe: they keep no
+ * state; the caller owns every array. The loaders interphase_load_table and
+ * interphase_load_rcurve are not: they write
  * library-wide data (the custom RVE table, the tabulated R-curve) that every later update reads.
  * Call them once, from one thread, before any thread calls interphase_update (and never while
  * an update runs).
@@ -145,6 +147,46 @@ int interphase_update(const double *props, int nprops, int ntens, const double *
 int interphase_update_dt(const double *props, int nprops, int ntens, const double *state_old,
                          const double *separation, double dt, double *traction, double *tangent,
                          double *state_new, double *stored_energy, char *detail, size_t detail_len);
+
+/**
+ * One point along a whole path of separations in one call: the loop over the increments runs
+ * inside the library (for hosts that replay loading histories, where a call per increment costs
+ * more than the update itself: the Python package, docs/python.md). Each step is the increment
+ * the Abaqus UMAT would take, with the same numbers: DSTRAN = s[i] - s[i-1], the update at
+ * STRAN + DSTRAN, dt = time[i] - time[i-1], and the dissipated energy accumulated as the UMAT's
+ * SPD. Re-entrant and thread-safe, as interphase_update.
+ *
+ * Every array holds one row per point of the path, rows contiguous (row-major): row 0 is the
+ * start, which the caller fills (a virgin point: all zero); rows 1 .. nrows-1 are computed.
+ *
+ * @param props              material constants, @p nprops doubles (as interphase_update)
+ * @param nprops             number of PROPS
+ * @param ntens              2 (2-D) or 3 (3-D)
+ * @param nrows              rows of the path, the start included (>= 1)
+ * @param separation         @p nrows * @p ntens doubles: the separation at each row (mm)
+ * @param time               @p nrows doubles (s), or NULL (no time increment: a material with
+ *                           viscous regularisation is then refused, as by interphase_update)
+ * @param traction           in/out, @p nrows * @p ntens doubles (MPa): row 0 given
+ * @param tangent            out, NULL or @p nrows * @p ntens * @p ntens doubles, each row's
+ *                           matrix row-major (MPa/mm); row 0 is not written
+ * @param state              in/out, @p nrows * nstate doubles, nstate = INTERPHASE_NSTATE, or
+ *                           INTERPHASE_NSTATE_VISCOUS with viscous regularisation: row 0 given
+ * @param stored_energy      in/out, @p nrows doubles (N/mm): [0] given
+ * @param dissipated_energy  in/out, @p nrows doubles (N/mm): [0] given; W[i] = W[i-1] +
+ *                           1/2 (t[i-1] + t[i]).(s[i] - s[i-1]) - (psi[i] - psi[i-1])
+ * @param rows_done          out, may be NULL: the number of rows that hold results (the start
+ *                           included): @p nrows on success, the failed row on failure
+ * @param detail             out, may be NULL: on failure, the message, which names the row
+ * @param detail_len         size of @p detail in bytes
+ * @return INTERPHASE_STATUS_OK (0), or the status of the first step that fails (the rows from
+ *         it on are untouched; a host may retry that step in smaller ones); the checks of row 0
+ *         are those of interphase_update on its inputs (INTERPHASE_STATUS_BAD_STATE,
+ *         INTERPHASE_STATUS_BAD_HOST_INPUT for a separation, traction or energy out of range).
+ */
+int interphase_run(const double *props, int nprops, int ntens, size_t nrows, const double *separation,
+                   const double *time, double *traction, double *tangent, double *state,
+                   double *stored_energy, double *dissipated_energy, size_t *rows_done, char *detail,
+                   size_t detail_len);
 
 /**
  * Load the custom RVE table that the micromechanical model uses where PROPS[7] = 1 (what

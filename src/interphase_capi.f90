@@ -8,7 +8,9 @@
 !> Array conventions for C: separation and traction in the order (s_N, s_T[, s_T2]); the
 !> tangent is returned **row-major**, tangent[i*ntens + j] = d traction[i] / d separation[j];
 !> the state is the UMAT's STATEV slots 1..4, or 1..5 with viscous regularisation (state_slots;
-!> docs/abaqus.md).
+!> docs/abaqus.md). interphase_run updates one point along a whole path of separations in one call
+!> (for hosts that replay histories, where a call per increment would cost more than the update:
+!> the Python package, docs/python.md).
 module interphase_capi
    use, intrinsic :: iso_c_binding, only: c_int, c_double, c_char, c_size_t, c_ptr, c_null_char, &
       c_associated, c_f_pointer
@@ -21,13 +23,15 @@ module interphase_capi
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_BAD_TIME_INCREMENT, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_coverage
-   use interphase_params, only: law_params_type, from_props, refuse_umat_options
+   use interphase_params, only: law_params_type, from_props, refuse_umat_options, SEPARATION_MAX, HOST_VALUE_MAX
+   use interphase_finite, only: is_within
+   use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update
    implicit none
    private
    public :: interphase_update_c, interphase_update_dt_c, interphase_status_message_c, interphase_load_table_c, &
-      interphase_load_rcurve_c
+      interphase_load_rcurve_c, interphase_run_c
 
    !> Longest path (bytes, without the NUL) the loaders accept from C.
    integer, parameter :: MAX_PATH_LEN = 4096
@@ -190,6 +194,181 @@ contains
       end subroutine finish
 
    end function capi_update
+
+   !> C: `int interphase_run(const double *props, int nprops, int ntens, size_t nrows,
+   !>    const double *separation, const double *time, double *traction, double *tangent,
+   !>    double *state, double *stored_energy, double *dissipated_energy, size_t *rows_done,
+   !>    char *detail, size_t detail_len)`: one point along a path of `nrows` separations, each
+   !> step as the UMAT takes an increment. Every array holds one row per point of the path,
+   !> row-major: separation and traction nrows*ntens, tangent nrows*ntens*ntens (or NULL), state
+   !> nrows*state_slots (4, or 5 with viscous regularisation), the energies nrows. Row 0 is the
+   !> start (given: separation, traction, state, energies); rows 1 .. nrows-1 are computed. Step i
+   !> updates at s = s[i-1] + (s[i] - s[i-1]) (the UMAT's STRAN + DSTRAN) with dt = time[i] -
+   !> time[i-1] (time NULL: no time increment, as interphase_update), and accumulates the
+   !> dissipated energy as the UMAT does its SPD: W[i] = W[i-1] + 1/2 (t[i-1] + t[i]).(s[i] -
+   !> s[i-1]) - (psi[i] - psi[i-1]). Returns STATUS_OK, or the status of the first step that fails
+   !> (rows_done, when not NULL, is then the number of rows that hold results, the start
+   !> included; the rows after them are untouched) with the UMAT's detail message and the row.
+   function interphase_run_c(props, nprops, ntens, nrows, separation, time, traction, tangent, state, &
+         stored_energy, dissipated_energy, rows_done, detail, detail_len) result(status) &
+         bind(C, name="interphase_run")
+      real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
+      integer(c_int), value, intent(in) :: nprops          !! number of PROPS
+      integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
+      integer(c_size_t), value, intent(in) :: nrows        !! rows of the path, the start included (>= 1)
+      real(c_double), intent(in) :: separation(*)          !! nrows*ntens (mm)
+      type(c_ptr), value, intent(in) :: time               !! nrows doubles (s) or NULL
+      real(c_double), intent(inout) :: traction(*)         !! nrows*ntens (MPa); row 0 given
+      type(c_ptr), value, intent(in) :: tangent            !! nrows*ntens*ntens doubles or NULL
+      real(c_double), intent(inout) :: state(*)            !! nrows*state_slots; row 0 given
+      real(c_double), intent(inout) :: stored_energy(*)    !! nrows (N/mm); [0] given
+      real(c_double), intent(inout) :: dissipated_energy(*)   !! nrows (N/mm); [0] given
+      type(c_ptr), value, intent(in) :: rows_done          !! size_t out, or NULL
+      type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
+      integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
+      integer(c_int) :: status
+
+      type(law_params_type) :: params
+      type(interface_state_type) :: old, new
+      real(c_double), pointer :: times(:), tangents(:)
+      integer(c_size_t), pointer :: done
+      real(dp) :: s(3), ds(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS), dt
+      integer(c_size_t) :: row, n_done
+      integer :: code, i, j, n, nsv, at, ios
+      logical :: viscous, timed
+      character(len=MESSAGE_LEN) :: message
+      character(len=32) :: row_text
+
+      message = ''
+      n_done = 0
+      n = ntens
+      timed = c_associated(time)
+      nullify (times, tangents)
+      if (nprops < 0) then
+         code = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a)') 'nprops = ', nprops, ' is negative'
+         call finish()
+         return
+      end if
+      if (ntens /= 2 .and. ntens /= 3) then
+         code = STATUS_BAD_NTENS
+         write (message, '(a,i0,a)') 'ntens = ', ntens, ' but interphase takes 2 (2-D) or 3 (3-D)'
+         call finish()
+         return
+      end if
+      if (nrows < 1_c_size_t) then
+         code = STATUS_BAD_STATE
+         message = 'nrows = 0: the path needs at least its starting row (row 0, the state to start from)'
+         call finish()
+         return
+      end if
+      call from_props(props(1:nprops), params, code, message)
+      if (code == STATUS_OK) call refuse_umat_options(params, 'interphase_run', code, message)
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      call check_run_time_data(params, code, message)
+      if (code == STATUS_TABLE_NOT_LOADED) then
+         write (message, '(a,i0,a)') 'PROPS[', PROP_TABLE - 1, '] = 1 selects the custom RVE table, but none is '// &
+            'loaded: call interphase_load_table(path, ...) before any update'
+      else if (code == STATUS_RCURVE_NOT_LOADED) then
+         message = 'the R-curve selector 3 selects the tabulated R-curve, but none is loaded: call '// &
+            'interphase_load_rcurve(path, ...) before any update'
+      end if
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      viscous = params%viscosity > 0.0_dp
+      nsv = state_slots(params)
+      ! the starting row, as the UMAT checks what a host passes in
+      call state_unpack(state(1:nsv), n, old, code, message, viscous)
+      if (code /= STATUS_OK) then
+         message = 'row 0: '//trim(message)
+         call finish()
+         return
+      end if
+      if (.not. (all(is_within(separation(1:n), SEPARATION_MAX)) .and. all(is_within(traction(1:n), HOST_VALUE_MAX)) &
+            .and. is_within(stored_energy(1), HOST_VALUE_MAX) .and. is_within(dissipated_energy(1), HOST_VALUE_MAX))) then
+         code = STATUS_BAD_HOST_INPUT
+         write (message, '(a,es12.4,a,es9.1e3,a,es9.1e3,a)') 'row 0: the starting separation, traction and '// &
+            'energies must be finite, the separation within ', SEPARATION_MAX, ' mm, the rest within ', &
+            HOST_VALUE_MAX, ' (MPa, N/mm)'
+         call finish()
+         return
+      end if
+      if (timed) call c_f_pointer(time, times, [nrows])
+      if (c_associated(tangent)) call c_f_pointer(tangent, tangents, [nrows*int(n*n, c_size_t)])
+      n_done = 1
+      do row = 2, nrows
+         at = int((row - 1)*n)                 ! offset of this row in the ntens-wide arrays
+         ! the UMAT's increment: DSTRAN = s[i] - s[i-1], the separation STRAN + DSTRAN
+         ds(1:n) = separation(at + 1:at + n) - separation(at - n + 1:at)
+         s(1:n) = separation(at - n + 1:at) + ds(1:n)
+         if (timed) then
+            dt = times(row) - times(row - 1)
+            call interface_update(params, old, s(1:n), t(1:n), k(1:n, 1:n), new, psi, code, dt)
+         else
+            call interface_update(params, old, s(1:n), t(1:n), k(1:n, 1:n), new, psi, code)
+         end if
+         if (code /= STATUS_OK) then
+            if (code == STATUS_BAD_TIME_INCREMENT) then
+               if (timed) then
+                  write (message, '(a,i0,a,es12.4,a)') 'row ', row - 1, ': dt = ', dt, &
+                     ' s: viscous regularisation needs a finite dt >= 0'
+               else
+                  message = 'the material has viscous regularisation (its viscosity option): pass the times'
+               end if
+            else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
+               write (message, '(a,i0,a,a,a,g0.6,a,3es12.4)', iostat=ios) 'row ', row - 1, ': ', rcurve_coverage(), &
+                  '; the crack grows beyond it from D = ', old%d, ' at separation (mm) ', s(1:n)
+            else
+               write (message, '(a,i0,a,3es12.4)') 'row ', row - 1, ': update failed at separation (mm) ', s(1:n)
+            end if
+            call finish()
+            return
+         end if
+         traction(at + 1:at + n) = t(1:n)
+         if (associated(tangents)) then
+            do i = 1, n
+               do j = 1, n
+                  tangents(int(at*n) + (i - 1)*n + j) = k(i, j)
+               end do
+            end do
+         end if
+         ! the state through its STATEV slots, as the UMAT carries it from one increment to the next
+         sv(1:nsv) = state((row - 2)*nsv + 1:(row - 1)*nsv)
+         call state_pack(new, sv(1:nsv), viscous)
+         state((row - 1)*nsv + 1:row*nsv) = sv(1:nsv)
+         call state_unpack(sv(1:nsv), n, old, code, message, viscous)
+         if (code /= STATUS_OK) then
+            write (row_text, '(a,i0,a)') 'row ', row - 1, ': '
+            message = trim(row_text)//' '//trim(message)
+            call finish()
+            return
+         end if
+         stored_energy(row) = psi
+         dissipated_energy(row) = dissipated_energy(row - 1) + 0.5_dp*sum((traction(at - n + 1:at) + t(1:n))*ds(1:n)) &
+            - (psi - stored_energy(row - 1))
+         n_done = row
+      end do
+      code = STATUS_OK
+      call finish()
+
+   contains
+
+      !> Set the result and rows_done; the detailed message into the caller's buffer on failure.
+      subroutine finish()
+         status = int(code, c_int)
+         if (c_associated(rows_done)) then
+            call c_f_pointer(rows_done, done)
+            done = n_done
+         end if
+         if (code /= STATUS_OK) call copy_to_c(trim(message), detail, detail_len)
+      end subroutine finish
+
+   end function interphase_run_c
 
    !> C: `size_t interphase_status_message(int status, char *buf, size_t len)`. Writes the
    !> generic message of `status` into `buf` (at most len - 1 characters and a NUL; nothing if

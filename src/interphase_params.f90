@@ -408,8 +408,10 @@ contains
       real(dp), intent(in) :: value
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
+      character(len=13) :: value_text    ! a negative value needs 13 characters (-1.00000E+000)
       status = code
-      write (message, '(a,i0,a,a,a,es12.5e3,a,a)') 'PROPS(', index, ') ', symbol, ' = ', value, &
+      write (value_text, '(es13.5e3)') value
+      write (message, '(a,i0,a,a,a,a,a,a)') 'PROPS(', index, ') ', symbol, ' = ', trim(adjustl(value_text)), &
          ' is out of range: ', rule
    end subroutine reject
 

@@ -2,22 +2,29 @@
 # Install the optional Debian packages interphase uses, when they are missing and we can:
 #   freefem++   (FreeFem++: RVE coefficient tables and their tests)
 #   gnuplot-nox (gnuplot: PNG plots of the driver and of the tables)
+#   pkgconf     (pkg-config: the test of the installed interphase.pc)
+#   python3-numpy, python3-scipy, python3-matplotlib, python3-pytest (the Python package
+#   drivers/python/interphase, its examples and its tests), checked as modules of Debian's
+#   /usr/bin/python3 (another python3 first on PATH, e.g. pyenv's, does not see Debian's packages)
 #   flang-19 and libomp-19-dev (LLVM flang 19 with its OpenMP: the second compiler of
 #               tools/run-tests.sh; asked for by name only, not by default)
-# Usage: tools/ensure-packages.sh [freefem] [gnuplot] [flang]   (default: freefem gnuplot)
+# Usage: tools/ensure-packages.sh [freefem] [gnuplot] [pkgconfig] [numpy] [scipy] [matplotlib] [pytest] [flang]
+#        (default: freefem gnuplot)
 # Never fails: where a package cannot be installed it says so, and the parts that need it
 # skip with their own clear message.
 set -u
 want=("$@")
 [ ${#want[@]} -eq 0 ] && want=(freefem gnuplot)
 
-declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot [flang]=flang-new-19)
-declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox [flang]="flang-19 libomp-19-dev")
+declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot [pkgconfig]=pkg-config [flang]=flang-new-19)
+declare -A module_of=([numpy]=numpy [scipy]=scipy [matplotlib]=matplotlib [pytest]=pytest)
+declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox [pkgconfig]=pkgconf [numpy]=python3-numpy [scipy]=python3-scipy
+                   [matplotlib]=python3-matplotlib [pytest]=python3-pytest [flang]="flang-19 libomp-19-dev")
+debian_python=/usr/bin/python3
 
 missing=()
 for w in "${want[@]}"; do
   c=${cmd_of[$w]:-}
-  if [ -z "$c" ]; then echo "ensure-packages: unknown component '$w'" >&2; continue; fi
   if [ "$w" = flang ]; then
     # the compiler and the OpenMP runtime it links (the thread-safety test needs both)
     if ! command -v "$c" >/dev/null 2>&1 || [ ! -e /usr/lib/llvm-19/lib/libomp.so ]; then
@@ -26,7 +33,14 @@ for w in "${want[@]}"; do
     fi
     continue
   fi
-  command -v "$c" >/dev/null 2>&1 || missing+=("${pkg_of[$w]}")
+  m=${module_of[$w]:-}
+  if [ -n "$c" ]; then
+    command -v "$c" >/dev/null 2>&1 || missing+=("${pkg_of[$w]}")
+  elif [ -n "$m" ]; then
+    { [ -x "$debian_python" ] && "$debian_python" -c "import $m" >/dev/null 2>&1; } || missing+=("${pkg_of[$w]}")
+  else
+    echo "ensure-packages: unknown component '$w'" >&2
+  fi
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
 

@@ -70,7 +70,8 @@ fi
 # E first slip after D; F damage grows again; G D = 1; H t = 4; I first slip after H; J t = 5;
 # K first slip after J; L end (t = 6).
 branch_points() {
-  awk -F, 'NR==1 {next}
+  awk -F, 'NR==1 { print "# the branch points of Fig 19 (docs/paper.md) on the micromechanical mixed history:"
+                   print "# columns: label  s_T (mm)  Sigma_T (MPa)"; next }
     { t=$1; s=$2; S=$4; d=$6; st=$8 }
     function mark(n) { printf "%s %.10g %.10g\n", n, s, S }
     NR==2 { mark("O") }
@@ -101,8 +102,17 @@ plot() {  # plot NAME TITLE XCOL YCOL XLABEL YLABEL HISTORY [labels-file]
     echo "set xlabel '$xl'"
     echo "set ylabel '$yl'"
     if [ -n "$labels" ]; then
+      # room around the curves, so that no point sits on the frame (H, I, J, K)
+      echo "set offsets graph 0.04, graph 0.04, graph 0.06, graph 0.06"
       while read -r n sx sy; do
-        echo "set label '$n' at $sx,$sy offset 0.6,0.6 font ',12' tc rgb '#b2182b'"
+        [ "$n" = "#" ] && continue
+        # each label on the side where it meets no curve and no other label (B and F, O and A
+        # are close pairs)
+        case $n in
+          O) off="0.6,-1.1" ;; A) off="0.7,0.5" ;; B) off="-1.6,0.9" ;; F) off="0.8,0.9" ;;
+          H) off="-1.0,0.9" ;; I) off="-0.4,1.0" ;; J) off="0.6,0.9" ;; *) off="0.6,0.6" ;;
+        esac
+        echo "set label '$n' at $sx,$sy offset $off font ',12' tc rgb '#b2182b'"
         echo "set object circle at $sx,$sy size char 0.35 fc rgb '#b2182b' fs solid front"
       done < "$labels"
     fi

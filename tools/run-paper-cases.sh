@@ -19,6 +19,8 @@ for case in "$here"/drivers/cases/*.nml "$here"/drivers/cases/micro/*.nml "$here
   echo "== $(basename "$case")"
   "$build/drivers/interphase-point" "$case" --output-dir "$out"
 done
+echo "== the shear test under three precompressions (drivers/cases/shear) and its envelope"
+bash "$here/tools/shear-envelope.sh" "$build" "$out/shear-envelope" || [ $? -eq 77 ]
 echo "== the paper's section 5.2"
 bash "$here/tools/paper-section5.sh" "$build" "$out/section5"
 echo "Results in $out (section 5.2 figures in $out/section5):"

@@ -6,6 +6,7 @@
 #  2. LLVM flang 19 (flang-new-19, installed from Debian's flang-19 and libomp-19-dev when
 #     missing and possible): the same two builds and suites in BUILD_ROOT/flang-debug and
 #     BUILD_ROOT/flang-release (-std=f2018 -pedantic, warnings are errors).
+# Every run includes the Python package's suites (ctest label python, docs/python.md).
 # Where flang cannot be installed its part is skipped with a message; under CI=true that is a
 # failure. Usage: tools/run-tests.sh [BUILD_ROOT]   (default: ./build)
 set -euo pipefail
@@ -13,7 +14,7 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 root=${1:-$here/build}
 jobs=$(nproc 2>/dev/null || echo 2)
 
-bash "$here/tools/ensure-packages.sh" freefem gnuplot
+bash "$here/tools/ensure-packages.sh" freefem gnuplot pkgconfig numpy scipy matplotlib pytest
 
 # suite <compiler> <name prefix of the build directories>
 suite() {

@@ -8,14 +8,17 @@
 !> 4-node interface elements whose integration points call `umat` as Abaqus/Standard would.
 !> Writes the load-displacement table (CSV), the Newton iteration log (.log) and, when gnuplot
 !> is on PATH and plotting is not disabled, a PNG of shear force against shear displacement.
-!> Every error is printed to standard error and ends the program with exit status 1.
+!> The CSV is written to CSV.part and renamed when the run succeeds (a failed run leaves a previous
+!> CSV as it was, its converged increments in CSV.part). A run longer than 2 s prints progress
+!> lines to standard error. Every error is printed to standard error and ends the program with
+!> exit status 1.
 program interphase_fe2d
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_layout, only: PROP_MU
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
    use interphase_driver_case, only: load_start_up_data
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
-      gnuplot_available, run_gnuplot
+      gnuplot_available, run_gnuplot, exit_program, print_version, rename_file
    use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
    use interphase_fe2d_solver, only: fe2d_options_type, fe2d_result_type, run_analysis, &
       CSV_COLUMNS, COL_SHEAR, COL_NORMAL, COL_STEP
@@ -37,7 +40,11 @@ program interphase_fe2d
    call parse_run_arguments(cli, ok, message)
    if (cli%help) then
       call print_usage(output_unit)
-      stop
+      call exit_program(0)
+   end if
+   if (cli%version) then
+      call print_version('interphase-fe2d')
+      call exit_program(0)
    end if
    if (.not. ok) call fail(message, usage=.true.)
    case_path = cli%case_path
@@ -59,6 +66,8 @@ program interphase_fe2d
       iostat=ios, iomsg=iomsg)
    if (ios /= 0) call fail(log_path//': cannot write the log: '//trim(iomsg))
    options%log = .true.
+   options%progress = .true.
+   options%name = run%name
    write (options%log_unit, '(a)') 'interphase-fe2d '//case_path//': '// &
       int_to_string(run%bricks)//' bricks, '//int_to_string(run%nx)//' x '// &
       int_to_string(run%ny)//' elements per brick, '//int_to_string(mesh%nfree)// &
@@ -68,10 +77,13 @@ program interphase_fe2d
    call run_analysis(run, mesh, options, result)
    close (options%log_unit)
 
-   call write_curve_csv(csv_path, CSV_COLUMNS, result%rows(:, 1:result%nrows), ok, message)
+   ! CSV.part, renamed to CSV when the run succeeded: a failed run leaves a previous CSV as it was
+   call write_curve_csv(csv_path//'.part', CSV_COLUMNS, result%rows(:, 1:result%nrows), ok, message)
    if (.not. ok) call fail(message)
-   if (.not. result%ok) call fail(run%path//': '//result%message//' (the CSV '//csv_path// &
-      ' holds the converged increments; see '//log_path//')')
+   if (.not. result%ok) call fail(run%path//': '//result%message//' (the converged increments are in '// &
+      csv_path//'.part; '//csv_path//' was not written; see '//log_path//')')
+   call rename_file(csv_path//'.part', csv_path, ok, message)
+   if (.not. ok) call fail(message)
    peak = maxloc(abs(result%rows(COL_SHEAR, 1:result%nrows)), 1)
    write (output_unit, '(a)') run%name//': '//int_to_string(result%nrows)//' rows written to '// &
       csv_path//' ('//int_to_string(result%nincrements)//' increments, '// &
@@ -94,16 +106,20 @@ contains
       if (present(usage)) then
          if (usage) call print_usage(error_unit)
       end if
-      stop 1
+      call exit_program(1)
    end subroutine fail
 
    subroutine print_usage(unit)
       integer, intent(in) :: unit                 !! where to print
 
       write (unit, '(a)') 'usage: interphase-fe2d CASE.nml [--output-dir DIR] [--no-plot]', &
+         '       interphase-fe2d --help | --version', &
          '  Runs the masonry shear test of CASE.nml (bricks: plane-strain Q4; joints: interface', &
          '  elements calling the interphase UMAT) and writes the load-displacement CSV, the', &
-         '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).'
+         '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).', &
+         '  CASE.nml groups: &geometry, &mesh, &brick, &joint (the &material entries of interphase-point),', &
+         '  &loading; documented in drivers/fe2d/README.md (installed: share/doc/interphase);', &
+         '  cases to start from in share/interphase/fe2d-cases.'
    end subroutine print_usage
 
    subroutine plot_csv()

@@ -21,6 +21,7 @@
 !> the nominal increment the analysis stops with a message.
 module interphase_fe2d_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
+   use, intrinsic :: iso_fortran_env, only: error_unit
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_VISCOUS, SV_DAMAGE, SV_SLIP_1
    use interphase_abaqus_interfaces, only: umat
@@ -83,7 +84,15 @@ module interphase_fe2d_solver
       !> separation makes the interphase UMAT fail (README, Verification), so only the tests set
       !> it, to drive the PNEWDT cut-back. Default: never.
       real(dp) :: umat_failure_above = huge(1.0_dp)
+      !> Print a progress line to standard error every PROGRESS_SECONDS once the run has lasted
+      !> that long (the program sets it; the in-process tests do not).
+      logical :: progress = .false.
+      !> The name in the progress lines (the case).
+      character(len=:), allocatable :: name
    end type fe2d_options_type
+
+   !> Seconds between two progress lines (and before the first).
+   real(dp), parameter :: PROGRESS_SECONDS = 2.0_dp
 
    !> One converged increment and its Newton history.
    type :: fe2d_increment_type
@@ -130,8 +139,11 @@ contains
       integer :: nfree, bw, ldab, npts, e, p, ip
       real(dp) :: xy(2, 4), bm(2, 8), jac, t_total_offset, step_time_start
       integer :: current_step, kinc
+      integer :: clock_start, clock_last, clock_rate
       logical :: ok
 
+      call system_clock(clock_start, clock_rate)
+      clock_last = clock_start
       nfree = mesh%nfree
       bw = mesh%bandwidth
       ldab = 3*bw + 1
@@ -287,6 +299,7 @@ contains
                call add_increment(t_new, dt_try, iterations, residuals, d_start)
                call add_row(t, u(mesh%eq_shear))
                if (iterations <= GROW_ITERATIONS) dt = min(GROW_FACTOR*dt, dt_nominal)
+               if (options%progress) call show_progress(t, tb(size(tb)))
             else
                result%cutbacks = result%cutbacks + 1
                dt = dt_try*factor
@@ -617,6 +630,24 @@ contains
          character(len=*), intent(in) :: text
          if (options%log) write (options%log_unit, '(a)') text
       end subroutine log_line
+
+
+      !> A progress line on standard error, every PROGRESS_SECONDS once the run lasts that long.
+      subroutine show_progress(t_now, t_end)
+         real(dp), intent(in) :: t_now, t_end    !! pseudo-time reached, and at the step's end
+         integer :: clock_now
+         character(len=:), allocatable :: who
+         call system_clock(clock_now)
+         if (real(clock_now - clock_last, dp) < PROGRESS_SECONDS*real(clock_rate, dp)) return
+         clock_last = clock_now
+         who = 'interphase-fe2d'
+         if (allocated(options%name)) who = options%name
+         write (error_unit, '(a)') who//': step '//int_to_string(current_step)//', t = '// &
+            real_to_string(t_now)//' of '//real_to_string(t_end)//', '//int_to_string(result%nincrements)// &
+            ' increments, '//int_to_string(result%cutbacks)//' cut-backs, '// &
+            int_to_string(nint(real(clock_now - clock_start, dp)/real(clock_rate, dp)))//' s'
+         flush (error_unit)
+      end subroutine show_progress
 
    end subroutine run_analysis
 

@@ -11,7 +11,7 @@
 #                  (INTERPHASE_TABLE, INTERPHASE_RCURVE): src/abaqus/uexternaldb.f90 for
 #                  Abaqus/Standard, src/abaqus/vexternaldb.f90 with --explicit
 #   --build-dir    a configured and built interphase build directory, for the sources generated at
-#                  build time (the compiled-in RVE table, generated/*.f90); default ./build
+#                  build time (the compiled-in RVE table, generated/*.f90); default ./build/release
 #   -o FILE        output file (default interphase_abaqus_standard.f90 / _explicit.f90)
 #
 # The file holds the entry point, the Abaqus message hook and every module they use, directly or
@@ -25,7 +25,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 solver=standard
-build_dir=$PWD/build
+build_dir=$PWD/build/release
 with_uexternaldb=no
 output=""
 while [ $# -gt 0 ]; do
@@ -46,7 +46,9 @@ if [ $solver = standard ]; then
    roots=("$root/src/abaqus/umat.f90" "$root/src/abaqus/host_abaqus_standard.f90")
    if [ $with_uexternaldb = yes ]; then roots+=("$root/src/abaqus/uexternaldb.f90"); fi
 elif [ $solver = calculix ]; then
-   roots=("$root/src/abaqus/umat.f90" "$root/src/abaqus/host_calculix.f90")
+   # (calculix_start.f90: the loading of custom tables at start-up, called by the library's
+   # load-time hook src/abaqus/calculix_start.c, which build-calculix.sh compiles beside)
+   roots=("$root/src/abaqus/umat.f90" "$root/src/abaqus/host_calculix.f90" "$root/src/abaqus/calculix_start.f90")
    if [ $with_uexternaldb = yes ]; then
       echo "make-user-file.sh: CalculiX calls no UEXTERNALDB: --uexternaldb does not apply to --calculix" >&2
       exit 2
@@ -92,7 +94,7 @@ visit() {
       dep=${module_file[$m]:-}
       if [ -z "$dep" ]; then
          echo "make-user-file.sh: module '$m' used by $f is not in src/ or $build_dir/generated/" >&2
-         echo "  (generated sources need a built tree: cmake -B build && cmake --build build; then --build-dir build)" >&2
+         echo "  (generated sources need a built tree: cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release && cmake --build build/release; then --build-dir build/release)" >&2
          exit 1
       fi
       visit "$dep"

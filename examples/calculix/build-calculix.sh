@@ -9,8 +9,9 @@
 #      umat is the built-in example, bound inside the program). Cached: an existing DIR/ccx with
 #      external-behaviour support is kept.
 #   2. DIR/libINTERPHASE.so from the one-file user source (make-user-file.sh --calculix), the
-#      library a material named @ABAQUS_INTERPHASE_UMAT... loads (with DIR on LD_LIBRARY_PATH);
-#      rebuilt whenever a source is newer than it.
+#      library a material named @ABAQUS_INTERPHASE_UMAT... loads (with DIR on LD_LIBRARY_PATH),
+#      with the load-time hook src/abaqus/calculix_start.c that loads INTERPHASE_TABLE and
+#      INTERPHASE_RCURVE; rebuilt whenever a source is newer than it.
 #
 #   --cache-dir DIR  where ccx and the library go (default: <repository>/build/calculix)
 #   --build-dir DIR  a configured and built interphase build tree, for the generated sources (the
@@ -82,7 +83,8 @@ else
       if [ -f /etc/apt/sources.list.d/debian.sources ]; then
          sed 's/^Types: deb$/Types: deb-src/' /etc/apt/sources.list.d/debian.sources > "$src_list"
       elif [ -f /etc/apt/sources.list ]; then
-         sed -n 's/^deb /deb-src /p' /etc/apt/sources.list > /etc/apt/sources.list.d/interphase-deb-src.list
+         src_list=/etc/apt/sources.list.d/interphase-deb-src.list
+         sed -n 's/^deb /deb-src /p' /etc/apt/sources.list > "$src_list"
       else
          unavailable "no Debian source list to mirror as deb-src"
       fi
@@ -98,8 +100,9 @@ else
    say "fetching Debian's calculix-ccx source"
    (cd "$cache/source" && apt-get source -qq calculix-ccx >"$cache/source.log" 2>&1) || \
       unavailable "apt-get source calculix-ccx failed (see $cache/source.log)"
-   src=$(ls -d "$cache"/source/calculix-ccx-*/ccx_*/src | head -n 1)
-   [ -d "$src" ] || { echo "build-calculix.sh: no ccx_*/src in the source package" >&2; exit 1; }
+   src=""
+   for d in "$cache"/source/calculix-ccx-*/ccx_*/src; do [ -d "$d" ] && src=$d && break; done
+   [ -n "$src" ] || { echo "build-calculix.sh: no ccx_*/src in the source package (see $cache/source.log)" >&2; exit 1; }
    version=$(basename "$(dirname "$src")")
    say "building $version with external-behaviour support in $src (a few minutes)"
    # Debian's flags (debian/rules) plus the define and the dynamic loader, as upstream's
@@ -122,11 +125,13 @@ fi
 }
 lib=$cache/libINTERPHASE.so
 fc=${FC:-gfortran}
-if [ ! -f "$lib" ] || [ -n "$(find "$root/src" "$build_dir/generated" -name '*.f90' -newer "$lib" | head -n 1)" ]; then
+if [ ! -f "$lib" ] || [ -n "$(find "$root/src" "$build_dir/generated" \( -name '*.f90' -o -name '*.c' \) -newer "$lib" | head -n 1)" ]; then
    "$root/examples/abaqus/make-user-file.sh" --calculix --build-dir "$build_dir" -o "$cache/interphase_calculix.f90" >/dev/null
    # -O2 as a host's user-subroutine build; UMAT is the name the deck's material gives
    # (@ABAQUS_INTERPHASE_UMAT: the deck is upper-cased), umat_ the Fortran one
-   (cd "$cache" && "$fc" -O2 -fPIC -shared -ffree-line-length-none -o libINTERPHASE.so.new interphase_calculix.f90 \
+   # calculix_start.c: the load-time hook that loads INTERPHASE_TABLE / INTERPHASE_RCURVE
+   (cd "$cache" && "${CC:-cc}" -O2 -fPIC -c "$root/src/abaqus/calculix_start.c" -o calculix_start.o && \
+      "$fc" -O2 -fPIC -shared -ffree-line-length-none -o libINTERPHASE.so.new interphase_calculix.f90 calculix_start.o \
       -Wl,--defsym,UMAT=umat_ -llapack -lblas) || { echo "build-calculix.sh: compiling libINTERPHASE.so failed" >&2; exit 1; }
    rm -f "$cache"/*.mod
    mv "$lib.new" "$lib"

@@ -13,11 +13,13 @@
 !> This adapter only packs arguments and calls the pure kernel. On a failed update it asks for a
 !> cut-back through PNEWDT (0.25 unless the host already holds a smaller positive request: Abaqus
 !> passes PNEWDT large, CalculiX -1), reports through `interphase_host_message` and returns before
-!> touching STRESS, STATEV, DDSDDE, SSE or SPD. Setup errors (sizes, PROPS, data not loaded, a
+!> touching STRESS, STATEV, DDSDDE, SSE or SPD (with the CalculiX host option DDSDDE is set to
+!> zero then: CalculiX passes it uninitialised and stores it even so). Setup errors (sizes, PROPS, data not loaded, a
 !> tabulated R-curve that does not cover D0 or the damage reached) and host inputs out of range (a
 !> NaN, an Inf or a magnitude beyond HOST_VALUE_MAX = 1e150 in the incoming STRESS, SSE or SPD) are
-!> reported as fatal, other failures as warnings (the increment is cut back). Thread-safe: no
-!> SAVE, COMMON or module data is written.
+!> reported as fatal, other failures as warnings (the increment is cut back); with
+!> INTERPHASE_REPLAY_DIR set, a failed call's inputs are written there first
+!> (interphase_replay_file). Thread-safe: no SAVE, COMMON or module data is written.
 !> SSE returns the stored energy and SPD accumulates the dissipated energy, per unit area of a
 !> cohesive element (N/mm) or per unit volume of a layer (N/mm^2 = MPa):
 !> SPD += 1/2 (sigma_n + sigma).deps - (psi - psi_n), with psi_n the SSE passed in. With the host
@@ -41,6 +43,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_provider, only: check_run_time_data
    use interphase_rcurve, only: rcurve_coverage
    use interphase_abaqus_interfaces, only: interphase_host_message
+   use interphase_replay_file, only: write_replay
    implicit none
    integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, layer, kspt, kinc
    integer, intent(in) :: jstep(4)
@@ -61,9 +64,13 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6), work
    integer :: status, nsep, i, j
    logical :: host_energies
+   !> the host is CalculiX (known once PROPS are decoded): its DDSDDE is uninitialised, and it
+   !> symmetrises and stores it even from a call that asks for a cut-back
+   logical :: calculix
    character(len=MESSAGE_LEN) :: message
    character(len=66) :: stress_text
 
+   calculix = .false.
    call from_props(props, params, status, message)
    if (status /= STATUS_OK) then
       call fail(status, SEVERITY_FATAL)
@@ -77,6 +84,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    end if
    nsep = map%nsep
    host_energies = params%host /= HOST_CALCULIX
+   calculix = .not. host_energies
    ! a custom table or R-curve that was not loaded at start-up: no smaller increment can help
    call check_run_time_data(params, status, message)
    if (status /= STATUS_OK) then
@@ -189,13 +197,21 @@ contains
    !> Ask for a cut-back and pass the message, with where it happened, to the host. Abaqus
    !> passes PNEWDT large and keeps the smallest value the points return; CalculiX passes -1 (no
    !> request) and takes any value > 0 as the factor, the smallest over the points: so the request
-   !> is PNEWDT_CUTBACK unless a smaller positive one is there already.
+   !> is PNEWDT_CUTBACK unless a smaller positive one is there already. With
+   !> INTERPHASE_REPLAY_DIR set, the call's inputs go to a replay file first (its path is named).
    subroutine fail(code, severity)
       integer, intent(in) :: code, severity
       character(len=2*MESSAGE_LEN) :: full
+      character(len=:), allocatable :: replay
       if (.not. (pnewdt > 0.0_dp .and. pnewdt <= PNEWDT_CUTBACK)) pnewdt = PNEWDT_CUTBACK
+      ! CalculiX: a defined (zero) stiffness rather than whatever its uninitialised DDSDDE held;
+      ! ccx discards the increment anyway
+      if (calculix) ddsdde = 0.0_dp
       write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
          ': ', status_message(code), ': ', trim(message)
+      call write_replay('umat', trim(full), props, statev, stress, sse, spd, stran, dstran, time, dtime, &
+         noel, npt, kinc, replay, ndi, nshr)
+      if (len(replay) > 0) full = trim(full)//' (replay file: '//replay//')'
       call interphase_host_message(severity, trim(full))
    end subroutine fail
 

@@ -31,6 +31,8 @@
 !> whose update fails (e.g. a non-finite increment, or a separation beyond |s_i| = 1e20 mm) keeps its old stress, state and energies,
 !> gets STATEV(SV_FAILED) = 1, and one warning per call names the number of failed points and
 !> the first one; the other points of the block are updated (Abaqus/Explicit has no PNEWDT).
+!> With INTERPHASE_REPLAY_DIR set, the first failed point's call is written there as a UMAT call
+!> (interphase_replay_file; `interphase-point FILE` repeats it through the same kernel).
 !> Thread-safe: no SAVE, COMMON or module data is written.
 subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime, totaltime, &
       dt, cmname, coordmp, charlength, props, density, straininc, relspininc, tempold, &
@@ -39,7 +41,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       enerinelasnew)
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
-      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID
+      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID, NSTATV_SHARED
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, STATUS_RCURVE_OUT_OF_RANGE, status_message, &
       STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_HOST_INPUT
@@ -54,6 +56,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_block, only: simplified_block_update, density_counts, block_supports
    use interphase_rcurve, only: rcurve_coverage
    use interphase_abaqus_interfaces, only: interphase_host_message
+   use interphase_replay_file, only: write_replay
    implicit none
    integer, intent(in) :: nblock                    !! number of material points in this call
    integer, intent(in) :: ndir                      !! direct components: 1 (cohesive elements)
@@ -383,9 +386,23 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       if (nfailed > 0) then
          block
             character(len=2*MESSAGE_LEN) :: full
+            character(len=:), allocatable :: replay
+            real(dp) :: sep_old(3), dsep(3), rho_first
             write (full, '(a,a,i0,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
                ' points failed and were held at their old stress and state (STATEV(', SV_FAILED, &
                ') = 1); first at block point ', first_failed, ': ', status_message(first_status), ': ', trim(first_message)
+            ! with INTERPHASE_REPLAY_DIR set: the first failed point's call as a UMAT call (its
+            ! separation and increment, the shared STATEV, the energies per unit area)
+            sep_old = [stateold(first_failed, SV_SEP_N), stateold(first_failed, SV_SEP_T1), &
+               stateold(first_failed, SV_SEP_T2)]
+            dsep(1) = THICKNESS*straininc(first_failed, 1)
+            dsep(2:ntens) = SHEAR_FACTOR*THICKNESS*straininc(first_failed, 2:ntens)
+            rho_first = density(first_failed)*THICKNESS
+            call write_replay('vumat', trim(full), props, stateold(first_failed, 1:NSTATV_SHARED), &
+               stressold(first_failed, :), (enerinternold(first_failed) - enerinelasold(first_failed))*rho_first, &
+               enerinelasold(first_failed)*rho_first, sep_old(1:ntens), dsep(1:ntens), [steptime, totaltime], dt, &
+               first_failed, 0, nint(totaltime/max(dt, tiny(1.0_dp))), replay)
+            if (len(replay) > 0) full = trim(full)//' (replay file: '//replay//')'
             call interphase_host_message(SEVERITY_WARNING, trim(full))
          end block
       end if

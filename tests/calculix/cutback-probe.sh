@@ -9,14 +9,19 @@
 #   cutback-probe.sh <examples/calculix> <cache> <work> <fortran compiler>
 set -uo pipefail
 cx=$(cd "$1" && pwd)
-cache=$(cd "$2" && pwd)
+cache=$2
 work=$3
 fc=$4
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
-[ -f "$cache/interphase_calculix.f90" ] && [ -x "$cache/ccx" ] || { echo "FAILED: no ccx or user source in $cache (calculix_build)"; exit 1; }
+# no ccx here (calculix_build skipped): skip too, but not in CI
+if [ ! -f "$cache/interphase_calculix.f90" ] || [ ! -x "$cache/ccx" ]; then
+   if [ "${CI:-}" = true ]; then echo "FAILED: no ccx or user source in $cache (calculix_build)"; exit 1; fi
+   echo "SKIP: no ccx or user source in $cache (calculix_build could not build them here)"; exit 77
+fi
+cache=$(cd "$cache" && pwd)
 mkdir -p probe
 "$fc" -O2 -fPIC -shared -ffree-line-length-none -J probe -o probe/libINTERPHASEPROBE.so "$cache/interphase_calculix.f90" \
    "$here/umat_cutback_probe.f90" -Wl,--defsym,UMAT=umat_cutback_probe_ -llapack -lblas || { echo "FAILED: probe library"; exit 1; }

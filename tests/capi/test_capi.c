@@ -453,6 +453,129 @@ static void test_load_rcurve(void) {
   CHECK(state_old[0] <= 0.3 && step > 2, "short R-curve: last D = %g after %d updates", state_old[0], step - 1);
 }
 
+/* interphase_run: the mixed history's rows (the driver's CSV) along one path in one call, equal
+ * bit for bit to interphase_update_dt called step by step as the UMAT is (the update at
+ * s[i-1] + (s[i] - s[i-1]), SPD accumulated), close to the CSV; then its failures. */
+#define RUN_MAX_ROWS 4096
+static void test_run(const char *csv_path) {
+  static double sep[RUN_MAX_ROWS * 2], tim[RUN_MAX_ROWS], tra[RUN_MAX_ROWS * 2], tan_[RUN_MAX_ROWS * 4],
+      sta[RUN_MAX_ROWS * INTERPHASE_NSTATE], psi[RUN_MAX_ROWS], wd[RUN_MAX_ROWS], ref[RUN_MAX_ROWS][5];
+  FILE *f = fopen(csv_path, "r");
+  CHECK(f != NULL, "cannot open %s", csv_path);
+  if (f == NULL) return;
+  char header[256];
+  CHECK(fgets(header, sizeof header, f) != NULL, "no header in %s", csv_path);
+  size_t n = 0;
+  double t, s_t, s_n, sig_t, sig_n, d, slip, psi_ref, w_dis;
+  char regime[32];
+  while (n < RUN_MAX_ROWS && fscanf(f, " %lf,%lf,%lf,%lf,%lf,%lf,%lf,%31[^,],%lf,%lf", &t, &s_t, &s_n, &sig_t, &sig_n,
+                                    &d, &slip, regime, &psi_ref, &w_dis) == 10) {
+    tim[n] = t;
+    sep[2 * n] = s_n;
+    sep[2 * n + 1] = s_t;
+    ref[n][0] = sig_n, ref[n][1] = sig_t, ref[n][2] = d, ref[n][3] = psi_ref, ref[n][4] = w_dis;
+    if (n == 0) { /* the start: the CSV's first row */
+      tra[0] = sig_n, tra[1] = sig_t;
+      sta[0] = d, sta[1] = slip, sta[2] = 0.0, sta[3] = regime_code(regime);
+      psi[0] = psi_ref, wd[0] = w_dis;
+    }
+    ++n;
+  }
+  fclose(f);
+  CHECK(n > 1000, "only %zu rows read from %s", n, csv_path);
+  double props[INTERPHASE_NPROPS_SIMPLIFIED];
+  paper_props(props);
+  size_t done = 0;
+  char detail[257] = "";
+  int status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, n, sep, tim, tra, tan_, sta, psi, wd, &done,
+                              detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == n, "interphase_run: status %d, %zu of %zu rows: %s", status, done, n,
+        detail);
+  /* step by step through interphase_update_dt, as the UMAT does it */
+  double state[INTERPHASE_NSTATE], t_old[2] = {tra[0], tra[1]}, psi_old = psi[0], w = wd[0];
+  memcpy(state, sta, sizeof state);
+  int equal = 1, close = 1;
+  for (size_t i = 1; i < n; ++i) {
+    const double ds[2] = {sep[2 * i] - sep[2 * i - 2], sep[2 * i + 1] - sep[2 * i - 1]};
+    const double s[2] = {sep[2 * i - 2] + ds[0], sep[2 * i - 1] + ds[1]};
+    double traction[2], tangent[4], state_new[INTERPHASE_NSTATE], e;
+    status = interphase_update_dt(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s, tim[i] - tim[i - 1], traction,
+                                  tangent, state_new, &e, detail, sizeof detail);
+    if (status != INTERPHASE_STATUS_OK) {
+      CHECK(0, "row %zu: interphase_update_dt status %d: %s", i, status, detail);
+      return;
+    }
+    w = w + 0.5 * ((0.0 + (t_old[0] + traction[0]) * ds[0]) + (t_old[1] + traction[1]) * ds[1]) - (e - psi_old);
+    equal = equal && traction[0] == tra[2 * i] && traction[1] == tra[2 * i + 1] && e == psi[i] && w == wd[i] &&
+            memcmp(state_new, sta + INTERPHASE_NSTATE * i, sizeof state_new) == 0 &&
+            memcmp(tangent, tan_ + 4 * i, sizeof tangent) == 0;
+    close = close && close_to(tra[2 * i], ref[i][0], 1e-12, 1e-9) && close_to(tra[2 * i + 1], ref[i][1], 1e-12, 1e-9) &&
+            close_to(sta[INTERPHASE_NSTATE * i], ref[i][2], 1e-12, 1e-9) && close_to(psi[i], ref[i][3], 1e-12, 1e-9) &&
+            close_to(wd[i], ref[i][4], 1e-12, 1e-9);
+    memcpy(state, state_new, sizeof state);
+    t_old[0] = traction[0], t_old[1] = traction[1], psi_old = e;
+  }
+  CHECK(equal, "interphase_run differs from interphase_update_dt step by step");
+  CHECK(close, "interphase_run differs from the driver's CSV %s", csv_path);
+
+  /* a NaN at row 700: rows 0..699 computed, the failed row and the rows after it untouched */
+  const size_t bad = 700;
+  const double saved = sep[2 * bad];
+  sep[2 * bad] = NAN;
+  for (size_t i = 1; i < n; ++i) tra[2 * i] = -12345.0, psi[i] = -12345.0;
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, n, sep, tim, tra, NULL, sta, psi, wd, &done, detail,
+                          sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_NONFINITE_SEPARATION && done == bad, "NaN at row %zu: status %d, rows_done %zu",
+        bad, status, done);
+  CHECK(strstr(detail, "row 700:") != NULL, "detail does not name the row: %s", detail);
+  CHECK(tra[2 * (bad - 1)] != -12345.0 && tra[2 * bad] == -12345.0 && psi[bad] == -12345.0 && psi[n - 1] == -12345.0,
+        "rows from the failed one on were written");
+  sep[2 * bad] = saved;
+
+  /* the starting row and the arguments are checked as interphase_update checks its inputs */
+  double tra0 = tra[0];
+  tra[0] = INFINITY;
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, sep, tim, tra, NULL, sta, psi, wd, &done, detail,
+                          sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HOST_INPUT && done == 0, "infinite starting traction: status %d", status);
+  tra[0] = tra0;
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 0, sep, tim, tra, NULL, sta, psi, wd, &done, detail,
+                          sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_STATE && done == 0, "nrows = 0: status %d", status);
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 4, 3, sep, tim, tra, NULL, sta, psi, wd, NULL, NULL, 0);
+  CHECK(status == INTERPHASE_STATUS_BAD_NTENS, "ntens = 4: status %d", status);
+  double bad_props[INTERPHASE_NPROPS_SIMPLIFIED];
+  paper_props(bad_props);
+  bad_props[4] = 1e-4;
+  status = interphase_run(bad_props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, sep, tim, tra, NULL, sta, psi, wd, &done,
+                          detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_SF_N && strstr(detail, "PROPS(5)") != NULL, "sf_N < s0_N: status %d: %s",
+        status, detail);
+  /* the UMAT's own options (a thin layer's thickness, PROPS[13]) are refused, as by interphase_update */
+  double layer[INTERPHASE_NPROPS_SIMPLIFIED + 5] = {0.0};
+  paper_props(layer);
+  layer[13] = 2.0;
+  status = interphase_run(layer, INTERPHASE_NPROPS_SIMPLIFIED + 5, 2, 3, sep, tim, tra, NULL, sta, psi, wd, &done,
+                          detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_OPTION && strstr(detail, "UMAT only") != NULL,
+        "layer thickness: status %d: %s", status, detail);
+  /* viscous regularisation needs the times: NULL is refused, as by interphase_update */
+  double viscous[INTERPHASE_NPROPS_SIMPLIFIED + 3];
+  paper_props(viscous);
+  viscous[9] = 0.0, viscous[10] = 0.0, viscous[11] = 0.5;
+  static double sv[RUN_MAX_ROWS * INTERPHASE_NSTATE_VISCOUS];
+  memset(sv, 0, sizeof sv);
+  double zero2[4] = {0.0, 0.0, 0.001, 0.0}, tr2[4] = {0.0}, ps2[2] = {0.0}, wd2[2] = {0.0}, t2[2] = {0.0, 1.0};
+  status = interphase_run(viscous, INTERPHASE_NPROPS_SIMPLIFIED + 3, 2, 2, zero2, NULL, tr2, NULL, sv, ps2, wd2, &done,
+                          detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_TIME_INCREMENT && done == 1, "viscous without times: status %d", status);
+  status = interphase_run(viscous, INTERPHASE_NPROPS_SIMPLIFIED + 3, 2, 2, zero2, t2, tr2, NULL, sv, ps2, wd2, &done,
+                          detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == 2 && tr2[2] > 0.0, "viscous with times: status %d: %s", status,
+        detail);
+  printf("interphase_run: %zu rows, equal to interphase_update_dt step by step\n", n);
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--load") == 0) {
     test_load_table(argv[2], argv[3]);
@@ -460,6 +583,7 @@ int main(int argc, char **argv) {
   } else if (argc == 2) {
     test_mixed_history(argv[1]);
     test_failures();
+    test_run(argv[1]);
   } else {
     fprintf(stderr, "usage: %s <tests/driver/reference/mixed.csv>\n"
                     "       %s --load <tables/paper.dat> <tables/paper-resolution.dat>\n", argv[0], argv[0]);

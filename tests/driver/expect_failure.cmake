@@ -1,5 +1,6 @@
 # Run a command that must fail: exit status non-zero AND output (stdout + stderr) matching EXPECT.
 #   cmake -DPROGRAM=<exe> -DARGS="arg1|arg2|..." -DEXPECT=<regex> [-DWORKDIR=<dir>] -P expect_failure.cmake
+# -DMERGED=ON: standard output and error as one stream, in the order written.
 # ARGS is '|'-separated (a ';' would be split by add_test). Fails (message(FATAL_ERROR)) if the
 # command exits with status 0 or its output does not match EXPECT.
 foreach(var IN ITEMS PROGRAM EXPECT)
@@ -12,12 +13,21 @@ if(NOT DEFINED WORKDIR)
   set(WORKDIR ${CMAKE_CURRENT_BINARY_DIR})
 endif()
 file(MAKE_DIRECTORY ${WORKDIR})
-execute_process(COMMAND ${PROGRAM} ${arguments}
-  WORKING_DIRECTORY ${WORKDIR}
-  RESULT_VARIABLE status
-  OUTPUT_VARIABLE out
-  ERROR_VARIABLE err)
-set(all "${out}${err}")
+if(MERGED)
+  # standard output and error in one stream, in the order written (as a pipe 2>&1 shows them)
+  execute_process(COMMAND ${PROGRAM} ${arguments}
+    WORKING_DIRECTORY ${WORKDIR}
+    RESULT_VARIABLE status
+    OUTPUT_VARIABLE all
+    ERROR_VARIABLE all)
+else()
+  execute_process(COMMAND ${PROGRAM} ${arguments}
+    WORKING_DIRECTORY ${WORKDIR}
+    RESULT_VARIABLE status
+    OUTPUT_VARIABLE out
+    ERROR_VARIABLE err)
+  set(all "${out}${err}")
+endif()
 message(STATUS "command: ${PROGRAM} ${arguments}\nexit status: ${status}\noutput:\n${all}")
 if(status STREQUAL "0")
   message(FATAL_ERROR "expected a non-zero exit status, got 0")

@@ -1,0 +1,139 @@
+"""The shared library libinterphase (the C interface of include/interphase.h) through ctypes.
+
+Where it is looked for, in this order:
+
+1. the file named by the environment variable INTERPHASE_LIBRARY;
+2. next to an installed package: the path `cmake --install` wrote into _installed.py;
+3. in a build tree of the source tree this package sits in (build/release, build/debug);
+4. by the system's loader (libinterphase.so.0 on LD_LIBRARY_PATH or in the loader's cache).
+"""
+
+import ctypes
+import os
+import pathlib
+
+from . import _status
+
+_c_double_p = ctypes.POINTER(ctypes.c_double)
+_c_size_t_p = ctypes.POINTER(ctypes.c_size_t)
+
+#: bytes of a detail buffer: every message of the library fits in 256 characters and a NUL
+DETAIL_LEN = 257
+
+
+def _candidates():
+    """(where, path) pairs to try, in order."""
+    here = pathlib.Path(__file__).resolve().parent
+    env = os.environ.get("INTERPHASE_LIBRARY")
+    if env:
+        yield "INTERPHASE_LIBRARY", env
+        return
+    try:
+        from . import _installed  # written by cmake --install
+        yield "the installation", str((here / _installed.LIBRARY).resolve())
+    except ImportError:
+        pass
+    # drivers/python/interphase in a source tree: its build directories
+    root = here.parents[2]
+    for build in ("build/release", "build/debug"):
+        yield "the source tree's " + build, str(root / build / "libinterphase.so")
+    yield "the system's loader", "libinterphase.so.0"
+
+
+def _load():
+    tried = []
+    for where, path in _candidates():
+        try:
+            return ctypes.CDLL(path), path
+        except OSError as error:
+            tried.append(f"{path} ({where}): {error}")
+    raise ImportError(
+        "interphase: cannot load the shared library libinterphase; build it (cmake --build BUILD, "
+        "target interphase_shared) and set INTERPHASE_LIBRARY=BUILD/libinterphase.so, or install "
+        "interphase (docs/python.md). Tried:\n  " + "\n  ".join(tried))
+
+
+lib, path = _load()
+
+_int, _size, _ptr, _dbl = ctypes.c_int, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_double
+
+lib.interphase_update_dt.restype = _int
+lib.interphase_update_dt.argtypes = [_ptr, _int, _int, _ptr, _ptr, _dbl, _ptr, _ptr, _ptr, _c_double_p,
+                                     ctypes.c_char_p, _size]
+lib.interphase_update.restype = _int
+lib.interphase_update.argtypes = [_ptr, _int, _int, _ptr, _ptr, _ptr, _ptr, _ptr, _c_double_p,
+                                  ctypes.c_char_p, _size]
+lib.interphase_run.restype = _int
+lib.interphase_run.argtypes = [_ptr, _int, _int, _size, _ptr, _ptr, _ptr, _ptr, _ptr, _ptr, _ptr,
+                               _c_size_t_p, ctypes.c_char_p, _size]
+lib.interphase_status_message.restype = _size
+lib.interphase_status_message.argtypes = [_int, ctypes.c_char_p, _size]
+lib.interphase_load_table.restype = _int
+lib.interphase_load_table.argtypes = [ctypes.c_char_p, ctypes.c_char_p, _size]
+lib.interphase_load_rcurve.restype = _int
+lib.interphase_load_rcurve.argtypes = [ctypes.c_char_p, ctypes.c_char_p, _size]
+
+
+def status_message(status):
+    """The library's generic message of a status code (interphase_status_message)."""
+    n = lib.interphase_status_message(int(status), None, 0)
+    buf = ctypes.create_string_buffer(n + 1)
+    lib.interphase_status_message(int(status), buf, n + 1)
+    return buf.value.decode("utf-8", "replace")
+
+
+class InterphaseError(ValueError):
+    """A status of the library (or of the keyword checks that stand for it), with its message.
+
+    Attributes: `status` (the code, one of interphase.STATUS_*), `name` (its symbolic name),
+    `reason` (the generic message of the code) and `detail` (which value, where, which range).
+    """
+
+    def __init__(self, status, detail=""):
+        self.status = int(status)
+        self.name = next((n for n, v in _status.STATUS_CODES.items() if v == self.status), str(status))
+        self.reason = status_message(self.status)
+        self.detail = detail
+        text = f"{self.reason} ({self.name} = {self.status})"
+        super().__init__(text + (": " + detail if detail else ""))
+
+
+def detail_buffer():
+    return ctypes.create_string_buffer(DETAIL_LEN)
+
+
+def text_of(buffer):
+    return buffer.value.decode("utf-8", "replace")
+
+
+# The custom RVE table and the tabulated R-curve are library-wide data (the loaders are not
+# thread-safe): this package loads each file when a material that names it is used, and only
+# when another one is loaded.
+_loaded = {"table": None, "rcurve": None}
+
+
+def load_table(path):
+    """Load the custom RVE table (tables/README.md format) for the micromechanical model."""
+    _load_file("table", lib.interphase_load_table, path)
+
+
+def load_rcurve(path):
+    """Load the tabulated R-curve ("D G_cI G_cII" rows) of the fracture-mechanics law."""
+    _load_file("rcurve", lib.interphase_load_rcurve, path)
+
+
+def _load_file(kind, loader, path):
+    path = os.fspath(path)
+    detail = detail_buffer()
+    status = loader(path.encode(), detail, DETAIL_LEN)
+    if status != _status.STATUS_OK:
+        raise InterphaseError(status, text_of(detail))
+    _loaded[kind] = os.path.abspath(path)
+
+
+def ensure_loaded(kind, path):
+    """Load `path` as the table or R-curve unless it is the one loaded."""
+    if path is None:
+        return
+    if _loaded[kind] != os.path.abspath(path):
+        (load_table if kind == "table" else load_rcurve)(path)

@@ -1,0 +1,492 @@
+"""Material, one-point update and history replay over the C interface (include/interphase.h)."""
+
+import math
+import os
+import struct
+import ctypes
+
+import numpy as np
+
+from . import _status as st
+from ._library import lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded
+
+# ---- the codes of the PROPS layout (src/interphase_enums.f90, docs/abaqus.md) --------------
+MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL = 1, 2
+DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE = 1, 2
+TABLE_DEFAULT, TABLE_CUSTOM = 0, 1
+RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED = 1, 2, 3
+GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA = 0, 1
+STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE = 0, 1, 2
+#: the regime codes of the state's fourth slot and their names (the driver's CSV `state` column)
+REGIME_NAMES = ("intact", "open", "stick", "slip")
+#: state doubles: without / with viscous regularisation (INTERPHASE_NSTATE[_VISCOUS])
+NSTATE, NSTATE_VISCOUS = 4, 5
+#: halvings of one sub-increment before a replay gives up (interphase-point's MAX_HALVINGS)
+MAX_HALVINGS = 10
+# statuses after which no smaller step can help (the UMAT reports them as fatal)
+_FATAL_STEP_STATUSES = {st.STATUS_BAD_TIME_INCREMENT, st.STATUS_RCURVE_OUT_OF_RANGE}
+
+# the keyword entries of the driver's &material (drivers/interphase_driver_case.f90)
+_REQUIRED = ("model", "damage_law", "mu", "s0_n", "sf_n", "s0_t", "sf_t")
+_ENTRIES = _REQUIRED + ("k_n", "k_t", "table", "d0", "rcurve", "rcurve_file", "g_ci", "g_cii",
+                        "growth_slip", "contact_band", "viscosity", "stiffness")
+
+
+def _as_c(array):
+    """A C-contiguous float64 array (a copy only when needed) and its address."""
+    a = np.ascontiguousarray(array, dtype=np.float64)
+    return a, a.ctypes.data
+
+
+def _same_bits(a, b):
+    return struct.pack("<d", a) == struct.pack("<d", b)
+
+
+def _keyword(name, value, choices, status):
+    """The code of an option entry given as one of `choices` (name -> code; None: the first)."""
+    words = list(choices)
+    word = words[0] if value is None or str(value).strip() == "" else str(value).strip().lower()
+    if word not in choices:
+        listed = ", ".join(f"'{w}'" for w in words)
+        raise InterphaseError(status, f"{name} must be one of {listed}, got {value!r}")
+    return choices[word]
+
+
+class Material:
+    """An interface material from the entries of interphase-point's `&material` (drivers/README.md).
+
+    Material(model='simplified', damage_law='displacement', mu=0.75, s0_n=0.00044, sf_n=0.04,
+             s0_t=0.00072, sf_t=0.06, k_n=482.7, k_t=198.8)
+
+    Keywords (units: mm, MPa/mm, N/mm, s):
+      model        'simplified' or 'micromechanical'
+      damage_law   'displacement' (eqs 13-18) or 'fracture' (eqs 20-24)
+      mu, s0_n, sf_n, s0_t, sf_t   friction coefficient and the damage law's separations
+      k_n, k_t     spring stiffnesses (simplified model only)
+      table        a custom RVE table file (micromechanical only; default: the built-in table)
+      d0, rcurve ('constant', 'equivalent', 'tabulated'), rcurve_file, g_ci, g_cii
+                   the fracture-mechanics law's entries
+      growth_slip ('fixed-pi', 'fixed-lambda'), contact_band, viscosity,
+      stiffness ('consistent', 'symmetric', 'fixed-damage')   the options (default: off)
+
+    The values are checked by the library itself (the UMAT's decoder): a value out of range raises
+    InterphaseError with the library's status code and message (which PROPS, which range). The
+    table and the R-curve files are loaded (and checked) when the material is made, and again
+    whenever another file was loaded since (they are library-wide data: not thread-safe).
+    """
+
+    def __init__(self, **entries):
+        unknown = sorted(set(entries) - set(_ENTRIES))
+        if unknown:
+            raise TypeError("Material: unknown entries " + ", ".join(unknown) + " (the entries of "
+                            "&material are " + ", ".join(_ENTRIES) + ")")
+        e = {k: v for k, v in entries.items() if v is not None}
+        model = str(e.get("model", "")).strip().lower()
+        law = str(e.get("damage_law", "")).strip().lower()
+        missing = [k for k in _REQUIRED if k not in e]
+        if model == "simplified":
+            missing += [k for k in ("k_n", "k_t") if k not in e]
+        if missing:
+            raise TypeError("Material: missing " + ("entries " if len(missing) > 1 else "entry ")
+                            + ", ".join(missing))
+        self.entries = dict(e)
+        self.table_path = None
+        self.rcurve_path = None
+        values = [float(e[k]) for k in ("mu", "s0_n", "sf_n", "s0_t", "sf_t")]
+        if model == "simplified":
+            if "table" in e:
+                raise InterphaseError(st.STATUS_BAD_TABLE_SELECTOR,
+                                      "table is an entry of model = 'micromechanical' only")
+            props = [MODEL_SIMPLIFIED, 0.0] + values + [float(e["k_n"]), float(e["k_t"])]
+        elif model == "micromechanical":
+            if "k_n" in e or "k_t" in e:
+                raise InterphaseError(st.STATUS_BAD_NPROPS, "k_n and k_t are entries of model = "
+                                      "'simplified' only (the micromechanical model takes its "
+                                      "stiffness from the RVE table)")
+            if "table" in e:
+                self.table_path = os.path.abspath(os.fspath(e["table"]))
+            props = [MODEL_MICROMECHANICAL, 0.0] + values + [TABLE_CUSTOM if self.table_path else TABLE_DEFAULT]
+        else:
+            raise InterphaseError(st.STATUS_BAD_MODEL, f"unknown model {e['model']!r} (available: "
+                                  "'simplified', 'micromechanical')")
+        fracture_only = ("d0", "rcurve", "rcurve_file", "g_ci", "g_cii")
+        if law == "displacement":
+            props[1] = DAMAGE_DISPLACEMENT
+            if any(k in e for k in fracture_only):
+                raise InterphaseError(st.STATUS_BAD_NPROPS, "d0, rcurve, rcurve_file, g_ci and g_cii "
+                                      "are entries of damage_law = 'fracture' only")
+        elif law == "fracture":
+            props[1] = DAMAGE_FRACTURE
+            if "d0" not in e:
+                raise InterphaseError(st.STATUS_BAD_D0, "missing entry d0 (initial crack a0/b, needed "
+                                      "by damage_law = 'fracture')")
+            rcurve = _keyword("rcurve", e.get("rcurve", "constant"),
+                              {"constant": RCURVE_CONSTANT, "equivalent": RCURVE_EQUIVALENT,
+                               "tabulated": RCURVE_TABULATED}, st.STATUS_BAD_RCURVE)
+            gc = [0.0, 0.0]
+            if rcurve == RCURVE_CONSTANT:
+                if "g_ci" not in e or "g_cii" not in e:
+                    raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" not in e else st.STATUS_BAD_GC_II,
+                                          "rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)")
+                gc = [float(e["g_ci"]), float(e["g_cii"])]
+            elif "g_ci" in e or "g_cii" in e:
+                raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" in e else st.STATUS_BAD_GC_II,
+                                      "g_ci and g_cii are entries of rcurve = 'constant' only")
+            if rcurve == RCURVE_TABULATED:
+                if "rcurve_file" not in e:
+                    raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve = 'tabulated' needs the entry rcurve_file")
+                self.rcurve_path = os.path.abspath(os.fspath(e["rcurve_file"]))
+            elif "rcurve_file" in e:
+                raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve_file is an entry of rcurve = 'tabulated' only")
+            props += [float(e["d0"]), float(rcurve)] + gc
+        else:
+            raise InterphaseError(st.STATUS_BAD_DAMAGE_LAW, f"unknown damage_law {e['damage_law']!r} "
+                                  "(available: 'displacement', 'fracture')")
+        # the option constants, written up to the last one not at its default (to_props)
+        options = [
+            float(_keyword("growth_slip", e.get("growth_slip"), {"fixed-pi": GROWTH_FIXED_PI,
+                           "fixed-lambda": GROWTH_FIXED_LAMBDA}, st.STATUS_BAD_OPTION)),
+            float(e.get("contact_band", 0.0)),
+            float(e.get("viscosity", 0.0)),
+            float(_keyword("stiffness", e.get("stiffness"), {"consistent": STIFFNESS_CONSISTENT,
+                           "symmetric": STIFFNESS_SYMMETRIC, "fixed-damage": STIFFNESS_FIXED_DAMAGE},
+                           st.STATUS_BAD_OPTION))]
+        nlast = max((k + 1 for k, v in enumerate(options) if not _same_bits(v, 0.0)), default=0)
+        self.props = np.array([float(p) for p in props] + options[:nlast], dtype=np.float64)
+        self.props.flags.writeable = False
+        self.viscous = options[2] > 0.0
+        self.nstate = NSTATE_VISCOUS if self.viscous else NSTATE
+        self.model, self.damage_law = model, law
+        # the library checks every value (from_props) and the data files: a zero increment on a
+        # virgin point, as interphase-point does first
+        self.update(np.zeros(2), dt=0.0)
+
+    @classmethod
+    def from_props(cls, props):
+        """A material from a PROPS array (docs/abaqus.md), checked by the library."""
+        self = cls.__new__(cls)
+        self.entries = {}
+        self.props = np.array(props, dtype=np.float64)
+        self.props.flags.writeable = False
+        self.table_path = self.rcurve_path = None
+        n = len(self.props)
+        nb = 9 if n > 0 and self.props[0] == MODEL_SIMPLIFIED else 8
+        if n > 1 and self.props[1] == DAMAGE_FRACTURE:
+            nb += 4
+        self.viscous = n >= nb + 3 and self.props[nb + 2] > 0.0
+        self.nstate = NSTATE_VISCOUS if self.viscous else NSTATE
+        self.model = self.damage_law = None
+        self.update(np.zeros(2), dt=0.0)
+        return self
+
+    def __repr__(self):
+        if not self.entries:
+            return f"Material.from_props({self.props.tolist()!r})"
+        return "Material(" + ", ".join(f"{k}={v!r}" for k, v in self.entries.items()) + ")"
+
+    def initial_state(self):
+        """The state of a virgin point: nstate zeros (D, slip_1, slip_2, regime[, inviscid D])."""
+        return np.zeros(self.nstate)
+
+    def _prepare(self):
+        ensure_loaded("table", self.table_path)
+        ensure_loaded("rcurve", self.rcurve_path)
+
+    def update(self, separation, state=None, dt=None):
+        """One update at `separation` (s_N, s_T) or (s_N, s_T1, s_T2) (mm) from `state`.
+
+        Returns an Update (traction (MPa), tangent (MPa/mm, tangent[i, j] = d t_i/d s_j),
+        state, stored_energy (N/mm)); `dt` (s) is the time increment, which viscous
+        regularisation needs. Raises InterphaseError on a failed update.
+        """
+        self._prepare()
+        s, s_p = _as_c(separation)
+        if s.ndim != 1 or s.size not in (2, 3):
+            raise ValueError(f"separation must hold 2 (2-D) or 3 (3-D) components, got shape {s.shape}")
+        n = s.size
+        old, old_p = _as_c(self.initial_state() if state is None else state)
+        if old.shape != (self.nstate,):
+            raise ValueError(f"state must hold {self.nstate} values, got shape {old.shape}")
+        props, props_p = _as_c(self.props)
+        traction = np.empty(n)
+        tangent = np.empty((n, n))
+        new = np.empty(self.nstate)
+        psi = ctypes.c_double()
+        detail = detail_buffer()
+        if dt is None:
+            status = lib.interphase_update(props_p, props.size, n, old_p, s_p, traction.ctypes.data,
+                                           tangent.ctypes.data, new.ctypes.data, ctypes.byref(psi),
+                                           detail, DETAIL_LEN)
+        else:
+            status = lib.interphase_update_dt(props_p, props.size, n, old_p, s_p, float(dt),
+                                              traction.ctypes.data, tangent.ctypes.data, new.ctypes.data,
+                                              ctypes.byref(psi), detail, DETAIL_LEN)
+        if status != st.STATUS_OK:
+            raise InterphaseError(status, text_of(detail))
+        return Update(traction, tangent, new, psi.value)
+
+    def _path(self, start, separation, time, tangent):
+        """interphase_run over `separation` (rows 1..) from the point `start` (row 0): the rows
+        computed and the status, rows_done and detail of the first failure (status 0: none)."""
+        n = start.separation.size
+        m = separation.shape[0] + 1
+        sep = np.empty((m, n))
+        sep[0] = start.separation
+        sep[1:] = separation
+        times = np.empty(m)
+        times[0] = start.time
+        times[1:] = time
+        traction = np.empty((m, n))
+        traction[0] = start.traction
+        state = np.empty((m, self.nstate))
+        state[0] = start.state
+        psi = np.empty(m)
+        psi[0] = start.stored_energy
+        w = np.empty(m)
+        w[0] = start.dissipated_energy
+        k = np.empty((m, n, n)) if tangent else None
+        props, props_p = _as_c(self.props)
+        done = ctypes.c_size_t(0)
+        detail = detail_buffer()
+        status = lib.interphase_run(props_p, props.size, n, m, sep.ctypes.data, times.ctypes.data,
+                                    traction.ctypes.data, None if k is None else k.ctypes.data,
+                                    state.ctypes.data, psi.ctypes.data, w.ctypes.data, ctypes.byref(done),
+                                    detail, DETAIL_LEN)
+        rows = _Rows(times, sep, traction, state, psi, w, k)
+        return rows, status, done.value, text_of(detail)
+
+    def run(self, separation, time=None, increments=1, tangent=False):
+        """Replay a separation history at one point, as interphase-point does (drivers/README.md).
+
+        separation: (nrows, ntens) array, each row (s_N, s_T) or (s_N, s_T1, s_T2) (mm), normal
+        first as in the C interface (a history file lists the shear first: read_history turns it);
+        time: nrows strictly increasing times (default 0, 1, 2, ...); increments: equal
+        sub-increments per segment. The point starts virgin at zero separation; a first row away
+        from zero is reached first in `increments` radial steps at time[0] (not returned). A step
+        that fails is halved and retried, up to MAX_HALVINGS times, each converged step giving a
+        row. The loop over the increments runs inside the library (interphase_run).
+
+        Returns a Result with one row per converged step, the start (time[0]) first. On a failure
+        the InterphaseError raised carries the rows computed until then as its `result` (None
+        when there are none), as the driver's CSV holds them.
+        """
+        self._prepare()
+        sep = np.array(separation, dtype=np.float64)
+        if sep.ndim != 2 or sep.shape[1] not in (2, 3) or sep.shape[0] < 1:
+            raise ValueError(f"separation must be an (nrows, 2) or (nrows, 3) array, got shape {sep.shape}")
+        nrows, n = sep.shape
+        t = np.arange(nrows, dtype=np.float64) if time is None else np.array(time, dtype=np.float64)
+        if t.shape != (nrows,):
+            raise ValueError(f"time must hold {nrows} values, got shape {t.shape}")
+        if nrows > 1 and not np.all(np.diff(t) > 0.0):
+            raise ValueError("time must increase strictly")
+        if not np.all(np.isfinite(t)):
+            raise ValueError("time must be finite")
+        increments = int(increments)
+        if increments < 1:
+            raise ValueError(f"increments must be at least 1, got {increments}")
+        # the sub-increments of every segment, as the driver computes them: theta = j/n, exact
+        # at the segment's end
+        theta = np.arange(1, increments + 1, dtype=np.float64) / float(increments)
+        zero = np.zeros(n)
+        segments = []                   # (s_a, s_b, t_a, t_b, write rows)
+        if np.any(np.abs(sep[0]) > 0.0):
+            segments.append((zero, sep[0], t[0], t[0], False))
+        for k in range(nrows - 1):
+            segments.append((sep[k], sep[k + 1], t[k], t[k + 1], True))
+        plan_s, plan_t, plan_j, plan_seg = [], [], [], []
+        for i, (s_a, s_b, t_a, t_b, _) in enumerate(segments):
+            s_new = s_a + theta[:, None] * (s_b - s_a)
+            t_new = t_a + theta * (t_b - t_a)
+            s_new[-1] = s_b
+            t_new[-1] = t_b
+            plan_s.append(s_new)
+            plan_t.append(t_new)
+            plan_j.append(np.arange(increments))
+            plan_seg.append(np.full(increments, i))
+        plan_s = np.concatenate(plan_s) if plan_s else np.empty((0, n))
+        plan_t = np.concatenate(plan_t) if plan_t else np.empty(0)
+        plan_j = np.concatenate(plan_j) if plan_j else np.empty(0, int)
+        plan_seg = np.concatenate(plan_seg) if plan_seg else np.empty(0, int)
+
+        point = _Point(t[0], zero, zero, self.initial_state(), 0.0, 0.0, np.full((n, n), np.nan))
+        # plan entries 0 .. npre-1 are the preload's (not returned); the point they reach, at
+        # time[0], is the first row
+        npre = increments if segments and not segments[0][4] else 0
+        chunks = [] if npre else [_Rows.of_point(point, tangent)]
+        i = 0
+        nplan = plan_s.shape[0]
+        try:
+            while i < nplan:
+                rows, status, done, detail = self._path(point, plan_s[i:], plan_t[i:], tangent)
+                converged = done - 1      # rows 1 .. converged: plan entries i .. i + converged - 1
+                if converged > 0:
+                    if i >= npre:
+                        chunks.append(rows.slice(1, 1 + converged))
+                    elif i + converged >= npre:
+                        chunks.append(rows.slice(npre - i, 1 + converged))
+                    point = rows.point(converged)
+                    i += converged
+                if status == st.STATUS_OK:
+                    break
+                if done == 0 or status in _FATAL_STEP_STATUSES:
+                    raise InterphaseError(status, _at_time(detail, point.time, plan_t[i]))
+                # halve the failed sub-increment, as interphase-point does; the preload's steps
+                # give no row, but its last one's end is the first row
+                preload = []
+                point = self._halve(point, segments[plan_seg[i]], int(plan_j[i]), increments, tangent,
+                                    chunks if i >= npre else preload)
+                if i == npre - 1:
+                    chunks.append(preload[-1])
+                i += 1
+        except InterphaseError as error:
+            error.result = Result.concatenate(chunks) if chunks else None
+            raise
+        return Result.concatenate(chunks)
+
+    def _halve(self, point, segment, j, increments, tangent, sink):
+        """Sub-increment j of `segment` in halved steps (interphase-point's advance), the rows
+        of the converged steps appended to `sink`; the point reached."""
+        s_a, s_b, t_a, t_b, _ = segment
+        theta_from = float(j) / float(increments)
+        theta_to = float(j + 1) / float(increments)
+        done, step, halvings = 0.0, 1.0, 0
+        while done < 1.0:
+            attempt = min(1.0, done + step)
+            theta = theta_to if attempt >= 1.0 else theta_from + attempt * (theta_to - theta_from)
+            if theta >= 1.0:
+                s_new, t_new = s_b, t_b
+            else:
+                s_new = s_a + theta * (s_b - s_a)
+                t_new = t_a + theta * (t_b - t_a)
+            rows, code, done_rows, text = self._path(point, np.array([s_new]), np.array([t_new]), tangent)
+            if code != st.STATUS_OK:
+                text = _at_time(text, point.time, t_new)
+                if done_rows == 0 or code in _FATAL_STEP_STATUSES:
+                    raise InterphaseError(code, text)
+                halvings += 1
+                if halvings > MAX_HALVINGS:
+                    raise InterphaseError(code, f"{text}; no convergence even after {MAX_HALVINGS} halvings of "
+                                          "the sub-increment")
+                step *= 0.5
+                continue
+            sink.append(rows.slice(1, 2))
+            point = rows.point(1)
+            done = attempt
+        return point
+
+
+def _at_time(detail, t_from, t_to):
+    """The library's detail of a failed step of interphase_run, with the step's times for its row."""
+    if detail.startswith("row ") and ": " in detail:
+        detail = detail.split(": ", 1)[1]
+    return f"from t = {t_from!r} to t = {float(t_to)!r}: {detail}"
+
+
+class Update:
+    """The result of Material.update: traction, tangent, state, stored_energy."""
+
+    __slots__ = ("traction", "tangent", "state", "stored_energy")
+
+    def __init__(self, traction, tangent, state, stored_energy):
+        self.traction, self.tangent, self.state, self.stored_energy = traction, tangent, state, stored_energy
+
+    def __iter__(self):
+        return iter((self.traction, self.tangent, self.state, self.stored_energy))
+
+    def __repr__(self):
+        return (f"Update(traction={self.traction!r}, tangent={self.tangent!r}, state={self.state!r}, "
+                f"stored_energy={self.stored_energy!r})")
+
+
+class _Point:
+    __slots__ = ("time", "separation", "traction", "state", "stored_energy", "dissipated_energy", "tangent")
+
+    def __init__(self, time, separation, traction, state, stored_energy, dissipated_energy, tangent):
+        self.time, self.separation, self.traction, self.state = time, separation, traction, state
+        self.stored_energy, self.dissipated_energy, self.tangent = stored_energy, dissipated_energy, tangent
+
+
+class _Rows:
+    """Rows of a path (arrays with one row per point)."""
+
+    def __init__(self, time, separation, traction, state, psi, w, tangent):
+        self.time, self.separation, self.traction, self.state = time, separation, traction, state
+        self.psi, self.w, self.tangent = psi, w, tangent
+
+    @classmethod
+    def of_point(cls, p, tangent):
+        return cls(np.array([p.time]), p.separation[None, :].copy(), p.traction[None, :].copy(),
+                   p.state[None, :].copy(), np.array([p.stored_energy]), np.array([p.dissipated_energy]),
+                   np.full((1,) + p.tangent.shape, np.nan) if tangent else None)
+
+    def slice(self, a, b):
+        return _Rows(self.time[a:b], self.separation[a:b], self.traction[a:b], self.state[a:b],
+                     self.psi[a:b], self.w[a:b], None if self.tangent is None else self.tangent[a:b])
+
+    def point(self, r):
+        return _Point(self.time[r], self.separation[r].copy(), self.traction[r].copy(), self.state[r].copy(),
+                      self.psi[r], self.w[r], None if self.tangent is None else self.tangent[r])
+
+
+class Result:
+    """A replayed history: one row per converged step, numpy arrays.
+
+    time (nrows), separation and traction (nrows, ntens; normal first, mm and MPa), damage
+    (nrows), slip (nrows, ntens - 1; mm), regime (nrows, codes; regime_names their names),
+    stored_energy and dissipated_energy (nrows; N/mm: the UMAT's SSE and SPD), state (nrows,
+    nstate) and, when asked for, tangent (nrows, ntens, ntens; MPa/mm; NaN at the start).
+    """
+
+    def __init__(self, time, separation, traction, state, stored_energy, dissipated_energy, tangent=None):
+        self.time, self.separation, self.traction, self.state = time, separation, traction, state
+        self.stored_energy, self.dissipated_energy, self.tangent = stored_energy, dissipated_energy, tangent
+        self.ntens = separation.shape[1]
+        self.damage = state[:, 0]
+        self.slip = state[:, 1:self.ntens]
+        self.regime = state[:, 3].astype(int)
+
+    @classmethod
+    def concatenate(cls, chunks):
+        def cat(name):
+            return np.concatenate([getattr(c, name) for c in chunks])
+        tangent = None if chunks[0].tangent is None else cat("tangent")
+        return cls(cat("time"), cat("separation"), cat("traction"), cat("state"), cat("psi"), cat("w"), tangent)
+
+    def __len__(self):
+        return self.time.size
+
+    @property
+    def regime_names(self):
+        return [REGIME_NAMES[c] for c in self.regime]
+
+    def csv_rows(self):
+        """The rows of interphase-point's CSV (its header first), as text lines."""
+        if self.ntens == 2:
+            yield "t,s_T,s_N,Sigma_T,Sigma_N,D,slip,state,psi,W_dis"
+        else:
+            yield "t,s_T1,s_T2,s_N,Sigma_T1,Sigma_T2,Sigma_N,D,slip_1,slip_2,state,psi,W_dis"
+        shear_first = list(range(1, self.ntens)) + [0]
+        for r in range(len(self)):
+            fields = ([self.time[r]] + [self.separation[r, c] for c in shear_first]
+                      + [self.traction[r, c] for c in shear_first] + [self.damage[r]]
+                      + list(self.slip[r]))
+            yield ",".join([format_csv(v) for v in fields] + [REGIME_NAMES[self.regime[r]],
+                                                               format_csv(self.stored_energy[r]),
+                                                               format_csv(self.dissipated_energy[r])])
+
+    def to_csv(self, path):
+        """Write the table as interphase-point writes its CSV (the same text, number for number)."""
+        with open(path, "w", encoding="ascii", newline="\n") as f:
+            for line in self.csv_rows():
+                f.write(line + "\n")
+
+
+def format_csv(x):
+    """A number as the driver writes it: Fortran ES24.16E3 (17 significant digits)."""
+    x = float(x)
+    if not math.isfinite(x):
+        return "Infinity" if x > 0 else ("-Infinity" if x < 0 else "NaN")
+    mantissa, exponent = f"{x:.16E}".split("E")
+    e = int(exponent)
+    return f"{mantissa}E{'-' if e < 0 else '+'}{abs(e):03d}"

@@ -1,0 +1,161 @@
+!> Replay files: one failed UMAT or VUMAT call, written so that `interphase-point FILE` repeats
+!> it through the UMAT (docs/abaqus.md, 'Replay files'; drivers/README.md).
+!>
+!> When the environment variable INTERPHASE_REPLAY_DIR names a folder, an adapter whose update
+!> fails writes the call's inputs there, as the namelist group `&replay` (PROPS, the incoming
+!> STATEV, STRESS, SSE and SPD, STRAN, DSTRAN, TIME, DTIME, the element, point and increment, the
+!> message, and the files INTERPHASE_TABLE and INTERPHASE_RCURVE name), every real with 17
+!> significant digits so that it reads back bit for bit. One file per element, point and
+!> increment: interphase-replay-<source>-e<NOEL>-p<NPT>-k<KINC>.nml. Without the variable nothing
+!> is written and nothing is looked up but the variable.
+!>
+!> Thread-safe: no module data; each call opens its own unit (`newunit`) on its own file.
+module interphase_replay_file
+   use interphase_kinds, only: dp
+   implicit none
+   private
+   public :: write_replay, write_replay_group, REPLAY_VARIABLE, REPLAY_MAX_PROPS, REPLAY_MAX_STATEV
+
+   !> The environment variable naming the folder of the replay files.
+   character(len=*), parameter :: REPLAY_VARIABLE = 'INTERPHASE_REPLAY_DIR'
+   !> Largest PROPS and STATEV a replay file holds.
+   integer, parameter :: REPLAY_MAX_PROPS = 64, REPLAY_MAX_STATEV = 64
+
+contains
+
+   !> Write the replay file of a failed call if INTERPHASE_REPLAY_DIR names a folder; `written`
+   !> is its path ('' when none was written: no variable, or the file could not be opened).
+   subroutine write_replay(source, message, props, statev, stress, sse, spd, stran, dstran, time, &
+         dtime, noel, npt, kinc, written, ndi, nshr)
+      character(len=*), intent(in) :: source       !! 'umat' or 'vumat'
+      character(len=*), intent(in) :: message      !! why the call failed
+      real(dp), intent(in) :: props(:), statev(:)  !! PROPS, the incoming STATEV
+      real(dp), intent(in) :: stress(:)            !! incoming STRESS (MPa)
+      real(dp), intent(in) :: sse, spd             !! incoming energies per unit area (N/mm)
+      real(dp), intent(in) :: stran(:), dstran(:)  !! separation at the start, its increment (mm)
+      real(dp), intent(in) :: time(2), dtime       !! step and total time at the start, increment
+      integer, intent(in) :: noel, npt, kinc       !! element, point, increment
+      character(len=:), allocatable, intent(out) :: written
+      integer, intent(in), optional :: ndi, nshr  !! the host's NDI, NSHR (default 1, NTENS - 1)
+      character(len=:), allocatable :: folder, path
+      character(len=64) :: name
+      integer :: unit, ios
+
+      written = ''
+      if (.not. environment(REPLAY_VARIABLE, folder)) return
+      write (name, '(a,a,a,i0,a,i0,a,i0,a)') 'interphase-replay-', source, '-e', noel, '-p', npt, '-k', kinc, '.nml'
+      if (folder(len(folder):len(folder)) == '/') then
+         path = folder//trim(name)
+      else
+         path = folder//'/'//trim(name)
+      end if
+      open (newunit=unit, file=path, status='replace', action='write', form='formatted', iostat=ios)
+      if (ios /= 0) return
+      call write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, dstran, &
+         time, dtime, noel, npt, kinc, ios, ndi=ndi, nshr=nshr)
+      close (unit)
+      if (ios == 0) written = path
+   end subroutine write_replay
+
+   !> Write the `&replay` group on an open unit (`ios` /= 0 when a write failed).
+   subroutine write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, &
+         dstran, time, dtime, noel, npt, kinc, ios, table_file, rcurve_file, ndi, nshr)
+      integer, intent(in) :: unit
+      character(len=*), intent(in) :: source, message
+      real(dp), intent(in) :: props(:), statev(:), stress(:), sse, spd, stran(:), dstran(:), time(2), dtime
+      integer, intent(in) :: noel, npt, kinc
+      integer, intent(out) :: ios
+      !> the custom RVE table and R-curve files loaded (default: what INTERPHASE_TABLE and
+      !> INTERPHASE_RCURVE name)
+      character(len=*), intent(in), optional :: table_file, rcurve_file
+      integer, intent(in), optional :: ndi, nshr   !! the host's NDI, NSHR (default 1, NTENS - 1)
+      character(len=:), allocatable :: table, rcurve
+      integer :: ndi_used, nshr_used
+
+      if (present(table_file)) then
+         table = table_file
+      else if (.not. environment('INTERPHASE_TABLE', table)) then
+         table = ''
+      end if
+      if (present(rcurve_file)) then
+         rcurve = rcurve_file
+      else if (.not. environment('INTERPHASE_RCURVE', rcurve)) then
+         rcurve = ''
+      end if
+      write (unit, '(a)', iostat=ios) '! A failed '//source//' call of interphase. Repeat it through the UMAT with', &
+         '!   interphase-point THIS_FILE', &
+         '! (drivers/README.md, ''Replay files''). STRESS, STRAN, DSTRAN in the host''s order.', &
+         '&replay', &
+         '  source = '''//source//'''', &
+         '  failure = '''//quoted(message)//''''
+      if (ios /= 0) return
+      write (unit, '(a,i0,a,i0,a,i0)', iostat=ios) '  noel = ', noel, ', npt = ', npt, ', kinc = ', kinc
+      if (ios /= 0) return
+      ndi_used = 1
+      nshr_used = size(stran) - 1
+      if (present(ndi)) ndi_used = ndi
+      if (present(nshr)) nshr_used = nshr
+      write (unit, '(a,i0,a,i0,a,i0,a,i0,a,i0)', iostat=ios) '  ntens = ', size(stran), ', ndi = ', ndi_used, &
+         ', nshr = ', nshr_used, ', nprops = ', size(props), ', nstatv = ', size(statev)
+      if (ios /= 0) return
+      call put('props', props)
+      call put('statev', statev)
+      call put('stress', stress)
+      call put('sse', [sse])
+      call put('spd', [spd])
+      call put('stran', stran)
+      call put('dstran', dstran)
+      call put('time', time)
+      call put('dtime', [dtime])
+      if (ios /= 0) return
+      write (unit, '(a)', iostat=ios) '  table = '''//quoted(table)//'''', '  rcurve = '''//quoted(rcurve)//'''', '/'
+
+   contains
+
+      subroutine put(key, values)
+         character(len=*), intent(in) :: key
+         real(dp), intent(in) :: values(:)
+         character(len=25) :: field
+         character(len=:), allocatable :: line
+         integer :: i
+         if (ios /= 0) return
+         line = '  '//key//' ='
+         do i = 1, size(values)
+            write (field, '(es25.16e3)') values(i)
+            line = line//' '//trim(adjustl(field))
+            if (i < size(values)) line = line//','
+         end do
+         write (unit, '(a)', iostat=ios) line
+      end subroutine put
+
+   end subroutine write_replay_group
+
+   !> A text for a single-quoted namelist string: quotes doubled.
+   pure function quoted(text) result(safe)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: safe
+      integer :: i
+      safe = ''
+      do i = 1, len_trim(text)
+         safe = safe//text(i:i)
+         if (text(i:i) == '''') safe = safe//''''
+      end do
+   end function quoted
+
+   !> The value of an environment variable, if it is set and not empty.
+   logical function environment(variable, value)
+      character(len=*), intent(in) :: variable
+      character(len=:), allocatable, intent(out) :: value
+      integer :: length, status
+      environment = .false.
+      call get_environment_variable(variable, length=length, status=status)
+      if (status /= 0 .or. length == 0) then
+         value = ''
+         return
+      end if
+      allocate (character(len=length) :: value)
+      call get_environment_variable(variable, value, status=status)
+      environment = status == 0
+   end function environment
+
+end module interphase_replay_file

@@ -1,0 +1,31 @@
+# A failed run of interphase-point writes a replay file next to its CSV (CSV stem + .replay.nml),
+# and `interphase-point REPLAY` repeats the failed UMAT call: exit status 1 and the same message.
+#   cmake -DPROGRAM=<interphase-point> -DCASE=<failing case> -DSTEM=<its CSV stem> -DEXPECT=<regex>
+#         -DWORK=<dir> -P replay_roundtrip.cmake
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+execute_process(COMMAND ${PROGRAM} ${CASE} --no-plot --output-dir ${WORK} RESULT_VARIABLE status
+  OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "the failing run: exit status ${status}\n${out}${err}")
+if(status EQUAL 0)
+  message(FATAL_ERROR "the case did not fail")
+endif()
+set(replay ${WORK}/${STEM}.replay.nml)
+if(NOT EXISTS ${replay})
+  message(FATAL_ERROR "no replay file ${replay}")
+endif()
+if(NOT "${err}" MATCHES "the failed UMAT call is in .*${STEM}[.]replay[.]nml")
+  message(FATAL_ERROR "the message does not name the replay file")
+endif()
+execute_process(COMMAND ${PROGRAM} ${replay} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "the replay: exit status ${status}\n${out}${err}")
+if(NOT status EQUAL 1)
+  message(FATAL_ERROR "the replayed call should fail again with exit status 1, got ${status}")
+endif()
+if(NOT "${out}${err}" MATCHES "the call fails again")
+  message(FATAL_ERROR "the replay does not say that the call fails again")
+endif()
+if(NOT "${err}" MATCHES "INTERPHASE-REPLAY element 1 point 1: ${EXPECT}")
+  message(FATAL_ERROR "the replayed call's message does not match: ${EXPECT}")
+endif()
+message(STATUS "ok: the replay file repeats the failed call")

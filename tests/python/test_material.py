@@ -1,0 +1,234 @@
+"""The package's Material: its entries and the library's checks, one-point updates in 2-D and
+3-D against closed forms and finite differences, the run's contract (rows, halvings, failures),
+table and R-curve loading, and concurrent use from threads."""
+
+import threading
+
+import numpy as np
+import pytest
+
+import interphase
+
+K_N, K_T = 482.69742679680568, 198.75776397515528
+SIMPLIFIED = dict(model="simplified", damage_law="displacement", mu=0.75, s0_n=0.00044, sf_n=0.04,
+                  s0_t=0.00072, sf_t=0.06, k_n=K_N, k_t=K_T)
+MICRO = dict(model="micromechanical", damage_law="displacement", mu=0.75, s0_n=0.00044, sf_n=0.04,
+             s0_t=0.00072, sf_t=0.06)
+
+
+def test_props_are_the_umat_layout():
+    m = interphase.Material(**SIMPLIFIED)
+    assert m.props.tolist() == [1, 1, 0.75, 0.00044, 0.04, 0.00072, 0.06, K_N, K_T]
+    assert m.nstate == interphase.NSTATE
+    f = interphase.Material(**dict(MICRO, damage_law="fracture", d0=0.02, rcurve="constant", g_ci=0.01,
+                                   g_cii=0.02, stiffness="fixed-damage"))
+    assert f.props.tolist() == [2, 2, 0.75, 0.00044, 0.04, 0.00072, 0.06, 0, 0.02, 1, 0.01, 0.02, 0, 0, 0, 2]
+    v = interphase.Material(**dict(SIMPLIFIED, viscosity=0.1))
+    assert v.props.tolist()[9:] == [0, 0, 0.1] and v.nstate == interphase.NSTATE_VISCOUS
+    same = interphase.Material.from_props(f.props)
+    assert np.array_equal(same.props, f.props) and same.nstate == 4
+
+
+@pytest.mark.parametrize("change, status, words", [
+    (dict(sf_n=1e-4), interphase.STATUS_BAD_SF_N, "PROPS(5) sf_N = 1.00000E-004 is out of range"),
+    (dict(mu=-1.0), interphase.STATUS_BAD_MU, "PROPS(3) mu = -1.00000E+000 is out of range"),
+    (dict(k_t=float("nan")), interphase.STATUS_BAD_K_T, "PROPS(9)"),
+    (dict(s0_t=0.0), interphase.STATUS_BAD_S0_T, "PROPS(6)"),
+    (dict(model="spring"), interphase.STATUS_BAD_MODEL, "unknown model 'spring'"),
+    (dict(damage_law="plastic"), interphase.STATUS_BAD_DAMAGE_LAW, "unknown damage_law 'plastic'"),
+    (dict(stiffness="secant"), interphase.STATUS_BAD_OPTION, "stiffness must be one of"),
+    (dict(growth_slip="free"), interphase.STATUS_BAD_OPTION, "growth_slip must be one of"),
+    (dict(contact_band=0.01), interphase.STATUS_BAD_OPTION, "PROPS(11) contact band chi"),
+    (dict(viscosity=-1.0), interphase.STATUS_BAD_OPTION, "PROPS(12) viscosity eta"),
+    (dict(table="x.dat"), interphase.STATUS_BAD_TABLE_SELECTOR, "table is an entry of model = 'micromechanical'"),
+    (dict(d0=0.1), interphase.STATUS_BAD_NPROPS, "entries of damage_law = 'fracture' only"),
+    (dict(damage_law="fracture"), interphase.STATUS_BAD_D0, "missing entry d0"),
+    (dict(damage_law="fracture", d0=1.5, rcurve="equivalent"), interphase.STATUS_BAD_D0, "PROPS(10) D0"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="constant", g_ci=0.01), interphase.STATUS_BAD_GC_II, "g_cii"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="equivalent", g_ci=0.01), interphase.STATUS_BAD_GC_I,
+     "rcurve = 'constant' only"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="measured"), interphase.STATUS_BAD_RCURVE, "rcurve must be"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="equivalent", viscosity=1.0), interphase.STATUS_BAD_OPTION,
+     "displacement-driven law"),
+])
+def test_bad_entries_raise_the_library_status(change, status, words):
+    with pytest.raises(interphase.InterphaseError) as caught:
+        interphase.Material(**dict(SIMPLIFIED, **change))
+    error = caught.value
+    assert error.status == status, str(error)
+    assert words in str(error)
+    assert error.reason == interphase.status_message(status)
+    assert isinstance(error, ValueError)
+
+
+def test_missing_and_unknown_entries_are_type_errors():
+    with pytest.raises(TypeError, match="missing entries k_n, k_t"):
+        interphase.Material(**{k: v for k, v in SIMPLIFIED.items() if k not in ("k_n", "k_t")})
+    with pytest.raises(TypeError, match="unknown entries s0"):
+        interphase.Material(s0=1.0, **SIMPLIFIED)
+    with pytest.raises(interphase.InterphaseError, match="k_n and k_t are entries of model = 'simplified'"):
+        interphase.Material(**dict(MICRO, k_n=1.0))
+
+
+@pytest.mark.parametrize("ntens", [2, 3])
+def test_elastic_update_is_the_spring_law(ntens):
+    m = interphase.Material(**SIMPLIFIED)
+    s = np.array([1e-4, 2e-4, -1.5e-4][:ntens])
+    u = m.update(s)
+    k = np.diag([K_N] + [K_T] * (ntens - 1))
+    assert np.allclose(u.traction, k @ s, rtol=1e-15, atol=0)
+    assert np.array_equal(u.tangent, k)
+    assert u.stored_energy == pytest.approx(0.5 * s @ k @ s, rel=1e-14)
+    assert u.state.tolist() == [0, 0, 0, 0]
+    traction, tangent, state, psi = u       # an Update unpacks
+    assert psi == u.stored_energy
+
+
+@pytest.mark.parametrize("material", [SIMPLIFIED, MICRO], ids=["simplified", "micro"])
+@pytest.mark.parametrize("ntens", [2, 3])
+def test_tangent_is_the_derivative(material, ntens):
+    """Consistent tangent against central differences on a damaging, slipping step."""
+    m = interphase.Material(**material)
+    start = m.run(np.array([[0.0, 0.0, 0.0][:ntens], [-0.002, 0.01, 0.004][:ntens]]), increments=50)
+    state = start.state[-1]
+    s = start.separation[-1] + np.array([-0.0001, 0.001, 0.0005][:ntens])
+    u = m.update(s, state)
+    h = 1e-8
+    for j in range(ntens):
+        e = np.zeros(ntens)
+        e[j] = h
+        fd = (m.update(s + e, state).traction - m.update(s - e, state).traction) / (2 * h)
+        assert np.allclose(u.tangent[:, j], fd, rtol=1e-4, atol=1e-3 * np.abs(u.tangent).max()), (j, u.tangent, fd)
+
+
+def test_run_rows_and_energies():
+    m = interphase.Material(**SIMPLIFIED)
+    r = m.run([[0.0, 0.0], [0.05, 0.0]], increments=100, tangent=True)
+    assert len(r) == 101 and r.ntens == 2
+    assert r.time[0] == 0 and r.time[-1] == 1
+    assert r.damage[0] == 0 and r.damage[-1] == 1
+    assert r.regime_names[0] == "intact" and r.regime_names[-1] == "open"
+    assert np.all(np.diff(r.damage) >= 0)
+    # the whole mode-I fracture energy 1/2 K_N s0_N sf_N is dissipated at full damage (to the
+    # trapezoidal rule's error of the increments)
+    assert r.dissipated_energy[-1] == pytest.approx(0.5 * K_N * 0.00044 * 0.04, rel=2e-2)
+    assert r.stored_energy[-1] == 0
+    assert np.isnan(r.tangent[0]).all() and r.tangent.shape == (101, 2, 2)
+    # each row's tangent is that of a one-point update from the previous row
+    u = m.update(r.separation[40], r.state[39])
+    assert np.array_equal(u.tangent, r.tangent[40]) and np.array_equal(u.traction, r.traction[40])
+
+
+def test_run_starts_away_from_zero_after_a_preload():
+    m = interphase.Material(**SIMPLIFIED)
+    r = m.run([[-0.005, 0.0], [-0.005, 0.01]], time=[2.0, 3.0], increments=10)
+    assert len(r) == 11 and r.time[0] == 2.0
+    assert r.separation[0].tolist() == [-0.005, 0.0]
+    assert r.traction[0][0] == pytest.approx(-0.005 * K_N)
+
+
+def test_run_gives_up_after_the_halvings():
+    m = interphase.Material(**SIMPLIFIED)
+    with pytest.raises(interphase.InterphaseError, match="even after 10 halvings") as caught:
+        m.run([[0.0, 0.0], [2e20, 0.0]])
+    assert caught.value.status == interphase.STATUS_SEPARATION_OUT_OF_RANGE
+
+
+def test_run_input_checks():
+    m = interphase.Material(**SIMPLIFIED)
+    with pytest.raises(ValueError, match="time must increase"):
+        m.run([[0, 0], [0.01, 0]], time=[1.0, 1.0])
+    with pytest.raises(ValueError, match="shape"):
+        m.run([0.0, 0.01])
+    with pytest.raises(ValueError, match="increments"):
+        m.run([[0, 0], [0.01, 0]], increments=0)
+    with pytest.raises(interphase.InterphaseError) as caught:
+        m.run([[0, 0], [float("nan"), 0]])
+    assert caught.value.status == interphase.STATUS_NONFINITE_SEPARATION
+    with pytest.raises(ValueError, match="state must hold 4"):
+        m.update([0.0, 0.0], np.zeros(5))
+
+
+def test_viscous_material_needs_time_increments():
+    m = interphase.Material(**dict(SIMPLIFIED, viscosity=0.5))
+    with pytest.raises(interphase.InterphaseError) as caught:
+        m.update([0.001, 0.0], m.initial_state())
+    assert caught.value.status == interphase.STATUS_BAD_TIME_INCREMENT
+    slow = m.run([[0, 0], [0.01, 0]], time=[0, 100.0], increments=50)
+    fast = m.run([[0, 0], [0.01, 0]], time=[0, 0.01], increments=50)
+    assert fast.damage[-1] < slow.damage[-1]          # the damage lags behind when loaded fast
+
+
+def test_tables_and_rcurves(source_dir, tmp_path):
+    builtin = interphase.Material(**MICRO)
+    custom = interphase.Material(**dict(MICRO, table=source_dir / "tables" / "paper-resolution.dat"))
+    s = [0.001, 0.002]
+    # the two tables are different data: different numbers past first cracking
+    assert not np.array_equal(builtin.run([[0, 0], s], increments=20).traction,
+                              custom.run([[0, 0], s], increments=20).traction)
+    bad = tmp_path / "bad.dat"
+    bad.write_text("# b = 1\n0 1 2\n")
+    with pytest.raises(interphase.InterphaseError) as caught:
+        interphase.Material(**dict(MICRO, table=bad))
+    assert 50 <= caught.value.status <= 59 and "bad.dat" in str(caught.value)
+    rcurve = tmp_path / "rcurve.txt"
+    rcurve.write_text("# D G_cI G_cII\n0.0 0.005 0.0085\n1.0 0.005 0.0085\n")
+    tab = interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
+                                     rcurve_file=rcurve))
+    const = interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="constant",
+                                       g_ci=0.005, g_cii=0.0085))
+    a = tab.run([[0, 0], [0.02, 0.01]], increments=40)
+    b = const.run([[0, 0], [0.02, 0.01]], increments=40)
+    assert np.allclose(a.traction, b.traction, rtol=1e-9, atol=1e-12)
+    with pytest.raises(interphase.InterphaseError) as caught:
+        interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
+                                   rcurve_file=tmp_path / "none.txt"))
+    assert caught.value.status == interphase.STATUS_RCURVE_UNREADABLE
+
+
+def test_an_rcurve_that_runs_out_stops_the_run(source_dir):
+    case = interphase.read_case(source_dir / "tests" / "driver" / "inputs" / "rcurve_runs_out.nml")
+    with pytest.raises(interphase.InterphaseError, match="covers D from 0.00000 to 0.300000") as caught:
+        case.run()
+    assert caught.value.status == interphase.STATUS_RCURVE_OUT_OF_RANGE
+
+
+def test_read_history(source_dir, tmp_path):
+    t, s = interphase.read_history(source_dir / "drivers" / "cases" / "mixed.txt")
+    assert t.tolist() == [0, 1, 2, 3, 4, 5, 6]
+    assert s.shape == (7, 2) and np.all(s[:, 0] == -0.005) and s[2, 1] == 0.05
+    t3, s3 = interphase.read_history(source_dir / "drivers" / "cases" / "mixed3d.txt")
+    assert s3.shape[1] == 3
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0 0 0\n1 0 1-2\n")
+    with pytest.raises(ValueError, match="bad.txt:2: cannot parse '1-2'"):
+        interphase.read_history(bad)
+
+
+def test_threads_give_the_numbers_of_one():
+    """The C entry points keep no state: threads running at once get the serial numbers."""
+    m = interphase.Material(**MICRO)
+    path = np.array([[0, 0], [-0.005, 0.05], [0.01, -0.03], [0.0, 0.08]])
+    expected = m.run(path, increments=300)
+    results = [None] * 8
+
+    def work(k):
+        results[k] = m.run(path, increments=300)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(len(results))]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    for r in results:
+        assert np.array_equal(r.traction, expected.traction) and np.array_equal(r.state, expected.state)
+
+
+def test_the_umats_own_options_are_refused():
+    """The thin-layer mode and the host conventions are options of the UMAT only: the C entry
+    points, and so the package, take separations and refuse them (STATUS_BAD_OPTION)."""
+    props = interphase.Material(**SIMPLIFIED).props.tolist() + [0, 0, 0, 0, 2.0]   # layer thickness t
+    with pytest.raises(interphase.InterphaseError, match="PROPS.14. layer thickness t is an option of the UMAT only") \
+            as caught:
+        interphase.Material.from_props(props)
+    assert caught.value.status == interphase.STATUS_BAD_OPTION
