@@ -1,6 +1,11 @@
 !> `interphase-bench`: cost of one `umat` call, simplified and micromechanical (built-in table) models.
 !>
-!>     interphase-bench [CALLS_PER_RUN [RUNS]]      (defaults 1000000 and 5)
+!>     interphase-bench [CALLS_PER_RUN [RUNS [CASE]]]      (defaults 1000000, 5 and all cases)
+!>
+!> CASE 1..8 runs one row of the table only (in the order printed: simplified + displacement
+!> law 2-D, 3-D, micromechanical + displacement law 2-D, 3-D, simplified + LFM 2-D, 3-D,
+!> micromechanical + LFM 2-D, 3-D), e.g. for an instruction count of one case under callgrind
+!> (tools/bench-ratios.sh).
 !>
 !> Replays the paper's mixed-mode history (Table 4: s_N = -0.005 mm throughout, s_T = 0, 0,
 !> 0.05, 0, 0.08, -0.05, 0 mm at t = 0..6) in 2-D and its 3-D version with the shear rotated by
@@ -33,7 +38,7 @@ program bench_umat
    integer :: model, law, variant
    real(dp), allocatable :: ns_per_call(:)
    real(dp) :: checksum
-   integer :: calls_per_run, runs, increments, ntens, run
+   integer :: calls_per_run, runs, increments, ntens, run, only_case
    integer(int64) :: count_rate
    character(len=32) :: argument
    character(len=*), parameter :: ROW_FORMAT = '(a20, a12, i6, i12, i6, 2f16.1, es24.15)'
@@ -58,6 +63,15 @@ program bench_umat
       call get_command_argument(2, argument)
       runs = parse_positive(argument, 'RUNS')
    end if
+   only_case = 0
+   if (command_argument_count() >= 3) then
+      call get_command_argument(3, argument)
+      only_case = parse_positive(argument, 'CASE')
+      if (only_case > 8) then
+         write (error_unit, '(a)') 'interphase-bench: error: CASE must be 1..8'
+         error stop 1
+      end if
+   end if
    increments = max(1, calls_per_run/NSEGMENTS)
 
 
@@ -74,6 +88,7 @@ program bench_umat
    law = merge(DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, variant <= 2)
    call set_props(model, law)
    do ntens = 2, 3
+      if (only_case > 0 .and. only_case /= 2*(variant - 1) + ntens - 1) cycle
       do run = 1, runs
          call one_run(ntens, ns_per_call(run), checksum)
       end do
@@ -263,7 +278,7 @@ contains
       if (ios /= 0 .or. verify(trim(text), '0123456789') /= 0) then
          write (error_unit, '(a)') 'interphase-bench: error: '//name//" must be a positive "// &
             "integer, got '"//trim(text)//"'"
-         write (error_unit, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS]]'
+         write (error_unit, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS [CASE]]]'
          error stop 1
       end if
       if (parse_positive < 1) then

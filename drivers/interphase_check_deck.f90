@@ -3,7 +3,9 @@
 !>   interphase-check-deck deck.inp [more.inp ...]
 !>
 !> For every *COHESIVE SECTION it checks what interphase requires (docs/abaqus.md):
-!> RESPONSE=TRACTION SEPARATION, THICKNESS=SPECIFIED with constitutive thickness 1, a material
+!> RESPONSE=TRACTION SEPARATION (or CONTINUUM), THICKNESS=SPECIFIED with constitutive thickness 1,
+!> or the material's layer thickness t when it sets one (a continuum response with THICKNESS=
+!> GEOMETRY gets a note: the value comes from the nodes), the layer normal axis 0, a material
 !> with *USER MATERIAL whose constants decode as interphase PROPS (the library's own decoder:
 !> the same messages the UMAT would give at the first increment), *DEPVAR at least 4 (UMAT; 5 with
 !> viscous regularisation) or 9 (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for
@@ -260,27 +262,39 @@ contains
 
       type(law_params_type) :: params
       character(len=MESSAGE_LEN) :: message
-      character(len=:), allocatable :: where, solver, summary, notes, hook
-      integer :: m, k, status, nfail_before, depvar_needed
+      character(len=:), allocatable :: where, solver, summary, notes, hook, section_where
+      integer :: m, k, status, nfail_before, depvar_needed, normal
+      real(dp) :: t_layer
 
       nfail_before = nfail
+      status = -1
       solver = merge('Abaqus/Explicit (VUMAT)', 'Abaqus/Standard (UMAT) ', explicit)
       where = path//':'//int_to_string(section%line)//': *COHESIVE SECTION, ELSET='//trim(section%elset)
-      if (section%response /= 'TRACTIONSEPARATION') &
+      section_where = where
+      if (section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') &
          call record_failure(where//': RESPONSE='//trim(section%response)//' but interphase is a traction-separation '// &
-            'law: RESPONSE=TRACTION SEPARATION', nfail)
-      if (section%thickness_mode /= 'SPECIFIED') &
-         call record_failure(where//': THICKNESS='//trim(section%thickness_mode)//' but interphase needs '// &
-            'THICKNESS=SPECIFIED with constitutive thickness 1 (strain = separation in mm)', nfail)
-      if (.not. is_finite(section%thickness) .or. abs(section%thickness - 1.0_dp) > 1.0e-12_dp) &
-         call record_failure(where//': constitutive thickness '//real_to_string(section%thickness)// &
-            ' but interphase needs 1', nfail)
+            'law: RESPONSE=TRACTION SEPARATION (or CONTINUUM with the layer thickness option, docs/abaqus.md)', nfail)
       m = 0
       do k = 1, size(materials)
          if (materials(k)%name == section%material) m = k
       end do
       summary = ''
       notes = ''
+      ! the constitutive thickness T0 turns separations into the strains the UMAT gets
+      ! (eps = delta/T0): T0 = 1 with the layer thickness option 0, T0 = t with t > 0 (the
+      ! material's options when its constants decode; its own checks follow)
+      t_layer = 0.0_dp
+      normal = 0
+      if (m > 0) then
+         if (materials(m)%user_line /= 0 .and. materials(m)%nconstants == materials(m)%nread) then
+            call from_props(materials(m)%constants(1:materials(m)%nread), params, status, message)
+            if (status == STATUS_OK) then
+               t_layer = params%layer_thickness
+               normal = params%layer_normal
+            end if
+         end if
+      end if
+      call check_thickness(section, section_where, t_layer, normal, notes, nfail)
       hook = trim(merge('VEXTERNALDB', 'UEXTERNALDB', explicit))
       if (m == 0) then
          call record_failure(where//': material '//trim(section%material)//' is not defined in this deck', nfail)
@@ -352,6 +366,40 @@ contains
             trim(section%material)//', '//trim(solver)//': '//summary//': ok'//notes
       end if
    end subroutine check_section
+
+   !> A cohesive section's constitutive thickness against its material's layer options (t = 0:
+   !> the separation itself, T0 = 1; t > 0: T0 = t) and normal axis (0 on a cohesive element).
+   subroutine check_thickness(section, where, t_layer, normal, notes, nfail)
+      type(section_type), intent(in) :: section
+      character(len=*), intent(in) :: where
+      real(dp), intent(in) :: t_layer
+      integer, intent(in) :: normal
+      character(len=:), allocatable, intent(inout) :: notes
+      integer, intent(inout) :: nfail
+      real(dp) :: t0
+      character(len=:), allocatable :: rule
+      t0 = 1.0_dp
+      rule = 'constitutive thickness 1 (strain = separation in mm)'
+      if (t_layer > 0.0_dp) then
+         t0 = t_layer
+         rule = 'the constitutive thickness '//real_to_string(t_layer)//' mm of the material''s layer thickness '// &
+            'option (strain = separation/t)'
+      end if
+      if (normal /= 0) call record_failure(where//': the material''s layer normal axis is '// &
+         int_to_string(normal)//' but a cohesive element is normal first: set it to 0', nfail)
+      if (section%thickness_mode /= 'SPECIFIED') then
+         if (section%response == 'CONTINUUM' .and. section%thickness_mode == 'GEOMETRY' .and. t_layer > 0.0_dp) then
+            notes = notes//'; note: THICKNESS=GEOMETRY: the constitutive thickness comes from the nodes and '// &
+               'must equal the layer thickness option '//real_to_string(t_layer)//' mm (not checked)'
+         else
+            call record_failure(where//': THICKNESS='//trim(section%thickness_mode)//' but interphase needs '// &
+               'THICKNESS=SPECIFIED with '//rule, nfail)
+         end if
+      else if (.not. is_finite(section%thickness) .or. abs(section%thickness - t0) > 1.0e-12_dp*t0) then
+         call record_failure(where//': constitutive thickness '//real_to_string(section%thickness)// &
+            ' but interphase needs '//rule, nfail)
+      end if
+   end subroutine check_thickness
 
    !> Print a failed check and count it.
    subroutine record_failure(text, nfail)

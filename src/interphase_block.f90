@@ -28,10 +28,11 @@ module interphase_block
    use interphase_finite, only: MAGNITUDE_MASK
    use interphase_params, only: law_params_type, SEPARATION_MAX, DENSITY_MIN, DENSITY_MAX
    use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
-      MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT
+      MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT
+   use interphase_micro_coefficients, only: micro_block_coefficients
    implicit none
    private
-   public :: simplified_block_update, density_counts, block_supports
+   public :: block_update, simplified_block_update, micromechanical_block_update, density_counts, block_supports
 
    !> Bit patterns of DENSITY_MIN and DENSITY_MAX (positive numbers are ordered like their bits).
    integer(int64), parameter :: DENSITY_MIN_BITS = transfer(DENSITY_MIN, 0_int64)
@@ -41,17 +42,38 @@ module interphase_block
 
 contains
 
-   !> Whether the points of a material may take the block update (`simplified_block_update`):
-   !> the simplified model with the displacement-driven damage law, every such material (any
-   !> mu, eta_N, eta_T, K_N, K_T and options that from_props accepts; the contact band acts on
-   !> the micromechanical model only), except with viscous regularisation (those points take
-   !> the point update). Hosts ask here, never decide
-   !> themselves, so that the block update's coverage is stated in one place.
+   !> Whether the points of a material may take a block update: the displacement-driven damage
+   !> law without viscous regularisation, with the simplified model (`simplified_block_update`;
+   !> any mu, eta_N, eta_T, K_N, K_T and options that from_props accepts; the contact band acts
+   !> on the micromechanical model only) or the micromechanical model without the contact band
+   !> (`micromechanical_block_update`, either table). The others (the fracture-mechanics law,
+   !> viscous regularisation, the micromechanical contact band) take the point update. Hosts ask
+   !> here, never decide themselves, so that the block update's coverage is stated in one place.
    pure logical function block_supports(params)
       type(law_params_type), intent(in) :: params    !! decoded by from_props
-      block_supports = params%model == MODEL_SIMPLIFIED .and. params%damage_law == DAMAGE_DISPLACEMENT &
-         .and. .not. (params%viscosity > 0.0_dp)
+      block_supports = params%damage_law == DAMAGE_DISPLACEMENT .and. .not. (params%viscosity > 0.0_dp) &
+         .and. (params%model == MODEL_SIMPLIFIED .or. &
+         (params%model == MODEL_MICROMECHANICAL .and. .not. (params%contact_band > 0.0_dp)))
    end function block_supports
+
+   !> Update n points of a material that `block_supports` admits: `simplified_block_update` or
+   !> `micromechanical_block_update` by the model (the same arguments).
+   pure subroutine block_update(params, n, nt, s_n, s_t1, s_t2, d_old, lam1_old, lam2_old, t_n, t_t1, t_t2, &
+         d, lam1, lam2, regime, psi, ok, nfailed)
+      type(law_params_type), intent(in) :: params
+      integer, intent(in) :: n, nt
+      real(dp), intent(in) :: s_n(n), s_t1(n), s_t2(n), d_old(n), lam1_old(n), lam2_old(n)
+      real(dp), intent(out) :: t_n(n), t_t1(n), t_t2(n), d(n), lam1(n), lam2(n), regime(n), psi(n)
+      logical, intent(out) :: ok(n)
+      integer, intent(out) :: nfailed
+      if (params%model == MODEL_SIMPLIFIED) then
+         call simplified_block_update(params, n, nt, s_n, s_t1, s_t2, d_old, lam1_old, lam2_old, t_n, t_t1, t_t2, &
+            d, lam1, lam2, regime, psi, ok, nfailed)
+      else
+         call micromechanical_block_update(params, n, nt, s_n, s_t1, s_t2, d_old, lam1_old, lam2_old, t_n, t_t1, &
+            t_t2, d, lam1, lam2, regime, psi, ok, nfailed)
+      end if
+   end subroutine block_update
 
    !> Update n points of the simplified model (displacement-driven damage law) from their
    !> separations at the end of the increment and their state at its start.
@@ -321,6 +343,280 @@ contains
       end do
       nfailed = int(nfailed_count)
    end subroutine simplified_block_update
+
+   !> Update n points of the micromechanical model (displacement-driven damage law, either RVE
+   !> table, no contact band) from their separations at the end of the increment and their
+   !> state at its start: `simplified_block_update` with the table's coefficients at each
+   !> point's D (`micro_block_coefficients`, values only) in place of the spring model's. The
+   !> same arguments and conventions; exactly the numbers of `interface_update`, bit for bit.
+   !> ok = .false. also where the point update fails on the table (a D in (0, D_MIN_CRACK), the
+   !> variable outside a custom table's knots, a closed crack slipping with T^f >= 0).
+   pure subroutine micromechanical_block_update(params, n, nt, s_n, s_t1, s_t2, d_old, lam1_old, &
+         lam2_old, t_n, t_t1, t_t2, d, lam1, lam2, regime, psi, ok, nfailed)
+      type(law_params_type), intent(in) :: params    !! the micromechanical model, displacement law
+      integer, intent(in) :: n                       !! number of points
+      integer, intent(in) :: nt                      !! tangential components: 1 (2-D) or 2 (3-D)
+      real(dp), intent(in) :: s_n(n)                 !! normal separation at the end (mm)
+      real(dp), intent(in) :: s_t1(n), s_t2(n)       !! tangential separations at the end (mm)
+      real(dp), intent(in) :: d_old(n)               !! damage D at the start (-), in [0, 1]
+      real(dp), intent(in) :: lam1_old(n), lam2_old(n)  !! slip lambda at the start (mm)
+      real(dp), intent(out) :: t_n(n)                !! normal traction (MPa)
+      real(dp), intent(out) :: t_t1(n), t_t2(n)      !! tangential tractions (MPa)
+      real(dp), intent(out) :: d(n)                  !! damage D at the end (-)
+      real(dp), intent(out) :: lam1(n), lam2(n)      !! slip lambda at the end (mm)
+      real(dp), intent(out) :: regime(n)             !! REGIME_* code, as a real (STATEV form)
+      real(dp), intent(out) :: psi(n)                !! stored energy per unit area (N/mm)
+      logical, intent(out) :: ok(n)                  !! the point update would succeed
+      integer, intent(out) :: nfailed                !! number of points with ok = .false.
+
+      !> Points per group: the groups' working arrays stay in the L1 cache.
+      integer, parameter :: SUB = 64
+      real(dp) :: sn_w(SUB), st1_w(SUB), st2_w(SUB), lam1_w(SUB), lam2_w(SUB), t_sq_w(SUB), d_w(SUB)
+      real(dp) :: m_w(SUB), bad_w(SUB)
+      real(dp), dimension(SUB) :: ck_n, ck_t, ckc_n, ckc_t, cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar
+      logical :: ok_w(SUB), okc(SUB)
+      real(dp) :: s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
+      real(dp) :: d_hat, d_k, num, den, kk_n, kk_t, cf_t, tf_k, kf, ufbar_k, sigma, tau1, tau2
+      real(dp) :: tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed, ratio
+      real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
+      real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed
+      integer(int64) :: keep, nfailed_count, ngrow, nup
+      logical :: ok_k, growing, open, slipping, conserve, grown, slipped
+      integer :: c0, m, i, k
+
+      ! The passes of simplified_block_update (see there), with the coefficients of each point
+      ! from the table between the damage and the response; every operand guarded (no lane can
+      ! raise a floating-point exception: at D = 0 the table's T^f is -huge, and the closed
+      ! crack's arithmetic, not selected there, runs on T^f = -1 instead). Divisors are guarded
+      ! by max(., tiny), never by a selection (under -fno-trapping-math the compiler may divide
+      ! by both operands of a selection): ufbar > 0 and -T^f > 0 wherever the point update
+      ! divides by them (interphase_micro_coefficients checks the interpolant's signs), so the
+      ! guards change no result the point update can return.
+      conserve = params%growth_slip == GROWTH_FIXED_PI
+      nfailed_count = 0
+      do c0 = 1, n, SUB
+         m = min(SUB, n - c0 + 1)
+
+         ! ---- pass 1: finiteness and range of the separation (bit masks), |s_T|^2
+         if (nt == 1) then
+            do i = 1, m
+               k = c0 + i - 1
+               s_n_k = s_n(k)
+               st1 = s_t1(k)
+               ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st1, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
+               keep = merge(-1_int64, 0_int64, ok_k)
+               s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
+               st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
+               ok_w(i) = ok_k
+               sn_w(i) = s_n_k
+               st1_w(i) = st1
+               lam1_w(i) = lam1_old(k)
+               lam2_w(i) = 0.0_dp
+               t_sq_w(i) = st1**2
+            end do
+         else
+            do i = 1, m
+               k = c0 + i - 1
+               s_n_k = s_n(k)
+               st1 = s_t1(k)
+               st2 = s_t2(k)
+               ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st1, 0_int64), MAGNITUDE_MASK), &
+                  iand(transfer(st2, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
+               keep = merge(-1_int64, 0_int64, ok_k)
+               s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
+               st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
+               st2 = transfer(iand(transfer(st2, 0_int64), keep), 0.0_dp)
+               ok_w(i) = ok_k
+               sn_w(i) = s_n_k
+               st1_w(i) = st1
+               st2_w(i) = st2
+               lam1_w(i) = lam1_old(k)
+               lam2_w(i) = lam2_old(k)
+               t_sq_w(i) = st1**2 + st2**2
+            end do
+         end if
+
+         ! ---- damage, eqs 13-18: as in simplified_block_update (the law does not depend on the model)
+         ngrow = 0
+         do i = 1, m
+            k = c0 + i - 1
+            d_k = d_old(k)
+            x = max(sn_w(i), 0.0_dp)*params%inv_s0_n
+            ngrow = ngrow + merge(1_int64, 0_int64, x*x + t_sq_w(i)*params%inv_s0_t_sq > 1.0_dp .and. d_k < 1.0_dp)
+         end do
+         nup = 0
+         if (ngrow > 0) then
+            do i = 1, m
+               k = c0 + i - 1
+               d_k = d_old(k)
+               t_sq = t_sq_w(i)
+               sn_pos = max(sn_w(i), 0.0_dp)
+               x = sn_pos*params%inv_s0_n
+               r = sqrt(x*x + t_sq*params%inv_s0_t_sq)
+               growing = r > 1.0_dp
+               alpha2 = sn_pos*sn_pos + t_sq
+               weighted = params%eta_n*sn_pos*sn_pos + params%eta_t*t_sq
+               num = (r - 1.0_dp)*alpha2
+               den = r*(alpha2 - weighted)
+               d_hat = merge(num/max(den, tiny(1.0_dp)), 0.0_dp, growing)
+               d_w(i) = max(d_k, min(1.0_dp, d_hat)) + 0.0_dp
+               nup = nup + merge(1_int64, 0_int64, d_w(i) > d_k)
+            end do
+         else
+            do i = 1, m
+               k = c0 + i - 1
+               d_w(i) = max(d_old(k), min(1.0_dp, 0.0_dp)) + 0.0_dp
+            end do
+         end if
+
+         ! ---- where the crack grew under slip (GROWTH_FIXED_PI): m(D_n) = D_n ufbar(D_n) from the
+         ! table at the old damage (slip_measure), for the trial slip lambda_n m(D_n)/m(D)
+         if (conserve .and. nup > 0) then
+            call micro_block_coefficients(params%table, m, d_old(c0:c0 + m - 1), ck_n, ck_t, ckc_n, ckc_t, &
+               cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar, okc)
+            do i = 1, m
+               k = c0 + i - 1
+               grown = d_w(i) > d_old(k)
+               slipped = abs(lam1_w(i)) > 0.0_dp .or. abs(lam2_w(i)) > 0.0_dp
+               m_w(i) = merge(d_old(k)*cufbar(i), 0.0_dp, d_old(k) > 0.0_dp)
+               ok_w(i) = ok_w(i) .and. (okc(i) .or. .not. (grown .and. slipped .and. d_old(k) > 0.0_dp))
+            end do
+         end if
+
+         ! ---- the coefficients at D
+         call micro_block_coefficients(params%table, m, d_w(1:m), ck_n, ck_t, ckc_n, ckc_t, cdbar_n, cdbar_t, &
+            ctc_t, csc_n, ccf_t, ctf, cufbar, okc)
+         ok_w(1:m) = ok_w(1:m) .and. okc(1:m)
+         if (conserve .and. nup > 0) then
+            ! the quotient growth_trial_slip forms; elsewhere lambda_n x 1, lambda_n itself
+            do i = 1, m
+               k = c0 + i - 1
+               ratio = merge(m_w(i)*(1.0_dp/max(d_w(i)*cufbar(i), tiny(1.0_dp))), 1.0_dp, d_w(i) > d_old(k))
+               lam1_w(i) = lam1_w(i)*ratio
+               lam2_w(i) = lam2_w(i)*ratio
+            end do
+         end if
+
+         ! ---- pass 2, in 2-D: respond (interphase_response) with s_T2 = lambda_2 = 0 written out,
+         ! as in simplified_block_update (the same bits: each dropped product is +0)
+         if (nt == 1) then
+            do i = 1, m
+               k = c0 + i - 1
+               s_n_k = sn_w(i)
+               st1 = st1_w(i)
+               lam1_k = lam1_w(i)
+               d_k = d_w(i)
+               tf_k = merge(ctf(i), -1.0_dp, d_k > 0.0_dp)
+               ufbar_k = max(cufbar(i), tiny(1.0_dp))
+               kf = -tf_k
+               kk_n = ck_n(i) + ckc_n(i)
+               kk_t = ck_t(i) + ckc_t(i)
+               cf_t = ccf_t(i)
+
+               tn_open = ck_n(i)*s_n_k
+               tt1_open = ck_t(i)*st1
+               psi_open = 0.5_dp*(tn_open*s_n_k + (tt1_open*st1 + 0.0_dp))
+               lam1_open = merge(lam1_k, cdbar_t(i)*st1/ufbar_k, d_k <= 0.0_dp)
+               regime_if_open = merge(real(REGIME_INTACT, dp), real(REGIME_OPEN, dp), d_k <= 0.0_dp)
+
+               tau1 = ctc_t(i)*st1 + tf_k*lam1_k
+               tau_norm = abs(tau1)
+               dir1 = sign(1.0_dp, tau1)
+               sigma = csc_n(i)*s_n_k
+               phi = params%mu*sigma + tau_norm
+               slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+               dgamma = phi*(1.0_dp/max(kf, tiny(1.0_dp)))
+               lam1_closed = merge(lam1_k + dgamma*dir1, lam1_k, slipping)
+               tn_closed = kk_n*s_n_k
+               tt1_closed = kk_t*st1 + cf_t*lam1_closed
+               psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + 0.0_dp)) &
+                  + 0.5_dp*cf_t*(lam1_closed*st1 + 0.0_dp) &
+                  - 0.5_dp*d_k*tf_k*cufbar(i)*lam1_closed**2
+               regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
+
+               open = d_k <= 0.0_dp .or. cdbar_n(i)*s_n_k > 0.0_dp
+               bad_w(i) = merge(1.0_dp, 0.0_dp, .not. open .and. slipping .and. .not. (kf > 0.0_dp))
+               d(k) = d_k
+               t_n(k) = merge(tn_open, tn_closed, open)
+               t_t1(k) = merge(tt1_open, tt1_closed, open)
+               t_t2(k) = 0.0_dp
+               lam1(k) = merge(lam1_open, lam1_closed, open)
+               lam2(k) = 0.0_dp
+               psi(k) = merge(psi_open, psi_closed, open)
+               regime(k) = merge(regime_if_open, regime_if_closed, open)
+            end do
+         else
+            ! ---- pass 2 (3-D)
+            do i = 1, m
+               k = c0 + i - 1
+               s_n_k = sn_w(i)
+               st1 = st1_w(i)
+               st2 = st2_w(i)
+               lam1_k = lam1_w(i)
+               lam2_k = lam2_w(i)
+               d_k = d_w(i)
+               tf_k = merge(ctf(i), -1.0_dp, d_k > 0.0_dp)
+               ufbar_k = max(cufbar(i), tiny(1.0_dp))
+               kf = -tf_k
+               kk_n = ck_n(i) + ckc_n(i)
+               kk_t = ck_t(i) + ckc_t(i)
+               cf_t = ccf_t(i)
+
+               ! intact or open crack: t = k s, crack faces free, slip = Dbar_TT s_T/ufbar
+               tn_open = ck_n(i)*s_n_k
+               tt1_open = ck_t(i)*st1
+               tt2_open = ck_t(i)*st2
+               psi_open = 0.5_dp*(tn_open*s_n_k + (tt1_open*st1 + tt2_open*st2))
+               lam1_open = merge(lam1_k, cdbar_t(i)*st1/ufbar_k, d_k <= 0.0_dp)
+               lam2_open = merge(lam2_k, cdbar_t(i)*st2/ufbar_k, d_k <= 0.0_dp)
+               regime_if_open = merge(real(REGIME_INTACT, dp), real(REGIME_OPEN, dp), d_k <= 0.0_dp)
+
+               ! closed crack: trial stick state (eq 43), return mapping (eqs 44-48)
+               tau1 = ctc_t(i)*st1 + tf_k*lam1_k
+               tau2 = ctc_t(i)*st2 + tf_k*lam2_k
+               tau_norm = sqrt(tau1**2 + tau2**2)
+               inv_norm = 1.0_dp/max(tau_norm, tiny(1.0_dp))
+               dir1 = tau1*inv_norm
+               dir2 = tau2*inv_norm
+               sigma = csc_n(i)*s_n_k
+               phi = params%mu*sigma + tau_norm
+               slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+               dgamma = phi*(1.0_dp/max(kf, tiny(1.0_dp)))
+               lam1_closed = merge(lam1_k + dgamma*dir1, lam1_k, slipping)
+               lam2_closed = merge(lam2_k + dgamma*dir2, lam2_k, slipping)
+               tn_closed = kk_n*s_n_k
+               tt1_closed = kk_t*st1 + cf_t*lam1_closed
+               tt2_closed = kk_t*st2 + cf_t*lam2_closed
+               psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + tt2_closed*st2)) &
+                  + 0.5_dp*cf_t*(lam1_closed*st1 + lam2_closed*st2) &
+                  - 0.5_dp*d_k*tf_k*cufbar(i)*(lam1_closed**2 + lam2_closed**2)
+               regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
+
+               open = d_k <= 0.0_dp .or. cdbar_n(i)*s_n_k > 0.0_dp
+               bad_w(i) = merge(1.0_dp, 0.0_dp, .not. open .and. slipping .and. .not. (kf > 0.0_dp))
+               d(k) = d_k
+               t_n(k) = merge(tn_open, tn_closed, open)
+               t_t1(k) = merge(tt1_open, tt1_closed, open)
+               t_t2(k) = merge(tt2_open, tt2_closed, open)
+               lam1(k) = merge(lam1_open, lam1_closed, open)
+               lam2(k) = merge(lam2_open, lam2_closed, open)
+               psi(k) = merge(psi_open, psi_closed, open)
+               regime(k) = merge(regime_if_open, regime_if_closed, open)
+            end do
+         end if
+         ! ok: the separation and the table at D (and D_n), and the return mapping's -T^f > 0
+         ! (respond's check; a flag of its own so that pass 2 has no logical arrays to vectorise)
+         do i = 1, m
+            k = c0 + i - 1
+            ok_k = ok_w(i) .and. bad_w(i) < 0.5_dp
+            ok(k) = ok_k
+            nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
+         end do
+      end do
+      nfailed = int(nfailed_count)
+   end subroutine micromechanical_block_update
 
    !> The densities of a block in one branch-free pass: nbad values outside [DENSITY_MIN,
    !> DENSITY_MAX] (bit patterns: no exception for NaN; negative numbers have the sign bit and

@@ -113,41 +113,15 @@ contains
       character(len=MESSAGE_LEN) :: message
 
       message = ''
-      if (nprops < 0) then
-         code = STATUS_BAD_NPROPS
-         write (message, '(a,i0,a)') 'nprops = ', nprops, ' is negative'
-         call finish()
-         return
-      end if
-      if (ntens /= 2 .and. ntens /= 3) then
-         code = STATUS_BAD_NTENS
-         write (message, '(a,i0,a)') 'ntens = ', ntens, ' but interphase takes 2 (2-D) or 3 (3-D)'
+      call decode_material(props, nprops, ntens, 'the C API', params, code, message)
+      if (code /= STATUS_OK) then
          call finish()
          return
       end if
       n = ntens
-      call from_props(props(1:nprops), params, code, message)
-      if (code == STATUS_OK) call refuse_umat_options(params, 'the C API', code, message)
-      if (code /= STATUS_OK) then
-         call finish()
-         return
-      end if
       viscous = params%viscosity > 0.0_dp
       nsv = state_slots(params)
       call state_unpack(state_old(1:nsv), n, old, code, message, viscous)
-      if (code /= STATUS_OK) then
-         call finish()
-         return
-      end if
-      ! data loaded at start-up: a missing table or R-curve, or one that does not cover D0
-      call check_run_time_data(params, code, message)
-      if (code == STATUS_TABLE_NOT_LOADED) then
-         write (message, '(a,i0,a)') 'PROPS[', PROP_TABLE - 1, '] = 1 selects the custom RVE table, but none is '// &
-            'loaded: call interphase_load_table(path, ...) before any update'
-      else if (code == STATUS_RCURVE_NOT_LOADED) then
-         message = 'the R-curve selector 3 selects the tabulated R-curve, but none is loaded: call '// &
-            'interphase_load_rcurve(path, ...) before any update'
-      end if
       if (code /= STATUS_OK) then
          call finish()
          return
@@ -244,39 +218,14 @@ contains
       n = ntens
       timed = c_associated(time)
       nullify (times, tangents)
-      if (nprops < 0) then
-         code = STATUS_BAD_NPROPS
-         write (message, '(a,i0,a)') 'nprops = ', nprops, ' is negative'
-         call finish()
-         return
-      end if
-      if (ntens /= 2 .and. ntens /= 3) then
-         code = STATUS_BAD_NTENS
-         write (message, '(a,i0,a)') 'ntens = ', ntens, ' but interphase takes 2 (2-D) or 3 (3-D)'
+      call decode_material(props, nprops, ntens, 'interphase_run', params, code, message)
+      if (code /= STATUS_OK) then
          call finish()
          return
       end if
       if (nrows < 1_c_size_t) then
          code = STATUS_BAD_STATE
          message = 'nrows = 0: the path needs at least its starting row (row 0, the state to start from)'
-         call finish()
-         return
-      end if
-      call from_props(props(1:nprops), params, code, message)
-      if (code == STATUS_OK) call refuse_umat_options(params, 'interphase_run', code, message)
-      if (code /= STATUS_OK) then
-         call finish()
-         return
-      end if
-      call check_run_time_data(params, code, message)
-      if (code == STATUS_TABLE_NOT_LOADED) then
-         write (message, '(a,i0,a)') 'PROPS[', PROP_TABLE - 1, '] = 1 selects the custom RVE table, but none is '// &
-            'loaded: call interphase_load_table(path, ...) before any update'
-      else if (code == STATUS_RCURVE_NOT_LOADED) then
-         message = 'the R-curve selector 3 selects the tabulated R-curve, but none is loaded: call '// &
-            'interphase_load_rcurve(path, ...) before any update'
-      end if
-      if (code /= STATUS_OK) then
          call finish()
          return
       end if
@@ -480,5 +429,41 @@ contains
       end do
       chars(n + 1) = c_null_char
    end subroutine copy_to_c
+
+   !> What every C entry point checks of its material before an update: nprops and ntens, PROPS
+   !> (the library's decoder; the UMAT's own options refused, naming `entry`), and the data a
+   !> material needs loaded (a custom table or tabulated R-curve: the message names the C call
+   !> that loads it), with the status and message the entry point returns.
+   subroutine decode_material(props, nprops, ntens, entry, params, code, message)
+      real(c_double), intent(in) :: props(*)
+      integer(c_int), intent(in) :: nprops, ntens
+      character(len=*), intent(in) :: entry
+      type(law_params_type), intent(out) :: params
+      integer, intent(out) :: code
+      character(len=MESSAGE_LEN), intent(out) :: message
+      message = ''
+      if (nprops < 0) then
+         code = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a)') 'nprops = ', nprops, ' is negative'
+         return
+      end if
+      if (ntens /= 2 .and. ntens /= 3) then
+         code = STATUS_BAD_NTENS
+         write (message, '(a,i0,a)') 'ntens = ', ntens, ' but interphase takes 2 (2-D) or 3 (3-D)'
+         return
+      end if
+      call from_props(props(1:nprops), params, code, message)
+      if (code == STATUS_OK) call refuse_umat_options(params, entry, code, message)
+      if (code /= STATUS_OK) return
+      ! data loaded at start-up: a missing table or R-curve, or one that does not cover D0
+      call check_run_time_data(params, code, message)
+      if (code == STATUS_TABLE_NOT_LOADED) then
+         write (message, '(a,i0,a)') 'PROPS[', PROP_TABLE - 1, '] = 1 selects the custom RVE table, but none is '// &
+            'loaded: call interphase_load_table(path, ...) before any update'
+      else if (code == STATUS_RCURVE_NOT_LOADED) then
+         message = 'the R-curve selector 3 selects the tabulated R-curve, but none is loaded: call '// &
+            'interphase_load_rcurve(path, ...) before any update'
+      end if
+   end subroutine decode_material
 
 end module interphase_capi

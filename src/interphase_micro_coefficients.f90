@@ -8,6 +8,7 @@
 !> file) into `protected` data that the pure update only reads.
 module interphase_micro_coefficients
    use interphase_kinds, only: dp
+   use interphase_logarithm, only: ln_positive
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
       STATUS_TABLE_INTERPOLANT, status_message, message_path
@@ -22,7 +23,7 @@ module interphase_micro_coefficients
    implicit none
    private
    public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded, &
-      check_interpolant, default_table_data
+      check_interpolant, default_table_data, micro_block_coefficients
 
    !> Points per interval between two rows at which `check_interpolant` evaluates the interpolant.
    integer, parameter :: INTERPOLANT_SAMPLES = 16
@@ -109,6 +110,116 @@ contains
          d2coef_dd2 = as_set(d2v, d2tf)
       end if
    end subroutine table_coefficients
+
+   !> The coefficients at n damages D(1:n) from the selected table, values only (no derivatives):
+   !> the vectorised block update's provider (interphase_block). Each value is bit for bit what
+   !> `table_coefficients` returns at that D: the same interpolation variable, the same interval
+   !> (found here by a branch-free binary search of fixed length, which ends where the search of
+   !> `cubic_locate` does), the same Horner form, the same T^f = (D T^f)/D. ok(i) = .false. where
+   !> `table_coefficients` would fail (0 < D < D_MIN_CRACK, the variable outside the knots, no
+   !> custom table loaded); the values there are finite but meaningless. D must be finite in
+   !> [0, 1] (the block update's damages are). Compiled with -fno-trapping-math (CMakeLists.txt):
+   !> every operand is guarded, so no lane can raise an exception.
+   pure subroutine micro_block_coefficients(table, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, &
+         cf_t, tf, ufbar, ok)
+      integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
+      integer, intent(in) :: n                               !! number of points
+      real(dp), intent(in) :: d(n)                           !! damage D = a/b (-)
+      real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
+      logical, intent(out) :: ok(n)
+      if (table == TABLE_CUSTOM_CODE) then
+         if (.not. allocated(custom_coef)) then
+            ok = .false.
+            k_n = 0.0_dp; k_t = 0.0_dp; kc_n = 0.0_dp; kc_t = 0.0_dp; dbar_n = 0.0_dp; dbar_t = 0.0_dp
+            tc_t = 0.0_dp; sc_n = 0.0_dp; cf_t = 0.0_dp; tf = -huge(1.0_dp); ufbar = 1.0_dp
+            return
+         end if
+         call block_values(custom_variable, custom_knots, custom_coef, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, &
+            tc_t, sc_n, cf_t, tf, ufbar, ok)
+      else
+         call block_values(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, n, d, k_n, k_t, kc_n, &
+            kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, ok)
+      end if
+   end subroutine micro_block_coefficients
+
+   !> `micro_block_coefficients` on given interpolation data.
+   pure subroutine block_values(variable, knots, coef_table, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, &
+         sc_n, cf_t, tf, ufbar, ok)
+      integer, intent(in) :: variable
+      real(dp), intent(in) :: knots(:)
+      real(dp), intent(in) :: coef_table(:, 0:, :)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: d(n)
+      real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
+      logical, intent(out) :: ok(n)
+      real(dp) :: x(n), t(n), dtf(n), x_k, d_k
+      integer :: lo(n), nk, step, cand, i
+      nk = size(knots)
+      ! the interpolation variable (crack_variable: x = D, or w = 1/(1 - ln(1 - D)), 0 at D = 1),
+      ! with crack_variable's logarithm (ln_positive: the same bits in scalar and vector code)
+      if (variable == VARIABLE_DAMAGE) then
+         x = d
+      else
+         do i = 1, n
+            d_k = d(i)
+            ! (the argument is 1 - D for every D < 1; at D = 1, where x = 0, it stays > 0)
+            x_k = 1.0_dp/(1.0_dp - ln_positive(1.0_dp - min(d_k, 1.0_dp - 0.5_dp*epsilon(1.0_dp))))
+            x(i) = merge(x_k, 0.0_dp, d_k < 1.0_dp)
+         end do
+      end if
+      ! the interval: the largest lo in 1..nk-1 with knots(lo) <= x (cubic_locate's interval; at
+      ! x = knots(nk), nk - 1), by binary lifting over powers of two, one vector gather per step
+      do i = 1, n
+         ok(i) = .not. (d(i) > 0.0_dp .and. d(i) < D_MIN_CRACK) .and. x(i) >= knots(1) .and. x(i) <= knots(nk)
+         lo(i) = 1
+      end do
+      step = 1
+      do while (2*step < nk - 1)
+         step = 2*step
+      end do
+      do while (step >= 1)
+         do i = 1, n
+            cand = min(lo(i) + step, nk - 1)
+            lo(i) = merge(cand, lo(i), x(i) >= knots(cand))
+         end do
+         step = step/2
+      end do
+      do i = 1, n
+         t(i) = x(i) - knots(lo(i))
+      end do
+      call horner_column(n, coef_table, IC_K_N, lo, t, k_n)
+      call horner_column(n, coef_table, IC_K_T, lo, t, k_t)
+      call horner_column(n, coef_table, IC_KC_N, lo, t, kc_n)
+      call horner_column(n, coef_table, IC_KC_T, lo, t, kc_t)
+      call horner_column(n, coef_table, IC_DBAR_N, lo, t, dbar_n)
+      call horner_column(n, coef_table, IC_DBAR_T, lo, t, dbar_t)
+      call horner_column(n, coef_table, IC_TC_T, lo, t, tc_t)
+      call horner_column(n, coef_table, IC_SC_N, lo, t, sc_n)
+      call horner_column(n, coef_table, IC_CF_T, lo, t, cf_t)
+      call horner_column(n, coef_table, IC_DTF, lo, t, dtf)
+      call horner_column(n, coef_table, IC_UFBAR, lo, t, ufbar)
+      ! T^f = (D T^f)/D; -huge at D = 0 (table_coefficients). The divisor is guarded by max, not
+      ! by a selection (which the compiler may turn into two divisions under -fno-trapping-math):
+      ! below D_MIN_CRACK (ok = .false.) the quotient could overflow
+      do i = 1, n
+         tf(i) = merge(dtf(i)/max(d(i), D_MIN_CRACK), -huge(1.0_dp), d(i) > 0.0_dp)
+      end do
+   end subroutine block_values
+
+   !> Column j of the interpolation data at n points of located intervals lo, t = x - knots(lo):
+   !> cubic_eval's Horner form.
+   pure subroutine horner_column(n, coef_table, j, lo, t, v)
+      integer, intent(in) :: n, j
+      real(dp), intent(in) :: coef_table(:, 0:, :)
+      integer, intent(in) :: lo(n)
+      real(dp), intent(in) :: t(n)
+      real(dp), intent(out) :: v(n)
+      integer :: k
+      do k = 1, n
+         v(k) = coef_table(j, 0, lo(k)) + t(k)*(coef_table(j, 1, lo(k)) &
+            + t(k)*(coef_table(j, 2, lo(k)) + t(k)*coef_table(j, 3, lo(k))))
+      end do
+   end subroutine horner_column
 
    !> The interpolated columns (IC_* order) as a coefficient set, with T^f given apart.
    pure function as_set(v, tf) result(c)

@@ -19,6 +19,7 @@
 !> coefficients that are polynomials in D, such as the simplified model's.
 module interphase_rve_table
    use interphase_finite, only: is_finite
+   use interphase_logarithm, only: ln_positive
    use interphase_kinds, only: dp
    use interphase_spline, only: SPLINE_NOT_A_KNOT
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
@@ -646,7 +647,8 @@ contains
          dx_dd = 0.0_dp
          d2x_dd2 = 0.0_dp
       else
-         x = 1.0_dp/(1.0_dp - log(1.0_dp - d))
+         ! (ln_positive, not the intrinsic: the block update's vectorised loops compute the same bits)
+         x = 1.0_dp/(1.0_dp - ln_positive(1.0_dp - d))
          dx_dd = -x*x/(1.0_dp - d)
          d2x_dd2 = (2.0_dp*x - 1.0_dp)*x*x/(1.0_dp - d)**2
       end if

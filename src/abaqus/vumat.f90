@@ -18,8 +18,9 @@
 !>   copied unchanged. An annealing call (lanneal = 1) copies stress, state and energies
 !>   unchanged.
 !>
-!> The materials `block_supports` accepts (the simplified model with the displacement-driven
-!> law) run the vectorised block update (interphase_block, column by column); the others the point update
+!> The materials `block_supports` accepts (the displacement-driven law, either model; not with
+!> viscous regularisation, nor the micromechanical contact band) run the vectorised block update
+!> (interphase_block, column by column); the others the point update
 !> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
 !> Failures: bad sizes, PROPS, density (outside [1e-50, 1e50]) or incoming STATEV, a NaN or Inf
@@ -43,9 +44,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_layout, only: NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
       SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID, NSTATV_SHARED
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
-      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_NONFINITE_SEPARATION, STATUS_RCURVE_OUT_OF_RANGE, status_message, &
-      STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_HOST_INPUT
-   use interphase_finite, only: is_finite, is_within
+      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_RCURVE_OUT_OF_RANGE, status_message, STATUS_BAD_HOST_INPUT
+   use interphase_finite, only: is_within
    use interphase_real_text, only: real_text
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_params, only: law_params_type, from_props, refuse_umat_options
@@ -53,7 +53,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
-   use interphase_block, only: simplified_block_update, density_counts, block_supports
+   use interphase_block, only: block_update, density_counts, block_supports
    use interphase_rcurve, only: rcurve_coverage
    use interphase_abaqus_interfaces, only: interphase_host_message
    use interphase_replay_file, only: write_replay
@@ -162,9 +162,9 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       end if
 
       ! ---- the update, CHUNK points at a time ---------------------------------------------
-      ! The simplified model with the displacement-driven law runs the vectorised block update
-      ! (interphase_block); the other models and laws run the point update (interphase_kernel).
-      ! Both give the same numbers for the simplified model (bit for bit). Results go straight into
+      ! The materials block_supports admits run the vectorised block update (interphase_block);
+      ! the others run the point update (interphase_kernel). Both give the same numbers (bit for
+      ! bit). Results go straight into
       ! the new arrays; a failed point is put back to its old values afterwards.
       blocked = block_supports(params)
       nfailed = 0
@@ -255,14 +255,14 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             ! tangential traction fills STATEV(SV_SEP_T2), which is 0 in 2-D (and its unused
             ! second tangential inputs are the first ones: no column is read for nothing)
             if (ntens == 3) then
-               call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
+               call block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
                   statenew(k0:k1, SV_SEP_T1), statenew(k0:k1, SV_SEP_T2), stateold(k0:k1, SV_DAMAGE), &
                   stateold(k0:k1, SV_SLIP_1), stateold(k0:k1, SV_SLIP_2), stressnew(k0:k1, 1), &
                   stressnew(k0:k1, 2), stressnew(k0:k1, 3), statenew(k0:k1, SV_DAMAGE), &
                   statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
                   psi(1:n), ok(1:n), nbad)
             else
-               call simplified_block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
+               call block_update(params, n, nt, statenew(k0:k1, SV_SEP_N), &
                   statenew(k0:k1, SV_SEP_T1), statenew(k0:k1, SV_SEP_T1), stateold(k0:k1, SV_DAMAGE), &
                   stateold(k0:k1, SV_SLIP_1), stateold(k0:k1, SV_SLIP_1), stressnew(k0:k1, 1), &
                   stressnew(k0:k1, 2), statenew(k0:k1, SV_SEP_T2), statenew(k0:k1, SV_DAMAGE), &
@@ -301,9 +301,12 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          if (nbad > 0) then
             if (first_failed == 0) then
                first_failed = k0 - 1 + findloc(ok(1:n), .false., dim=1)
-               ! the block update reports no status: its two checks are the kernel's
-               if (blocked) first_status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
-                  all(is_finite(statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1))))
+               ! the block update reports no status: the point update on that point says why
+               if (blocked) then
+                  call state_unpack(stateold(first_failed, 1:nsv), ntens, old, status, message, viscous)
+                  call interface_update(params, old, statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1), &
+                     traction(1:ntens), tangent(1:ntens, 1:ntens), new, psi_old, first_status, dt)
+               end if
                write (first_message, '(a,3es12.4)') 'separation (mm) ', &
                   statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
             end if

@@ -1,9 +1,9 @@
 !> Benchmark of the VUMAT: nanoseconds per material-point update at nblock = 1, 136 and 4096
 !> (the paper's mixed history with a different scaling per point), beside a plain copy of the
 !> same arrays (old -> new stress, state and energies, reading the strain increments): the
-!> memory-bound limit of any VUMAT on these arrays. Three cases: the simplified model in 2-D
-!> (the vectorised block update; the figure of issue 5) and 3-D, and the micromechanical model
-!> in 2-D (built-in table; the point update, point by point). Each figure is the best of
+!> memory-bound limit of any VUMAT on these arrays. Four cases, each on the vectorised block
+!> update: the simplified model in 2-D (the figure of issue 5) and 3-D, and the micromechanical
+!> model (built-in table) in 2-D and 3-D. Each figure is the best of
 !> NREPEAT measurements (each a fresh start of the whole history).
 !>
 !>   interphase-bench-vumat [points]      (default 65536 points; Release build recommended)
@@ -39,6 +39,7 @@ program bench_vumat
    call run_case('simplified model, 2-D', 1, SIMPLIFIED_PROPS)
    call run_case('simplified model, 3-D', 2, SIMPLIFIED_PROPS)
    call run_case('micromechanical model (built-in table), 2-D', 1, MICRO_PROPS)
+   call run_case('micromechanical model (built-in table), 3-D', 2, MICRO_PROPS)
 
 contains
 

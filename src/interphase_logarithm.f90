@@ -1,0 +1,53 @@
+!> The natural logarithm of the micromechanical model's interpolation variable w = 1/(1 - ln(1 - D)),
+!> in plain Fortran arithmetic, so that the point update and the vectorised block update compute
+!> it with the same operations and agree bit for bit. (The compiler's `log` is a libm call in
+!> scalar code but, in a vectorised loop, a call of the vector math library, whose results
+!> differ in the last bit; docs/performance.md.)
+!>
+!> Method: y = 2^e m with m in [sqrt(1/2), sqrt(2)) from the bits of y (exact), then
+!> ln y = e ln 2 + ln m, ln m = 2 atanh(s) = 2 s + s z P(z), s = (m - 1)/(m + 1), z = s^2,
+!> P(z) = sum_{k=1..10} 2 z^(k-1)/(2k + 1) (the Taylor series of atanh; |s| <= 0.1716,
+!> z <= 0.0295, so the first neglected term is below 1e-18 relative). m - 1 is exact
+!> (Sterbenz), the division rounds once: the result is within a few units in the last place of
+!> ln y (tests/test_spline.pf compares it with the intrinsic over many decades).
+module interphase_logarithm
+   use, intrinsic :: iso_fortran_env, only: int64
+   use interphase_kinds, only: dp
+   implicit none
+   private
+   public :: ln_positive
+
+   !> ln 2 rounded to binary64.
+   real(dp), parameter :: LN2 = 0.693147180559945309417232121458176568_dp
+   !> The mantissa field and the bits of 1.0.
+   integer(int64), parameter :: MANTISSA_MASK = int(z'000FFFFFFFFFFFFF', int64)
+   integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
+   !> The mantissa field of sqrt(2): a mantissa above it is halved (and the exponent raised).
+   integer(int64), parameter :: SQRT2_MANTISSA = iand(transfer(sqrt(2.0_dp), 0_int64), MANTISSA_MASK)
+   !> 2/(2k + 1), k = 1..10.
+   real(dp), parameter :: C1 = 2.0_dp/3.0_dp, C2 = 2.0_dp/5.0_dp, C3 = 2.0_dp/7.0_dp, C4 = 2.0_dp/9.0_dp, &
+      C5 = 2.0_dp/11.0_dp, C6 = 2.0_dp/13.0_dp, C7 = 2.0_dp/15.0_dp, C8 = 2.0_dp/17.0_dp, C9 = 2.0_dp/19.0_dp, &
+      C10 = 2.0_dp/21.0_dp
+
+contains
+
+   !> ln y for a positive, normal, finite y (others are the caller's business: no check here, this
+   !> is the hot path; no floating-point exception for such y).
+   elemental real(dp) function ln_positive(y) result(ln_y)
+      real(dp), intent(in) :: y
+      integer(int64) :: bits, mantissa, up
+      real(dp) :: m, f, s, z, e
+      bits = transfer(y, 0_int64)
+      mantissa = iand(bits, MANTISSA_MASK)
+      up = merge(1_int64, 0_int64, mantissa > SQRT2_MANTISSA)
+      ! m = mantissa in [1, 2), halved (exponent field 1022) when above sqrt(2)
+      m = transfer(ior(mantissa, ONE_BITS - ishft(up, 52)), 0.0_dp)
+      e = real(ishft(bits, -52) - 1023_int64 + up, dp)
+      f = m - 1.0_dp
+      s = f/(2.0_dp + f)
+      z = s*s
+      ln_y = e*LN2 + (2.0_dp*s + s*(z*(C1 + z*(C2 + z*(C3 + z*(C4 + z*(C5 + z*(C6 + z*(C7 + z*(C8 + z*(C9 &
+         + z*C10)))))))))))
+   end function ln_positive
+
+end module interphase_logarithm
