@@ -3,7 +3,7 @@
 !> symbol, the value and the admissible range; nothing is clamped.
 module interphase_params
    use, intrinsic :: iso_fortran_env, only: int64
-   use interphase_finite, only: is_finite
+   use interphase_finite, only: is_finite, binary64_bits
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
@@ -423,9 +423,15 @@ contains
       real(dp), intent(in) :: x
       integer, parameter :: MAX_SELECTOR = 9
       integer :: candidate
+      ! the codes' bit patterns are constants, x's are read once and without `transfer` (which is a
+      ! run-time library call with LLVM flang 19, interphase_finite)
+      integer(int64), parameter :: CODE_BITS(0:MAX_SELECTOR) = &
+         transfer([(real(candidate, dp), candidate = 0, MAX_SELECTOR)], 0_int64, MAX_SELECTOR + 1)
+      integer(int64) :: x_bits
+      x_bits = binary64_bits(x)
       code = -1
       do candidate = 0, MAX_SELECTOR
-         if (transfer(x, 0_int64) == transfer(real(candidate, dp), 0_int64)) code = candidate
+         if (x_bits == CODE_BITS(candidate)) code = candidate
       end do
    end function selector_code
 
