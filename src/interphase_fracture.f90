@@ -25,7 +25,7 @@ module interphase_fracture
    use interphase_enums, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI, &
       MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED
-   use interphase_coefficients, only: coefficient_set_type
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
    use interphase_provider, only: coefficients_at
    use interphase_rcurve, only: tabulated_rcurve
    use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure, contact_band_shape, &
@@ -88,7 +88,7 @@ contains
          call coefficients_at(params, d, c, dc, status, d2c)
       else
          call coefficients_at(params, d, c, dc, status)
-         d2c = coefficient_set_type()
+         d2c = NO_COEFFICIENTS
       end if
       if (status /= STATUS_OK) return
       t2 = load%st(1)**2 + load%st(2)**2

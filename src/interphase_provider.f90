@@ -11,7 +11,7 @@ module interphase_provider
       RCURVE_TABULATED
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
       STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
-   use interphase_coefficients, only: coefficient_set_type, simplified_coefficients
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, simplified_coefficients
    use interphase_micro_coefficients, only: micro_coefficients, custom_table_loaded
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    implicit none
@@ -30,7 +30,7 @@ contains
       select case (params%model)
       case (MODEL_SIMPLIFIED)
          call simplified_coefficients(params%k_n, params%k_t, d, c, dc)
-         if (present(d2c)) d2c = coefficient_set_type()   ! linear in D
+         if (present(d2c)) d2c = NO_COEFFICIENTS   ! linear in D
          status = STATUS_OK
       case (MODEL_MICROMECHANICAL)
          call micro_coefficients(params%table, d, c, dc, status, d2c)

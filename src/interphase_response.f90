@@ -7,7 +7,7 @@ module interphase_response
    use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
-   use interphase_coefficients, only: coefficient_set_type
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
    use interphase_provider, only: coefficients_at
    implicit none
    private
@@ -285,7 +285,7 @@ contains
          status = STATUS_BAD_COEFFICIENTS
          return
       end if
-      call band_stiffness(c, dc, coefficient_set_type(), q, dq, unused_d2q)
+      call band_stiffness(c, dc, NO_COEFFICIENTS, q, dq, unused_d2q)
       r%traction(1:ntens) = r%traction(1:ntens) + 0.5_dp*q*gq(1:ntens)
       r%tangent(1:ntens, 1:ntens) = r%tangent(1:ntens, 1:ntens) + 0.5_dp*q*hq(1:ntens, 1:ntens)
       r%dtrac_dd(1:ntens) = r%dtrac_dd(1:ntens) + 0.5_dp*dq*gq(1:ntens)
