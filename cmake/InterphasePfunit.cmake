@@ -30,6 +30,11 @@ if(CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")
   set(INTERPHASE_PFUNIT_CHECK_FLAGS "-g;-fcheck=all;-fbacktrace;-ffpe-trap=invalid,zero,overflow;-fimplicit-none;-Wall"
       CACHE STRING "Compiler flags of the pfunit_lite test executables")
   set(_PFUNIT_LITE_OWN_FLAGS -std=f2008 -fimplicit-none -Wall -Wextra -Wimplicit-interface -pedantic)
+elseif(CMAKE_Fortran_COMPILER_ID STREQUAL "LLVMFlang")
+  # flang has no run-time checks to add (no -fcheck, no -ffpe-trap): debug information only.
+  set(INTERPHASE_PFUNIT_CHECK_FLAGS "-g;-fimplicit-none"
+      CACHE STRING "Compiler flags of the pfunit_lite test executables")
+  set(_PFUNIT_LITE_OWN_FLAGS -std=f2018 -pedantic -fimplicit-none)
 else()
   set(INTERPHASE_PFUNIT_CHECK_FLAGS "" CACHE STRING "Compiler flags of the pfunit_lite test executables")
   set(_PFUNIT_LITE_OWN_FLAGS "")

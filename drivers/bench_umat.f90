@@ -22,6 +22,7 @@ program bench_umat
    use interphase_params, only: law_params_type, to_props
    use interphase_abaqus_interfaces, only: umat
    use interphase_driver_version, only: INTERPHASE_VERSION
+   use interphase_driver_cli, only: exit_program
    implicit none
 
    !> Number of history segments of the mixed-mode history.
@@ -52,10 +53,10 @@ program bench_umat
             '       interphase-bench --help | --version', &
             '  ns per umat call over the paper''s mixed history, 2-D and 3-D, both models; build it', &
             '  in a Release tree. Figures and commands: docs/performance.md.'
-         stop
+         call exit_program(0)
       else if (argument == '--version') then
          write (*, '(a)') 'interphase-bench (interphase) '//INTERPHASE_VERSION
-         stop
+         call exit_program(0)
       end if
       calls_per_run = parse_positive(argument, 'CALLS_PER_RUN')
    end if

@@ -18,7 +18,8 @@
 module interphase_driver_history
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
-   use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, to_lower
+   use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, to_lower, &
+      text_file_type, open_line_file, close_text_file
    use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES
    implicit none
    private
@@ -62,14 +63,14 @@ contains
       integer, allocatable :: starts(:), ends(:)
       real(dp) :: values(4)
       logical :: named(3), controls(3)
-      integer :: unit, ios, line_number, ncolumns, first_data_line, comment, i, named_columns, names_line
+      integer :: ios, line_number, ncolumns, first_data_line, comment, i, named_columns, names_line
+      type(text_file_type) :: unit
       integer(int64) :: bytes
       character(len=512) :: iomsg
 
       ok = .false.
       shown = tried_path(path)
-      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
-         iostat=ios, iomsg=iomsg)
+      call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = shown//': cannot open the history file: '//trim(iomsg)
          return
@@ -90,13 +91,13 @@ contains
          where = shown//':'//int_to_string(line_number)//': '
          if (ios /= 0) then
             message = where//'cannot read the line: '//trim(iomsg)
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          bytes = bytes + len(line) + 1
          if (bytes > MAX_FILE_BYTES) then
             message = where//'the file is larger than '//int_to_string(int(MAX_FILE_BYTES))//' bytes'
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          comment = index(line, '#')
@@ -105,14 +106,14 @@ contains
                call read_column_names(line(comment + 1:), named_columns, named, ok, message)
                if (.not. ok) then
                   message = where//message
-                  close (unit)
+                  call close_text_file(unit)
                   return
                end if
                ok = .false.
                if (ncolumns > 0 .and. named_columns /= ncolumns) then
                   message = where//'the "# columns:" line names '//int_to_string(named_columns)// &
                      ' columns, but the data lines have '//int_to_string(ncolumns)
-                  close (unit)
+                  call close_text_file(unit)
                   return
                end if
                names_line = line_number
@@ -127,7 +128,7 @@ contains
             if (size(starts) /= 3 .and. size(starts) /= 4) then
                message = where//'found '//int_to_string(size(starts))//' columns; expected 3 '// &
                   '(t s_T s_N, 2-D) or 4 (t s_T1 s_T2 s_N, 3-D)'
-               close (unit)
+               call close_text_file(unit)
                return
             end if
             ncolumns = size(starts)
@@ -135,21 +136,21 @@ contains
             if (named_columns > 0 .and. named_columns /= ncolumns) then
                message = where//'found '//int_to_string(ncolumns)//' columns, but the "# columns:" line '// &
                   '(line '//int_to_string(names_line)//') names '//int_to_string(named_columns)
-               close (unit)
+               call close_text_file(unit)
                return
             end if
          else if (size(starts) /= ncolumns) then
             message = where//'found '//int_to_string(size(starts))//' columns, but line '// &
                int_to_string(first_data_line)//' has '//int_to_string(ncolumns)// &
                '; every data line must have the same number of columns'
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          do i = 1, ncolumns
             call parse_number(line(starts(i):ends(i)), values(i), ok, message)
             if (.not. ok) then
                message = where//'column '//int_to_string(i)//': '//message
-               close (unit)
+               call close_text_file(unit)
                return
             end if
          end do
@@ -161,7 +162,7 @@ contains
                   ' is not greater than the previous time '// &
                   real_to_string(history%time(history%nrows))//' (line '// &
                   int_to_string(history%line(history%nrows))//'); times must increase strictly'
-               close (unit)
+               call close_text_file(unit)
                return
             end if
          end if
@@ -169,7 +170,7 @@ contains
          if (named_columns > 0) controls(:ncolumns - 1) = named(:ncolumns - 1)
          call append_row(history, line_number, values(1), values(2:ncolumns), controls(:ncolumns - 1))
       end do
-      close (unit)
+      call close_text_file(unit)
 
       if (history%nrows < 2) then
          message = shown//': needs at least 2 data rows, found '//int_to_string(history%nrows)

@@ -7,7 +7,8 @@
 module interphase_driver_namelist
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_text_input, only: is_real_literal, clip_text, MAX_FILE_BYTES
-   use interphase_driver_text, only: int_to_string, to_lower, read_line
+   use interphase_driver_text, only: int_to_string, to_lower, read_line, text_file_type, open_line_file, &
+      close_text_file
    implicit none
    private
    public :: check_namelist_file, entry_kind_type, KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
@@ -36,13 +37,14 @@ contains
       character(len=:), allocatable, intent(out) :: message
       character(len=:), allocatable :: line, group, seen_groups, seen_entries, name, value
       character(len=512) :: iomsg
-      integer :: unit, ios, line_number, i, n, first, k, entry_line, nvalues, value_kind
+      integer :: ios, line_number, i, n, first, k, entry_line, nvalues, value_kind
+      type(text_file_type) :: unit
       integer(int64) :: bytes
       character(len=1) :: quote
       logical :: in_group, in_entry
 
       ok = .false.
-      open (newunit=unit, file=path, status='old', action='read', form='formatted', iostat=ios, iomsg=iomsg)
+      call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = path//': cannot open the case file: '//trim(iomsg)
          return
@@ -164,7 +166,7 @@ contains
             if (allocated(message)) return
          end do
       end do
-      close (unit)
+      call close_text_file(unit)
       if (in_group) then
          message = path//': &'//group//' is not closed by "/"'
          return
@@ -213,7 +215,7 @@ contains
          if (nvalues /= 1) then
             good = .false.
             message = where//' needs one value, got '//int_to_string(nvalues)
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          lower = to_lower(value)
@@ -234,13 +236,13 @@ contains
             good = value_kind == KIND_STRING
             if (.not. good) message = where//' = '//clip_text(value)//' is not a quoted string'
          end select
-         if (.not. good) close (unit)
+         if (.not. good) call close_text_file(unit)
       end function finish_entry
 
       subroutine fail(text)
          character(len=*), intent(in) :: text
          message = path//':'//int_to_string(line_number)//': '//text
-         close (unit)
+         call close_text_file(unit)
       end subroutine fail
 
    end subroutine check_namelist_file

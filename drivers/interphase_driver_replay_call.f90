@@ -7,7 +7,8 @@ module interphase_driver_replay_call
    use interphase_kinds, only: dp
    use interphase_replay_file, only: REPLAY_MAX_PROPS, REPLAY_MAX_STATEV
    use interphase_abaqus_interfaces, only: umat
-   use interphase_driver_text, only: int_to_string, real_to_string, read_line, to_lower
+   use interphase_driver_text, only: int_to_string, real_to_string, read_line, to_lower, text_file_type, &
+      open_line_file, close_text_file
    use interphase_text_input, only: tried_path
    implicit none
    private
@@ -31,10 +32,11 @@ contains
    logical function is_replay_file(path)
       character(len=*), intent(in) :: path
       character(len=:), allocatable :: line
-      integer :: unit, ios
+      type(text_file_type) :: unit
+      integer :: ios
       character(len=256) :: iomsg
       is_replay_file = .false.
-      open (newunit=unit, file=path, status='old', action='read', iostat=ios)
+      call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) return
       do
          call read_line(unit, line, ios, iomsg)
@@ -47,7 +49,7 @@ contains
             end if
          end if
       end do
-      close (unit)
+      call close_text_file(unit)
    end function is_replay_file
 
    !> Read the `&replay` group of a file.

@@ -1,13 +1,16 @@
 !> Text and path helpers of the single-point driver `interphase-point`: number formatting,
 !> line reading, tokenising, lower-casing, path splitting and shell quoting. No physics here.
 module interphase_driver_text
-   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
+   use, intrinsic :: iso_fortran_env, only: iostat_end
    use interphase_kinds, only: dp
-   use interphase_text_input, only: MAX_LINE_LEN
+   use interphase_real_text, only: real_text
+   use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
+      TEXT_LINE, TEXT_END
    implicit none
    private
    public :: int_to_string, real_to_string, real_to_csv, to_lower
-   public :: read_line, split_words, directory_of, base_name, stem_of, join_path, shell_quote
+   public :: text_file_type, open_line_file, read_line, close_text_file
+   public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote
 
 contains
 
@@ -21,14 +24,12 @@ contains
       text = trim(buffer)
    end function int_to_string
 
-   !> Short text of a real for messages (`g0`, up to 17 significant digits, no blanks).
+   !> Text of a real for messages (`g0.17`, with its leading zero: the same with every compiler).
    function real_to_string(value) result(text)
       real(dp), intent(in) :: value               !! the number
       character(len=:), allocatable :: text
-      character(len=40) :: buffer
 
-      write (buffer, '(g0)') value
-      text = trim(adjustl(buffer))
+      text = real_text(value)
    end function real_to_string
 
    !> Full-precision text of a real for CSV files (`es24.16e3`: 17 significant digits), no blanks.
@@ -54,59 +55,52 @@ contains
       end do
    end function to_lower
 
-   !> Read one whole line from a formatted sequential unit, in time linear in its length, up to
-   !> MAX_LINE_LEN characters (interphase_text_input): a longer line (or a file without line
-   !> ends, such as /dev/zero) is an error, not read to its end. A last line without a newline is
-   !> returned as a line. `iostat` is 0, `iostat_end` at the end of the file, or an error code
-   !> (then `iomsg` says why).
-   subroutine read_line(unit, line, iostat, iomsg)
-      integer, intent(in) :: unit                 !! open formatted sequential unit
+   !> Open a text file for read_line (interphase_text_input's bounded reader). iostat is 0, or
+   !> non-zero with the reason in `iomsg` (a directory is refused).
+   subroutine open_line_file(path, file, iostat, iomsg)
+      character(len=*), intent(in) :: path        !! the file
+      type(text_file_type), intent(out) :: file
+      integer, intent(out) :: iostat              !! 0 when open
+      character(len=*), intent(inout) :: iomsg    !! reason when not open
+      character(len=512) :: message
+      logical :: ok
+
+      call open_text_file(path, file, ok, message)
+      iostat = 0
+      if (ok) return
+      iostat = 1
+      if (index(message, 'cannot open: ') == 1) then
+         iomsg = message(len('cannot open: ') + 1:)
+      else
+         iomsg = message
+      end if
+   end subroutine open_line_file
+
+   !> Read one whole line, up to MAX_LINE_LEN characters (interphase_text_input): a longer line
+   !> (or a file without line ends, such as /dev/zero) is an error, not read to its end. A last
+   !> line without a newline is returned as a line. `iostat` is 0, `iostat_end` at the end of
+   !> the file, or an error code (then `iomsg` says why).
+   subroutine read_line(file, line, iostat, iomsg)
+      type(text_file_type), intent(inout) :: file !! opened with open_line_file
       character(len=:), allocatable, intent(out) :: line  !! the line, without its newline
       integer, intent(out) :: iostat              !! 0, iostat_end or an error code
       character(len=*), intent(inout) :: iomsg    !! error text when iostat is an error code
-      character(len=4096) :: buffer
-      character(len=:), allocatable :: store
-      integer :: nread, length
+      character(len=512) :: message
+      integer :: outcome
 
-      allocate (character(len=len(buffer)) :: store)
-      length = 0
-      do
-         read (unit, '(a)', advance='no', iostat=iostat, iomsg=iomsg, size=nread) buffer
-         if (iostat == 0 .or. iostat == iostat_eor .or. iostat == iostat_end) then
-            if (length + nread > MAX_LINE_LEN) then
-               iostat = 1
-               iomsg = 'line longer than '//int_to_string(MAX_LINE_LEN)//' characters'
-               line = ''
-               return
-            end if
-            if (length + nread > len(store)) call grow(store, length, length + nread)
-            store(length + 1:length + nread) = buffer(:nread)
-            length = length + nread
-         end if
-         if (iostat == iostat_eor) then
-            iostat = 0
-            exit
-         else if (iostat == iostat_end) then
-            if (length > 0) iostat = 0
-            exit
-         else if (iostat /= 0) then
-            exit
-         end if
-      end do
-      line = store(:length)
-
-   contains
-
-      !> Enlarge `text` (its first `used` characters kept) to at least `needed`, doubling.
-      subroutine grow(text, used, needed)
-         character(len=:), allocatable, intent(inout) :: text
-         integer, intent(in) :: used, needed
-         character(len=:), allocatable :: larger
-         allocate (character(len=max(needed, 2*len(text))) :: larger)
-         larger(:used) = text(:used)
-         call move_alloc(larger, text)
-      end subroutine grow
-
+      call read_text_line(file, outcome, message)
+      select case (outcome)
+      case (TEXT_LINE)
+         iostat = 0
+         line = file%buffer(1:file%length)
+      case (TEXT_END)
+         iostat = iostat_end
+         line = ''
+      case default
+         iostat = 1
+         iomsg = message
+         line = ''
+      end select
    end subroutine read_line
 
    !> Split a line into blank-separated words (blanks: space, tab, carriage return).

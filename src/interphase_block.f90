@@ -110,7 +110,7 @@ contains
       real(dp) :: tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed
       real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
       real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed
-      integer(int64) :: keep, nfailed_count
+      integer(int64) :: nfailed_count
       logical :: ok_k, growing, open, slipping, conserve
       integer(int64) :: ngrow
       integer :: c0, m, i, k
@@ -143,9 +143,8 @@ contains
                st1 = s_t1(k)
                ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
                   iand(transfer(st1, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
-               keep = merge(-1_int64, 0_int64, ok_k)
-               s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
-               st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
+               s_n_k = merge(s_n_k, 0.0_dp, ok_k)
+               st1 = merge(st1, 0.0_dp, ok_k)
                ok_w(i) = ok_k
                nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
                sn_w(i) = s_n_k
@@ -162,10 +161,9 @@ contains
                ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
                   iand(transfer(st1, 0_int64), MAGNITUDE_MASK), &
                   iand(transfer(st2, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
-               keep = merge(-1_int64, 0_int64, ok_k)
-               s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
-               st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
-               st2 = transfer(iand(transfer(st2, 0_int64), keep), 0.0_dp)
+               s_n_k = merge(s_n_k, 0.0_dp, ok_k)
+               st1 = merge(st1, 0.0_dp, ok_k)
+               st2 = merge(st2, 0.0_dp, ok_k)
                ok_w(i) = ok_k
                nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
                sn_w(i) = s_n_k
@@ -380,7 +378,7 @@ contains
       real(dp) :: tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed, ratio
       real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
       real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed
-      integer(int64) :: keep, nfailed_count, ngrow, nup
+      integer(int64) :: nfailed_count, ngrow, nup
       logical :: ok_k, growing, open, slipping, conserve, grown, slipped
       integer :: c0, m, i, k
 
@@ -405,9 +403,8 @@ contains
                st1 = s_t1(k)
                ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
                   iand(transfer(st1, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
-               keep = merge(-1_int64, 0_int64, ok_k)
-               s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
-               st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
+               s_n_k = merge(s_n_k, 0.0_dp, ok_k)
+               st1 = merge(st1, 0.0_dp, ok_k)
                ok_w(i) = ok_k
                sn_w(i) = s_n_k
                st1_w(i) = st1
@@ -424,10 +421,9 @@ contains
                ok_k = max(iand(transfer(s_n_k, 0_int64), MAGNITUDE_MASK), &
                   iand(transfer(st1, 0_int64), MAGNITUDE_MASK), &
                   iand(transfer(st2, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
-               keep = merge(-1_int64, 0_int64, ok_k)
-               s_n_k = transfer(iand(transfer(s_n_k, 0_int64), keep), 0.0_dp)
-               st1 = transfer(iand(transfer(st1, 0_int64), keep), 0.0_dp)
-               st2 = transfer(iand(transfer(st2, 0_int64), keep), 0.0_dp)
+               s_n_k = merge(s_n_k, 0.0_dp, ok_k)
+               st1 = merge(st1, 0.0_dp, ok_k)
+               st2 = merge(st2, 0.0_dp, ok_k)
                ok_w(i) = ok_k
                sn_w(i) = s_n_k
                st1_w(i) = st1

@@ -16,6 +16,7 @@ module interphase_capi
       c_associated, c_f_pointer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
+   use interphase_real_text, only: real_text
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE
    use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
@@ -161,8 +162,8 @@ contains
          call finish()
          return
       else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
-         write (message, '(a,a,g0.6,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
-            old%d, ' at separation (mm) ', separation(1:n)
+         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+            real_text(old%d, 6), ' at separation (mm) ', separation(1:n)
          call finish()
          return
       else if (code /= STATUS_OK) then

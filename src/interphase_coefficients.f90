@@ -14,28 +14,29 @@ module interphase_coefficients
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: coefficient_set_type, simplified_coefficients, NO_COEFFICIENTS
+   public :: coefficient_set_type, NO_COEFFICIENTS, simplified_coefficients
 
-   !> Coefficients at one damage D = a/b (or their derivatives d/dD, in the same type).
+   !> Coefficients at one damage D = a/b (or their derivatives d/dD, in the same type). No default
+   !> initialisation: providers set every member (LLVM flang 19 initialises a variable of a type
+   !> with default initialisation, and an intent(out) argument of one, by a run-time library call
+   !> at every entry, the largest cost of its update; docs/compilers.md). NO_COEFFICIENTS is the set
+   !> of zeros.
    type :: coefficient_set_type
-      real(dp) :: k_n     !! C_NN/h: open-crack normal stiffness (MPa/mm)
-      real(dp) :: k_t     !! C_TT/h: open-crack tangential stiffness (MPa/mm)
-      real(dp) :: kc_n    !! C^c_NN/h: contact stiffness added when closed (MPa/mm)
-      real(dp) :: kc_t    !! C^c_TT/h (MPa/mm)
-      real(dp) :: dbar_n  !! Dbar_NN/h: mean crack opening per unit s_N (-)
-      real(dp) :: dbar_t  !! Dbar_TT/h: mean crack sliding per unit s_T (-)
-      real(dp) :: tc_t    !! T^c_T/h: mean crack shear stress per unit s_T, closed (MPa/mm)
-      real(dp) :: sc_n    !! S^c_N/h: mean crack normal stress per unit s_N, closed (MPa/mm)
-      real(dp) :: cf_t    !! C^f_T: interface shear traction per unit slip (MPa/mm)
-      real(dp) :: tf      !! T^f: mean crack shear stress per unit slip, < 0 (MPa/mm)
-      real(dp) :: ufbar   !! mean over the crack of the slip shape u^f, max|u^f| = 1 (-)
+      real(dp) :: k_n              !! C_NN/h: open-crack normal stiffness (MPa/mm)
+      real(dp) :: k_t              !! C_TT/h: open-crack tangential stiffness (MPa/mm)
+      real(dp) :: kc_n             !! C^c_NN/h: contact stiffness added when closed (MPa/mm)
+      real(dp) :: kc_t             !! C^c_TT/h (MPa/mm)
+      real(dp) :: dbar_n           !! Dbar_NN/h: mean crack opening per unit s_N (-)
+      real(dp) :: dbar_t           !! Dbar_TT/h: mean crack sliding per unit s_T (-)
+      real(dp) :: tc_t             !! T^c_T/h: mean crack shear stress per unit s_T, closed (MPa/mm)
+      real(dp) :: sc_n             !! S^c_N/h: mean crack normal stress per unit s_N, closed (MPa/mm)
+      real(dp) :: cf_t             !! C^f_T: interface shear traction per unit slip (MPa/mm)
+      real(dp) :: tf               !! T^f: mean crack shear stress per unit slip, < 0 (MPa/mm)
+      real(dp) :: ufbar            !! mean over the crack of the slip shape u^f, max|u^f| = 1 (-)
    end type coefficient_set_type
 
-   !> Every coefficient zero. (The type has no default initialisation: a coefficient set is a
-   !> local of every update, which would otherwise be filled with zeros on each call before the
-   !> provider sets all of it.)
-   type(coefficient_set_type), parameter :: NO_COEFFICIENTS = coefficient_set_type(0.0_dp, 0.0_dp, &
-      0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
+   type(coefficient_set_type), parameter :: NO_COEFFICIENTS = coefficient_set_type(0.0_dp, 0.0_dp, 0.0_dp, &
+      0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
 
 contains
 

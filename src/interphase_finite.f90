@@ -2,24 +2,47 @@
 !> procedure that uses that module saves and restores the floating-point environment on entry
 !> and exit, which costs more than the whole interface update. Checking the exponent bits is
 !> exact for IEEE binary64 and raises no floating-point exception for NaN or Inf.
+!>
+!> The bits are read through storage association (`binary64_bits`), not `transfer`: LLVM flang 19
+!> compiles a `transfer` evaluated at run time to a call of its run-time library with a heap
+!> allocation (some 100 ns), the equivalence to a load; gfortran compiles both to a load
+!> (docs/compilers.md).
 module interphase_finite
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: is_finite, is_within, all_within, EXPONENT_MASK, MAGNITUDE_MASK
+   public :: is_finite, is_within, all_within, binary64_bits, EXPONENT_MASK, MAGNITUDE_MASK, HIGH_HALF, &
+      LOW_HALF, LOW_HALF_MASK
 
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
    integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
    !> All bits but the sign: iand(bits of x, MAGNITUDE_MASK) are the bits of |x|.
    integer(int64), parameter :: MAGNITUDE_MASK = int(z'7FFFFFFFFFFFFFFF', int64)
+   !> The two default integers (32 bits each) that share a binary64 number's storage, and which of
+   !> them holds the sign and exponent (2 on a little-endian machine): from the bits of 1.0,
+   !> whose low half is zero (constant expressions, folded at compile time).
+   integer, parameter :: ONE_HALVES(2) = transfer(1.0_dp, [0, 0], 2)
+   integer, parameter :: HIGH_HALF = merge(2, 1, ONE_HALVES(1) == 0), LOW_HALF = 3 - HIGH_HALF
+   integer(int64), parameter :: LOW_HALF_MASK = int(z'00000000FFFFFFFF', int64)
 
 contains
+
+   !> The bit pattern of x as an integer: transfer(x, 0_int64). Standard storage association
+   !> (double precision and default integers), which both compilers compile to one load.
+   elemental integer(int64) function binary64_bits(x) result(bits)
+      real(dp), intent(in) :: x
+      double precision :: stored
+      integer :: halves(2)
+      equivalence (stored, halves)
+      stored = x
+      bits = ior(ishft(int(halves(HIGH_HALF), int64), 32), iand(int(halves(LOW_HALF), int64), LOW_HALF_MASK))
+   end function binary64_bits
 
    !> True when x is neither NaN nor +-Inf.
    elemental logical function is_finite(x)
       real(dp), intent(in) :: x
-      is_finite = iand(transfer(x, 0_int64), EXPONENT_MASK) /= EXPONENT_MASK
+      is_finite = iand(binary64_bits(x), EXPONENT_MASK) /= EXPONENT_MASK
    end function is_finite
 
    !> True when x is finite and |x| <= bound (bound finite, >= 0). Compares the bit patterns of |x|
@@ -27,7 +50,7 @@ contains
    !> raises no floating-point exception for NaN or Inf.
    elemental logical function is_within(x, bound)
       real(dp), intent(in) :: x, bound
-      is_within = iand(transfer(x, 0_int64), MAGNITUDE_MASK) <= transfer(bound, 0_int64)
+      is_within = iand(binary64_bits(x), MAGNITUDE_MASK) <= binary64_bits(bound)
    end function is_within
 
    !> all(is_within(x(1:n), bound)) in one call (a call per element costs more than the test where

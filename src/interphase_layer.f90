@@ -24,7 +24,7 @@ module interphase_layer
       OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, MODEL_MICROMECHANICAL, DAMAGE_FRACTURE
    implicit none
    private
-   public :: layer_map_type, layer_map
+   public :: layer_map
 
    !> Where the separation lives in a host's component arrays.
    type, public :: layer_map_type

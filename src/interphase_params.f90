@@ -3,8 +3,9 @@
 !> symbol, the value and the admissible range; nothing is clamped.
 module interphase_params
    use, intrinsic :: iso_fortran_env, only: int64
-   use interphase_finite, only: EXPONENT_MASK
+   use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
    use interphase_kinds, only: dp
+   use interphase_real_text, only: real_text
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
       PROP_SF_T, PROP_K_N, PROP_K_T, NPROPS_SIMPLIFIED, PROP_TABLE, NPROPS_MICROMECHANICAL, LFM_D0, &
       LFM_RCURVE, LFM_GC_I, LFM_GC_II, NPROPS_FRACTURE_EXTRA, OPT_GROWTH_SLIP, NPROPS_OPTIONS, &
@@ -112,15 +113,15 @@ contains
       model = selector_code(props(PROP_MODEL))
       if (model /= MODEL_SIMPLIFIED .and. model /= MODEL_MICROMECHANICAL) then
          status = STATUS_BAD_MODEL
-         write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_MODEL, ') model = ', props(PROP_MODEL), &
+         write (message, '(a,i0,a,a,a)') 'PROPS(', PROP_MODEL, ') model = ', real_text(props(PROP_MODEL)), &
             ' is not a model: use 1 (simplified spring model) or 2 (micromechanical)'
          return
       end if
       damage_law = selector_code(props(PROP_DAMAGE_LAW))
       if (damage_law /= DAMAGE_DISPLACEMENT .and. damage_law /= DAMAGE_FRACTURE) then
          status = STATUS_BAD_DAMAGE_LAW
-         write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_DAMAGE_LAW, ') damage law = ', &
-            props(PROP_DAMAGE_LAW), ' is not a damage law: use 1 (displacement-driven, eqs 13-18) '// &
+         write (message, '(a,i0,a,a,a)') 'PROPS(', PROP_DAMAGE_LAW, ') damage law = ', &
+            real_text(props(PROP_DAMAGE_LAW)), ' is not a damage law: use 1 (displacement-driven, eqs 13-18) '// &
             'or 2 (fracture mechanics, eqs 20-24)'
          return
       end if
@@ -147,7 +148,7 @@ contains
          table = selector_code(props(PROP_TABLE))
          if (table /= TABLE_DEFAULT_CODE .and. table /= TABLE_CUSTOM_CODE) then
             status = STATUS_BAD_TABLE_SELECTOR
-            write (message, '(a,i0,a,g0,a)') 'PROPS(', PROP_TABLE, ') table = ', props(PROP_TABLE), &
+            write (message, '(a,i0,a,a,a)') 'PROPS(', PROP_TABLE, ') table = ', real_text(props(PROP_TABLE)), &
                ' is not a table selector: use 0 (built-in table) or 1 (custom table loaded at start-up)'
             return
          end if
@@ -433,10 +434,10 @@ contains
       integer(int64) :: b
       integer :: k
       code = -1
-      b = transfer(x, 0_int64)
+      b = bits_of(x)
       if (b >= 0_int64 .and. b <= MAX_SELECTOR_BITS) then
          k = int(x)
-         if (transfer(real(k, dp), 0_int64) == b) code = k
+         if (bits_of(real(k, dp)) == b) code = k
       end if
    end function selector_code
 
@@ -444,15 +445,26 @@ contains
    pure logical function in_window(x)
       real(dp), intent(in) :: x
       integer(int64) :: b
-      b = transfer(x, 0_int64)
+      b = bits_of(x)
       in_window = b >= WINDOW_MIN_BITS .and. b <= WINDOW_MAX_BITS
    end function in_window
+
+   !> The bit pattern of x: interphase_finite's binary64_bits, here where the decoder's checks
+   !> can inline it (a `transfer` at run time is a library call with LLVM flang 19).
+   pure integer(int64) function bits_of(x) result(bits)
+      real(dp), intent(in) :: x
+      double precision :: stored
+      integer :: halves(2)
+      equivalence (stored, halves)
+      stored = x
+      bits = ior(ishft(int(halves(HIGH_HALF), int64), 32), iand(int(halves(LOW_HALF), int64), LOW_HALF_MASK))
+   end function bits_of
 
    !> x is neither NaN nor Inf (interphase_finite's test, here where the decoder's checks can
    !> inline it).
    pure logical function finite(x)
       real(dp), intent(in) :: x
-      finite = iand(transfer(x, 0_int64), EXPONENT_MASK) /= EXPONENT_MASK
+      finite = iand(bits_of(x), EXPONENT_MASK) /= EXPONENT_MASK
    end function finite
 
    !> x is finite and x > lower (false for NaN and Inf, without an invalid-operation exception).

@@ -4,13 +4,14 @@
 !> has been loaded, for hosts to make its absence a setup error rather than a failed update.
 module interphase_provider
    use interphase_kinds, only: dp
+   use interphase_real_text, only: real_text
    use interphase_params, only: law_params_type
    use interphase_layout, only: PROP_TABLE
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, &
       RCURVE_TABULATED
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
       STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
-   use interphase_coefficients, only: coefficient_set_type, simplified_coefficients, NO_COEFFICIENTS
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, simplified_coefficients
    use interphase_micro_coefficients, only: micro_coefficients, custom_table_loaded
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    implicit none
@@ -66,7 +67,7 @@ contains
                '(Abaqus/Explicit), docs/abaqus.md'
          else if (.not. rcurve_covers(params%d0)) then
             status = STATUS_RCURVE_OUT_OF_RANGE
-            write (message, '(a,a,g0.6)', iostat=ios) rcurve_coverage(), ', not the initial crack D0 = ', params%d0
+            write (message, '(a,a,a)', iostat=ios) rcurve_coverage(), ', not the initial crack D0 = ', real_text(params%d0, 6)
          end if
       end if
    end subroutine check_run_time_data

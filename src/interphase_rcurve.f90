@@ -10,6 +10,7 @@
 module interphase_rcurve
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
+   use interphase_real_text, only: real_text
    use interphase_status, only: message_path, STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_SPLINE_OUT_OF_RANGE, status_message
@@ -187,15 +188,12 @@ contains
    !> For messages: 'R-curve <file> covers D from <lo> to <hi>' (the file as tried).
    pure function rcurve_coverage() result(text)
       character(len=:), allocatable :: text
-      character(len=64) :: range
-      integer :: ios
       if (.not. allocated(rcurve_knots)) then
          text = 'no R-curve loaded'
          return
       end if
-      write (range, '(a,g0.6,a,g0.6)', iostat=ios) ' covers D from ', rcurve_knots(1), ' to ', &
-         rcurve_knots(size(rcurve_knots))
-      text = 'R-curve '//message_path(loaded_tried)//trim(range)
+      text = 'R-curve '//message_path(loaded_tried)//' covers D from '//real_text(rcurve_knots(1), 6)// &
+         ' to '//real_text(rcurve_knots(size(rcurve_knots)), 6)
    end function rcurve_coverage
 
    !> The file the tabulated R-curve came from, as given to load_rcurve ('' when none is loaded).

@@ -6,6 +6,7 @@ module interphase_state
    use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, NSTATV_REQUIRED, &
       SV_DAMAGE_INVISCID, NSTATV_VISCOUS
    use interphase_enums, only: REGIME_INTACT, REGIME_SLIP
+   use interphase_finite, only: HIGH_HALF, LOW_HALF, LOW_HALF_MASK
    use interphase_status, only: STATUS_OK, STATUS_BAD_STATE, STATUS_BAD_NSTATV, MESSAGE_LEN
    implicit none
    private
@@ -18,6 +19,10 @@ module interphase_state
    integer(int64), parameter :: SLIP_MAX_BITS = transfer(SLIP_MAX, 0_int64)
    !> Position of the sign bit of an IEEE binary64 number.
    integer, parameter :: SIGN_BIT = 63
+   !> The bit patterns of the regime codes 0..3 as real numbers (constants: a `transfer` at run
+   !> time is a library call with LLVM flang 19).
+   integer(int64), parameter :: REGIME_BITS(REGIME_INTACT:REGIME_SLIP) = &
+      transfer([0.0_dp, 1.0_dp, 2.0_dp, 3.0_dp], 0_int64, 4)
 
    !> History variables of one interface point.
    type :: interface_state_type
@@ -60,12 +65,12 @@ contains
       state%slip(1) = statev(SV_SLIP_1)
       state%slip(2) = 0.0_dp
       if (ntens == 3) state%slip(2) = statev(SV_SLIP_2)
-      state%regime = regime_code(transfer(statev(SV_REGIME), 0_int64))
-      if (damage_admissible(transfer(state%d, 0_int64)) == 0) then
+      state%regime = regime_code(stored_bits(statev(SV_REGIME)))
+      if (damage_admissible(stored_bits(state%d)) == 0) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE, ') D = ', state%d, &
             ' must lie in [0, 1]'
-      else if (slip_admissible(transfer(state%slip(1), 0_int64))*slip_admissible(transfer(state%slip(2), 0_int64)) == 0) then
+      else if (slip_admissible(stored_bits(state%slip(1)))*slip_admissible(stored_bits(state%slip(2))) == 0) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,i0,a,2es12.4,a,es8.1,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
             ') slip = ', state%slip, ' is not finite or exceeds |lambda_i| <= ', SLIP_MAX, ' mm'
@@ -78,7 +83,7 @@ contains
       if (status /= STATUS_OK .or. .not. with_inviscid) return
       state%d_inviscid = statev(SV_DAMAGE_INVISCID)
       ! D_v <= D <= 1 (the regularised damage never overtakes the damage law's)
-      if (damage_admissible(transfer(state%d_inviscid, 0_int64)) == 0) then
+      if (damage_admissible(stored_bits(state%d_inviscid)) == 0) then
          status = STATUS_BAD_STATE
       else if (state%d_inviscid < state%d) then
          status = STATUS_BAD_STATE
@@ -86,6 +91,18 @@ contains
       if (status /= STATUS_OK) write (message, '(a,i0,a,es12.5,a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE_INVISCID, &
          ') D = ', state%d_inviscid, ' must lie in [STATEV(', SV_DAMAGE, ') = ', state%d, ', 1]'
    end subroutine state_unpack
+
+   !> The bit pattern of x, transfer(x, 0_int64), read through storage association (as
+   !> interphase_finite's binary64_bits, here for the compilers to inline it: a `transfer` at run
+   !> time is a run-time library call with LLVM flang 19).
+   elemental integer(int64) function stored_bits(x) result(bits)
+      real(dp), intent(in) :: x
+      double precision :: stored
+      integer :: halves(2)
+      equivalence (stored, halves)
+      stored = x
+      bits = ior(ishft(int(halves(HIGH_HALF), int64), 32), iand(int(halves(LOW_HALF), int64), LOW_HALF_MASK))
+   end function stored_bits
 
    !> Number of STATEV slots a material's state takes: NSTATV_REQUIRED, or NSTATV_VISCOUS with
    !> viscous regularisation.
@@ -140,7 +157,7 @@ contains
       integer :: candidate
       regime_known = 0
       do candidate = REGIME_INTACT, REGIME_SLIP
-         regime_known = regime_known + merge(1_int64, 0_int64, b == transfer(real(candidate, dp), 0_int64))
+         regime_known = regime_known + merge(1_int64, 0_int64, b == REGIME_BITS(candidate))
       end do
    end function regime_known
 
@@ -151,7 +168,7 @@ contains
       integer :: candidate
       code = -1
       do candidate = REGIME_INTACT, REGIME_SLIP
-         code = code + merge(candidate + 1, 0, b == transfer(real(candidate, dp), 0_int64))
+         code = code + merge(candidate + 1, 0, b == REGIME_BITS(candidate))
       end do
    end function regime_code
 

@@ -6,7 +6,7 @@
 !>
 !> Set-up code (I/O); the pure update never calls it.
 module interphase_text_input
-   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor, int64
+   use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use, intrinsic :: iso_c_binding, only: c_char, c_null_char, c_size_t, c_ptr, c_associated
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
@@ -25,13 +25,24 @@ module interphase_text_input
    integer, parameter, public :: TEXT_LINE = 0, TEXT_END = 1, TEXT_LINE_TOO_LONG = 2, &
       TEXT_FILE_TOO_LARGE = 3, TEXT_READ_ERROR = 4
 
-   !> An open text file read line by line.
+   !> Bytes read from the file at once (its size permitting).
+   integer, parameter :: CHUNK_LEN = 4096
+
+   !> An open text file read line by line. It is read as a stream of bytes, not as formatted
+   !> records: some Fortran run-times (flang's) take a whole record into memory before the
+   !> first non-advancing read returns, so that a file without newlines (a device such as
+   !> /dev/zero) would never return; here every read is bounded.
    type :: text_file_type
       integer :: unit = -1                       !! the unit, -1 when not open
       integer :: line_number = 0                 !! lines read so far
       integer(int64) :: bytes = 0_int64          !! bytes read so far
       character(len=:), allocatable :: buffer    !! the last line (its first `length` characters)
       integer :: length = 0                      !! length of the last line
+      integer(int64) :: size = -1_int64          !! bytes of a regular file; <= 0: not known
+      integer(int64) :: fetched = 0_int64        !! bytes taken from the file into `chunk`
+      character(len=CHUNK_LEN) :: chunk = ''     !! bytes read ahead ...
+      integer :: chunk_next = 1                  !! ... the next one to take ...
+      integer :: chunk_end = 0                   !! ... and the last one
    end type text_file_type
 
    interface
@@ -66,13 +77,16 @@ contains
          message = 'cannot open: is a directory'
          return
       end if
-      open (newunit=file%unit, file=path, status='old', action='read', form='formatted', &
-         access='sequential', iostat=ios, iomsg=iomsg)
+      open (newunit=file%unit, file=path, status='old', action='read', form='unformatted', &
+         access='stream', iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
          file%unit = -1
          message = 'cannot open: '//trim(iomsg)
          return
       end if
+      ! the size of a regular file; a device or a pipe has none (0 or -1): read byte by byte
+      inquire (unit=file%unit, size=file%size, iostat=ios)
+      if (ios /= 0) file%size = -1_int64
       allocate (character(len=1024) :: file%buffer)
       ok = .true.
    end subroutine open_text_file
@@ -86,33 +100,37 @@ contains
       type(text_file_type), intent(inout) :: file
       integer, intent(out) :: outcome                 !! TEXT_*
       character(len=*), intent(out) :: message        !! reason when not TEXT_LINE/TEXT_END
-      integer, parameter :: PIECE_LEN = 4096
-      character(len=PIECE_LEN) :: piece
       character(len=:), allocatable :: grown
       character(len=256) :: iomsg
-      integer :: ios, nread
+      integer :: ios, take, newline
       logical :: started
 
       message = ''
       file%length = 0
       started = .false.
       do
-         iomsg = ''
-         read (file%unit, '(a)', advance='no', iostat=ios, iomsg=iomsg, size=nread) piece
-         if (ios /= 0 .and. ios /= iostat_eor .and. .not. is_iostat_end(ios)) then
-            outcome = TEXT_READ_ERROR
-            message = 'read error: '//trim(iomsg)
-            return
-         end if
-         if (is_iostat_end(ios) .and. nread == 0) then
-            if (started) exit
-            outcome = TEXT_END
-            return
+         if (file%chunk_next > file%chunk_end) then
+            call fetch(file, ios, iomsg)
+            if (is_iostat_end(ios)) then
+               if (started) exit                      ! a last line without a newline
+               outcome = TEXT_END
+               return
+            else if (ios /= 0) then
+               outcome = TEXT_READ_ERROR
+               message = 'read error: '//trim(iomsg)
+               return
+            end if
          end if
          started = .true.
-         file%bytes = file%bytes + nread
-         if (ios == iostat_eor) file%bytes = file%bytes + 1
-         if (file%length + nread > MAX_LINE_LEN) then
+         newline = index(file%chunk(file%chunk_next:file%chunk_end), achar(10))
+         if (newline == 0) then
+            take = file%chunk_end - file%chunk_next + 1
+            file%bytes = file%bytes + take
+         else
+            take = newline - 1
+            file%bytes = file%bytes + take + 1
+         end if
+         if (file%length + take > MAX_LINE_LEN) then
             outcome = TEXT_LINE_TOO_LONG
             file%line_number = file%line_number + 1
             write (message, '(a,i0,a)') 'line longer than ', MAX_LINE_LEN, ' characters'
@@ -124,14 +142,23 @@ contains
             write (message, '(a,i0,a)') 'file larger than ', MAX_FILE_BYTES, ' bytes'
             return
          end if
-         if (file%length + nread > len(file%buffer)) then
-            allocate (character(len=max(2*len(file%buffer), file%length + nread)) :: grown)
+         if (file%length + take > len(file%buffer)) then
+            allocate (character(len=max(2*len(file%buffer), file%length + take)) :: grown)
             grown(1:file%length) = file%buffer(1:file%length)
-            call move_alloc(grown, file%buffer)
+            ! an assignment, not move_alloc: flang -pedantic flags move_alloc of deferred-length
+            ! character scalars (their semantics change in Fortran 2023); one more copy per
+            ! doubling of the buffer
+            file%buffer = grown
+            deallocate (grown)
          end if
-         file%buffer(file%length + 1:file%length + nread) = piece(1:nread)
-         file%length = file%length + nread
-         if (ios /= 0) exit                           ! end of record, or of the file
+         file%buffer(file%length + 1:file%length + take) = &
+            file%chunk(file%chunk_next:file%chunk_next + take - 1)
+         file%length = file%length + take
+         file%chunk_next = file%chunk_next + take
+         if (newline /= 0) then
+            file%chunk_next = file%chunk_next + 1     ! past the newline
+            exit
+         end if
       end do
       file%line_number = file%line_number + 1
       if (file%length > 0) then
@@ -139,6 +166,31 @@ contains
       end if
       outcome = TEXT_LINE
    end subroutine read_text_line
+
+   !> Read the next bytes into file%chunk: CHUNK_LEN of them, or the rest of a regular file,
+   !> or one from a file of unknown size (a stream read past the end leaves unknown how many
+   !> bytes it transferred). ios: 0, an end-of-file code, or an error code with iomsg.
+   subroutine fetch(file, ios, iomsg)
+      type(text_file_type), intent(inout) :: file
+      integer, intent(out) :: ios
+      character(len=*), intent(out) :: iomsg
+      integer :: n
+      iomsg = ''
+      if (file%size > 0_int64) then
+         n = int(min(int(CHUNK_LEN, int64), file%size - file%fetched))
+         if (n <= 0) then
+            ios = iostat_end
+            return
+         end if
+      else
+         n = 1
+      end if
+      read (file%unit, iostat=ios, iomsg=iomsg) file%chunk(1:n)
+      if (ios /= 0) return
+      file%fetched = file%fetched + n
+      file%chunk_next = 1
+      file%chunk_end = n
+   end subroutine fetch
 
    !> Close the file (once: a second call does nothing).
    subroutine close_text_file(file)

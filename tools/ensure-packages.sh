@@ -6,7 +6,9 @@
 #   python3-numpy, python3-scipy, python3-matplotlib, python3-pytest (the Python package
 #   drivers/python/interphase, its examples and its tests), checked as modules of Debian's
 #   /usr/bin/python3 (another python3 first on PATH, e.g. pyenv's, does not see Debian's packages)
-# Usage: tools/ensure-packages.sh [freefem] [gnuplot] [pkgconfig] [numpy] [scipy] [matplotlib] [pytest]
+#   flang-19 and libomp-19-dev (LLVM flang 19 with its OpenMP: the second compiler of
+#               tools/run-tests.sh; asked for by name only, not by default)
+# Usage: tools/ensure-packages.sh [freefem] [gnuplot] [pkgconfig] [numpy] [scipy] [matplotlib] [pytest] [flang]
 #        (default: freefem gnuplot)
 # Never fails: where a package cannot be installed it says so, and the parts that need it
 # skip with their own clear message.
@@ -14,15 +16,23 @@ set -u
 want=("$@")
 [ ${#want[@]} -eq 0 ] && want=(freefem gnuplot)
 
-declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot [pkgconfig]=pkg-config)
+declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot [pkgconfig]=pkg-config [flang]=flang-new-19)
 declare -A module_of=([numpy]=numpy [scipy]=scipy [matplotlib]=matplotlib [pytest]=pytest)
 declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox [pkgconfig]=pkgconf [numpy]=python3-numpy [scipy]=python3-scipy
-                   [matplotlib]=python3-matplotlib [pytest]=python3-pytest)
+                   [matplotlib]=python3-matplotlib [pytest]=python3-pytest [flang]="flang-19 libomp-19-dev")
 debian_python=/usr/bin/python3
 
 missing=()
 for w in "${want[@]}"; do
   c=${cmd_of[$w]:-}
+  if [ "$w" = flang ]; then
+    # the compiler and the OpenMP runtime it links (the thread-safety test needs both)
+    if ! command -v "$c" >/dev/null 2>&1 || [ ! -e /usr/lib/llvm-19/lib/libomp.so ]; then
+      # shellcheck disable=SC2206  # two package names
+      missing+=(${pkg_of[$w]})
+    fi
+    continue
+  fi
   m=${module_of[$w]:-}
   if [ -n "$c" ]; then
     command -v "$c" >/dev/null 2>&1 || missing+=("${pkg_of[$w]}")

@@ -11,7 +11,7 @@ module interphase_fe2d_case
       ENTRY_LEN, precheck_case_file, material_entry_kinds
    use interphase_driver_namelist, only: entry_kind_type, KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
-      stem_of, join_path, read_line, split_words
+      stem_of, join_path, read_line, split_words, text_file_type, open_line_file, close_text_file
    implicit none
    private
    public :: fe2d_case_type, read_fe2d_case, read_shear_history, SIDES_FREE, SIDES_PERIODIC, &
@@ -427,15 +427,15 @@ contains
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       character(len=:), allocatable :: line
       integer, allocatable :: starts(:), ends(:)
-      integer :: unit, ios, line_number, n, k
+      integer :: ios, line_number, n, k
+      type(text_file_type) :: unit
       character(len=512) :: iomsg
       real(dp) :: values(2)
       real(dp), allocatable :: grow(:)
 
       ok = .false.
       allocate (t(0), u(0))
-      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
-         iostat=ios, iomsg=iomsg)
+      call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = path//': cannot open the shear history: '//trim(iomsg)
          return
@@ -447,7 +447,7 @@ contains
          if (ios == iostat_end) exit
          if (ios /= 0) then
             message = path//': read error: '//trim(iomsg)
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          line_number = line_number + 1
@@ -458,7 +458,7 @@ contains
          if (size(starts) /= 2) then
             message = path//':'//int_to_string(line_number)//': found '// &
                int_to_string(size(starts))//' columns; expected 2 (t u_shear)'
-            close (unit)
+            call close_text_file(unit)
             return
          end if
          do k = 1, 2
@@ -466,13 +466,13 @@ contains
             if (ios /= 0) then
                message = path//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
                   ": cannot parse '"//line(starts(k):ends(k))//"' as a number"
-               close (unit)
+               call close_text_file(unit)
                return
             end if
             if (.not. ieee_is_finite(values(k))) then
                message = path//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
                   ": '"//line(starts(k):ends(k))//"' is not a finite number"
-               close (unit)
+               call close_text_file(unit)
                return
             end if
          end do
@@ -481,7 +481,7 @@ contains
                message = path//':'//int_to_string(line_number)//': time '// &
                   real_to_string(values(1))//' is not greater than the previous time '// &
                   real_to_string(t(n))
-               close (unit)
+               call close_text_file(unit)
                return
             end if
          end if
@@ -491,7 +491,7 @@ contains
          grow = [u, values(2)]
          call move_alloc(grow, u)
       end do
-      close (unit)
+      call close_text_file(unit)
       if (n < 2) then
          message = path//': needs at least 2 data rows, found '//int_to_string(n)
          return

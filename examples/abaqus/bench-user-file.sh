@@ -4,11 +4,11 @@
 #   examples/abaqus/bench-user-file.sh [--build-dir DIR] [--work-dir DIR] ["FLAGS" ...]
 #
 # Writes the one-file source with make-user-file.sh --explicit, compiles it ALONE with each set of
-# flags (as Abaqus compiles a user subroutine; gfortran, or $FC), links it with the driver
+# flags (as Abaqus compiles a user subroutine; gfortran, or $FC: LLVM flang too), links it with the driver
 # bench_user_file.f90 (one block of 4096 points in the L2 cache, 2000 increments of a cyclic shear
 # under compression, best of 5 runs) and LAPACK, and prints ns per point update for each set.
 # Default flag sets: the recommended one (docs/abaqus.md), -O3 -march=native without
-# -fno-trapping-math, and -O2. --build-dir: a configured and built interphase build directory
+# -fno-trapping-math (with flang: without -ffp-contract=off), and -O2. --build-dir: a configured and built interphase build directory
 # (default ./build/release), for the generated sources of the built-in table.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -26,9 +26,16 @@ while [ $# -gt 0 ]; do
    shift
 done
 if [ ${#flag_sets[@]} -eq 0 ]; then
-   flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive"
-              "-O3 -march=native -frecursive"
-              "-O2 -frecursive")
+   case "$("$fc" --version 2>&1 | head -n 1)" in
+      *flang*)  # LLVM flang: locals on the stack without a flag, no -fno-trapping-math
+         flag_sets=("-O3 -march=native -ffp-contract=off"
+                    "-O3 -march=native"
+                    "-O2") ;;
+      *)
+         flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive"
+                    "-O3 -march=native -frecursive"
+                    "-O2 -frecursive") ;;
+   esac
 fi
 if [ ! -d "$build_dir/generated" ]; then
    echo "bench-user-file.sh: $build_dir is not a built interphase build directory (no generated/);" \

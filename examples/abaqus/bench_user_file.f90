@@ -67,7 +67,7 @@ program bench_user_file
       ns = 1.0e9_dp*real(t1 - t0, dp)/real(rate, dp)/real(NB*NINC*NCYCLE, dp)
       best = min(best, ns)
    end do
-   write (output_unit, '(a,f7.2,a,f5.3,a,f5.3,a)') 'ns per point update:', best, '  (check: largest D = ', &
+   write (output_unit, '(a,f9.2,a,f5.3,a,f5.3,a)') 'ns per point update:', best, '  (check: largest D = ', &
       maxval(state(:, 1, cur)), ', share of damaged points = ', &
       real(count(state(:, 1, cur) > 0.0_dp), dp)/real(NB, dp), ')'
 end program bench_user_file

@@ -89,7 +89,7 @@ contains
       environment = stat == 0 .and. length > 0
       if (.not. environment) return
       allocate (character(len=length) :: value)
-      call get_environment_variable(name, value)
+      call get_environment_variable(name, value(:))
    end function environment
 
 end module interphase_external_data

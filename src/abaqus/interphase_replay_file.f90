@@ -154,7 +154,7 @@ contains
          return
       end if
       allocate (character(len=length) :: value)
-      call get_environment_variable(variable, value, status=status)
+      call get_environment_variable(variable, value(:), status=status)
       environment = status == 0
    end function environment
 

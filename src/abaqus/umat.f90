@@ -31,6 +31,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       layer, kspt, jstep, kinc)
    use interphase_kinds, only: dp
    use interphase_finite, only: is_finite, is_within, all_within
+   use interphase_real_text, only: real_text, es_fields
    use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
       STATUS_BAD_TIME_INCREMENT
@@ -56,7 +57,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    type(law_params_type) :: params
    type(layer_map_type) :: map
    type(interface_state_type) :: old, new
-   real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6)
+   real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6), work
    integer :: status, severity, nsep, i, j
    logical :: host_energies
    !> the host is CalculiX (known once PROPS are decoded): its DDSDDE is uninitialised, and it
@@ -89,8 +90,9 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       ! increment may help), STRESS, SSE and SPD within HOST_VALUE_MAX (the values the UMAT
       ! returned last: fatal otherwise)
       if (.not. (all_within(ntens, stran, HOST_INCREMENT_MAX) .and. all_within(ntens, dstran, HOST_INCREMENT_MAX))) then
-         write (message, '(a,6es12.4)') 'STRAN ', stran
-         write (stress_text, '(6es11.3)') dstran
+         ! (es_fields: an infinity reads Infinity with every compiler)
+         message = 'STRAN '//es_fields(stran, 12, 4)
+         stress_text = es_fields(dstran, 11, 3)
          message = trim(message)//', DSTRAN'//trim(stress_text)
          status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
             all(is_finite(stran)) .and. all(is_finite(dstran)))
@@ -98,7 +100,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          exit update
       end if
       if (.not. all_within(ntens, stress, HOST_VALUE_MAX)) then
-         write (stress_text, '(6es11.3)') stress
+         stress_text = es_fields(stress, 11, 3)
          write (message, '(a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), &
             ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned last)'
          status = STATUS_BAD_HOST_INPUT
@@ -106,8 +108,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       end if
       if (host_energies) then
          if (.not. (is_within(sse, HOST_VALUE_MAX) .and. is_within(spd, HOST_VALUE_MAX))) then
-            write (message, '(a,es11.3,a,es11.3,a,es9.1e3,a)') 'incoming SSE ', sse, ', SPD ', spd, &
-               ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned '// &
+            write (message, '(a,a,a,a,a,es9.1e3,a)') 'incoming SSE ', es_fields([sse], 11, 3), ', SPD ', &
+               es_fields([spd], 11, 3), ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned '// &
                'last; a host that does not keep them, such as CalculiX, needs the host option 1)'
             status = STATUS_BAD_HOST_INPUT
             exit update
@@ -128,8 +130,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          exit update
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
          ! the R-curve file does not reach the damage this point needs: a setup error
-         write (message, '(a,a,g0.6,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
-            old%d, ' at separation (mm) ', s(1:nsep)
+         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+            real_text(old%d, 6), ' at separation (mm) ', s(1:nsep)
          exit update
       else if (status /= STATUS_OK) then
          write (message, '(a,3es12.4)') 'update failed at separation (mm) ', s(1:nsep)
@@ -141,7 +143,13 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       ! the kernel's outputs by the admissible ranges, t >= 1e-6 mm): no overflow
       if (map%identity) then
          if (host_energies) then
-            spd = spd + 0.5_dp*sum((stress + traction(1:ntens))*dstran) - (psi - sse)
+            ! the work in element order, not with SUM (flang's SUM is compensated: the zeros of a
+            ! layer's in-plane components would change its last bit, docs/compilers.md)
+            work = 0.0_dp
+            do i = 1, ntens
+               work = work + (stress(i) + traction(i))*dstran(i)
+            end do
+            spd = spd + 0.5_dp*work - (psi - sse)
             sse = psi
          end if
          ! (component by component: a whole-array copy of 2 or 3 values is a library call)
@@ -164,7 +172,11 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          sigma(1:ntens) = 0.0_dp
          sigma(map%component(1:nsep)) = traction(1:nsep)
          if (host_energies) then
-            spd = spd + 0.5_dp*sum((stress + sigma(1:ntens))*dstran) - (psi/map%thickness - sse)
+            work = 0.0_dp
+            do i = 1, ntens
+               work = work + (stress(i) + sigma(i))*dstran(i)
+            end do
+            spd = spd + 0.5_dp*work - (psi/map%thickness - sse)
             sse = psi/map%thickness
          end if
          stress = sigma(1:ntens)

@@ -46,6 +46,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_RCURVE_OUT_OF_RANGE, status_message, STATUS_BAD_HOST_INPUT
    use interphase_finite, only: is_within
+   use interphase_real_text, only: real_text
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states, state_slots
@@ -279,8 +280,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   traction, tangent(1:ntens, 1:ntens), new, psi(k), status, dt)
                if (status == STATUS_RCURVE_OUT_OF_RANGE) then
                   ! the R-curve file does not reach the damage this point needs: a setup error
-                  write (message, '(a,a,i0,a,g0.6)', iostat=status) rcurve_coverage(), '; at block point ', km, &
-                     ' the crack grows beyond it from D = ', old%d
+                  write (message, '(a,a,i0,a,a)', iostat=status) rcurve_coverage(), '; at block point ', km, &
+                     ' the crack grows beyond it from D = ', real_text(old%d, 6)
                   fatal_code = STATUS_RCURVE_OUT_OF_RANGE
                   exit update
                end if

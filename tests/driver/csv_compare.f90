@@ -215,7 +215,7 @@ contains
 
       call get_command_argument(n, length=length)
       allocate (character(len=length) :: value)
-      if (length > 0) call get_command_argument(n, value)
+      if (length > 0) call get_command_argument(n, value(:))
    end subroutine get_argument
 
    !> Decimal text of an integer.

@@ -7,7 +7,8 @@
 program fe2d_csv_compare
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit, iostat_end
    use interphase_kinds, only: dp
-   use interphase_driver_text, only: read_line, int_to_string, real_to_string
+   use interphase_driver_text, only: read_line, int_to_string, real_to_string, text_file_type, open_line_file, &
+      close_text_file
    implicit none
 
    real(dp), parameter :: REL_TOL = 1.0e-7_dp
@@ -23,10 +24,10 @@ program fe2d_csv_compare
    end if
    call get_command_argument(1, length=length)
    allocate (character(len=length) :: actual_path)
-   call get_command_argument(1, actual_path)
+   call get_command_argument(1, actual_path(:))
    call get_command_argument(2, length=length)
    allocate (character(len=length) :: reference_path)
-   call get_command_argument(2, reference_path)
+   call get_command_argument(2, reference_path(:))
    call read_table(actual_path, header_a, a)
    call read_table(reference_path, header_r, r)
    if (header_a /= header_r) call fail('headers differ: '//header_a//' | '//header_r)
@@ -65,9 +66,10 @@ contains
       character(len=:), allocatable :: line
       character(len=512) :: iomsg
       real(dp), allocatable :: grow(:, :)
-      integer :: unit, ios, ncol, n
+      integer :: ios, ncol, n
+      type(text_file_type) :: unit
 
-      open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
+      call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) call fail(path//': '//trim(iomsg))
       call read_line(unit, header, ios, iomsg)
       if (ios /= 0) call fail(path//': no header')
@@ -84,7 +86,7 @@ contains
          if (ios /= 0) call fail(path//': cannot read row '//int_to_string(size(grow, 2)))
          call move_alloc(grow, table)
       end do
-      close (unit)
+      call close_text_file(unit)
    end subroutine read_table
 
 end program fe2d_csv_compare

@@ -624,8 +624,15 @@ contains
       real(dp), intent(in) :: value
       character(len=:), allocatable :: text
       character(len=NUMBER_LEN) :: buffer
-      write (buffer, '(g0)') value
+      ! g0.17 and the leading zero written out: the same text with every compiler (the zero of
+      ! a magnitude below 1 is processor dependent: gfortran writes 0.5, flang .5)
+      write (buffer, '(g0.17)') value
       text = trim(adjustl(buffer))
+      if (text(1:1) == '.') then
+         text = '0'//text
+      else if (len(text) > 1) then
+         if (text(1:2) == '-.') text = '-0'//text(2:)
+      end if
    end function real_str
 
    function logical_str(value) result(text)
@@ -645,7 +652,7 @@ contains
       integer :: arg_len
       call get_command_argument(i, length=arg_len)
       allocate (character(len=arg_len) :: arg)
-      call get_command_argument(i, arg)
+      call get_command_argument(i, arg(:))
    end function argument
 
    pure function lower(text) result(low)

@@ -428,10 +428,10 @@ contains
       if (command_argument_count() /= 2) call stop_usage('expected 2 arguments')
       call get_command_argument(1, length=arg_len)
       allocate (character(len=arg_len) :: input)
-      call get_command_argument(1, input)
+      call get_command_argument(1, input(:))
       call get_command_argument(2, length=arg_len)
       allocate (character(len=arg_len) :: output)
-      call get_command_argument(2, output)
+      call get_command_argument(2, output(:))
    end subroutine get_arguments
 
    !> Reports `file:line: error: why`, removes the partial output and exits with status 1.

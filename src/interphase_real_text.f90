@@ -1,0 +1,103 @@
+!> Text of a real(dp) for messages, the same whatever the compiler.
+!>
+!> Fortran leaves two details of formatted output to the processor: the zero before the decimal
+!> point of a magnitude below 1 (gfortran writes 0.5, flang .5) and the spelling of an infinity
+!> in a wide enough field (gfortran Infinity, flang Inf). interphase's messages name values the
+!> user gave or the host passed, and tests and scripts read them, so they are written here with
+!> the leading zero always and an infinity always as Infinity (docs/compilers.md).
+module interphase_real_text
+   use interphase_kinds, only: dp
+   use, intrinsic :: iso_fortran_env, only: int64
+   use interphase_finite, only: is_finite, EXPONENT_MASK, MAGNITUDE_MASK
+   implicit none
+   private
+
+   public :: real_text, es_field, es_fields
+
+contains
+
+   !> The value in `g0.<digits>` editing (default 17 significant digits: every double told
+   !> apart, as gfortran's `g0`), no blanks, with the leading zero of a magnitude below 1
+   !> (0.5, -0.5, 0.1E-4) and a non-finite value as NaN, Infinity or -Infinity.
+   pure function real_text(value, digits) result(text)
+      real(dp), intent(in) :: value               !! the number
+      integer, intent(in), optional :: digits     !! significant digits, 1..17 (default 17)
+      character(len=:), allocatable :: text
+      character(len=40) :: buffer
+      character(len=12) :: edit
+      integer :: d, ios
+
+      if (.not. is_finite(value)) then
+         text = non_finite_text(value)
+         return
+      end if
+      d = 17
+      if (present(digits)) d = max(1, min(17, digits))
+      write (edit, '(a,i0,a)') '(g0.', d, ')'
+      write (buffer, edit, iostat=ios) value
+      if (ios /= 0) then
+         text = '?'
+         return
+      end if
+      text = trim(adjustl(buffer))
+      if (text(1:1) == '.') then
+         text = '0'//text
+      else if (len(text) > 1) then
+         if (text(1:2) == '-.') text = '-0'//text(2:)
+      end if
+   end function real_text
+
+   !> The value in an `es<width>.<decimals>` field, right-justified to `width`, with a
+   !> non-finite value as NaN, Infinity or -Infinity (asterisks when even that does not fit).
+   pure function es_field(value, width, decimals) result(text)
+      real(dp), intent(in) :: value               !! the number
+      integer, intent(in) :: width                !! field width (characters), 1..60
+      integer, intent(in) :: decimals             !! digits after the point
+      character(len=max(1, min(60, width))) :: text
+      character(len=:), allocatable :: word
+      character(len=20) :: edit
+      integer :: ios
+
+      if (is_finite(value)) then
+         write (edit, '(a,i0,a,i0,a)') '(es', len(text), '.', max(0, decimals), ')'
+         write (text, edit, iostat=ios) value
+         if (ios /= 0) text = repeat('*', len(text))
+         return
+      end if
+      word = non_finite_text(value)
+      if (len(word) > len(text)) then
+         text = repeat('*', len(text))
+      else
+         text = repeat(' ', len(text) - len(word))//word
+      end if
+   end function es_field
+
+   !> es_field of each value, one after the other.
+   pure function es_fields(values, width, decimals) result(text)
+      real(dp), intent(in) :: values(:)           !! the numbers
+      integer, intent(in) :: width                !! width of each field (characters), 1..60
+      integer, intent(in) :: decimals             !! digits after the point
+      character(len=:), allocatable :: text
+      integer :: i, w
+      w = max(1, min(60, width))
+      allocate (character(len=w*size(values)) :: text)
+      do i = 1, size(values)
+         text((i - 1)*w + 1:i*w) = es_field(values(i), w, decimals)
+      end do
+   end function es_fields
+
+   !> NaN, Infinity or -Infinity.
+   pure function non_finite_text(value) result(text)
+      real(dp), intent(in) :: value               !! a value that is not finite
+      character(len=:), allocatable :: text
+      ! (bit tests: a NaN's magnitude bits lie above the exponent mask, an infinity's equal it)
+      if (iand(transfer(value, 0_int64), MAGNITUDE_MASK) > EXPONENT_MASK) then
+         text = 'NaN'
+      else if (transfer(value, 0_int64) >= 0_int64) then
+         text = 'Infinity'
+      else
+         text = '-Infinity'
+      end if
+   end function non_finite_text
+
+end module interphase_real_text
