@@ -109,8 +109,9 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       if (host_energies) then
          if (.not. (is_within(sse, HOST_VALUE_MAX) .and. is_within(spd, HOST_VALUE_MAX))) then
             write (message, '(a,a,a,a,a,es9.1e3,a)') 'incoming SSE ', es_fields([sse], 11, 3), ', SPD ', &
-               es_fields([spd], 11, 3), ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned '// &
-               'last; a host that does not keep them, such as CalculiX, needs the host option 1)'
+               es_fields([spd], 11, 3), ': the host must pass finite values within ', HOST_VALUE_MAX, &
+               ' (those the UMAT returned last; a host that does not keep them, such as CalculiX, needs the '// &
+               'host option 1)'
             status = STATUS_BAD_HOST_INPUT
             exit update
          end if
