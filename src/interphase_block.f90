@@ -370,9 +370,9 @@ contains
       !> Points per group: the groups' working arrays stay in the L1 cache.
       integer, parameter :: SUB = 64
       real(dp) :: sn_w(SUB), st1_w(SUB), st2_w(SUB), lam1_w(SUB), lam2_w(SUB), t_sq_w(SUB), d_w(SUB)
-      real(dp) :: m_w(SUB), bad_w(SUB)
+      real(dp) :: m_w(SUB), bad_w(SUB), failc(SUB)
       real(dp), dimension(SUB) :: ck_n, ck_t, ckc_n, ckc_t, cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar
-      logical :: ok_w(SUB), okc(SUB)
+      logical :: ok_w(SUB)
       real(dp) :: s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
       real(dp) :: d_hat, d_k, num, den, kk_n, kk_t, cf_t, tf_k, kf, ufbar_k, sigma, tau1, tau2
       real(dp) :: tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed, ratio
@@ -471,20 +471,19 @@ contains
          ! table at the old damage (slip_measure), for the trial slip lambda_n m(D_n)/m(D)
          if (conserve .and. nup > 0) then
             call micro_block_coefficients(params%table, m, d_old(c0:c0 + m - 1), ck_n, ck_t, ckc_n, ckc_t, &
-               cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar, okc)
+               cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar, failc)
             do i = 1, m
                k = c0 + i - 1
                grown = d_w(i) > d_old(k)
                slipped = abs(lam1_w(i)) > 0.0_dp .or. abs(lam2_w(i)) > 0.0_dp
                m_w(i) = merge(d_old(k)*cufbar(i), 0.0_dp, d_old(k) > 0.0_dp)
-               ok_w(i) = ok_w(i) .and. (okc(i) .or. .not. (grown .and. slipped .and. d_old(k) > 0.0_dp))
+               ok_w(i) = ok_w(i) .and. (failc(i) < 0.5_dp .or. .not. (grown .and. slipped .and. d_old(k) > 0.0_dp))
             end do
          end if
 
          ! ---- the coefficients at D
          call micro_block_coefficients(params%table, m, d_w(1:m), ck_n, ck_t, ckc_n, ckc_t, cdbar_n, cdbar_t, &
-            ctc_t, csc_n, ccf_t, ctf, cufbar, okc)
-         ok_w(1:m) = ok_w(1:m) .and. okc(1:m)
+            ctc_t, csc_n, ccf_t, ctf, cufbar, failc)
          if (conserve .and. nup > 0) then
             ! the quotient growth_trial_slip forms; elsewhere lambda_n x 1, lambda_n itself
             do i = 1, m
@@ -533,7 +532,7 @@ contains
                regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
                open = d_k <= 0.0_dp .or. cdbar_n(i)*s_n_k > 0.0_dp
-               bad_w(i) = merge(1.0_dp, 0.0_dp, .not. open .and. slipping .and. .not. (kf > 0.0_dp))
+               bad_w(i) = merge(1.0_dp, failc(i), .not. open .and. slipping .and. .not. (kf > 0.0_dp))
                d(k) = d_k
                t_n(k) = merge(tn_open, tn_closed, open)
                t_t1(k) = merge(tt1_open, tt1_closed, open)
@@ -591,7 +590,7 @@ contains
                regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
                open = d_k <= 0.0_dp .or. cdbar_n(i)*s_n_k > 0.0_dp
-               bad_w(i) = merge(1.0_dp, 0.0_dp, .not. open .and. slipping .and. .not. (kf > 0.0_dp))
+               bad_w(i) = merge(1.0_dp, failc(i), .not. open .and. slipping .and. .not. (kf > 0.0_dp))
                d(k) = d_k
                t_n(k) = merge(tn_open, tn_closed, open)
                t_t1(k) = merge(tt1_open, tt1_closed, open)

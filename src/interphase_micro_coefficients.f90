@@ -7,6 +7,7 @@
 !> loaded once at start-up by `load_custom_table` (Abaqus: UEXTERNALDB; the driver: its case
 !> file) into `protected` data that the pure update only reads.
 module interphase_micro_coefficients
+   use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    use interphase_logarithm, only: ln_positive_block
    use interphase_enums, only: TABLE_CUSTOM_CODE
@@ -167,37 +168,67 @@ contains
    !> the vectorised block update's provider (interphase_block). Each value is bit for bit what
    !> `table_coefficients` returns at that D: the same interpolation variable, the same interval
    !> (from the knots' interval guide, which ends where the search of `cubic_locate` does), the
-   !> same Horner form, the same T^f = (D T^f)/D. ok(i) = .false. where
-   !> `table_coefficients` would fail (0 < D < D_MIN_CRACK, the variable outside the knots, no
-   !> custom table loaded); the values there are finite but meaningless. D must be finite in
-   !> [0, 1] (the block update's damages are). Compiled with -fno-trapping-math (CMakeLists.txt):
-   !> every operand is guarded, so no lane can raise an exception.
+   !> same Horner form, the same T^f = (D T^f)/D. fail(i) = 1 where `table_coefficients` would
+   !> fail (0 < D < D_MIN_CRACK, the variable outside the knots, no custom table loaded), else 0
+   !> (a real flag, so that the caller's loops that combine it vectorise); the values there are
+   !> finite but meaningless. D must be finite in [0, 1] (the block update's damages are).
+   !> Where all n damages are the same number with the same sign (a block of intact points, or
+   !> of broken ones), the table is evaluated once and its values copied: the same bits, since
+   !> each value depends on D alone. Compiled with -fno-trapping-math (CMakeLists.txt): every
+   !> operand is guarded, so no lane can raise an exception.
    pure subroutine micro_block_coefficients(table, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, &
-         cf_t, tf, ufbar, ok)
+         cf_t, tf, ufbar, fail)
       integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
-      integer, intent(in) :: n                               !! number of points
+      integer, intent(in) :: n                               !! number of points (>= 1)
       real(dp), intent(in) :: d(n)                           !! damage D = a/b (-)
       real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
-      logical, intent(out) :: ok(n)
+      real(dp), intent(out) :: fail(n)                       !! 1 where the point update fails on the table, else 0
+      integer :: i, n_eval
+      integer(int64) :: ndiff
+      real(dp) :: d1, sign1
+      if (table == TABLE_CUSTOM_CODE .and. .not. allocated(custom_coef)) then
+         fail = 1.0_dp
+         k_n = 0.0_dp; k_t = 0.0_dp; kc_n = 0.0_dp; kc_t = 0.0_dp; dbar_n = 0.0_dp; dbar_t = 0.0_dp
+         tc_t = 0.0_dp; sc_n = 0.0_dp; cf_t = 0.0_dp; tf = -huge(1.0_dp); ufbar = 1.0_dp
+         return
+      end if
+      ! one value of D (bit for bit: equal numbers of the same sign, NaN counted as different)?
+      d1 = d(1)
+      sign1 = sign(1.0_dp, d1)
+      ndiff = 0
+      do i = 1, n
+         ndiff = ndiff + merge(0_int64, 1_int64, abs(d(i) - d1) <= 0.0_dp .and. sign(1.0_dp, d(i)) >= sign1 &
+            .and. sign(1.0_dp, d(i)) <= sign1)
+      end do
+      n_eval = merge(1, n, ndiff == 0)
       if (table == TABLE_CUSTOM_CODE) then
-         if (.not. allocated(custom_coef)) then
-            ok = .false.
-            k_n = 0.0_dp; k_t = 0.0_dp; kc_n = 0.0_dp; kc_t = 0.0_dp; dbar_n = 0.0_dp; dbar_t = 0.0_dp
-            tc_t = 0.0_dp; sc_n = 0.0_dp; cf_t = 0.0_dp; tf = -huge(1.0_dp); ufbar = 1.0_dp
-            return
-         end if
          call block_values(custom_variable, custom_knots, custom_coef, custom_guide, custom_guide_scale, &
-            custom_guide_steps, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, ok)
+            custom_guide_steps, n_eval, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, fail)
       else
          call block_values(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_GUIDE, &
-            DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS, n, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, &
-            tc_t, sc_n, cf_t, tf, ufbar, ok)
+            DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS, n_eval, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, &
+            tc_t, sc_n, cf_t, tf, ufbar, fail)
+      end if
+      if (n_eval < n) then
+         k_n(2:n) = k_n(1)
+         k_t(2:n) = k_t(1)
+         kc_n(2:n) = kc_n(1)
+         kc_t(2:n) = kc_t(1)
+         dbar_n(2:n) = dbar_n(1)
+         dbar_t(2:n) = dbar_t(1)
+         tc_t(2:n) = tc_t(1)
+         sc_n(2:n) = sc_n(1)
+         cf_t(2:n) = cf_t(1)
+         tf(2:n) = tf(1)
+         ufbar(2:n) = ufbar(1)
+         fail(2:n) = fail(1)
       end if
    end subroutine micro_block_coefficients
 
-   !> `micro_block_coefficients` on given interpolation data.
+   !> `micro_block_coefficients` on given interpolation data, CHUNK points at a time (fixed-size
+   !> working arrays: a run-time-sized automatic array would be allocated on the heap at every call).
    pure subroutine block_values(variable, knots, coef_table, guide, guide_scale, guide_steps, n, d, k_n, k_t, &
-         kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, ok)
+         kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, fail)
       integer, intent(in) :: variable
       real(dp), contiguous, intent(in) :: knots(:)
       real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)
@@ -207,71 +238,81 @@ contains
       integer, intent(in) :: n
       real(dp), intent(in) :: d(n)
       real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
-      logical, intent(out) :: ok(n)
-      real(dp) :: x(n), t(n), dtf(n), x_k, t_i, v(N_COEFFICIENTS)
-      integer :: lo(n), nk, step, cand, i, j, ncells
+      real(dp), intent(out) :: fail(n)
+      integer, parameter :: CHUNK = 64
+      real(dp) :: x(CHUNK), t(CHUNK), y(CHUNK), v(N_COEFFICIENTS, CHUNK), x_k, t_i, x_lo, x_hi
+      integer :: lo(CHUNK), nk, step, cand, i, j, k, ncells, c0, m
       nk = size(knots)
-      ! the interpolation variable (crack_variable: x = D, or w = 1/(1 - ln(1 - D)), 0 at D = 1),
-      ! with crack_variable's logarithm (ln_positive: the same bits in scalar and vector code)
-      if (variable == VARIABLE_DAMAGE) then
-         x = d
-      else
-         ! (the argument is 1 - D for every D < 1; at D = 1, where x = 0, it stays > 0)
-         do i = 1, n
-            t(i) = 1.0_dp - min(d(i), 1.0_dp - 0.5_dp*epsilon(1.0_dp))
-         end do
-         call ln_positive_block(n, t, x)
-         do i = 1, n
-            x(i) = merge(1.0_dp/(1.0_dp - x(i)), 0.0_dp, d(i) < 1.0_dp)
-         end do
-      end if
-      ! the interval: the largest lo in 1..nk-1 with knots(lo) <= x (cubic_locate's interval; at
-      ! x = knots(nk), nk - 1), from the interval guide: the guide's interval of x's cell
-      ! (guide_cell, of x clamped to the knots: where ok is false x may lie outside), then
-      ! guide_steps forward comparisons (guide_locate), one vector gather each
       ncells = size(guide)
-      do i = 1, n
-         ok(i) = .not. (d(i) > 0.0_dp .and. d(i) < D_MIN_CRACK) .and. x(i) >= knots(1) .and. x(i) <= knots(nk)
-         x_k = min(max(x(i), knots(1)), knots(nk))
-         lo(i) = guide(min(ncells, max(1, int((x_k - knots(1))*guide_scale) + 1)))
-      end do
-      do step = 1, guide_steps
-         do i = 1, n
-            cand = min(lo(i) + 1, nk - 1)
-            lo(i) = merge(cand, lo(i), x(i) >= knots(cand))
+      x_lo = knots(1)
+      x_hi = knots(nk)
+      do c0 = 1, n, CHUNK
+         m = min(CHUNK, n - c0 + 1)
+         ! the interpolation variable (crack_variable: x = D, or w = 1/(1 - ln(1 - D)), 0 at D = 1),
+         ! with crack_variable's logarithm (ln_positive: the same bits in scalar and vector code)
+         if (variable == VARIABLE_DAMAGE) then
+            x(1:m) = d(c0:c0 + m - 1)
+         else
+            ! (the argument is 1 - D for every D < 1; at D = 1, where x = 0, it stays > 0)
+            do i = 1, m
+               y(i) = 1.0_dp - min(d(c0 + i - 1), 1.0_dp - 0.5_dp*epsilon(1.0_dp))
+            end do
+            call ln_positive_block(m, y, x)
+            do i = 1, m
+               x(i) = merge(1.0_dp/(1.0_dp - x(i)), 0.0_dp, d(c0 + i - 1) < 1.0_dp)
+            end do
+         end if
+         do i = 1, m
+            k = c0 + i - 1
+            fail(k) = merge(0.0_dp, 1.0_dp, .not. (d(k) > 0.0_dp .and. d(k) < D_MIN_CRACK) .and. x(i) >= x_lo &
+               .and. x(i) <= x_hi)
          end do
-      end do
-      do i = 1, n
-         t(i) = x(i) - knots(lo(i))
-      end do
-      ! the columns of one point together: a point's coefficients on its interval are contiguous
-      ! in the data (column fastest), so the columns are evaluated as one short vector each
-      ! power (cubic_eval's Horner form), where a loop over the points would gather every
-      ! coefficient of every column
-      !GCC$ novector
-      do i = 1, n
-         t_i = t(i)
-         do j = 1, N_COEFFICIENTS
-            v(j) = coef_table(j, 0, lo(i)) + t_i*(coef_table(j, 1, lo(i)) &
-               + t_i*(coef_table(j, 2, lo(i)) + t_i*coef_table(j, 3, lo(i))))
+         ! the interval: the largest lo in 1..nk-1 with knots(lo) <= x (cubic_locate's interval; at
+         ! x = knots(nk), nk - 1), from the interval guide: the guide's interval of x's cell
+         ! (guide_cell, of x clamped to the knots: where the point fails x may lie outside), then
+         ! guide_steps forward comparisons (guide_locate)
+         do i = 1, m
+            x_k = min(max(x(i), x_lo), x_hi)
+            lo(i) = guide(min(ncells, max(1, int((x_k - x_lo)*guide_scale) + 1)))
          end do
-         k_n(i) = v(IC_K_N)
-         k_t(i) = v(IC_K_T)
-         kc_n(i) = v(IC_KC_N)
-         kc_t(i) = v(IC_KC_T)
-         dbar_n(i) = v(IC_DBAR_N)
-         dbar_t(i) = v(IC_DBAR_T)
-         tc_t(i) = v(IC_TC_T)
-         sc_n(i) = v(IC_SC_N)
-         cf_t(i) = v(IC_CF_T)
-         dtf(i) = v(IC_DTF)
-         ufbar(i) = v(IC_UFBAR)
-      end do
-      ! T^f = (D T^f)/D; -huge at D = 0 (table_coefficients). The divisor is guarded by max, not
-      ! by a selection (which the compiler may turn into two divisions under -fno-trapping-math):
-      ! below D_MIN_CRACK (ok = .false.) the quotient could overflow
-      do i = 1, n
-         tf(i) = merge(dtf(i)/max(d(i), D_MIN_CRACK), -huge(1.0_dp), d(i) > 0.0_dp)
+         do step = 1, guide_steps
+            do i = 1, m
+               cand = min(lo(i) + 1, nk - 1)
+               lo(i) = merge(cand, lo(i), x(i) >= knots(cand))
+            end do
+         end do
+         ! the columns of one point together (cubic_eval's Horner form): a point's coefficients on
+         ! its interval are contiguous in the data (column fastest), so the compiler evaluates the
+         ! columns as a few short vectors each power, where a loop over the points would gather
+         ! every coefficient of every column; then the columns copied out point by point
+         do i = 1, m
+            t_i = x(i) - knots(lo(i))
+            do j = 1, N_COEFFICIENTS
+               v(j, i) = coef_table(j, 0, lo(i)) + t_i*(coef_table(j, 1, lo(i)) &
+                  + t_i*(coef_table(j, 2, lo(i)) + t_i*coef_table(j, 3, lo(i))))
+            end do
+         end do
+         do i = 1, m
+            k = c0 + i - 1
+            k_n(k) = v(IC_K_N, i)
+            k_t(k) = v(IC_K_T, i)
+            kc_n(k) = v(IC_KC_N, i)
+            kc_t(k) = v(IC_KC_T, i)
+            dbar_n(k) = v(IC_DBAR_N, i)
+            dbar_t(k) = v(IC_DBAR_T, i)
+            tc_t(k) = v(IC_TC_T, i)
+            sc_n(k) = v(IC_SC_N, i)
+            cf_t(k) = v(IC_CF_T, i)
+            t(i) = v(IC_DTF, i)
+            ufbar(k) = v(IC_UFBAR, i)
+         end do
+         ! T^f = (D T^f)/D; -huge at D = 0 (table_coefficients). The divisor is guarded by max, not
+         ! by a selection (which the compiler may turn into two divisions under -fno-trapping-math):
+         ! below D_MIN_CRACK (a failing point) the quotient could overflow
+         do i = 1, m
+            k = c0 + i - 1
+            tf(k) = merge(t(i)/max(d(k), D_MIN_CRACK), -huge(1.0_dp), d(k) > 0.0_dp)
+         end do
       end do
    end subroutine block_values
 
