@@ -29,8 +29,9 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       stran, dstran, time, dtime, temp, dtemp, predef, dpred, cmname, ndi, nshr, ntens, &
       nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, &
       layer, kspt, jstep, kinc)
+   use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
-   use interphase_finite, only: is_finite, is_within, all_within
+   use interphase_finite, only: is_finite, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, MAGNITUDE_MASK
    use interphase_real_text, only: real_text, es_fields
    use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
@@ -194,5 +195,12 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
 
    call umat_fail(status, severity, message, calculix, pnewdt, ddsdde, cmname, noel, npt, kinc, &
       props, statev, stress, sse, spd, stran, dstran, time, dtime, ndi, nshr)
+
+contains
+
+   ! the range tests of the host's values, here where the compiler inlines them (the tests of
+   ! interphase_finite, from the same source)
+   include 'interphase_binary64_bits.inc'
+   include 'interphase_within.inc'
 
 end subroutine umat
