@@ -118,8 +118,10 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          end if
       end if
       if (map%identity) then
-         ! a cohesive element: the separations themselves (NTENS = 2 or 3)
-         s(1:ntens) = stran + dstran
+         ! a cohesive element: the separations themselves (NTENS = 2 or 3; written out, as below)
+         s(1) = stran(1) + dstran(1)
+         s(2) = stran(2) + dstran(2)
+         if (ntens == 3) s(3) = stran(3) + dstran(3)
       else
          do i = 1, nsep
             s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
@@ -147,10 +149,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          if (host_energies) then
             ! the work in element order, not with SUM (flang's SUM is compensated: the zeros of a
             ! layer's in-plane components would change its last bit, docs/compilers.md)
-            work = 0.0_dp
-            do i = 1, ntens
-               work = work + (stress(i) + traction(i))*dstran(i)
-            end do
+            work = (0.0_dp + (stress(1) + traction(1))*dstran(1)) + (stress(2) + traction(2))*dstran(2)
+            if (ntens == 3) work = work + (stress(3) + traction(3))*dstran(3)
             spd = spd + 0.5_dp*work - (psi - sse)
             sse = psi
          end if
