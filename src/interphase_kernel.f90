@@ -26,7 +26,8 @@
 !> Stored energy: open or intact psi = 1/2 t.s; closed psi = 1/2 t.s + 1/2 C^f lambda.s_T
 !> - 1/2 D T^f ufbar |lambda|^2 (docs/theory.md).
 module interphase_kernel
-   use interphase_finite, only: is_finite, all_within
+   use, intrinsic :: iso_fortran_env, only: int64
+   use interphase_finite, only: is_finite, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, MAGNITUDE_MASK
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
@@ -64,7 +65,7 @@ contains
       type(response_type) :: r
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
-      integer :: ntens, nt, j
+      integer :: ntens, nt, j, m
 
       ntens = size(s)
       nt = ntens - 1
@@ -79,8 +80,9 @@ contains
          return
       end if
       s_n = s(1)
-      st = 0.0_dp
-      st(1:nt) = s(2:ntens)
+      st(1) = s(2)
+      st(2) = 0.0_dp
+      if (ntens == 3) st(2) = s(3)
 
       if (params%damage_law == DAMAGE_DISPLACEMENT) then
          ! damage first (eq 39), then the response at that damage
@@ -129,18 +131,29 @@ contains
       traction(1) = r%traction(1)
       traction(2) = r%traction(2)
       if (ntens == 3) traction(3) = r%traction(3)
+      ! (m = ntens, in a form from which the compiler sees m <= 3: with a run-time extent alone,
+      ! GCC's link-time inlining warns of writes beyond a caller's 3 x 3 array)
+      m = merge(3, 2, ntens == 3)
       select case (params%stiffness)
       case (STIFFNESS_FIXED_DAMAGE)
          ! the tangent at fixed D, without the slipping crack's coupling of the shear traction to
          ! s_N (through the friction bound mu sigma): symmetric, positive semi-definite
-         tangent(1:ntens, 1:ntens) = r%tangent(1:ntens, 1:ntens)
-         if (r%regime == REGIME_SLIP) tangent(2:ntens, 1) = 0.0_dp
+         tangent(1:m, 1:m) = r%tangent(1:m, 1:m)
+         if (r%regime == REGIME_SLIP) tangent(2:m, 1) = 0.0_dp
       case default
-         do j = 1, ntens
-            tangent(1:ntens, j) = r%tangent(1:ntens, j) + r%dtrac_dd(1:ntens)*dd_ds(j)
-         end do
+         if (m == 2) then
+            ! (written out: the loop over a run-time extent costs more than the 2-D tangent)
+            tangent(1, 1) = r%tangent(1, 1) + r%dtrac_dd(1)*dd_ds(1)
+            tangent(2, 1) = r%tangent(2, 1) + r%dtrac_dd(2)*dd_ds(1)
+            tangent(1, 2) = r%tangent(1, 2) + r%dtrac_dd(1)*dd_ds(2)
+            tangent(2, 2) = r%tangent(2, 2) + r%dtrac_dd(2)*dd_ds(2)
+         else
+            do j = 1, 3
+               tangent(1:3, j) = r%tangent(1:3, j) + r%dtrac_dd(1:3)*dd_ds(j)
+            end do
+         end if
          if (params%stiffness == STIFFNESS_SYMMETRIC) &
-            tangent(1:ntens, 1:ntens) = 0.5_dp*(tangent(1:ntens, 1:ntens) + transpose(tangent(1:ntens, 1:ntens)))
+            tangent(1:m, 1:m) = 0.5_dp*(tangent(1:m, 1:m) + transpose(tangent(1:m, 1:m)))
       end select
       psi = r%psi
    end subroutine interface_update
@@ -240,5 +253,9 @@ contains
       call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
    end subroutine broken_response
 
+   ! the separation's range test, here where the compiler inlines it (interphase_finite's, from
+   ! the same source)
+   include 'interphase_binary64_bits.inc'
+   include 'interphase_within.inc'
 
 end module interphase_kernel
