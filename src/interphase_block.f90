@@ -636,17 +636,16 @@ contains
       ndiff = int(ndiff_bits)
    end subroutine density_counts
 
-   !> mx(k) = max(mx(k), the bits of |x(k)|), k = 1..n (first: mx(k) = the bits of |x(k)|): from
-   !> a first array on, a host's values pass is_within(x, bound) (interphase_finite) for every array given exactly when
+   !> mx(k) = max(mx(k), the bits of |x(k)|), k = 1..n: with mx = 0 to start, a host's values
+   !> pass is_within(x, bound) (interphase_finite) for every array given exactly when
    !> mx <= the bits of bound (positive numbers are ordered like their bits, NaN and Inf above
    !> every finite number). The bits are read through storage association, as binary64_bits
    !> does, but a chunk of values at a time: the compiler vectorises the loops (it does not
    !> vectorise a scalar equivalence, nor flang a TRANSFER without a call of its run-time).
-   pure subroutine magnitude_bits_max(n, x, mx, first)
+   pure subroutine magnitude_bits_max(n, x, mx)
       integer, intent(in) :: n
       real(dp), intent(in) :: x(n)
       integer(int64), intent(inout) :: mx(n)
-      logical, intent(in) :: first             !! mx(k) = the bits of |x(k)| (mx's values unused)
       integer, parameter :: MCHUNK = 256
       double precision :: stored(MCHUNK)
       integer :: halves(2*MCHUNK)
@@ -655,17 +654,10 @@ contains
       do c0 = 1, n, MCHUNK
          m = min(MCHUNK, n - c0 + 1)
          stored(1:m) = x(c0:c0 + m - 1)
-         if (first) then
-            do i = 1, m
-               mx(c0 + i - 1) = iand(ior(ishft(int(halves(2*(i - 1) + HIGH_HALF), int64), 32), &
-                  iand(int(halves(2*(i - 1) + LOW_HALF), int64), LOW_HALF_MASK)), MAGNITUDE_MASK)
-            end do
-         else
-            do i = 1, m
-               mx(c0 + i - 1) = max(mx(c0 + i - 1), iand(ior(ishft(int(halves(2*(i - 1) + HIGH_HALF), int64), 32), &
-                  iand(int(halves(2*(i - 1) + LOW_HALF), int64), LOW_HALF_MASK)), MAGNITUDE_MASK))
-            end do
-         end if
+         do i = 1, m
+            mx(c0 + i - 1) = max(mx(c0 + i - 1), iand(ior(ishft(int(halves(2*(i - 1) + HIGH_HALF), int64), 32), &
+               iand(int(halves(2*(i - 1) + LOW_HALF), int64), LOW_HALF_MASK)), MAGNITUDE_MASK))
+         end do
       end do
    end subroutine magnitude_bits_max
 

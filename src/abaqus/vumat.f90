@@ -339,14 +339,16 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             ke1 = ke0 + m - 1
             ! the host's values and the increments, each within its bound (is_within), as the
             ! largest bits of |x| of each point (magnitude_bits_max: passes the compiler vectorises)
-            call magnitude_bits_max(m, stressold(ke0:ke1, 1), host_bits, .true.)
-            call magnitude_bits_max(m, stressold(ke0:ke1, 2), host_bits, .false.)
-            if (ntens == 3) call magnitude_bits_max(m, stressold(ke0:ke1, 3), host_bits, .false.)
-            call magnitude_bits_max(m, enerinternold(ke0:ke1), host_bits, .false.)
-            call magnitude_bits_max(m, enerinelasold(ke0:ke1), host_bits, .false.)
-            call magnitude_bits_max(m, ds(e0:e0 + m - 1, 1), inc_bits, .true.)
-            call magnitude_bits_max(m, ds(e0:e0 + m - 1, 2), inc_bits, .false.)
-            if (ntens == 3) call magnitude_bits_max(m, ds(e0:e0 + m - 1, 3), inc_bits, .false.)
+            host_bits(1:m) = 0
+            inc_bits(1:m) = 0
+            call magnitude_bits_max(m, stressold(ke0:ke1, 1), host_bits)
+            call magnitude_bits_max(m, stressold(ke0:ke1, 2), host_bits)
+            if (ntens == 3) call magnitude_bits_max(m, stressold(ke0:ke1, 3), host_bits)
+            call magnitude_bits_max(m, enerinternold(ke0:ke1), host_bits)
+            call magnitude_bits_max(m, enerinelasold(ke0:ke1), host_bits)
+            call magnitude_bits_max(m, ds(e0:e0 + m - 1, 1), inc_bits)
+            call magnitude_bits_max(m, ds(e0:e0 + m - 1, 2), inc_bits)
+            if (ntens == 3) call magnitude_bits_max(m, ds(e0:e0 + m - 1, 3), inc_bits)
             ! rho T0 and its inverse: once for the chunk when the density is uniform, else per point
             if (uniform_density) then
                rho_w(1:m) = rho_t_uniform
