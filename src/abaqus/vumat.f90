@@ -95,8 +95,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    !> the hardware prefetchers follow the ~25 columns a VUMAT reads and writes: at nblock = 4096,
    !> 7.0 ns per point with passes of 256, 6.0 with 2048, 5.1 with 4096 (docs/performance.md).
    integer, parameter :: CHUNK = 4096
-   !> Points per pass of the energies (the bits of the host's values and the energies' factors on the stack: 80 KB)
-   integer, parameter :: ESUB = 2048
+   !> Points per pass of the energies (the bits of the host's values on the stack)
+   integer, parameter :: ESUB = 256
    !> Bit patterns of the bounds (positive numbers are ordered like their bits)
    integer(int64), parameter :: HOST_VALUE_MAX_BITS = transfer(HOST_VALUE_MAX, 0_int64)
    integer(int64), parameter :: HOST_INCREMENT_MAX_BITS = transfer(HOST_INCREMENT_MAX, 0_int64)
@@ -108,13 +108,12 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    logical :: ok(CHUNK)
    real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei_old, ep_old
    logical :: ok_host
-   real(dp) :: traction(3), tangent(3, 3), work_k, rho_t_uniform, inv_rho_uniform, psi_old, energy_inelas
+   real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density, viscous, bad_state
    integer :: nsv   !! STATEV slots of the state (state_slots)
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status
    integer :: e0, ke0, ke1, m
-   integer(int64) :: nbad_energy, host_bits(ESUB), inc_bits(ESUB), excess
-   real(dp) :: rho_w(ESUB), inv_rho_w(ESUB), host_ok(ESUB)
+   integer(int64) :: nbad_energy, host_bits(ESUB), inc_bits(ESUB)
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    character(len=MESSAGE_LEN) :: message, first_message
 
@@ -326,9 +325,10 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             end do
          end if
 
-         ! energies, ESUB points at a time, in loops without branches: the work 1/2 (t_old + t).ds,
-         ! then per unit mass; 1/(rho T0) once for the chunk when its density is uniform (one
-         ! material, the usual case), else per point; the same numbers either way
+         ! energies, one pass without branches: the work 1/2 (t_old + t).ds, then per unit mass;
+         ! 1/(rho T0) once for the chunk when its density is uniform (one material, the usual
+         ! case), else per point (the compiler makes one loop of each case and dimension out of
+         ! this one); the same numbers either way
          uniform_density = ndiff == 0
          nbad_energy = 0
          rho_t_uniform = density(k0)*THICKNESS
@@ -349,78 +349,35 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             call magnitude_bits_max(m, ds(e0:e0 + m - 1, 1), inc_bits)
             call magnitude_bits_max(m, ds(e0:e0 + m - 1, 2), inc_bits)
             if (ntens == 3) call magnitude_bits_max(m, ds(e0:e0 + m - 1, 3), inc_bits)
-            ! rho T0 and its inverse: once for the chunk when the density is uniform, else per point
-            if (uniform_density) then
-               rho_w(1:m) = rho_t_uniform
-               inv_rho_w(1:m) = inv_rho_uniform
-            else
-               do j = 1, m
-                  rho_w(j) = density(ke0 + j - 1)*THICKNESS
-                  inv_rho_w(j) = 1.0_dp/rho_w(j)
-               end do
-            end if
-            ! the host's values enter only when within HOST_VALUE_MAX (no branch: selected, never
-            ! computed on; a NaN or Inf would raise no exception either), the culprits counted
-            ! (one comparison of the larger excess over the bounds' bits: no overflow, all are >= 0)
             do j = 1, m
-               excess = max(host_bits(j) - HOST_VALUE_MAX_BITS, inc_bits(j) - HOST_INCREMENT_MAX_BITS)
-               host_ok(j) = merge(1.0_dp, 0.0_dp, excess <= 0)
-               nbad_energy = nbad_energy + merge(0_int64, 1_int64, excess <= 0)
+               k = e0 + j - 1
+               km = k0 + k - 1
+               ! the host's values enter only when within HOST_VALUE_MAX (no branch: selected, never
+               ! computed on; a NaN or Inf would raise no exception either), the culprits counted
+               ok_host = host_bits(j) <= HOST_VALUE_MAX_BITS .and. inc_bits(j) <= HOST_INCREMENT_MAX_BITS
+               nbad_energy = nbad_energy + merge(0_int64, 1_int64, ok_host)
+               so1 = merge(stressold(km, 1), 0.0_dp, ok_host)
+               so2 = merge(stressold(km, 2), 0.0_dp, ok_host)
+               so3 = merge(stressold(km, ntens), 0.0_dp, ok_host)
+               ds1 = merge(ds(k, 1), 0.0_dp, ok_host)
+               ds2 = merge(ds(k, 2), 0.0_dp, ok_host)
+               ds3 = merge(ds(k, ntens), 0.0_dp, ok_host)
+               ei_old = merge(enerinternold(km), 0.0_dp, ok_host)
+               ep_old = merge(enerinelasold(km), 0.0_dp, ok_host)
+               work_k = (so1 + stressnew(km, 1))*ds1 + (so2 + stressnew(km, 2))*ds2
+               if (ntens == 3) work_k = work_k + (so3 + stressnew(km, 3))*ds3
+               if (uniform_density) then
+                  rho_t = rho_t_uniform
+                  inv_rho = inv_rho_uniform
+               else
+                  rho_t = density(km)*THICKNESS
+                  inv_rho = 1.0_dp/rho_t
+               end if
+               psi_old = (ei_old - ep_old)*rho_t
+               energy_inelas = ep_old + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
+               enerinelasnew(km) = energy_inelas
+               enerinternnew(km) = energy_inelas + psi(k)*inv_rho
             end do
-            ! one loop for each dimension, without control flow (the compiler vectorises it)
-            if (ntens == 2) then
-               do j = 1, m
-                  k = e0 + j - 1
-                  km = k0 + k - 1
-                  ok_host = host_ok(j) > 0.5_dp
-                  so1 = stressold(km, 1)
-                  so2 = stressold(km, 2)
-                  ds1 = ds(k, 1)
-                  ds2 = ds(k, 2)
-                  ei_old = enerinternold(km)
-                  ep_old = enerinelasold(km)
-                  ! (every value loaded first, then selected: a load inside a merge is a branch)
-                  so1 = merge(so1, 0.0_dp, ok_host)
-                  so2 = merge(so2, 0.0_dp, ok_host)
-                  ds1 = merge(ds1, 0.0_dp, ok_host)
-                  ds2 = merge(ds2, 0.0_dp, ok_host)
-                  ei_old = merge(ei_old, 0.0_dp, ok_host)
-                  ep_old = merge(ep_old, 0.0_dp, ok_host)
-                  work_k = (so1 + stressnew(km, 1))*ds1 + (so2 + stressnew(km, 2))*ds2
-                  psi_old = (ei_old - ep_old)*rho_w(j)
-                  energy_inelas = ep_old + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho_w(j)
-                  enerinelasnew(km) = energy_inelas
-                  enerinternnew(km) = energy_inelas + psi(k)*inv_rho_w(j)
-               end do
-            else
-               do j = 1, m
-                  k = e0 + j - 1
-                  km = k0 + k - 1
-                  ok_host = host_ok(j) > 0.5_dp
-                  so1 = stressold(km, 1)
-                  so2 = stressold(km, 2)
-                  so3 = stressold(km, 3)
-                  ds1 = ds(k, 1)
-                  ds2 = ds(k, 2)
-                  ds3 = ds(k, 3)
-                  ei_old = enerinternold(km)
-                  ep_old = enerinelasold(km)
-                  so1 = merge(so1, 0.0_dp, ok_host)
-                  so2 = merge(so2, 0.0_dp, ok_host)
-                  ds1 = merge(ds1, 0.0_dp, ok_host)
-                  ds2 = merge(ds2, 0.0_dp, ok_host)
-                  ei_old = merge(ei_old, 0.0_dp, ok_host)
-                  ep_old = merge(ep_old, 0.0_dp, ok_host)
-                  so3 = merge(so3, 0.0_dp, ok_host)
-                  ds3 = merge(ds3, 0.0_dp, ok_host)
-                  work_k = (so1 + stressnew(km, 1))*ds1 + (so2 + stressnew(km, 2))*ds2
-                  work_k = work_k + (so3 + stressnew(km, 3))*ds3
-                  psi_old = (ei_old - ep_old)*rho_w(j)
-                  energy_inelas = ep_old + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho_w(j)
-                  enerinelasnew(km) = energy_inelas
-                  enerinternnew(km) = energy_inelas + psi(k)*inv_rho_w(j)
-               end do
-            end if
          end do
          if (nbad_energy > 0) then
             do k = 1, n
