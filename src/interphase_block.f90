@@ -25,15 +25,14 @@
 module interphase_block
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
-   use interphase_finite, only: MAGNITUDE_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
+   use interphase_finite, only: MAGNITUDE_MASK
    use interphase_params, only: law_params_type, SEPARATION_MAX, DENSITY_MIN, DENSITY_MAX
    use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT
    use interphase_micro_coefficients, only: micro_block_coefficients
    implicit none
    private
-   public :: block_update, simplified_block_update, micromechanical_block_update, density_counts, block_supports, &
-      magnitude_bits_max
+   public :: block_update, simplified_block_update, micromechanical_block_update, density_counts, block_supports
 
    !> Bit patterns of DENSITY_MIN and DENSITY_MAX (positive numbers are ordered like their bits).
    integer(int64), parameter :: DENSITY_MIN_BITS = transfer(DENSITY_MIN, 0_int64)
@@ -635,30 +634,5 @@ contains
       nbad = int(nbad_bits)
       ndiff = int(ndiff_bits)
    end subroutine density_counts
-
-   !> mx(k) = max(mx(k), the bits of |x(k)|), k = 1..n: with mx = 0 to start, a host's values
-   !> pass is_within(x, bound) (interphase_finite) for every array given exactly when
-   !> mx <= the bits of bound (positive numbers are ordered like their bits, NaN and Inf above
-   !> every finite number). The bits are read through storage association, as binary64_bits
-   !> does, but a chunk of values at a time: the compiler vectorises the loops (it does not
-   !> vectorise a scalar equivalence, nor flang a TRANSFER without a call of its run-time).
-   pure subroutine magnitude_bits_max(n, x, mx)
-      integer, intent(in) :: n
-      real(dp), intent(in) :: x(n)
-      integer(int64), intent(inout) :: mx(n)
-      integer, parameter :: MCHUNK = 256
-      double precision :: stored(MCHUNK)
-      integer :: halves(2*MCHUNK)
-      equivalence (stored, halves)
-      integer :: c0, m, i
-      do c0 = 1, n, MCHUNK
-         m = min(MCHUNK, n - c0 + 1)
-         stored(1:m) = x(c0:c0 + m - 1)
-         do i = 1, m
-            mx(c0 + i - 1) = max(mx(c0 + i - 1), iand(ior(ishft(int(halves(2*(i - 1) + HIGH_HALF), int64), 32), &
-               iand(int(halves(2*(i - 1) + LOW_HALF), int64), LOW_HALF_MASK)), MAGNITUDE_MASK))
-         end do
-      end do
-   end subroutine magnitude_bits_max
 
 end module interphase_block

@@ -40,7 +40,6 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       stretchold, defgradold, fieldold, stressold, stateold, enerinternold, enerinelasold, &
       tempnew, stretchnew, defgradnew, fieldnew, stressnew, statenew, enerinternnew, &
       enerinelasnew)
-   use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
       SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID, NSTATV_SHARED
@@ -54,7 +53,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_kernel, only: interface_update
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
-   use interphase_block, only: block_update, density_counts, block_supports, magnitude_bits_max
+   use interphase_block, only: block_update, density_counts, block_supports
    use interphase_rcurve, only: rcurve_coverage
    use interphase_abaqus_interfaces, only: interphase_host_message
    use interphase_replay_file, only: write_replay
@@ -95,11 +94,6 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    !> the hardware prefetchers follow the ~25 columns a VUMAT reads and writes: at nblock = 4096,
    !> 7.0 ns per point with passes of 256, 6.0 with 2048, 5.1 with 4096 (docs/performance.md).
    integer, parameter :: CHUNK = 4096
-   !> Points per pass of the energies (the bits of the host's values on the stack)
-   integer, parameter :: ESUB = 256
-   !> Bit patterns of the bounds (positive numbers are ordered like their bits)
-   integer(int64), parameter :: HOST_VALUE_MAX_BITS = transfer(HOST_VALUE_MAX, 0_int64)
-   integer(int64), parameter :: HOST_INCREMENT_MAX_BITS = transfer(HOST_INCREMENT_MAX, 0_int64)
 
    type(law_params_type) :: params
    type(interface_state_type) :: old, new
@@ -111,9 +105,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density, viscous, bad_state
    integer :: nsv   !! STATEV slots of the state (state_slots)
-   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status
-   integer :: e0, ke0, ke1, m
-   integer(int64) :: nbad_energy, host_bits(ESUB), inc_bits(ESUB)
+   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    character(len=MESSAGE_LEN) :: message, first_message
 
@@ -333,51 +325,36 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          nbad_energy = 0
          rho_t_uniform = density(k0)*THICKNESS
          inv_rho_uniform = 1.0_dp/rho_t_uniform
-         do e0 = 1, n, ESUB
-            m = min(ESUB, n - e0 + 1)
-            ke0 = k0 + e0 - 1
-            ke1 = ke0 + m - 1
-            ! the host's values and the increments, each within its bound (is_within), as the
-            ! largest bits of |x| of each point (magnitude_bits_max: passes the compiler vectorises)
-            host_bits(1:m) = 0
-            inc_bits(1:m) = 0
-            call magnitude_bits_max(m, stressold(ke0:ke1, 1), host_bits)
-            call magnitude_bits_max(m, stressold(ke0:ke1, 2), host_bits)
-            if (ntens == 3) call magnitude_bits_max(m, stressold(ke0:ke1, 3), host_bits)
-            call magnitude_bits_max(m, enerinternold(ke0:ke1), host_bits)
-            call magnitude_bits_max(m, enerinelasold(ke0:ke1), host_bits)
-            call magnitude_bits_max(m, ds(e0:e0 + m - 1, 1), inc_bits)
-            call magnitude_bits_max(m, ds(e0:e0 + m - 1, 2), inc_bits)
-            if (ntens == 3) call magnitude_bits_max(m, ds(e0:e0 + m - 1, 3), inc_bits)
-            do j = 1, m
-               k = e0 + j - 1
-               km = k0 + k - 1
-               ! the host's values enter only when within HOST_VALUE_MAX (no branch: selected, never
-               ! computed on; a NaN or Inf would raise no exception either), the culprits counted
-               ok_host = host_bits(j) <= HOST_VALUE_MAX_BITS .and. inc_bits(j) <= HOST_INCREMENT_MAX_BITS
-               nbad_energy = nbad_energy + merge(0_int64, 1_int64, ok_host)
-               so1 = merge(stressold(km, 1), 0.0_dp, ok_host)
-               so2 = merge(stressold(km, 2), 0.0_dp, ok_host)
-               so3 = merge(stressold(km, ntens), 0.0_dp, ok_host)
-               ds1 = merge(ds(k, 1), 0.0_dp, ok_host)
-               ds2 = merge(ds(k, 2), 0.0_dp, ok_host)
-               ds3 = merge(ds(k, ntens), 0.0_dp, ok_host)
-               ei_old = merge(enerinternold(km), 0.0_dp, ok_host)
-               ep_old = merge(enerinelasold(km), 0.0_dp, ok_host)
-               work_k = (so1 + stressnew(km, 1))*ds1 + (so2 + stressnew(km, 2))*ds2
-               if (ntens == 3) work_k = work_k + (so3 + stressnew(km, 3))*ds3
-               if (uniform_density) then
-                  rho_t = rho_t_uniform
-                  inv_rho = inv_rho_uniform
-               else
-                  rho_t = density(km)*THICKNESS
-                  inv_rho = 1.0_dp/rho_t
-               end if
-               psi_old = (ei_old - ep_old)*rho_t
-               energy_inelas = ep_old + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
-               enerinelasnew(km) = energy_inelas
-               enerinternnew(km) = energy_inelas + psi(k)*inv_rho
-            end do
+         do k = 1, n
+            km = k0 + k - 1
+            ! the host's values enter only when within HOST_VALUE_MAX (no branch: selected, never
+            ! computed on; a NaN or Inf would raise no exception either), the culprits counted
+            ok_host = is_within(stressold(km, 1), HOST_VALUE_MAX) .and. is_within(stressold(km, 2), HOST_VALUE_MAX) &
+               .and. is_within(stressold(km, ntens), HOST_VALUE_MAX) .and. is_within(enerinternold(km), HOST_VALUE_MAX) &
+               .and. is_within(enerinelasold(km), HOST_VALUE_MAX) .and. is_within(ds(k, 1), HOST_INCREMENT_MAX) &
+               .and. is_within(ds(k, 2), HOST_INCREMENT_MAX) .and. is_within(ds(k, ntens), HOST_INCREMENT_MAX)
+            nbad_energy = nbad_energy + merge(0, 1, ok_host)
+            so1 = merge(stressold(km, 1), 0.0_dp, ok_host)
+            so2 = merge(stressold(km, 2), 0.0_dp, ok_host)
+            so3 = merge(stressold(km, ntens), 0.0_dp, ok_host)
+            ds1 = merge(ds(k, 1), 0.0_dp, ok_host)
+            ds2 = merge(ds(k, 2), 0.0_dp, ok_host)
+            ds3 = merge(ds(k, ntens), 0.0_dp, ok_host)
+            ei_old = merge(enerinternold(km), 0.0_dp, ok_host)
+            ep_old = merge(enerinelasold(km), 0.0_dp, ok_host)
+            work_k = (so1 + stressnew(km, 1))*ds1 + (so2 + stressnew(km, 2))*ds2
+            if (ntens == 3) work_k = work_k + (so3 + stressnew(km, 3))*ds3
+            if (uniform_density) then
+               rho_t = rho_t_uniform
+               inv_rho = inv_rho_uniform
+            else
+               rho_t = density(km)*THICKNESS
+               inv_rho = 1.0_dp/rho_t
+            end if
+            psi_old = (ei_old - ep_old)*rho_t
+            energy_inelas = ep_old + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
+            enerinelasnew(km) = energy_inelas
+            enerinternnew(km) = energy_inelas + psi(k)*inv_rho
          end do
          if (nbad_energy > 0) then
             do k = 1, n
