@@ -328,7 +328,7 @@ contains
 
       real(dp) :: d_lo, d_hi, d_bound, d_next, step, dx_last, dx_older
       integer :: iter, scan, how
-      logical :: have_hi
+      logical :: have_hi, have_two
       integer :: k, lo
       integer, parameter :: BY_NEWTON = 1, BY_BISECTION = 2, BY_SCAN = 3
 
@@ -354,6 +354,7 @@ contains
       d_hi = 1.0_dp
       have_hi = .false.
       lo = k
+      have_two = .false.
       dx_last = 1.0_dp
       dx_older = 1.0_dp
       scan = 1
@@ -371,6 +372,11 @@ contains
                return
             end if
             d_next = at(k)%d + step
+            ! with a second evaluation, the root of the cubic through both (inverse Hermite)
+            if (have_two) then
+               call hermite_root(at(3 - k), at(k), step, d_next)
+               step = d_next - at(k)%d
+            end if
             if (d_next > d_lo .and. d_next < min(d_hi, d_bound)) how = BY_NEWTON
          end if
          ! inside a bracket, a Newton step longer than half the step before the last gives way
@@ -387,6 +393,7 @@ contains
          dx_last = abs(d_next - at(k)%d)
          ! the next evaluation goes to the slot that does not hold d_lo's
          k = 3 - lo
+         have_two = .true.
          call growth_point(params, d_next, load, ntens, at(k), status)
          if (status /= STATUS_OK) return
          if (at(k)%g >= 0.0_dp) then
@@ -414,6 +421,27 @@ contains
       end do
       status = STATUS_STAGGER_NOT_CONVERGED
    end subroutine grow_crack
+
+   !> The search's step from two evaluations of g with their slopes: at the latest, p1 (D_1,
+   !> g_1, g_1' < 0, Newton step s = -g_1/g_1'), and another, p0 (D_0, g_0, g_0' < 0). D(g), the
+   !> inverse of g between them, is interpolated by the cubic that matches D and dD/dg = 1/g' at
+   !> both (Hermite); its value at g = 0, with u = g_1/(g_1 - g_0),
+   !>   D = D_1 + (1 - u)^2 s + u ((1 - u) g_1/g_0' + u (3 - 2u)(D_0 - D_1)),
+   !> is the Newton point D_1 + s corrected for the curvature of g: its error is of the order of
+   !> (D_0 - D)^2 (D_1 - D)^2 where Newton's is (D_1 - D)^2, so that from D_n and one Newton point
+   !> the next point is mostly the root to the search's tolerance. Used (d_next returned changed)
+   !> only where g falls from p0 to p1 and the correction is at most half the Newton step;
+   !> otherwise d_next stays the Newton point.
+   pure subroutine hermite_root(p0, p1, s, d_next)
+      type(growth_point_type), intent(in) :: p0, p1
+      real(dp), intent(in) :: s                    !! Newton step from p1 (-)
+      real(dp), intent(inout) :: d_next            !! in: p1%d + s; out: the step's end (-)
+      real(dp) :: u, d_h
+      if (.not. (p0%dg_dd < 0.0_dp .and. (p1%d - p0%d)*(p1%g - p0%g) < 0.0_dp)) return
+      u = p1%g/(p1%g - p0%g)
+      d_h = p1%d + (1.0_dp - u)**2*s + u*((1.0_dp - u)*p1%g/p0%dg_dd + u*(3.0_dp - 2.0_dp*u)*(p0%d - p1%d))
+      if (abs(d_h - d_next) <= 0.5_dp*abs(s)) d_next = d_h
+   end subroutine hermite_root
 
    !> Point j of the geometric scan from D_from towards D = 1: 1 - D = (1 - D_from) SCAN_DEPTH^(j/N_SCAN).
    pure real(dp) function scan_point(d_from, j)
