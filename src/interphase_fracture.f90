@@ -36,13 +36,15 @@ module interphase_fracture
 
    !> What the crack sees in the increment: the separation at its end and the slip at its
    !> start (the friction step at each trial D starts from it, or from the slip that conserves
-   !> pi = m lambda: `growth_trial_slip`).
+   !> pi = m lambda: `growth_trial_slip`). No default initialisation (the update's hot path: it
+   !> would cost stores at every call, and with flang a run-time call): the caller sets s_n, st
+   !> and slip_old, grow_crack d_from and m_from.
    type :: crack_load_type
-      real(dp) :: s_n = 0.0_dp            !! normal separation (mm)
-      real(dp) :: st(2) = 0.0_dp          !! tangential separation (mm)
-      real(dp) :: slip_old(2) = 0.0_dp    !! frictional slip lambda_n at the start (mm)
-      real(dp) :: d_from = 0.0_dp         !! damage at the start, D_n (-)
-      real(dp) :: m_from = 0.0_dp         !! m(D_n) = D_n ufbar(D_n) (-); set by grow_crack when the crack grows
+      real(dp) :: s_n                     !! normal separation (mm)
+      real(dp) :: st(2)                   !! tangential separation (mm)
+      real(dp) :: slip_old(2)             !! frictional slip lambda_n at the start (mm)
+      real(dp) :: d_from                  !! damage at the start, D_n (-)
+      real(dp) :: m_from                  !! m(D_n) = D_n ufbar(D_n) (-); set by grow_crack when the crack grows
    end type crack_load_type
 
    !> One evaluation of the growth function at D (`growth_point`): g, its partial derivatives,
@@ -98,18 +100,20 @@ contains
       b2 = 0.0_dp
       at%d = d
       at%g = 0.0_dp
-      at%g_s = 0.0_dp
-      at%g_lam = 0.0_dp
-      at%g_d = 0.0_dp
-      at%dg_dd = 0.0_dp
       at%m = 0.0_dp
       call coefficients_at(params, d, c, dc, status, d2c)
       if (status /= STATUS_OK) return
       if (d > 0.0_dp) at%m = d*c%ufbar
       t2 = load%st(1)**2 + load%st(2)**2
-      ! friction with D frozen, from the slip the crack faces carry at D
-      call growth_trial_slip(params%growth_slip, load%d_from, load%m_from, d, c, dc, load%slip_old, &
-         slip_trial, dslip_dd)
+      ! friction with D frozen, from the slip the crack faces carry at D (at D_n itself lambda_n,
+      ! as growth_trial_slip gives it there)
+      if (d > load%d_from) then
+         call growth_trial_slip(params%growth_slip, load%d_from, load%m_from, d, c, dc, load%slip_old, &
+            slip_trial, dslip_dd)
+      else
+         slip_trial = load%slip_old
+         dslip_dd = 0.0_dp
+      end if
       call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, at%r, status, dslip_dd)
       if (status /= STATUS_OK) return
       closed = at%r%closed
@@ -168,7 +172,8 @@ contains
             call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
             ratio = c%tc_t/c%tf
             kappa = -(dc%k_t + dc%kc_t) + 2.0_dp*a1*ratio + b1*ratio*ratio
-            gc = [1.0_dp, kappa*sig_t**2]
+            gc(1) = 1.0_dp
+            gc(2) = kappa*sig_t**2
          end select
          ! gi = 0 when the crack is closed or s_N <= 0 (no mode-I term then)
          g = gii/gc(2) - 1.0_dp
@@ -176,7 +181,13 @@ contains
       end if
       at%g = g
       ! no growth at D_n: neither the search nor the tangent needs the derivatives
-      if (g < 0.0_dp .and. .not. (d > load%d_from)) return
+      if (g < 0.0_dp .and. .not. (d > load%d_from)) then
+         at%g_s = 0.0_dp
+         at%g_lam = 0.0_dp
+         at%g_d = 0.0_dp
+         at%dg_dd = 0.0_dp
+         return
+      end if
 
       g_s = 0.0_dp
       g_lam = 0.0_dp
@@ -213,7 +224,8 @@ contains
             dratio = dc%tc_t/c%tf - c%tc_t*dc%tf/c%tf**2
             dkappa = -(d2c%k_t + d2c%kc_t) + 2.0_dp*(a2*ratio + a1*dratio) + b2*ratio*ratio &
                + 2.0_dp*b1*ratio*dratio
-            dgc = [0.0_dp, dkappa*sig_t**2 + 2.0_dp*kappa*sig_t*dsig_t]
+            dgc(1) = 0.0_dp
+            dgc(2) = dkappa*sig_t**2 + 2.0_dp*kappa*sig_t*dsig_t
          end if
          g_s = gii_s/gc(2)
          g_lam = gii_lam/gc(2)
