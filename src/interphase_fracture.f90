@@ -315,9 +315,12 @@ contains
    !> Crack growth in the increment from D_from (eqs 41-42, 50): the predictor keeps D_from when
    !> g(D_from) < 0; otherwise D is the first root of g in (D_from, 1], found by a safeguarded
    !> Newton iteration from D_from on g(D) along the slip lambda(D) (slope dg/dD = g_D +
-   !> g_lambda . lambda_D, the tangent's denominator). The search never passes the points of a
+   !> g_lambda . lambda_D, the tangent's denominator); from the second evaluation on, the Newton
+   !> point is corrected for the curvature of g by the inverse cubic Hermite interpolant through
+   !> the last two evaluations (`hermite_root`), so that a growing increment mostly ends at its
+   !> third evaluation (D_n, the Newton point, the root). The search never passes the points of a
    !> geometric scan towards D = 1 (N_SCAN points per run, down to 1 - D = SCAN_DEPTH (1 -
-   !> D_from)) without evaluating them: a Newton step beyond the next scan point, or uphill
+   !> D_from)) without evaluating them: a step beyond the next scan point, or uphill
    !> (dg/dD >= 0), is replaced by that point, or by the bisection of a bracket once g < 0 has been
    !> seen (as is a step inside the bracket longer than half the step before the last); g >= 0 at
    !> every scan point lets the crack run to b (D = 1). Converged when the Newton
