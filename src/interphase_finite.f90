@@ -28,16 +28,7 @@ module interphase_finite
 
 contains
 
-   !> The bit pattern of x as an integer: transfer(x, 0_int64). Standard storage association
-   !> (double precision and default integers), which both compilers compile to one load.
-   elemental integer(int64) function binary64_bits(x) result(bits)
-      real(dp), intent(in) :: x
-      double precision :: stored
-      integer :: halves(2)
-      equivalence (stored, halves)
-      stored = x
-      bits = ior(ishft(int(halves(HIGH_HALF), int64), 32), iand(int(halves(LOW_HALF), int64), LOW_HALF_MASK))
-   end function binary64_bits
+   include 'interphase_binary64_bits.inc'
 
    !> True when x is neither NaN nor +-Inf.
    elemental logical function is_finite(x)
@@ -45,26 +36,6 @@ contains
       is_finite = iand(binary64_bits(x), EXPONENT_MASK) /= EXPONENT_MASK
    end function is_finite
 
-   !> True when x is finite and |x| <= bound (bound finite, >= 0). Compares the bit patterns of |x|
-   !> and bound (ordered like the numbers; NaN and Inf lie above every finite number), so it
-   !> raises no floating-point exception for NaN or Inf.
-   elemental logical function is_within(x, bound)
-      real(dp), intent(in) :: x, bound
-      is_within = iand(binary64_bits(x), MAGNITUDE_MASK) <= binary64_bits(bound)
-   end function is_within
-
-   !> all(is_within(x(1:n), bound)) in one call (a call per element costs more than the test where
-   !> the caller is in another translation unit and cannot inline it). A scalar loop that stops
-   !> at the first value out of range: the arrays are a host's 2 to 6 components.
-   pure logical function all_within(n, x, bound)
-      integer, intent(in) :: n            !! number of values
-      real(dp), intent(in) :: x(n), bound
-      integer :: i
-      all_within = .false.
-      do i = 1, n
-         if (.not. is_within(x(i), bound)) return
-      end do
-      all_within = .true.
-   end function all_within
+   include 'interphase_within.inc'
 
 end module interphase_finite

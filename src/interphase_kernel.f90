@@ -26,7 +26,8 @@
 !> Stored energy: open or intact psi = 1/2 t.s; closed psi = 1/2 t.s + 1/2 C^f lambda.s_T
 !> - 1/2 D T^f ufbar |lambda|^2 (docs/theory.md).
 module interphase_kernel
-   use interphase_finite, only: is_finite, all_within
+   use, intrinsic :: iso_fortran_env, only: int64
+   use interphase_finite, only: is_finite, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, MAGNITUDE_MASK
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
@@ -79,8 +80,9 @@ contains
          return
       end if
       s_n = s(1)
-      st = 0.0_dp
-      st(1:nt) = s(2:ntens)
+      st(1) = s(2)
+      st(2) = 0.0_dp
+      if (ntens == 3) st(2) = s(3)
 
       if (params%damage_law == DAMAGE_DISPLACEMENT) then
          ! damage first (eq 39), then the response at that damage
@@ -136,9 +138,17 @@ contains
          tangent(1:ntens, 1:ntens) = r%tangent(1:ntens, 1:ntens)
          if (r%regime == REGIME_SLIP) tangent(2:ntens, 1) = 0.0_dp
       case default
-         do j = 1, ntens
-            tangent(1:ntens, j) = r%tangent(1:ntens, j) + r%dtrac_dd(1:ntens)*dd_ds(j)
-         end do
+         if (ntens == 2) then
+            ! (written out: the loop over a run-time extent costs more than the 2-D tangent)
+            tangent(1, 1) = r%tangent(1, 1) + r%dtrac_dd(1)*dd_ds(1)
+            tangent(2, 1) = r%tangent(2, 1) + r%dtrac_dd(2)*dd_ds(1)
+            tangent(1, 2) = r%tangent(1, 2) + r%dtrac_dd(1)*dd_ds(2)
+            tangent(2, 2) = r%tangent(2, 2) + r%dtrac_dd(2)*dd_ds(2)
+         else
+            do j = 1, ntens
+               tangent(1:ntens, j) = r%tangent(1:ntens, j) + r%dtrac_dd(1:ntens)*dd_ds(j)
+            end do
+         end if
          if (params%stiffness == STIFFNESS_SYMMETRIC) &
             tangent(1:ntens, 1:ntens) = 0.5_dp*(tangent(1:ntens, 1:ntens) + transpose(tangent(1:ntens, 1:ntens)))
       end select
@@ -240,5 +250,9 @@ contains
       call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
    end subroutine broken_response
 
+   ! the separation's range test, here where the compiler inlines it (interphase_finite's, from
+   ! the same source)
+   include 'interphase_binary64_bits.inc'
+   include 'interphase_within.inc'
 
 end module interphase_kernel

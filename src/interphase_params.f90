@@ -140,10 +140,12 @@ contains
          return
       end if
 
+      ! (the decoder of params_from_values, called directly: params is filled in place, without
+      ! optional arguments and a second default initialisation)
       if (model == MODEL_SIMPLIFIED) then
-         call params_from_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), &
-            props(PROP_SF_N), props(PROP_S0_T), props(PROP_SF_T), params, status, message, &
-            k_n=props(PROP_K_N), k_t=props(PROP_K_T))
+         call decode_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), &
+            props(PROP_S0_T), props(PROP_SF_T), props(PROP_K_N), props(PROP_K_T), TABLE_DEFAULT_CODE, &
+            params, status, message)
       else
          table = selector_code(props(PROP_TABLE))
          if (table /= TABLE_DEFAULT_CODE .and. table /= TABLE_CUSTOM_CODE) then
@@ -152,9 +154,8 @@ contains
                ' is not a table selector: use 0 (built-in table) or 1 (custom table loaded at start-up)'
             return
          end if
-         call params_from_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), &
-            props(PROP_SF_N), props(PROP_S0_T), props(PROP_SF_T), params, status, message, &
-            table=table)
+         call decode_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), &
+            props(PROP_S0_T), props(PROP_SF_T), 0.0_dp, 0.0_dp, table, params, status, message)
       end if
       if (status /= STATUS_OK) return
       if (damage_law == DAMAGE_FRACTURE) then
@@ -315,8 +316,8 @@ contains
       integer, intent(in), optional :: table       !! micromechanical model: TABLE_*_CODE
 
       real(dp) :: k_n_used, k_t_used
+      integer :: table_used
 
-      status = STATUS_OK
       k_n_used = 0.0_dp
       k_t_used = 0.0_dp
       if (model == MODEL_SIMPLIFIED) then
@@ -325,6 +326,26 @@ contains
          if (present(k_n)) k_n_used = k_n
          if (present(k_t)) k_t_used = k_t
       end if
+      table_used = TABLE_DEFAULT_CODE
+      if (present(table)) table_used = table
+      call decode_values(model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n_used, k_t_used, table_used, &
+         params, status, message)
+   end subroutine params_from_values
+
+   !> params_from_values' checks and assignments, filling `params` in place (its components
+   !> other than these keep what they hold): k_n, k_t are the simplified model's (ignored by the
+   !> micromechanical model, and stored as given), table the micromechanical model's.
+   pure subroutine decode_values(model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n_used, k_t_used, table, &
+         params, status, message)
+      integer, intent(in) :: model, damage_law
+      real(dp), intent(in) :: mu, s0_n, sf_n, s0_t, sf_t
+      real(dp), intent(in) :: k_n_used, k_t_used   !! (MPa/mm)
+      integer, intent(in) :: table
+      type(law_params_type), intent(inout) :: params
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+
+      status = STATUS_OK
       ! Each test fails for NaN and Inf without comparing them (no FP exception is raised).
       if (.not. (finite_at_least(mu, 0.0_dp) .and. finite_at_most(mu, PROPS_VALUE_MAX))) then
          call reject(STATUS_BAD_MU, PROP_MU, 'mu', mu, 'must lie in [0, '//RANGE_MAX_TEXT//']', status, message)
@@ -354,13 +375,12 @@ contains
       params%sf_t = sf_t
       params%k_n = k_n_used
       params%k_t = k_t_used
-      params%table = TABLE_DEFAULT_CODE
-      if (present(table)) params%table = table
+      params%table = table
       params%eta_n = s0_n/sf_n
       params%eta_t = s0_t/sf_t
       params%inv_s0_n = 1.0_dp/s0_n
       params%inv_s0_t_sq = (1.0_dp/s0_t)**2
-   end subroutine params_from_values
+   end subroutine decode_values
 
    !> Add and validate the fracture-mechanics law's constants; `base` is the PROPS index before
    !> them (for the messages: D0 is PROPS(base + 1), ...).
@@ -434,10 +454,10 @@ contains
       integer(int64) :: b
       integer :: k
       code = -1
-      b = bits_of(x)
+      b = binary64_bits(x)
       if (b >= 0_int64 .and. b <= MAX_SELECTOR_BITS) then
          k = int(x)
-         if (bits_of(real(k, dp)) == b) code = k
+         if (binary64_bits(real(k, dp)) == b) code = k
       end if
    end function selector_code
 
@@ -445,26 +465,17 @@ contains
    pure logical function in_window(x)
       real(dp), intent(in) :: x
       integer(int64) :: b
-      b = bits_of(x)
+      b = binary64_bits(x)
       in_window = b >= WINDOW_MIN_BITS .and. b <= WINDOW_MAX_BITS
    end function in_window
 
-   !> The bit pattern of x: interphase_finite's binary64_bits, here where the decoder's checks
-   !> can inline it (a `transfer` at run time is a library call with LLVM flang 19).
-   pure integer(int64) function bits_of(x) result(bits)
-      real(dp), intent(in) :: x
-      double precision :: stored
-      integer :: halves(2)
-      equivalence (stored, halves)
-      stored = x
-      bits = ior(ishft(int(halves(HIGH_HALF), int64), 32), iand(int(halves(LOW_HALF), int64), LOW_HALF_MASK))
-   end function bits_of
+   include 'interphase_binary64_bits.inc'
 
    !> x is neither NaN nor Inf (interphase_finite's test, here where the decoder's checks can
    !> inline it).
    pure logical function finite(x)
       real(dp), intent(in) :: x
-      finite = iand(bits_of(x), EXPONENT_MASK) /= EXPONENT_MASK
+      finite = iand(binary64_bits(x), EXPONENT_MASK) /= EXPONENT_MASK
    end function finite
 
    !> x is finite and x > lower (false for NaN and Inf, without an invalid-operation exception).

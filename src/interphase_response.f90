@@ -115,7 +115,7 @@ contains
             r%slip(1:nt) = c%dbar_t*st(1:nt)/c%ufbar
             r%regime = REGIME_OPEN
          end if
-         r%psi = 0.5_dp*(r%traction(1)*s_n + sum(r%traction(2:ntens)*st(1:nt)))
+         r%psi = 0.5_dp*(r%traction(1)*s_n + shear_work(r%traction, st, ntens))
          ! (the simplified model has q = 0: the band would change nothing but rounding)
          if (params%contact_band > 0.0_dp .and. params%model == MODEL_MICROMECHANICAL .and. d > 0.0_dp) &
             call blend_contact_band(params%contact_band, c, dc, s_n, st, ntens, r, status)
@@ -192,10 +192,24 @@ contains
             r%dtrac_dd(2:ntens) = r%dtrac_dd(2:ntens) + c%cf_t*dslip_dd(1:nt)
          end if
       end if
-      r%psi = 0.5_dp*(r%traction(1)*s_n + sum(r%traction(2:ntens)*st(1:nt))) &
+      r%psi = 0.5_dp*(r%traction(1)*s_n + shear_work(r%traction, st, ntens)) &
          + 0.5_dp*c%cf_t*(r%slip(1)*st(1) + r%slip(2)*st(2)) &
          - 0.5_dp*d*c%tf*c%ufbar*(r%slip(1)**2 + r%slip(2)**2)
    end subroutine respond
+
+   !> The shear part t_T.s_T of the work t.s (N/mm), formed as interphase_block forms it:
+   !> t_T1 s_T1 + 0 in 2-D, t_T1 s_T1 + t_T2 s_T2 in 3-D (written out: a SUM over a run-time
+   !> extent is a loop).
+   pure real(dp) function shear_work(traction, st, ntens) result(w)
+      real(dp), intent(in) :: traction(3)                 !! t (MPa)
+      real(dp), intent(in) :: st(2)                       !! s_T (mm)
+      integer, intent(in) :: ntens
+      if (ntens == 3) then
+         w = traction(2)*st(1) + traction(3)*st(2)
+      else
+         w = traction(2)*st(1) + 0.0_dp
+      end if
+   end function shear_work
 
    !> The contact band's shape (docs/theory.md, 'The contact band'): g = |s_T|^2 (1 - W(t)),
    !> t = s_N/(chi |s_T|), W(t) = 10 t^3 - 15 t^4 + 6 t^5, with its gradient and Hessian in

@@ -65,12 +65,12 @@ contains
       state%slip(1) = statev(SV_SLIP_1)
       state%slip(2) = 0.0_dp
       if (ntens == 3) state%slip(2) = statev(SV_SLIP_2)
-      state%regime = regime_code(stored_bits(statev(SV_REGIME)))
-      if (damage_admissible(stored_bits(state%d)) == 0) then
+      state%regime = regime_code(binary64_bits(statev(SV_REGIME)))
+      if (damage_admissible(binary64_bits(state%d)) == 0) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE, ') D = ', state%d, &
             ' must lie in [0, 1]'
-      else if (slip_admissible(stored_bits(state%slip(1)))*slip_admissible(stored_bits(state%slip(2))) == 0) then
+      else if (slip_admissible(binary64_bits(state%slip(1)))*slip_admissible(binary64_bits(state%slip(2))) == 0) then
          status = STATUS_BAD_STATE
          write (message, '(a,i0,a,i0,a,2es12.4,a,es8.1,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
             ') slip = ', state%slip, ' is not finite or exceeds |lambda_i| <= ', SLIP_MAX, ' mm'
@@ -83,7 +83,7 @@ contains
       if (status /= STATUS_OK .or. .not. with_inviscid) return
       state%d_inviscid = statev(SV_DAMAGE_INVISCID)
       ! D_v <= D <= 1 (the regularised damage never overtakes the damage law's)
-      if (damage_admissible(stored_bits(state%d_inviscid)) == 0) then
+      if (damage_admissible(binary64_bits(state%d_inviscid)) == 0) then
          status = STATUS_BAD_STATE
       else if (state%d_inviscid < state%d) then
          status = STATUS_BAD_STATE
@@ -92,17 +92,7 @@ contains
          ') D = ', state%d_inviscid, ' must lie in [STATEV(', SV_DAMAGE, ') = ', state%d, ', 1]'
    end subroutine state_unpack
 
-   !> The bit pattern of x, transfer(x, 0_int64), read through storage association (as
-   !> interphase_finite's binary64_bits, here for the compilers to inline it: a `transfer` at run
-   !> time is a run-time library call with LLVM flang 19).
-   elemental integer(int64) function stored_bits(x) result(bits)
-      real(dp), intent(in) :: x
-      double precision :: stored
-      integer :: halves(2)
-      equivalence (stored, halves)
-      stored = x
-      bits = ior(ishft(int(halves(HIGH_HALF), int64), 32), iand(int(halves(LOW_HALF), int64), LOW_HALF_MASK))
-   end function stored_bits
+   include 'interphase_binary64_bits.inc'
 
    !> Number of STATEV slots a material's state takes: NSTATV_REQUIRED, or NSTATV_VISCOUS with
    !> viscous regularisation.

@@ -29,8 +29,9 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       stran, dstran, time, dtime, temp, dtemp, predef, dpred, cmname, ndi, nshr, ntens, &
       nstatv, props, nprops, coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, &
       layer, kspt, jstep, kinc)
+   use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
-   use interphase_finite, only: is_finite, is_within, all_within
+   use interphase_finite, only: is_finite, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, MAGNITUDE_MASK
    use interphase_real_text, only: real_text, es_fields
    use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
@@ -117,8 +118,10 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          end if
       end if
       if (map%identity) then
-         ! a cohesive element: the separations themselves (NTENS = 2 or 3)
-         s(1:ntens) = stran + dstran
+         ! a cohesive element: the separations themselves (NTENS = 2 or 3; written out, as below)
+         s(1) = stran(1) + dstran(1)
+         s(2) = stran(2) + dstran(2)
+         if (ntens == 3) s(3) = stran(3) + dstran(3)
       else
          do i = 1, nsep
             s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
@@ -146,10 +149,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          if (host_energies) then
             ! the work in element order, not with SUM (flang's SUM is compensated: the zeros of a
             ! layer's in-plane components would change its last bit, docs/compilers.md)
-            work = 0.0_dp
-            do i = 1, ntens
-               work = work + (stress(i) + traction(i))*dstran(i)
-            end do
+            work = (0.0_dp + (stress(1) + traction(1))*dstran(1)) + (stress(2) + traction(2))*dstran(2)
+            if (ntens == 3) work = work + (stress(3) + traction(3))*dstran(3)
             spd = spd + 0.5_dp*work - (psi - sse)
             sse = psi
          end if
@@ -194,5 +195,12 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
 
    call umat_fail(status, severity, message, calculix, pnewdt, ddsdde, cmname, noel, npt, kinc, &
       props, statev, stress, sse, spd, stran, dstran, time, dtime, ndi, nshr)
+
+contains
+
+   ! the range tests of the host's values, here where the compiler inlines them (the tests of
+   ! interphase_finite, from the same source)
+   include 'interphase_binary64_bits.inc'
+   include 'interphase_within.inc'
 
 end subroutine umat

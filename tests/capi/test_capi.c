@@ -75,6 +75,40 @@ static int regime_code(const char *name) {
 }
 
 /* Central finite-difference tangent of the update at fixed old state, row-major. */
+/* The most rows of a driver CSV the tests read (the mixed history has 1201). */
+#define CSV_MAX_ROWS 4096
+
+/* One row of the driver's CSV (t,s_T,s_N,Sigma_T,Sigma_N,D,slip,state,psi,W_dis). */
+struct csv_row {
+  double t, s_t, s_n, sig_t, sig_n, d, slip, psi, w_dis;
+  int regime; /* the state column's REGIME_* code */
+};
+
+/* Read up to max rows of a driver CSV after its header (which must start with the driver's
+ * columns); returns the number of rows read, or 0 (with a failed check) when the file cannot be
+ * opened or its header is not the driver's. */
+static size_t read_driver_csv(const char *csv_path, struct csv_row *rows, size_t max) {
+  FILE *f = fopen(csv_path, "r");
+  CHECK(f != NULL, "cannot open %s", csv_path);
+  if (f == NULL) return 0;
+  char header[256];
+  const int header_ok =
+      fgets(header, sizeof header, f) != NULL && strncmp(header, "t,s_T,s_N,Sigma_T,Sigma_N,D,slip,state,psi", 42) == 0;
+  CHECK(header_ok, "unexpected CSV header in %s", csv_path);
+  size_t n = 0;
+  char regime[32];
+  while (header_ok && n < max) {
+    struct csv_row *r = &rows[n];
+    if (fscanf(f, " %lf,%lf,%lf,%lf,%lf,%lf,%lf,%31[^,],%lf,%lf", &r->t, &r->s_t, &r->s_n, &r->sig_t, &r->sig_n, &r->d,
+               &r->slip, regime, &r->psi, &r->w_dis) != 10)
+      break;
+    r->regime = regime_code(regime);
+    ++n;
+  }
+  fclose(f);
+  return n;
+}
+
 static void fd_tangent(const double *props, const double *state_old, const double *s, double *fd) {
   const double h = 1.0e-8;
   for (int j = 0; j < 2; ++j) {
@@ -89,21 +123,17 @@ static void fd_tangent(const double *props, const double *state_old, const doubl
 }
 
 static void test_mixed_history(const char *csv_path) {
-  FILE *f = fopen(csv_path, "r");
-  CHECK(f != NULL, "cannot open %s", csv_path);
-  if (f == NULL) return;
-  char header[256];
-  CHECK(fgets(header, sizeof header, f) != NULL && strncmp(header, "t,s_T,s_N,Sigma_T,Sigma_N,D,slip,state,psi", 42) == 0,
-        "unexpected CSV header in %s", csv_path);
+  static struct csv_row csv[CSV_MAX_ROWS];
+  const size_t nrows = read_driver_csv(csv_path, csv, sizeof csv / sizeof csv[0]);
+  CHECK(nrows > 1000, "only %zu rows read from %s", nrows, csv_path);
 
   double props[INTERPHASE_NPROPS_SIMPLIFIED];
   paper_props(props);
   double state[INTERPHASE_NSTATE] = {0.0, 0.0, 0.0, 0.0};
   int rows = 0, elastic_rows = 0, coulomb_rows = 0, tangent_checked = 0;
-  double t, s_t, s_n, sig_t, sig_n, d, slip, psi_ref, w_dis;
-  char regime[32];
-  while (fscanf(f, " %lf,%lf,%lf,%lf,%lf,%lf,%lf,%31[^,],%lf,%lf", &t, &s_t, &s_n, &sig_t, &sig_n, &d, &slip,
-                regime, &psi_ref, &w_dis) == 10) {
+  for (size_t row = 0; row < nrows; ++row) {
+    const double t = csv[row].t, s_t = csv[row].s_t, s_n = csv[row].s_n, sig_t = csv[row].sig_t,
+                 sig_n = csv[row].sig_n, d = csv[row].d, slip = csv[row].slip, psi_ref = csv[row].psi;
     ++rows;
     const double s[2] = {s_n, s_t};
     double traction[2], tangent[4], state_new[INTERPHASE_NSTATE], psi;
@@ -119,7 +149,7 @@ static void test_mixed_history(const char *csv_path) {
     CHECK(close_to(state_new[0], d, 1e-12, 1e-9), "row %d: D %.17g, reference %.17g", rows, state_new[0], d);
     CHECK(close_to(state_new[1], slip, 1e-12, 1e-9), "row %d: slip %.17g, reference %.17g", rows, state_new[1], slip);
     CHECK(close_to(psi, psi_ref, 1e-12, 1e-9), "row %d: psi %.17g, reference %.17g", rows, psi, psi_ref);
-    CHECK((int)state_new[3] == regime_code(regime), "row %d: regime %g, reference %s", rows, state_new[3], regime);
+    CHECK((int)state_new[3] == csv[row].regime, "row %d: regime %g, reference %d", rows, state_new[3], csv[row].regime);
 
     /* closed forms */
     CHECK(state_new[0] >= state[0], "row %d: damage decreased from %g to %g", rows, state[0], state_new[0]);
@@ -147,8 +177,6 @@ static void test_mixed_history(const char *csv_path) {
     }
     memcpy(state, state_new, sizeof state);
   }
-  fclose(f);
-  CHECK(rows > 1000, "only %d rows read from %s", rows, csv_path);
   CHECK(elastic_rows > 10, "only %d intact rows", elastic_rows);
   CHECK(coulomb_rows > 100, "only %d rows slipping at D = 1", coulomb_rows);
   CHECK(tangent_checked == 3, "tangent checked on %d rows", tangent_checked);
@@ -460,32 +488,24 @@ static void test_load_rcurve(void) {
 /* interphase_run: the mixed history's rows (the driver's CSV) along one path in one call, equal
  * bit for bit to interphase_update_dt called step by step as the UMAT is (the update at
  * s[i-1] + (s[i] - s[i-1]), SPD accumulated), close to the CSV; then its failures. */
-#define RUN_MAX_ROWS 4096
+#define RUN_MAX_ROWS CSV_MAX_ROWS
 static void test_run(const char *csv_path) {
   static double sep[RUN_MAX_ROWS * 2], tim[RUN_MAX_ROWS], tra[RUN_MAX_ROWS * 2], tan_[RUN_MAX_ROWS * 4],
       sta[RUN_MAX_ROWS * INTERPHASE_NSTATE], psi[RUN_MAX_ROWS], wd[RUN_MAX_ROWS], ref[RUN_MAX_ROWS][5];
-  FILE *f = fopen(csv_path, "r");
-  CHECK(f != NULL, "cannot open %s", csv_path);
-  if (f == NULL) return;
-  char header[256];
-  CHECK(fgets(header, sizeof header, f) != NULL, "no header in %s", csv_path);
-  size_t n = 0;
-  double t, s_t, s_n, sig_t, sig_n, d, slip, psi_ref, w_dis;
-  char regime[32];
-  while (n < RUN_MAX_ROWS && fscanf(f, " %lf,%lf,%lf,%lf,%lf,%lf,%lf,%31[^,],%lf,%lf", &t, &s_t, &s_n, &sig_t, &sig_n,
-                                    &d, &slip, regime, &psi_ref, &w_dis) == 10) {
-    tim[n] = t;
-    sep[2 * n] = s_n;
-    sep[2 * n + 1] = s_t;
-    ref[n][0] = sig_n, ref[n][1] = sig_t, ref[n][2] = d, ref[n][3] = psi_ref, ref[n][4] = w_dis;
-    if (n == 0) { /* the start: the CSV's first row */
-      tra[0] = sig_n, tra[1] = sig_t;
-      sta[0] = d, sta[1] = slip, sta[2] = 0.0, sta[3] = regime_code(regime);
-      psi[0] = psi_ref, wd[0] = w_dis;
-    }
-    ++n;
+  static struct csv_row csv[RUN_MAX_ROWS];
+  const size_t n = read_driver_csv(csv_path, csv, RUN_MAX_ROWS);
+  for (size_t i = 0; i < n; ++i) {
+    tim[i] = csv[i].t;
+    sep[2 * i] = csv[i].s_n;
+    sep[2 * i + 1] = csv[i].s_t;
+    ref[i][0] = csv[i].sig_n, ref[i][1] = csv[i].sig_t, ref[i][2] = csv[i].d, ref[i][3] = csv[i].psi;
+    ref[i][4] = csv[i].w_dis;
   }
-  fclose(f);
+  if (n > 0) { /* the start: the CSV's first row */
+    tra[0] = csv[0].sig_n, tra[1] = csv[0].sig_t;
+    sta[0] = csv[0].d, sta[1] = csv[0].slip, sta[2] = 0.0, sta[3] = csv[0].regime;
+    psi[0] = csv[0].psi, wd[0] = csv[0].w_dis;
+  }
   CHECK(n > 1000, "only %zu rows read from %s", n, csv_path);
   double props[INTERPHASE_NPROPS_SIMPLIFIED];
   paper_props(props);
@@ -589,21 +609,12 @@ static void test_run_history(const char *csv_path) {
   enum { ROWS = 1201 };
   static double ref[ROWS][7], o_t[ROWS], o_s[ROWS * 2], o_tr[ROWS * 2], o_st[ROWS * INTERPHASE_NSTATE], o_psi[ROWS],
       o_w[ROWS];
-  FILE *f = fopen(csv_path, "r");
-  CHECK(f != NULL, "cannot open %s", csv_path);
-  if (f == NULL) return;
-  char header[256];
-  CHECK(fgets(header, sizeof header, f) != NULL, "no header in %s", csv_path);
-  size_t n = 0;
-  double t, s_t, s_n, sig_t, sig_n, d, slip, psi_ref, w_dis;
-  char regime[32];
-  while (n < ROWS && fscanf(f, " %lf,%lf,%lf,%lf,%lf,%lf,%lf,%31[^,],%lf,%lf", &t, &s_t, &s_n, &sig_t, &sig_n, &d,
-                            &slip, regime, &psi_ref, &w_dis) == 10) {
-    ref[n][0] = t, ref[n][1] = s_n, ref[n][2] = s_t, ref[n][3] = sig_n, ref[n][4] = sig_t, ref[n][5] = d;
-    ref[n][6] = w_dis;
-    ++n;
+  static struct csv_row csv[ROWS];
+  const size_t n = read_driver_csv(csv_path, csv, ROWS);
+  for (size_t i = 0; i < n; ++i) {
+    ref[i][0] = csv[i].t, ref[i][1] = csv[i].s_n, ref[i][2] = csv[i].s_t, ref[i][3] = csv[i].sig_n;
+    ref[i][4] = csv[i].sig_t, ref[i][5] = csv[i].d, ref[i][6] = csv[i].w_dis;
   }
-  fclose(f);
   CHECK(n == ROWS, "%zu rows read from %s, expected %d", n, csv_path, ROWS);
   double props[INTERPHASE_NPROPS_SIMPLIFIED];
   paper_props(props);
