@@ -65,7 +65,7 @@ contains
       type(response_type) :: r
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
-      integer :: ntens, nt, j
+      integer :: ntens, nt, j, m
 
       ntens = size(s)
       nt = ntens - 1
@@ -131,26 +131,29 @@ contains
       traction(1) = r%traction(1)
       traction(2) = r%traction(2)
       if (ntens == 3) traction(3) = r%traction(3)
+      ! (m = ntens, in a form from which the compiler sees m <= 3: with a run-time extent alone,
+      ! GCC's link-time inlining warns of writes beyond a caller's 3 x 3 array)
+      m = merge(3, 2, ntens == 3)
       select case (params%stiffness)
       case (STIFFNESS_FIXED_DAMAGE)
          ! the tangent at fixed D, without the slipping crack's coupling of the shear traction to
          ! s_N (through the friction bound mu sigma): symmetric, positive semi-definite
-         tangent(1:ntens, 1:ntens) = r%tangent(1:ntens, 1:ntens)
-         if (r%regime == REGIME_SLIP) tangent(2:ntens, 1) = 0.0_dp
+         tangent(1:m, 1:m) = r%tangent(1:m, 1:m)
+         if (r%regime == REGIME_SLIP) tangent(2:m, 1) = 0.0_dp
       case default
-         if (ntens == 2) then
+         if (m == 2) then
             ! (written out: the loop over a run-time extent costs more than the 2-D tangent)
             tangent(1, 1) = r%tangent(1, 1) + r%dtrac_dd(1)*dd_ds(1)
             tangent(2, 1) = r%tangent(2, 1) + r%dtrac_dd(2)*dd_ds(1)
             tangent(1, 2) = r%tangent(1, 2) + r%dtrac_dd(1)*dd_ds(2)
             tangent(2, 2) = r%tangent(2, 2) + r%dtrac_dd(2)*dd_ds(2)
          else
-            do j = 1, ntens
-               tangent(1:ntens, j) = r%tangent(1:ntens, j) + r%dtrac_dd(1:ntens)*dd_ds(j)
+            do j = 1, 3
+               tangent(1:3, j) = r%tangent(1:3, j) + r%dtrac_dd(1:3)*dd_ds(j)
             end do
          end if
          if (params%stiffness == STIFFNESS_SYMMETRIC) &
-            tangent(1:ntens, 1:ntens) = 0.5_dp*(tangent(1:ntens, 1:ntens) + transpose(tangent(1:ntens, 1:ntens)))
+            tangent(1:m, 1:m) = 0.5_dp*(tangent(1:m, 1:m) + transpose(tangent(1:m, 1:m)))
       end select
       psi = r%psi
    end subroutine interface_update

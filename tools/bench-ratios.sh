@@ -17,6 +17,9 @@
 #   - instructions per UMAT call (callgrind, inclusive cost of umat_ over 6000 calls of the
 #     mixed history) in DIR/callgrind, the no-LTO build for -march=x86-64-v2 (valgrind 3.19 does
 #     not decode every AVX instruction a -march=native build may use), if valgrind is installed;
+#   - the UMAT in the one-file Abaqus/Standard source (make-user-file.sh) compiled alone with
+#     -O3 and no LTO, as docs/abaqus.md recommends, and linked with the benchmark driver: best ns
+#     per call (-march=native) and instructions per call (callgrind, -march=x86-64-v2);
 #   - instructions per VUMAT point (callgrind, nblock = 4096, 4096 points x 140 increments):
 #     vumat_ and the plain copy of its arrays, in the one-file Abaqus/Explicit source
 #     (examples/abaqus/make-user-file.sh --explicit) compiled as docs/abaqus.md recommends, with
@@ -33,7 +36,7 @@ while [ $# -gt 0 ]; do
       --no-build) build=no ;;
       --quick) quick=yes ;;
       --build-root) root=$2; shift ;;
-      -h|--help) sed -n '2,21p' "$0"; exit 0 ;;
+      -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
       *) echo "bench-ratios.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
    esac
    shift
@@ -73,6 +76,34 @@ echo "interphase bench-ratios: $(date -u '+%Y-%m-%d %H:%M UTC'), commit $commit,
 "$rel/drivers/interphase-bench" "$calls" 5 >"$work/umat-lto.txt"
 "$nolto/drivers/interphase-bench" "$calls" 5 >"$work/umat-nolto.txt"
 
+# the UMAT in the one-file Abaqus/Standard source (make-user-file.sh), compiled ALONE with -O3
+# and without LTO as docs/abaqus.md recommends, linked with the benchmark driver: the build an
+# Abaqus/Standard host makes. Built twice: -march=native for the wall clock, -march=x86-64-v2
+# for callgrind. (Needs the generated table and driver version source of a build tree.)
+onefile_umat() {
+   local arch=$1 dir=$work/standard-$1
+   mkdir -p "$dir"
+   (cd "$dir" && bash "$here/examples/abaqus/make-user-file.sh" --build-dir "$nolto" -o standard.f90 >/dev/null \
+      && printf '%s\n' 'subroutine stdb_abqerr(lop, string, intv, realv, charv)' \
+         '   integer, intent(in) :: lop, intv(*)' '   character(len=*), intent(in) :: string' \
+         '   double precision, intent(in) :: realv(*)' '   character(len=8), intent(in) :: charv(*)' \
+         'end subroutine stdb_abqerr' >stub.f90 \
+      && gfortran -O3 -march="$arch" -fno-trapping-math -ffp-contract=off -frecursive -c standard.f90 \
+      && gfortran -O2 -fno-inline -c stub.f90 \
+      && gfortran -O2 -c "$here/drivers/interphase_driver_text.f90" "$nolto/drivers/interphase_driver_version.f90" \
+      && gfortran -O2 -c "$here/drivers/interphase_driver_cli.f90" \
+      && gfortran -O2 -c "$here/drivers/bench_umat.f90" \
+      && gfortran -o bench-umat-standard bench_umat.o standard.o stub.o interphase_driver_cli.o \
+         interphase_driver_text.o interphase_driver_version.o -llapack) >"$work/standard-$arch.log" 2>&1
+}
+onefile_umat native
+if [ -x "$work/standard-native/bench-umat-standard" ]; then
+   "$work/standard-native/bench-umat-standard" "$calls" 5 >"$work/umat-onefile.txt"
+else
+   echo "(the one-file Standard benchmark did not build: see below)"; cat "$work/standard-native.log"
+   : >"$work/umat-onefile.txt"
+fi
+
 have_valgrind=no
 declare -A vir=() cir=()
 if command -v valgrind >/dev/null 2>&1 && [ -x "$cgtree/drivers/interphase-bench" ]; then
@@ -82,6 +113,16 @@ if command -v valgrind >/dev/null 2>&1 && [ -x "$cgtree/drivers/interphase-bench
          "$cgtree/drivers/interphase-bench" "$callgrind_calls" 1 "$c" >/dev/null 2>"$work/cg.$c.log"
       # the collected events: the totals line of the profile ("summary: Ir")
       awk -v calls=$((callgrind_calls + 1)) '/^summary:/ {printf "%.0f\n", $2/calls}' "$work/cg.$c" >"$work/ir.$c"
+   done
+   # the UMAT in the one-file Standard source
+   onefile_umat x86-64-v2
+   for c in 1 2 3 4 5 6 7 8; do
+      echo - >"$work/irf.$c"
+      if [ -x "$work/standard-x86-64-v2/bench-umat-standard" ]; then
+         valgrind --tool=callgrind --callgrind-out-file="$work/cgf.$c" --toggle-collect=umat_ \
+            "$work/standard-x86-64-v2/bench-umat-standard" "$callgrind_calls" 1 "$c" >/dev/null 2>"$work/cgf.$c.log"
+         awk -v calls=$((callgrind_calls + 1)) '/^summary:/ {printf "%.0f\n", $2/calls}' "$work/cgf.$c" >"$work/irf.$c"
+      fi
    done
    # the VUMAT in the one-file Explicit source (needs the generated table of a build tree)
    (cd "$work" && bash "$here/examples/abaqus/make-user-file.sh" --explicit --build-dir "$cgtree" \
@@ -124,13 +165,15 @@ done <"$work/vumat-rows.txt"
 # (the name is right-aligned in its column: matched anywhere in the line)
 umat_ns() { awk -v name="$2" -v hist="$3" 'index($0, name) > 0 && index($0, hist) > 0 {print $(NF-2)}' "$1"; }
 echo
-echo "UMAT, best ns per call of 5 runs ($calls calls each), and ratios within each build:"
-printf '%-34s %10s %10s %12s\n' "case" "LTO" "no LTO" "instr./call"
+echo "UMAT, best ns per call of 5 runs ($calls calls each) of the Release build with and without LTO"
+echo "and of the one-file Standard source, and instructions per call (callgrind, x86-64-v2: the"
+echo "static libraries without LTO, and the one-file source), and ratios within each build:"
+printf '%-34s %10s %10s %10s %12s %12s\n' "case" "LTO" "no LTO" "one-file" "instr./call" "one-file"
 # (instructions: DIR/callgrind, no LTO, x86-64-v2)
 rows=("simplified + disp.|mixed 2-D" "simplified + disp.|mixed 3-D" "micromech. + disp.|mixed 2-D"
       "micromech. + disp.|mixed 3-D" "simplified + LFM|mixed 2-D" "simplified + LFM|mixed 3-D"
       "micromech. + LFM|mixed 2-D" "micromech. + LFM|mixed 3-D")
-declare -A lto nol ir
+declare -A lto nol one ir irf
 c=0
 for row in "${rows[@]}"; do
    c=$((c + 1))
@@ -138,21 +181,29 @@ for row in "${rows[@]}"; do
    hist=${row##*|}
    lto[$c]=$(umat_ns "$work/umat-lto.txt" "$name" "$hist")
    nol[$c]=$(umat_ns "$work/umat-nolto.txt" "$name" "$hist")
+   one[$c]=$(umat_ns "$work/umat-onefile.txt" "$name" "$hist")
+   one[$c]=${one[$c]:--}
    ir[$c]=-
-   if [ $have_valgrind = yes ]; then ir[$c]=$(cat "$work/ir.$c"); fi
-   printf '%-34s %10s %10s %12s\n' "$name ${hist#mixed }" "${lto[$c]}" "${nol[$c]}" "${ir[$c]}"
+   irf[$c]=-
+   if [ $have_valgrind = yes ]; then ir[$c]=$(cat "$work/ir.$c"); irf[$c]=$(cat "$work/irf.$c"); fi
+   printf '%-34s %10s %10s %10s %12s %12s\n' "$name ${hist#mixed }" "${lto[$c]}" "${nol[$c]}" "${one[$c]}" \
+      "${ir[$c]}" "${irf[$c]}"
 done
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {if (a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.2f", a/b}'; }
 echo
-printf '%-50s %8s %8s %12s\n' "ratio" "LTO" "no LTO" "instructions"
-printf '%-50s %8s %8s %12s\n' "micromechanical / simplified, displacement, 2-D" "$(ratio "${lto[3]}" "${lto[1]}")" \
-   "$(ratio "${nol[3]}" "${nol[1]}")" "$(ratio "${ir[3]}" "${ir[1]}")"
-printf '%-50s %8s %8s %12s\n' "micromechanical / simplified, displacement, 3-D" "$(ratio "${lto[4]}" "${lto[2]}")" \
-   "$(ratio "${nol[4]}" "${nol[2]}")" "$(ratio "${ir[4]}" "${ir[2]}")"
-printf '%-50s %8s %8s %12s\n' "LFM / displacement law, simplified 2-D" "$(ratio "${lto[5]}" "${lto[1]}")" \
-   "$(ratio "${nol[5]}" "${nol[1]}")" "$(ratio "${ir[5]}" "${ir[1]}")"
-printf '%-50s %8s %8s %12s\n' "LFM / displacement law, micromechanical 2-D" "$(ratio "${lto[7]}" "${lto[3]}")" \
-   "$(ratio "${nol[7]}" "${nol[3]}")" "$(ratio "${ir[7]}" "${ir[3]}")"
+printf '%-50s %8s %8s %8s %12s %12s\n' "ratio" "LTO" "no LTO" "one-file" "instructions" "one-file"
+printf '%-50s %8s %8s %8s %12s %12s\n' "micromechanical / simplified, displacement, 2-D" "$(ratio "${lto[3]}" "${lto[1]}")" \
+   "$(ratio "${nol[3]}" "${nol[1]}")" "$(ratio "${one[3]}" "${one[1]}")" \
+   "$(ratio "${ir[3]}" "${ir[1]}")" "$(ratio "${irf[3]}" "${irf[1]}")"
+printf '%-50s %8s %8s %8s %12s %12s\n' "micromechanical / simplified, displacement, 3-D" "$(ratio "${lto[4]}" "${lto[2]}")" \
+   "$(ratio "${nol[4]}" "${nol[2]}")" "$(ratio "${one[4]}" "${one[2]}")" \
+   "$(ratio "${ir[4]}" "${ir[2]}")" "$(ratio "${irf[4]}" "${irf[2]}")"
+printf '%-50s %8s %8s %8s %12s %12s\n' "LFM / displacement law, simplified 2-D" "$(ratio "${lto[5]}" "${lto[1]}")" \
+   "$(ratio "${nol[5]}" "${nol[1]}")" "$(ratio "${one[5]}" "${one[1]}")" \
+   "$(ratio "${ir[5]}" "${ir[1]}")" "$(ratio "${irf[5]}" "${irf[1]}")"
+printf '%-50s %8s %8s %8s %12s %12s\n' "LFM / displacement law, micromechanical 2-D" "$(ratio "${lto[7]}" "${lto[3]}")" \
+   "$(ratio "${nol[7]}" "${nol[3]}")" "$(ratio "${one[7]}" "${one[3]}")" \
+   "$(ratio "${ir[7]}" "${ir[3]}")" "$(ratio "${irf[7]}" "${irf[3]}")"
 if [ $have_valgrind = no ]; then echo "(valgrind not installed, or no DIR/callgrind build: no instruction counts)"; fi
 if [ $have_valgrind = yes ] && [ ${#vir[@]} -eq 0 ]; then
    echo "(the one-file Explicit benchmark did not build: see below)"; cat "$work/explicit.log"
