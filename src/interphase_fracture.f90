@@ -36,13 +36,15 @@ module interphase_fracture
 
    !> What the crack sees in the increment: the separation at its end and the slip at its
    !> start (the friction step at each trial D starts from it, or from the slip that conserves
-   !> pi = m lambda: `growth_trial_slip`).
+   !> pi = m lambda: `growth_trial_slip`). No default initialisation (the update's hot path: it
+   !> would cost stores at every call, and with flang a run-time call): the caller sets s_n, st
+   !> and slip_old, grow_crack d_from and m_from.
    type :: crack_load_type
-      real(dp) :: s_n = 0.0_dp            !! normal separation (mm)
-      real(dp) :: st(2) = 0.0_dp          !! tangential separation (mm)
-      real(dp) :: slip_old(2) = 0.0_dp    !! frictional slip lambda_n at the start (mm)
-      real(dp) :: d_from = 0.0_dp         !! damage at the start, D_n (-)
-      real(dp) :: m_from = 0.0_dp         !! m(D_n) = D_n ufbar(D_n) (-); set by grow_crack when the crack grows
+      real(dp) :: s_n                     !! normal separation (mm)
+      real(dp) :: st(2)                   !! tangential separation (mm)
+      real(dp) :: slip_old(2)             !! frictional slip lambda_n at the start (mm)
+      real(dp) :: d_from                  !! damage at the start, D_n (-)
+      real(dp) :: m_from                  !! m(D_n) = D_n ufbar(D_n) (-); set by grow_crack when the crack grows
    end type crack_load_type
 
    !> One evaluation of the growth function at D (`growth_point`): g, its partial derivatives,
@@ -98,18 +100,20 @@ contains
       b2 = 0.0_dp
       at%d = d
       at%g = 0.0_dp
-      at%g_s = 0.0_dp
-      at%g_lam = 0.0_dp
-      at%g_d = 0.0_dp
-      at%dg_dd = 0.0_dp
       at%m = 0.0_dp
       call coefficients_at(params, d, c, dc, status, d2c)
       if (status /= STATUS_OK) return
       if (d > 0.0_dp) at%m = d*c%ufbar
       t2 = load%st(1)**2 + load%st(2)**2
-      ! friction with D frozen, from the slip the crack faces carry at D
-      call growth_trial_slip(params%growth_slip, load%d_from, load%m_from, d, c, dc, load%slip_old, &
-         slip_trial, dslip_dd)
+      ! friction with D frozen, from the slip the crack faces carry at D (at D_n itself lambda_n,
+      ! as growth_trial_slip gives it there)
+      if (d > load%d_from) then
+         call growth_trial_slip(params%growth_slip, load%d_from, load%m_from, d, c, dc, load%slip_old, &
+            slip_trial, dslip_dd)
+      else
+         slip_trial = load%slip_old
+         dslip_dd = 0.0_dp
+      end if
       call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, at%r, status, dslip_dd)
       if (status /= STATUS_OK) return
       closed = at%r%closed
@@ -168,7 +172,8 @@ contains
             call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
             ratio = c%tc_t/c%tf
             kappa = -(dc%k_t + dc%kc_t) + 2.0_dp*a1*ratio + b1*ratio*ratio
-            gc = [1.0_dp, kappa*sig_t**2]
+            gc(1) = 1.0_dp
+            gc(2) = kappa*sig_t**2
          end select
          ! gi = 0 when the crack is closed or s_N <= 0 (no mode-I term then)
          g = gii/gc(2) - 1.0_dp
@@ -176,7 +181,13 @@ contains
       end if
       at%g = g
       ! no growth at D_n: neither the search nor the tangent needs the derivatives
-      if (g < 0.0_dp .and. .not. (d > load%d_from)) return
+      if (g < 0.0_dp .and. .not. (d > load%d_from)) then
+         at%g_s = 0.0_dp
+         at%g_lam = 0.0_dp
+         at%g_d = 0.0_dp
+         at%dg_dd = 0.0_dp
+         return
+      end if
 
       g_s = 0.0_dp
       g_lam = 0.0_dp
@@ -213,7 +224,8 @@ contains
             dratio = dc%tc_t/c%tf - c%tc_t*dc%tf/c%tf**2
             dkappa = -(d2c%k_t + d2c%kc_t) + 2.0_dp*(a2*ratio + a1*dratio) + b2*ratio*ratio &
                + 2.0_dp*b1*ratio*dratio
-            dgc = [0.0_dp, dkappa*sig_t**2 + 2.0_dp*kappa*sig_t*dsig_t]
+            dgc(1) = 0.0_dp
+            dgc(2) = dkappa*sig_t**2 + 2.0_dp*kappa*sig_t*dsig_t
          end if
          g_s = gii_s/gc(2)
          g_lam = gii_lam/gc(2)
@@ -303,9 +315,12 @@ contains
    !> Crack growth in the increment from D_from (eqs 41-42, 50): the predictor keeps D_from when
    !> g(D_from) < 0; otherwise D is the first root of g in (D_from, 1], found by a safeguarded
    !> Newton iteration from D_from on g(D) along the slip lambda(D) (slope dg/dD = g_D +
-   !> g_lambda . lambda_D, the tangent's denominator). The search never passes the points of a
+   !> g_lambda . lambda_D, the tangent's denominator); from the second evaluation on, the Newton
+   !> point is corrected for the curvature of g by the inverse cubic Hermite interpolant through
+   !> the last two evaluations (`hermite_root`), so that a growing increment mostly ends at its
+   !> third evaluation (D_n, the Newton point, the root). The search never passes the points of a
    !> geometric scan towards D = 1 (N_SCAN points per run, down to 1 - D = SCAN_DEPTH (1 -
-   !> D_from)) without evaluating them: a Newton step beyond the next scan point, or uphill
+   !> D_from)) without evaluating them: a step beyond the next scan point, or uphill
    !> (dg/dD >= 0), is replaced by that point, or by the bisection of a bracket once g < 0 has been
    !> seen (as is a step inside the bracket longer than half the step before the last); g >= 0 at
    !> every scan point lets the crack run to b (D = 1). Converged when the Newton
@@ -328,7 +343,7 @@ contains
 
       real(dp) :: d_lo, d_hi, d_bound, d_next, step, dx_last, dx_older
       integer :: iter, scan, how
-      logical :: have_hi
+      logical :: have_hi, have_two
       integer :: k, lo
       integer, parameter :: BY_NEWTON = 1, BY_BISECTION = 2, BY_SCAN = 3
 
@@ -354,6 +369,7 @@ contains
       d_hi = 1.0_dp
       have_hi = .false.
       lo = k
+      have_two = .false.
       dx_last = 1.0_dp
       dx_older = 1.0_dp
       scan = 1
@@ -371,6 +387,11 @@ contains
                return
             end if
             d_next = at(k)%d + step
+            ! with a second evaluation, the root of the cubic through both (inverse Hermite)
+            if (have_two) then
+               call hermite_root(at(3 - k), at(k), step, d_next)
+               step = d_next - at(k)%d
+            end if
             if (d_next > d_lo .and. d_next < min(d_hi, d_bound)) how = BY_NEWTON
          end if
          ! inside a bracket, a Newton step longer than half the step before the last gives way
@@ -387,6 +408,7 @@ contains
          dx_last = abs(d_next - at(k)%d)
          ! the next evaluation goes to the slot that does not hold d_lo's
          k = 3 - lo
+         have_two = .true.
          call growth_point(params, d_next, load, ntens, at(k), status)
          if (status /= STATUS_OK) return
          if (at(k)%g >= 0.0_dp) then
@@ -414,6 +436,27 @@ contains
       end do
       status = STATUS_STAGGER_NOT_CONVERGED
    end subroutine grow_crack
+
+   !> The search's step from two evaluations of g with their slopes: at the latest, p1 (D_1,
+   !> g_1, g_1' < 0, Newton step s = -g_1/g_1'), and another, p0 (D_0, g_0, g_0' < 0). D(g), the
+   !> inverse of g between them, is interpolated by the cubic that matches D and dD/dg = 1/g' at
+   !> both (Hermite); its value at g = 0, with u = g_1/(g_1 - g_0),
+   !>   D = D_1 + (1 - u)^2 s + u ((1 - u) g_1/g_0' + u (3 - 2u)(D_0 - D_1)),
+   !> is the Newton point D_1 + s corrected for the curvature of g: its error is of the order of
+   !> (D_0 - D)^2 (D_1 - D)^2 where Newton's is (D_1 - D)^2, so that from D_n and one Newton point
+   !> the next point is mostly the root to the search's tolerance. Used (d_next returned changed)
+   !> only where g falls from p0 to p1 and the correction is at most half the Newton step;
+   !> otherwise d_next stays the Newton point.
+   pure subroutine hermite_root(p0, p1, s, d_next)
+      type(growth_point_type), intent(in) :: p0, p1
+      real(dp), intent(in) :: s                    !! Newton step from p1 (-)
+      real(dp), intent(inout) :: d_next            !! in: p1%d + s; out: the step's end (-)
+      real(dp) :: u, d_h
+      if (.not. (p0%dg_dd < 0.0_dp .and. (p1%d - p0%d)*(p1%g - p0%g) < 0.0_dp)) return
+      u = p1%g/(p1%g - p0%g)
+      d_h = p1%d + (1.0_dp - u)**2*s + u*((1.0_dp - u)*p1%g/p0%dg_dd + u*(3.0_dp - 2.0_dp*u)*(p0%d - p1%d))
+      if (abs(d_h - d_next) <= 0.5_dp*abs(s)) d_next = d_h
+   end subroutine hermite_root
 
    !> Point j of the geometric scan from D_from towards D = 1: 1 - D = (1 - D_from) SCAN_DEPTH^(j/N_SCAN).
    pure real(dp) function scan_point(d_from, j)

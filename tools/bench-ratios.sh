@@ -41,6 +41,9 @@ while [ $# -gt 0 ]; do
    esac
    shift
 done
+# (absolute: the one-file builds below run in their own directories)
+mkdir -p "$root"
+root=$(cd "$root" && pwd)
 rel=$root/release
 nolto=$root/nolto
 cgtree=$root/callgrind
@@ -96,7 +99,7 @@ onefile_umat() {
       && gfortran -o bench-umat-standard bench_umat.o standard.o stub.o interphase_driver_cli.o \
          interphase_driver_text.o interphase_driver_version.o -llapack) >"$work/standard-$arch.log" 2>&1
 }
-onefile_umat native
+onefile_umat native || true
 if [ -x "$work/standard-native/bench-umat-standard" ]; then
    "$work/standard-native/bench-umat-standard" "$calls" 5 >"$work/umat-onefile.txt"
 else
@@ -115,7 +118,7 @@ if command -v valgrind >/dev/null 2>&1 && [ -x "$cgtree/drivers/interphase-bench
       awk -v calls=$((callgrind_calls + 1)) '/^summary:/ {printf "%.0f\n", $2/calls}' "$work/cg.$c" >"$work/ir.$c"
    done
    # the UMAT in the one-file Standard source
-   onefile_umat x86-64-v2
+   onefile_umat x86-64-v2 || true
    for c in 1 2 3 4 5 6 7 8; do
       echo - >"$work/irf.$c"
       if [ -x "$work/standard-x86-64-v2/bench-umat-standard" ]; then
