@@ -111,15 +111,26 @@ for f in "${roots[@]}"; do visit "$f"; done
 
 # a source with its INCLUDE lines replaced by the files they name (src/*.inc: one source of the
 # bit-level tests, included where the compiler must inline them), so that the one file needs no
-# other file
+# other file. An INCLUDE line must name one file of src/ in quotes, alone on its line; an included
+# file may not include another (what else starts with INCLUDE is refused, not copied).
 expand_includes() {
-   local line name
+   local line name lower
    while IFS= read -r line || [ -n "$line" ]; do
-      if [[ $line =~ ^[[:space:]]*[Ii][Nn][Cc][Ll][Uu][Dd][Ee][[:space:]]+\'([^\']+)\'[[:space:]]*$ ]]; then
-         name=${BASH_REMATCH[1]}
+      lower=${line,,}
+      if [[ $lower =~ ^[[:space:]]*include[[:space:]]*[\'\"] ]]; then
+         if [[ $line =~ ^[[:space:]]*[Ii][Nn][Cc][Ll][Uu][Dd][Ee][[:space:]]+[\'\"]([^\'\"]+)[\'\"][[:space:]]*$ ]]; then
+            name=${BASH_REMATCH[1]}
+         else
+            echo "make-user-file.sh: $1: an INCLUDE line that is not one quoted file name alone: $line" >&2
+            return 1
+         fi
          if [ ! -f "$root/src/$name" ]; then
             echo "make-user-file.sh: $1 includes '$name', which is not in src/" >&2
-            exit 1
+            return 1
+         fi
+         if grep -qiE "^[[:space:]]*include[[:space:]]*['\"]" "$root/src/$name"; then
+            echo "make-user-file.sh: src/$name includes another file (not supported)" >&2
+            return 1
          fi
          echo "   ! ---- included from src/$name ----"
          cat "$root/src/$name"
@@ -138,7 +149,8 @@ expand_includes() {
    for f in "${order[@]}"; do
       echo
       echo "! ==== ${f#$root/} ===="
-      expand_includes "$f"
+      expand_includes "$f" || { rm -f "$output.tmp"; exit 1; }
    done
-} > "$output"
+} > "$output.tmp" || { rm -f "$output.tmp"; exit 1; }
+mv "$output.tmp" "$output"
 echo "make-user-file.sh: wrote $output (${#order[@]} files, ${host_label})"

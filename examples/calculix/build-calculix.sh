@@ -125,7 +125,7 @@ fi
 }
 lib=$cache/libINTERPHASE.so
 fc=${FC:-gfortran}
-if [ ! -f "$lib" ] || [ -n "$(find "$root/src" "$build_dir/generated" \( -name '*.f90' -o -name '*.c' \) -newer "$lib" | head -n 1)" ]; then
+if [ ! -f "$lib" ] || [ -n "$(find "$root/src" "$build_dir/generated" \( -name '*.f90' -o -name '*.inc' -o -name '*.c' \) -newer "$lib" | head -n 1)" ]; then
    "$root/examples/abaqus/make-user-file.sh" --calculix --build-dir "$build_dir" -o "$cache/interphase_calculix.f90" >/dev/null
    # -O2 as a host's user-subroutine build; UMAT is the name the deck's material gives
    # (@ABAQUS_INTERPHASE_UMAT: the deck is upper-cased), umat_ the Fortran one

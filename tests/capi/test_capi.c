@@ -74,7 +74,6 @@ static int regime_code(const char *name) {
   return -1;
 }
 
-/* Central finite-difference tangent of the update at fixed old state, row-major. */
 /* The most rows of a driver CSV the tests read (the mixed history has 1201). */
 #define CSV_MAX_ROWS 4096
 
@@ -109,6 +108,7 @@ static size_t read_driver_csv(const char *csv_path, struct csv_row *rows, size_t
   return n;
 }
 
+/* Central finite-difference tangent of the update at fixed old state, row-major. */
 static void fd_tangent(const double *props, const double *state_old, const double *s, double *fd) {
   const double h = 1.0e-8;
   for (int j = 0; j < 2; ++j) {
