@@ -195,18 +195,16 @@ done
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {if (a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.2f", a/b}'; }
 echo
 printf '%-50s %8s %8s %8s %12s %12s\n' "ratio" "LTO" "no LTO" "one-file" "instructions" "one-file"
-printf '%-50s %8s %8s %8s %12s %12s\n' "micromechanical / simplified, displacement, 2-D" "$(ratio "${lto[3]}" "${lto[1]}")" \
-   "$(ratio "${nol[3]}" "${nol[1]}")" "$(ratio "${one[3]}" "${one[1]}")" \
-   "$(ratio "${ir[3]}" "${ir[1]}")" "$(ratio "${irf[3]}" "${irf[1]}")"
-printf '%-50s %8s %8s %8s %12s %12s\n' "micromechanical / simplified, displacement, 3-D" "$(ratio "${lto[4]}" "${lto[2]}")" \
-   "$(ratio "${nol[4]}" "${nol[2]}")" "$(ratio "${one[4]}" "${one[2]}")" \
-   "$(ratio "${ir[4]}" "${ir[2]}")" "$(ratio "${irf[4]}" "${irf[2]}")"
-printf '%-50s %8s %8s %8s %12s %12s\n' "LFM / displacement law, simplified 2-D" "$(ratio "${lto[5]}" "${lto[1]}")" \
-   "$(ratio "${nol[5]}" "${nol[1]}")" "$(ratio "${one[5]}" "${one[1]}")" \
-   "$(ratio "${ir[5]}" "${ir[1]}")" "$(ratio "${irf[5]}" "${irf[1]}")"
-printf '%-50s %8s %8s %8s %12s %12s\n' "LFM / displacement law, micromechanical 2-D" "$(ratio "${lto[7]}" "${lto[3]}")" \
-   "$(ratio "${nol[7]}" "${nol[3]}")" "$(ratio "${one[7]}" "${one[3]}")" \
-   "$(ratio "${ir[7]}" "${ir[3]}")" "$(ratio "${irf[7]}" "${irf[3]}")"
+# one row of ratios: case i over case j in every build and count
+ratio_row() {
+   printf '%-50s %8s %8s %8s %12s %12s\n' "$1" "$(ratio "${lto[$2]}" "${lto[$3]}")" \
+      "$(ratio "${nol[$2]}" "${nol[$3]}")" "$(ratio "${one[$2]}" "${one[$3]}")" \
+      "$(ratio "${ir[$2]}" "${ir[$3]}")" "$(ratio "${irf[$2]}" "${irf[$3]}")"
+}
+ratio_row "micromechanical / simplified, displacement, 2-D" 3 1
+ratio_row "micromechanical / simplified, displacement, 3-D" 4 2
+ratio_row "LFM / displacement law, simplified 2-D" 5 1
+ratio_row "LFM / displacement law, micromechanical 2-D" 7 3
 if [ $have_valgrind = no ]; then echo "(valgrind not installed, or no DIR/callgrind build: no instruction counts)"; fi
 if [ $have_valgrind = yes ] && [ ${#vir[@]} -eq 0 ]; then
    echo "(the one-file Explicit benchmark did not build: see below)"; cat "$work/explicit.log"
