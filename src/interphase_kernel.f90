@@ -42,7 +42,7 @@ module interphase_kernel
    use interphase_state, only: interface_state_type
    implicit none
    private
-   public :: interface_update
+   public :: interface_update, update_point
 
 contains
 
@@ -61,13 +61,43 @@ contains
       !> must be finite and >= 0 (else STATUS_BAD_TIME_INCREMENT); not used otherwise
       real(dp), intent(in), optional :: dt
 
+      real(dp) :: s3(3), traction3(3), tangent3(3, 3)
+      integer :: ntens
+
+      ntens = size(s)
+      if (ntens /= 2 .and. ntens /= 3) then
+         status = STATUS_BAD_NTENS
+         return
+      end if
+      s3(1:ntens) = s
+      call update_point(params, old, ntens, s3, traction3, tangent3, new, psi, status, dt)
+      if (status /= STATUS_OK) return
+      traction(1:ntens) = traction3(1:ntens)
+      tangent(1:ntens, 1:ntens) = tangent3(1:ntens, 1:ntens)
+   end subroutine interface_update
+
+   !> `interface_update` on arrays of fixed size (the first NTENS components used), assigning
+   !> every component of `new`: no descriptors and no default initialisation at the call (the
+   !> UMAT's entry). On a non-zero status the outputs are undefined and must not be used.
+   pure subroutine update_point(params, old, ntens, s, traction, tangent, new, psi, status, dt)
+      type(law_params_type), intent(in) :: params        !! material parameters
+      type(interface_state_type), intent(in) :: old      !! state at the start of the increment
+      integer, intent(in) :: ntens                       !! 2 (s_N, s_T) or 3 (s_N, s_T1, s_T2)
+      real(dp), intent(in) :: s(3)                       !! separation (s_N, s_T[, s_T2]) (mm)
+      real(dp), intent(out) :: traction(3)               !! traction, same order (MPa)
+      real(dp), intent(out) :: tangent(3, 3)             !! dtraction/ds (MPa/mm), unsymmetric
+      type(interface_state_type), intent(inout) :: new   !! state at the end of the increment
+      real(dp), intent(out) :: psi                       !! stored energy per unit area (N/mm)
+      integer, intent(out) :: status                     !! STATUS_OK or a failure code
+      !> time increment (s), as for `interface_update`
+      real(dp), intent(in), optional :: dt
+
       type(coefficient_set_type) :: c, dc
       type(response_type) :: r
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
-      integer :: ntens, nt, j, m
+      integer :: nt, j, m
 
-      ntens = size(s)
       nt = ntens - 1
       if (ntens /= 2 .and. ntens /= 3) then
          status = STATUS_BAD_NTENS
@@ -76,7 +106,7 @@ contains
       ! finite and within |s_i| <= SEPARATION_MAX (beyond, the arithmetic would overflow:
       ! interphase_params), in one pass; which of the two failed is looked at only on failure
       if (.not. all_within(ntens, s, SEPARATION_MAX)) then
-         status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s)))
+         status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s(1:ntens))))
          return
       end if
       s_n = s(1)
@@ -156,7 +186,7 @@ contains
             tangent(1:m, 1:m) = 0.5_dp*(tangent(1:m, 1:m) + transpose(tangent(1:m, 1:m)))
       end select
       psi = r%psi
-   end subroutine interface_update
+   end subroutine update_point
 
    !> Viscous regularisation of the damage (Duvaut-Lions, docs/theory.md 'Viscous
    !> regularisation'): from the damage law's D and dD/ds to the regularised

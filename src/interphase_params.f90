@@ -20,7 +20,7 @@ module interphase_params
       STATUS_BAD_D0, STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION
    implicit none
    private
-   public :: law_params_type, from_props, params_from_values, set_fracture_params, set_options, to_props, &
+   public :: law_params_type, from_props, decode_props, params_from_values, set_fracture_params, set_options, to_props, &
       refuse_umat_options
 
    !> Admissible magnitudes of the dimensional PROPS (s0, sf in mm; K in MPa/mm; G_c in N/mm) and
@@ -100,11 +100,23 @@ contains
       type(law_params_type), intent(out) :: params      !! decoded parameters
       integer, intent(out) :: status                    !! STATUS_OK or a STATUS_BAD_* code
       character(len=MESSAGE_LEN), intent(out) :: message   !! set only on failure
+      call decode_props(size(props), props, params, status, message)
+   end subroutine from_props
+
+   !> `from_props` for a PROPS array of explicit size NPROPS, assigning every component of
+   !> `params` on success (so that a caller's variable is neither default-initialised again nor
+   !> passed with a descriptor: the UMAT decodes PROPS at every call this way).
+   pure subroutine decode_props(nprops, props, params, status, message)
+      integer, intent(in) :: nprops                     !! NPROPS
+      real(dp), intent(in) :: props(nprops)             !! PROPS as given by the host
+      type(law_params_type), intent(inout) :: params    !! decoded parameters (undefined on failure)
+      integer, intent(out) :: status                    !! STATUS_OK or a STATUS_BAD_* code
+      character(len=MESSAGE_LEN), intent(out) :: message   !! set only on failure
 
       integer :: model, damage_law, table, nm, nprops_needed
 
       status = STATUS_OK
-      if (size(props) < PROP_DAMAGE_LAW) then
+      if (nprops < PROP_DAMAGE_LAW) then
          status = STATUS_BAD_NPROPS
          write (message, '(a,i0,a)') 'NPROPS = ', size(props), &
             ' is too small: PROPS(1) selects the model, PROPS(2) the damage law'
@@ -129,7 +141,7 @@ contains
       if (model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
       nprops_needed = nm
       if (damage_law == DAMAGE_FRACTURE) nprops_needed = nm + NPROPS_FRACTURE_EXTRA
-      if (size(props) < nprops_needed .or. size(props) > nprops_needed + NPROPS_OPTIONS) then
+      if (nprops < nprops_needed .or. nprops > nprops_needed + NPROPS_OPTIONS) then
          status = STATUS_BAD_NPROPS
          write (message, '(a,i0,a,a,a,a,a,i0,a,i0,a)') 'NPROPS = ', size(props), ' but the ', &
             trim(merge('simplified     ', 'micromechanical', model == MODEL_SIMPLIFIED)), &
@@ -162,9 +174,20 @@ contains
          call set_fracture_params(params, props(nm + LFM_D0), selector_code(props(nm + LFM_RCURVE)), &
             props(nm + LFM_RCURVE), props(nm + LFM_GC_I), props(nm + LFM_GC_II), nm, status, message)
          if (status /= STATUS_OK) return
+      else
+         ! (the type's defaults, written here: params is not default-initialised on entry)
+         params%d0 = 0.0_dp
+         params%rcurve = 0
+         params%gc_i = 0.0_dp
+         params%gc_ii = 0.0_dp
       end if
-      call set_options(params, props(nprops_needed + 1:), nprops_needed, status, message)
-   end subroutine from_props
+      if (nprops > nprops_needed) then
+         call decode_options(params, nprops - nprops_needed, props(nprops_needed + 1), nprops_needed, status, message)
+      else
+         ! (no option constants: the element passed is not read)
+         call decode_options(params, 0, props(1), nprops_needed, status, message)
+      end if
+   end subroutine decode_props
 
    !> Decode and validate the optional trailing option constants (PROPS(base + OPT_*)); the
    !> options not given keep their defaults. `base` is the PROPS index before them.
@@ -174,22 +197,38 @@ contains
       integer, intent(in) :: base            !! PROPS index before the options (for messages)
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
+      real(dp) :: none(1)
+      if (size(options) > NPROPS_OPTIONS) then
+         status = STATUS_BAD_NPROPS
+         write (message, '(a,i0,a,i0)') 'too many option constants: ', size(options), ' given, at most ', &
+            NPROPS_OPTIONS
+      else if (size(options) == 0) then
+         none = 0.0_dp
+         call decode_options(params, 0, none, base, status, message)
+      else
+         call decode_options(params, size(options), options, base, status, message)
+      end if
+   end subroutine set_options
+
+   !> `set_options` for NOPTIONS (0 to NPROPS_OPTIONS) option constants held in sequence from
+   !> `options` on (an explicit-shape array: no descriptor at the UMAT's call).
+   pure subroutine decode_options(params, noptions, options, base, status, message)
+      type(law_params_type), intent(inout) :: params
+      integer, intent(in) :: noptions        !! the number of option constants given, <= NPROPS_OPTIONS
+      real(dp), intent(in) :: options(*)     !! the option constants given
+      integer, intent(in) :: base            !! PROPS index before the options (for messages)
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
 
       real(dp) :: values(NPROPS_OPTIONS)
       logical :: valid
       integer :: k
 
       status = STATUS_OK
-      if (size(options) > NPROPS_OPTIONS) then
-         status = STATUS_BAD_NPROPS
-         write (message, '(a,i0,a,i0)') 'too many option constants: ', size(options), ' given, at most ', &
-            NPROPS_OPTIONS
-         return
-      end if
       ! every option from its entry in OPTION_SPECS: the default, or the value given when it
       ! passes the entry's check
       values = OPTION_DEFAULTS
-      do k = 1, size(options)
+      do k = 1, noptions
          ! (the table's components read in place: a local copy of an entry, a derived type with
          ! default initialisation, was blank-filled at every call, options given or not)
          if (OPTION_SPECS(k)%kind == OPTION_SELECTOR) then
@@ -222,7 +261,7 @@ contains
       params%layer_thickness = values(OPT_LAYER_THICKNESS)
       params%layer_normal = int(values(OPT_LAYER_NORMAL))
       params%host = int(values(OPT_HOST))
-   end subroutine set_options
+   end subroutine decode_options
 
    !> Entry points that take separations (the VUMAT, the C API) refuse a material that sets the
    !> UMAT's own options, the thin-layer mode (OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL) and the

@@ -10,7 +10,7 @@ module interphase_state
    use interphase_status, only: STATUS_OK, STATUS_BAD_STATE, STATUS_BAD_NSTATV, MESSAGE_LEN
    implicit none
    private
-   public :: interface_state_type, state_unpack, state_pack, count_invalid_states, state_slots
+   public :: interface_state_type, state_unpack, state_pack, unpack_statev, pack_statev, count_invalid_states, state_slots
 
    !> Bit pattern of 1.0_dp.
    integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
@@ -48,15 +48,29 @@ contains
       !> not, and d_inviscid = d)
       logical, intent(in), optional :: viscous
       logical :: with_inviscid
+      with_inviscid = .false.
+      if (present(viscous)) with_inviscid = viscous
+      call unpack_statev(size(statev), statev, ntens, with_inviscid, state, status, message)
+   end subroutine state_unpack
+
+   !> `state_unpack` for a STATEV array of explicit size NSTATV, assigning every component of
+   !> `state` (so that a caller's variable is neither default-initialised again nor passed with
+   !> a descriptor: the UMAT's entry).
+   pure subroutine unpack_statev(nstatv, statev, ntens, with_inviscid, state, status, message)
+      integer, intent(in) :: nstatv                      !! NSTATV
+      real(dp), intent(in) :: statev(nstatv)             !! STATEV as given by the host
+      integer, intent(in) :: ntens                       !! 2 (2-D) or 3 (3-D)
+      logical, intent(in) :: with_inviscid               !! read STATEV(SV_DAMAGE_INVISCID) too
+      type(interface_state_type), intent(inout) :: state !! (undefined on failure)
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
       integer :: needed
 
       status = STATUS_OK
-      with_inviscid = .false.
-      if (present(viscous)) with_inviscid = viscous
       needed = merge(NSTATV_VISCOUS, NSTATV_REQUIRED, with_inviscid)
-      if (size(statev) < needed) then
+      if (nstatv < needed) then
          status = STATUS_BAD_NSTATV
-         write (message, '(a,i0,a,i0,a)') 'NSTATV = ', size(statev), &
+         write (message, '(a,i0,a,i0,a)') 'NSTATV = ', nstatv, &
             ' but interphase needs at least ', needed, trim(merge(' (viscous regularisation)', '                         ', &
             with_inviscid))
          return
@@ -90,7 +104,7 @@ contains
       end if
       if (status /= STATUS_OK) write (message, '(a,i0,a,es12.5,a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE_INVISCID, &
          ') D = ', state%d_inviscid, ' must lie in [STATEV(', SV_DAMAGE, ') = ', state%d, ', 1]'
-   end subroutine state_unpack
+   end subroutine unpack_statev
 
    include 'interphase_binary64_bits.inc'
 
@@ -168,13 +182,23 @@ contains
       type(interface_state_type), intent(in) :: state
       real(dp), intent(inout) :: statev(:)               !! STATEV, size >= NSTATV_REQUIRED
       logical, intent(in), optional :: viscous           !! write STATEV(SV_DAMAGE_INVISCID) too
+      logical :: with_inviscid
+      with_inviscid = .false.
+      if (present(viscous)) with_inviscid = viscous
+      call pack_statev(state, statev, with_inviscid)
+   end subroutine state_pack
+
+   !> `state_pack` into an explicit-shape STATEV (no descriptor at the UMAT's call).
+   pure subroutine pack_statev(state, statev, with_inviscid)
+      type(interface_state_type), intent(in) :: state
+      !> STATEV, size >= NSTATV_REQUIRED (NSTATV_VISCOUS with_inviscid)
+      real(dp), intent(inout) :: statev(*)
+      logical, intent(in) :: with_inviscid               !! write STATEV(SV_DAMAGE_INVISCID) too
       statev(SV_DAMAGE) = state%d
       statev(SV_SLIP_1) = state%slip(1)
       statev(SV_SLIP_2) = state%slip(2)
       statev(SV_REGIME) = real(state%regime, dp)
-      if (present(viscous)) then
-         if (viscous) statev(SV_DAMAGE_INVISCID) = state%d_inviscid
-      end if
-   end subroutine state_pack
+      if (with_inviscid) statev(SV_DAMAGE_INVISCID) = state%d_inviscid
+   end subroutine pack_statev
 
 end module interphase_state

@@ -35,12 +35,13 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_real_text, only: real_text, es_fields
    use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
-      STATUS_BAD_TIME_INCREMENT
-   use interphase_params, only: law_params_type, from_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX
-   use interphase_layer, only: layer_map_type, layer_map
-   use interphase_layout, only: HOST_CALCULIX
-   use interphase_state, only: interface_state_type, state_unpack, state_pack
-   use interphase_kernel, only: interface_update
+      STATUS_BAD_TIME_INCREMENT, STATUS_BAD_NTENS, STATUS_BAD_OPTION
+   use interphase_params, only: law_params_type, decode_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX
+   use interphase_layer, only: layer_map_type
+   use interphase_layout, only: HOST_CALCULIX, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, NPROPS_FRACTURE_EXTRA, &
+      OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, MODEL_MICROMECHANICAL, DAMAGE_FRACTURE
+   use interphase_state, only: interface_state_type, unpack_statev, pack_statev
+   use interphase_kernel, only: update_point
    use interphase_provider, only: check_run_time_data
    use interphase_rcurve, only: rcurve_coverage
    use interphase_umat_failure, only: umat_fail
@@ -72,7 +73,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    ! out of line, before STRESS, STATEV, DDSDDE, SSE or SPD are touched)
    update: block
       severity = SEVERITY_FATAL
-      call from_props(props, params, status, message)
+      call decode_props(nprops, props, params, status, message)
       if (status /= STATUS_OK) exit update
       ! which components carry the separation: a cohesive element's, or a thin layer's
       call layer_map(params, ndi, nshr, ntens, map, status, message)
@@ -83,7 +84,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       ! a custom table or R-curve that was not loaded at start-up: no smaller increment can help
       call check_run_time_data(params, status, message)
       if (status /= STATUS_OK) exit update
-      call state_unpack(statev, nsep, old, status, message, viscous=params%viscosity > 0.0_dp)
+      call unpack_statev(nstatv, statev, nsep, params%viscosity > 0.0_dp, old, status, message)
       if (status /= STATUS_OK) exit update
 
       ! the host's values, before any arithmetic on them (so that none can raise an exception):
@@ -127,8 +128,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
             s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
          end do
       end if
-      call interface_update(params, old, s(1:nsep), traction(1:nsep), tangent(1:nsep, 1:nsep), &
-         new, psi, status, dtime)
+      call update_point(params, old, nsep, s, traction, tangent, new, psi, status, dtime)
       if (status == STATUS_BAD_TIME_INCREMENT) then
          write (message, '(a,es12.4,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
          exit update
@@ -189,7 +189,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
             end do
          end do
       end if
-      call state_pack(new, statev, viscous=params%viscosity > 0.0_dp)
+      call pack_statev(new, statev, params%viscosity > 0.0_dp)
       return
    end block update
 
@@ -198,9 +198,10 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
 
 contains
 
-   ! the range tests of the host's values, here where the compiler inlines them (the tests of
-   ! interphase_finite, from the same source)
+   ! the range tests of the host's values and the components' map, here where the compiler
+   ! inlines them (interphase_finite's tests and interphase_layer's map, from the same source)
    include 'interphase_binary64_bits.inc'
    include 'interphase_within.inc'
+   include 'interphase_layer_map.inc'
 
 end subroutine umat
