@@ -28,7 +28,7 @@ module interphase_capi
    use interphase_finite, only: is_within
    use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
-   use interphase_kernel, only: interface_update
+   use interphase_kernel, only: interface_update, update_point
    use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
       describe_failure, FAILURE_OUTPUT
    use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL
@@ -132,7 +132,7 @@ contains
 
       type(law_params_type) :: params
       type(interface_state_type) :: old, new
-      real(dp) :: t(3), k(3, 3), psi, sv(NSTATV_VISCOUS)
+      real(dp) :: s(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS)
       integer :: code, i, j, n, nsv
       logical :: viscous
       character(len=MESSAGE_LEN) :: message
@@ -151,7 +151,8 @@ contains
          call finish()
          return
       end if
-      call interface_update(params, old, separation(1:n), t(1:n), k(1:n, 1:n), new, psi, code, dt)
+      s(1:n) = separation(1:n)
+      call update_point(params, old, n, s, t, k, new, psi, code, dt)
       if (code == STATUS_BAD_TIME_INCREMENT) then
          if (present(dt)) then
             write (message, '(a,es12.4,a)') 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
@@ -282,9 +283,9 @@ contains
          s(1:n) = separation(at - n + 1:at) + ds(1:n)
          if (timed) then
             dt = times(row) - times(row - 1)
-            call interface_update(params, old, s(1:n), t(1:n), k(1:n, 1:n), new, psi, code, dt)
+            call update_point(params, old, n, s, t, k, new, psi, code, dt)
          else
-            call interface_update(params, old, s(1:n), t(1:n), k(1:n, 1:n), new, psi, code)
+            call update_point(params, old, n, s, t, k, new, psi, code)
          end if
          if (code /= STATUS_OK) then
             if (code == STATUS_BAD_TIME_INCREMENT) then

@@ -62,18 +62,33 @@ contains
       real(dp), intent(in), optional :: dt
 
       real(dp) :: s3(3), traction3(3), tangent3(3, 3)
-      integer :: ntens
+      integer :: ntens, j
 
       ntens = size(s)
       if (ntens /= 2 .and. ntens /= 3) then
          status = STATUS_BAD_NTENS
          return
       end if
-      s3(1:ntens) = s
+      s3(1) = s(1)
+      s3(2) = s(2)
+      if (ntens == 3) s3(3) = s(3)
       call update_point(params, old, ntens, s3, traction3, tangent3, new, psi, status, dt)
       if (status /= STATUS_OK) return
-      traction(1:ntens) = traction3(1:ntens)
-      tangent(1:ntens, 1:ntens) = tangent3(1:ntens, 1:ntens)
+      ! (component by component, the 2-D and 3-D cases written apart: with array sections of a
+      ! run-time extent GCC's link-time inlining warns of writes beyond a caller's arrays)
+      traction(1) = traction3(1)
+      traction(2) = traction3(2)
+      if (ntens == 2) then
+         tangent(1, 1) = tangent3(1, 1)
+         tangent(2, 1) = tangent3(2, 1)
+         tangent(1, 2) = tangent3(1, 2)
+         tangent(2, 2) = tangent3(2, 2)
+      else
+         traction(3) = traction3(3)
+         do j = 1, 3
+            tangent(1:3, j) = tangent3(1:3, j)
+         end do
+      end if
    end subroutine interface_update
 
    !> `interface_update` on arrays of fixed size (the first NTENS components used), assigning

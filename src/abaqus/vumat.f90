@@ -50,7 +50,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states, state_slots
-   use interphase_kernel, only: interface_update
+   use interphase_kernel, only: update_point
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
    use interphase_block, only: block_update, density_counts, block_supports
@@ -102,6 +102,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    logical :: ok(CHUNK)
    real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei_old, ep_old
    logical :: ok_host
+   real(dp) :: s_point(3)
    real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density, viscous, bad_state
    integer :: nsv   !! STATEV slots of the state (state_slots)
@@ -276,8 +277,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                km = k0 + k - 1
                ! checked above, cannot fail here
                call state_unpack(stateold(km, 1:nsv), ntens, old, status, message, viscous)
-               call interface_update(params, old, statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1), &
-                  traction, tangent(1:ntens, 1:ntens), new, psi(k), status, dt)
+               s_point(1:ntens) = statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1)
+               call update_point(params, old, ntens, s_point, traction, tangent, new, psi(k), status, dt)
                if (status == STATUS_RCURVE_OUT_OF_RANGE) then
                   ! the R-curve file does not reach the damage this point needs: a setup error
                   write (message, '(a,a,i0,a,a)', iostat=status) rcurve_coverage(), '; at block point ', km, &
@@ -304,8 +305,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                ! the block update reports no status: the point update on that point says why
                if (blocked) then
                   call state_unpack(stateold(first_failed, 1:nsv), ntens, old, status, message, viscous)
-                  call interface_update(params, old, statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1), &
-                     traction(1:ntens), tangent(1:ntens, 1:ntens), new, psi_old, first_status, dt)
+                  s_point(1:ntens) = statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
+                  call update_point(params, old, ntens, s_point, traction, tangent, new, psi_old, first_status, dt)
                end if
                write (first_message, '(a,3es12.4)') 'separation (mm) ', &
                   statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
