@@ -159,6 +159,18 @@ contains
          slip = slip_old + dgamma*nvec
          r%slip = slip
          r%regime = REGIME_SLIP
+         r%traction(2:3) = kk_t*st + c%cf_t*slip
+         r%psi = closed_energy(c, d, s_n, st, ntens, r%traction, slip)
+         ! d lambda/dD at fixed s
+         dtau_dd = dc%tc_t*st + dc%tf*slip_old
+         if (present(dslip_dd)) dtau_dd = dtau_dd + c%tf*dslip_dd
+         n_dot = nvec(1)*dtau_dd(1) + nvec(2)*dtau_dd(2)
+         dphi_dd = params%mu*dc%sc_n*s_n + n_dot
+         proj_dtau = dtau_dd - n_dot*nvec
+         dlam_dd = (nvec*dphi_dd + (phi/tau_norm)*proj_dtau)/kf + dgamma*nvec*dc%tf/kf
+         if (present(dslip_dd)) dlam_dd = dlam_dd + dslip_dd
+         r%dlam_dd = dlam_dd
+         r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip + c%cf_t*dlam_dd
          ! d lambda/d s_T = (T^c_T/kf) [I + (mu sigma/|tau|)(I - n n)], d lambda/d s_N = (mu S^c_N/kf) n:
          ! entry (i, 1 + j) = (T^c_T/kf) (delta_ij (1 + ratio) - ratio n_i n_j), delta_ij (1 + ratio)
          ! formed as 1 (1 + ratio) and 0 (1 + ratio)
@@ -178,16 +190,6 @@ contains
             r%dlam_ds(1, 3) = slip_scale*(zero_ratio - ratio*nvec(1)*nvec(2))
             r%dlam_ds(2, 3) = slip_scale*(one_ratio - ratio*nvec(2)*nvec(2))
          end if
-         ! d lambda/dD at fixed s
-         dtau_dd = dc%tc_t*st + dc%tf*slip_old
-         if (present(dslip_dd)) dtau_dd = dtau_dd + c%tf*dslip_dd
-         n_dot = nvec(1)*dtau_dd(1) + nvec(2)*dtau_dd(2)
-         dphi_dd = params%mu*dc%sc_n*s_n + n_dot
-         proj_dtau = dtau_dd - n_dot*nvec
-         dlam_dd = (nvec*dphi_dd + (phi/tau_norm)*proj_dtau)/kf + dgamma*nvec*dc%tf/kf
-         if (present(dslip_dd)) dlam_dd = dlam_dd + dslip_dd
-         r%dlam_dd = dlam_dd
-         r%traction(2:3) = kk_t*st + c%cf_t*slip
          ! the tangent: row 1 kk_n e_1; rows 2:ntens C^f_T d lambda/ds + kk_t (0, I)
          r%tangent(1, 1) = kk_n
          r%tangent(2, 1) = c%cf_t*r%dlam_ds(1, 1)
@@ -203,13 +205,13 @@ contains
             r%tangent(2, 3) = c%cf_t*r%dlam_ds(1, 3)
             r%tangent(3, 3) = c%cf_t*r%dlam_ds(2, 3) + kk_t
          end if
-         r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip + c%cf_t*dlam_dd
       else
          ! stick
          slip = slip_old
          r%slip = slip
          r%regime = REGIME_STICK
          r%traction(2:3) = kk_t*st + c%cf_t*slip_old
+         r%psi = closed_energy(c, d, s_n, st, ntens, r%traction, slip)
          call set_diagonal_tangent(kk_n, kk_t, ntens, r%tangent)
          r%dlam_ds = 0.0_dp
          if (present(dslip_dd)) then
@@ -220,10 +222,21 @@ contains
             r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip_old
          end if
       end if
-      r%psi = 0.5_dp*(r%traction(1)*s_n + shear_work(r%traction, st, ntens)) &
+   end subroutine respond
+
+   !> The closed crack's stored energy psi = 1/2 t.s + 1/2 C^f_T lambda.s_T - 1/2 D T^f ufbar
+   !> |lambda|^2 (N/mm; docs/theory.md), formed as interphase_block forms it.
+   pure real(dp) function closed_energy(c, d, s_n, st, ntens, traction, slip) result(psi)
+      type(coefficient_set_type), intent(in) :: c         !! coefficients at D
+      real(dp), intent(in) :: d                           !! damage D (-)
+      real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
+      integer, intent(in) :: ntens
+      real(dp), intent(in) :: traction(3)                 !! t (MPa)
+      real(dp), intent(in) :: slip(2)                     !! lambda (mm)
+      psi = 0.5_dp*(traction(1)*s_n + shear_work(traction, st, ntens)) &
          + 0.5_dp*c%cf_t*(slip(1)*st(1) + slip(2)*st(2)) &
          - 0.5_dp*d*c%tf*c%ufbar*(slip(1)**2 + slip(2)**2)
-   end subroutine respond
+   end function closed_energy
 
    !> tangent = diag(a, b, b) in 3-D, diag(a, b, 0) in 2-D (zeros elsewhere).
    pure subroutine set_diagonal_tangent(a, b, ntens, tangent)
