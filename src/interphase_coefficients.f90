@@ -14,7 +14,7 @@ module interphase_coefficients
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: coefficient_set_type, NO_COEFFICIENTS, simplified_coefficients
+   public :: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR, simplified_coefficients
 
    !> Coefficients at one damage D = a/b (or their derivatives d/dD, in the same type). No default
    !> initialisation: providers set every member (LLVM flang 19 initialises a variable of a type
@@ -38,41 +38,11 @@ module interphase_coefficients
    type(coefficient_set_type), parameter :: NO_COEFFICIENTS = coefficient_set_type(0.0_dp, 0.0_dp, 0.0_dp, &
       0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp)
 
+   !> The simplified model's mean slip shape ufbar (-): u^f = 1 over the whole crack.
+   real(dp), parameter :: SIMPLIFIED_UFBAR = 1.0_dp
+
 contains
 
-   !> The simplified (spring) model of section 3.4, eqs 31-35 (the Alfano-Sacco law), and its
-   !> derivatives with respect to D. With lambda in mm: C = (1-D) C^, Dbar = h I, C^c = D C^,
-   !> T^c_T = C^_TT, S^c_N = C^_NN, C^f_T = -D K_T, T^f = -K_T, u^f = 1.
-   pure subroutine simplified_coefficients(k_n, k_t, d, coef, dcoef_dd)
-      real(dp), intent(in) :: k_n                    !! K_N (MPa/mm)
-      real(dp), intent(in) :: k_t                    !! K_T (MPa/mm)
-      real(dp), intent(in) :: d                      !! damage D (-)
-      type(coefficient_set_type), intent(out) :: coef       !! coefficients at D
-      type(coefficient_set_type), intent(out) :: dcoef_dd   !! their derivatives d/dD
-
-      coef%k_n = (1.0_dp - d)*k_n
-      coef%k_t = (1.0_dp - d)*k_t
-      coef%kc_n = d*k_n
-      coef%kc_t = d*k_t
-      coef%dbar_n = 1.0_dp
-      coef%dbar_t = 1.0_dp
-      coef%tc_t = k_t
-      coef%sc_n = k_n
-      coef%cf_t = -d*k_t
-      coef%tf = -k_t
-      coef%ufbar = 1.0_dp
-
-      dcoef_dd%k_n = -k_n
-      dcoef_dd%k_t = -k_t
-      dcoef_dd%kc_n = k_n
-      dcoef_dd%kc_t = k_t
-      dcoef_dd%dbar_n = 0.0_dp
-      dcoef_dd%dbar_t = 0.0_dp
-      dcoef_dd%tc_t = 0.0_dp
-      dcoef_dd%sc_n = 0.0_dp
-      dcoef_dd%cf_t = -k_t
-      dcoef_dd%tf = 0.0_dp
-      dcoef_dd%ufbar = 0.0_dp
-   end subroutine simplified_coefficients
+   include 'interphase_simplified.inc'
 
 end module interphase_coefficients

@@ -11,7 +11,7 @@ module interphase_provider
       RCURVE_TABULATED
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
       STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
-   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, simplified_coefficients
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
    use interphase_micro_coefficients, only: micro_coefficients, custom_table_loaded
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    implicit none
@@ -71,5 +71,9 @@ contains
          end if
       end if
    end subroutine check_run_time_data
+
+   ! the simplified model's coefficients, here where `coefficients_at` inlines them
+   ! (interphase_coefficients' public one, from the same source)
+   include 'interphase_simplified.inc'
 
 end module interphase_provider

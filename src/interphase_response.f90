@@ -5,9 +5,9 @@ module interphase_response
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
    use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
-      MODEL_MICROMECHANICAL
+      MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
-   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
    use interphase_provider, only: coefficients_at
    implicit none
    private
@@ -40,6 +40,11 @@ contains
       status = STATUS_OK
       m = 0.0_dp
       if (.not. (d > 0.0_dp)) return
+      if (params%model == MODEL_SIMPLIFIED) then
+         ! (ufbar is a constant: no coefficient set to evaluate)
+         m = d*SIMPLIFIED_UFBAR
+         return
+      end if
       call coefficients_at(params, d, c, dc, status)
       if (status == STATUS_OK) m = d*c%ufbar
    end subroutine slip_measure
@@ -76,6 +81,11 @@ contains
    !> its sensitivities, stored energy. The friction step starts from `slip_old`; when that slip
    !> itself depends on D (`growth_trial_slip`), `dslip_dd` gives its derivative, and dt/dD and
    !> d lambda/dD include it.
+   !>
+   !> (Written component by component for the hot path: each entry is set once, by the same
+   !> expression, in the same operation order, as the array form it replaces; the shear
+   !> components of traction and dt/dD as pairs, whose second member, beyond ntens in 2-D, is the
+   !> 3-D formula's with s_T2 = 0; the tangent and d lambda/ds hold zeros beyond ntens.)
    pure subroutine respond(params, c, dc, d, slip_old, s_n, st, ntens, r, status, dslip_dd)
       type(law_params_type), intent(in) :: params
       type(coefficient_set_type), intent(in) :: c, dc     !! coefficients at D and d/dD
@@ -88,31 +98,27 @@ contains
       real(dp), intent(in), optional :: dslip_dd(2)       !! d(slip_old)/dD (mm), 0 if absent
 
       real(dp) :: kk_n, kk_t, sigma, tau(2), tau_norm, phi, kf, nvec(2), dgamma, ratio
-      real(dp) :: dtau_dd(2), dphi_dd, proj_dtau(2), n_dot
-      integer :: nt, i, j
+      real(dp) :: dtau_dd(2), dphi_dd, proj_dtau(2), n_dot, slip(2), dlam_dd(2)
+      real(dp) :: slip_scale, normal_scale, one_ratio, zero_ratio
 
       status = STATUS_OK
-      nt = ntens - 1
-      r%tangent = 0.0_dp
-      r%dlam_ds = 0.0_dp
-      r%dlam_dd = 0.0_dp
-      r%closed = .false.
       if (d <= 0.0_dp .or. c%dbar_n*s_n > 0.0_dp) then
          ! intact, or open crack: Sigma = C E, crack faces traction-free
+         r%closed = .false.
          r%traction(1) = c%k_n*s_n
-         r%traction(2:ntens) = c%k_t*st(1:nt)
-         r%tangent(1, 1) = c%k_n
-         do i = 2, ntens
-            r%tangent(i, i) = c%k_t
-         end do
+         r%traction(2:3) = c%k_t*st
+         call set_diagonal_tangent(c%k_n, c%k_t, ntens, r%tangent)
+         r%dlam_ds = 0.0_dp
+         r%dlam_dd = 0.0_dp
          r%dtrac_dd(1) = dc%k_n*s_n
-         r%dtrac_dd(2:ntens) = dc%k_t*st(1:nt)
+         r%dtrac_dd(2:3) = dc%k_t*st
          if (d <= 0.0_dp) then
             r%slip = slip_old
             r%regime = REGIME_INTACT
          else
-            r%slip = 0.0_dp
-            r%slip(1:nt) = c%dbar_t*st(1:nt)/c%ufbar
+            r%slip(1) = c%dbar_t*st(1)/c%ufbar
+            r%slip(2) = 0.0_dp
+            if (ntens == 3) r%slip(2) = c%dbar_t*st(2)/c%ufbar
             r%regime = REGIME_OPEN
          end if
          r%psi = 0.5_dp*(r%traction(1)*s_n + shear_work(r%traction, st, ntens))
@@ -128,14 +134,13 @@ contains
       kk_t = c%k_t + c%kc_t
       sigma = c%sc_n*s_n
       tau = c%tc_t*st + c%tf*slip_old
-      if (nt == 1) then
+      if (ntens == 2) then
          tau_norm = abs(tau(1))
       else
          tau_norm = sqrt(tau(1)**2 + tau(2)**2)
       end if
       phi = params%mu*sigma + tau_norm
       r%traction(1) = kk_n*s_n
-      r%tangent(1, 1) = kk_n
       r%dtrac_dd(1) = (dc%k_n + dc%kc_n)*s_n
       if (phi > 0.0_dp .and. tau_norm > 0.0_dp) then
          ! slip: return mapping along the trial crack shear stress, eqs 44-48
@@ -145,57 +150,108 @@ contains
             return
          end if
          ! (interphase_block forms the same products, bit for bit)
-         if (nt == 1) then
+         if (ntens == 2) then
             nvec = [sign(1.0_dp, tau(1)), 0.0_dp]
          else
             nvec = tau*(1.0_dp/max(tau_norm, tiny(1.0_dp)))
          end if
          dgamma = phi*(1.0_dp/kf)
-         r%slip = slip_old + dgamma*nvec
+         slip = slip_old + dgamma*nvec
+         r%slip = slip
          r%regime = REGIME_SLIP
-         ! d lambda/d s_T = (T^c_T/kf) [I + (mu sigma/|tau|)(I - n n)], d lambda/d s_N = (mu S^c_N/kf) n
-         ratio = params%mu*sigma/tau_norm
-         do j = 1, nt
-            do i = 1, nt
-               r%dlam_ds(i, 1 + j) = (c%tc_t/kf)*(merge(1.0_dp, 0.0_dp, i == j)*(1.0_dp + ratio) &
-                  - ratio*nvec(i)*nvec(j))
-            end do
-            r%dlam_ds(j, 1) = params%mu*c%sc_n/kf*nvec(j)
-         end do
+         r%traction(2:3) = kk_t*st + c%cf_t*slip
+         r%psi = closed_energy(c, d, s_n, st, ntens, r%traction, slip)
          ! d lambda/dD at fixed s
          dtau_dd = dc%tc_t*st + dc%tf*slip_old
          if (present(dslip_dd)) dtau_dd = dtau_dd + c%tf*dslip_dd
          n_dot = nvec(1)*dtau_dd(1) + nvec(2)*dtau_dd(2)
          dphi_dd = params%mu*dc%sc_n*s_n + n_dot
          proj_dtau = dtau_dd - n_dot*nvec
-         r%dlam_dd = (nvec*dphi_dd + (phi/tau_norm)*proj_dtau)/kf + dgamma*nvec*dc%tf/kf
-         if (present(dslip_dd)) r%dlam_dd = r%dlam_dd + dslip_dd
-         r%traction(2:ntens) = kk_t*st(1:nt) + c%cf_t*r%slip(1:nt)
-         do j = 1, ntens
-            r%tangent(2:ntens, j) = c%cf_t*r%dlam_ds(1:nt, j)
-         end do
-         do i = 2, ntens
-            r%tangent(i, i) = r%tangent(i, i) + kk_t
-         end do
-         r%dtrac_dd(2:ntens) = (dc%k_t + dc%kc_t)*st(1:nt) + dc%cf_t*r%slip(1:nt) + c%cf_t*r%dlam_dd(1:nt)
+         dlam_dd = (nvec*dphi_dd + (phi/tau_norm)*proj_dtau)/kf + dgamma*nvec*dc%tf/kf
+         if (present(dslip_dd)) dlam_dd = dlam_dd + dslip_dd
+         r%dlam_dd = dlam_dd
+         r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip + c%cf_t*dlam_dd
+         ! d lambda/d s_T = (T^c_T/kf) [I + (mu sigma/|tau|)(I - n n)], d lambda/d s_N = (mu S^c_N/kf) n:
+         ! entry (i, 1 + j) = (T^c_T/kf) (delta_ij (1 + ratio) - ratio n_i n_j), delta_ij (1 + ratio)
+         ! formed as 1 (1 + ratio) and 0 (1 + ratio)
+         ratio = params%mu*sigma/tau_norm
+         slip_scale = c%tc_t/kf
+         normal_scale = params%mu*c%sc_n/kf
+         one_ratio = 1.0_dp + ratio
+         zero_ratio = 0.0_dp*one_ratio
+         r%dlam_ds(1, 1) = normal_scale*nvec(1)
+         r%dlam_ds(1, 2) = slip_scale*(one_ratio - ratio*nvec(1)*nvec(1))
+         if (ntens == 2) then
+            r%dlam_ds(2, 1:2) = 0.0_dp
+            r%dlam_ds(:, 3) = 0.0_dp
+         else
+            r%dlam_ds(2, 1) = normal_scale*nvec(2)
+            r%dlam_ds(2, 2) = slip_scale*(zero_ratio - ratio*nvec(2)*nvec(1))
+            r%dlam_ds(1, 3) = slip_scale*(zero_ratio - ratio*nvec(1)*nvec(2))
+            r%dlam_ds(2, 3) = slip_scale*(one_ratio - ratio*nvec(2)*nvec(2))
+         end if
+         ! the tangent: row 1 kk_n e_1; rows 2:ntens C^f_T d lambda/ds + kk_t (0, I)
+         r%tangent(1, 1) = kk_n
+         r%tangent(2, 1) = c%cf_t*r%dlam_ds(1, 1)
+         r%tangent(1, 2) = 0.0_dp
+         r%tangent(2, 2) = c%cf_t*r%dlam_ds(1, 2) + kk_t
+         r%tangent(1, 3) = 0.0_dp
+         if (ntens == 2) then
+            r%tangent(3, 1:2) = 0.0_dp
+            r%tangent(2:3, 3) = 0.0_dp
+         else
+            r%tangent(3, 1) = c%cf_t*r%dlam_ds(2, 1)
+            r%tangent(3, 2) = c%cf_t*r%dlam_ds(2, 2)
+            r%tangent(2, 3) = c%cf_t*r%dlam_ds(1, 3)
+            r%tangent(3, 3) = c%cf_t*r%dlam_ds(2, 3) + kk_t
+         end if
       else
          ! stick
-         r%slip = slip_old
+         slip = slip_old
+         r%slip = slip
          r%regime = REGIME_STICK
-         r%traction(2:ntens) = kk_t*st(1:nt) + c%cf_t*slip_old(1:nt)
-         do i = 2, ntens
-            r%tangent(i, i) = kk_t
-         end do
-         r%dtrac_dd(2:ntens) = (dc%k_t + dc%kc_t)*st(1:nt) + dc%cf_t*slip_old(1:nt)
+         r%traction(2:3) = kk_t*st + c%cf_t*slip_old
+         r%psi = closed_energy(c, d, s_n, st, ntens, r%traction, slip)
+         call set_diagonal_tangent(kk_n, kk_t, ntens, r%tangent)
+         r%dlam_ds = 0.0_dp
          if (present(dslip_dd)) then
             r%dlam_dd = dslip_dd
-            r%dtrac_dd(2:ntens) = r%dtrac_dd(2:ntens) + c%cf_t*dslip_dd(1:nt)
+            r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip_old + c%cf_t*dslip_dd
+         else
+            r%dlam_dd = 0.0_dp
+            r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip_old
          end if
       end if
-      r%psi = 0.5_dp*(r%traction(1)*s_n + shear_work(r%traction, st, ntens)) &
-         + 0.5_dp*c%cf_t*(r%slip(1)*st(1) + r%slip(2)*st(2)) &
-         - 0.5_dp*d*c%tf*c%ufbar*(r%slip(1)**2 + r%slip(2)**2)
    end subroutine respond
+
+   !> The closed crack's stored energy psi = 1/2 t.s + 1/2 C^f_T lambda.s_T - 1/2 D T^f ufbar
+   !> |lambda|^2 (N/mm; docs/theory.md), formed as interphase_block forms it.
+   pure real(dp) function closed_energy(c, d, s_n, st, ntens, traction, slip) result(psi)
+      type(coefficient_set_type), intent(in) :: c         !! coefficients at D
+      real(dp), intent(in) :: d                           !! damage D (-)
+      real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
+      integer, intent(in) :: ntens
+      real(dp), intent(in) :: traction(3)                 !! t (MPa)
+      real(dp), intent(in) :: slip(2)                     !! lambda (mm)
+      psi = 0.5_dp*(traction(1)*s_n + shear_work(traction, st, ntens)) &
+         + 0.5_dp*c%cf_t*(slip(1)*st(1) + slip(2)*st(2)) &
+         - 0.5_dp*d*c%tf*c%ufbar*(slip(1)**2 + slip(2)**2)
+   end function closed_energy
+
+   !> tangent = diag(a, b, b) in 3-D, diag(a, b, 0) in 2-D (zeros elsewhere).
+   pure subroutine set_diagonal_tangent(a, b, ntens, tangent)
+      real(dp), intent(in) :: a, b                        !! normal and shear stiffness (MPa/mm)
+      integer, intent(in) :: ntens
+      real(dp), intent(out) :: tangent(3, 3)              !! (MPa/mm)
+      tangent(1, 1) = a
+      tangent(2:3, 1) = 0.0_dp
+      tangent(1, 2) = 0.0_dp
+      tangent(2, 2) = b
+      tangent(3, 2) = 0.0_dp
+      tangent(1:2, 3) = 0.0_dp
+      tangent(3, 3) = 0.0_dp
+      if (ntens == 3) tangent(3, 3) = b
+   end subroutine set_diagonal_tangent
 
    !> The shear part t_T.s_T of the work t.s (N/mm), formed as interphase_block forms it:
    !> t_T1 s_T1 + 0 in 2-D, t_T1 s_T1 + t_T2 s_T2 in 3-D (written out: a SUM over a run-time
