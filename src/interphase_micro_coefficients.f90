@@ -25,7 +25,7 @@ module interphase_micro_coefficients
       DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS
    implicit none
    private
-   public :: micro_coefficients, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded, &
+   public :: micro_coefficients, micro_ufbar, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded, &
       check_interpolant, default_table_data, micro_block_coefficients
 
    !> Points per interval between two rows at which `check_interpolant` evaluates the interpolant.
@@ -101,23 +101,9 @@ contains
       end if
       call crack_variable(variable, d, x, dx_dd, d2x_dd2)
       if (present(guide)) then
-         ! cubic_locate's checks, then the interval from the guide: the guide's interval for x's
-         ! cell, then guide_steps forward comparisons (guide_build); and cubic_eval's Horner
-         ! form, here where the loop knows its columns and the data's unit strides
-         if (.not. is_finite(x)) then
-            status = STATUS_SPLINE_NONFINITE_ARGUMENT
-            return
-         else if (x < knots(1) .or. x > knots(size(knots))) then
-            status = STATUS_SPLINE_OUT_OF_RANGE
-            return
-         end if
-         status = STATUS_OK
-         interval = guide(min(size(guide), max(1, int((x - knots(1))*guide_scale) + 1)))
-         do k = 1, guide_steps
-            candidate = min(interval + 1, size(knots) - 1)
-            interval = merge(candidate, interval, x >= knots(candidate))
-         end do
-         t = x - knots(interval)
+         ! the interval from the guide, and cubic_eval's Horner form, here where the loop knows
+         ! its columns and the data's unit strides
+         include 'interphase_guided_interval.inc'
          if (present(d2coef_dd2)) then
             do j = 1, N_COEFFICIENTS
                v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
@@ -163,6 +149,50 @@ contains
          d2coef_dd2 = as_set(d2v, d2tf)
       end if
    end subroutine table_coefficients
+
+   !> ufbar(D) alone, for the slip measure m = D ufbar (interphase_response): the column IC_UFBAR
+   !> of micro_coefficients' set, at the same interval in the same Horner form, so the same
+   !> number bit for bit, and the same statuses; one cubic instead of the set.
+   pure subroutine micro_ufbar(table, d, ufbar, status)
+      integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
+      real(dp), intent(in) :: d                              !! damage D = a/b
+      real(dp), intent(out) :: ufbar                         !! ufbar(D) (-)
+      integer, intent(out) :: status
+      if (table == TABLE_CUSTOM_CODE) then
+         if (.not. allocated(custom_coef)) then
+            status = STATUS_TABLE_NOT_LOADED
+            return
+         end if
+         call table_ufbar(custom_variable, custom_knots, custom_coef, custom_guide, custom_guide_scale, &
+            custom_guide_steps, d, ufbar, status)
+      else
+         call table_ufbar(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_GUIDE, &
+            DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS, d, ufbar, status)
+      end if
+   end subroutine micro_ufbar
+
+   !> table_coefficients' value of the column IC_UFBAR (its guided path).
+   pure subroutine table_ufbar(variable, knots, coef_table, guide, guide_scale, guide_steps, d, ufbar, status)
+      integer, intent(in) :: variable                        !! VARIABLE_* of the knots
+      real(dp), contiguous, intent(in) :: knots(:)           !! knots, ascending
+      real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)
+      integer, intent(in) :: guide(:)
+      real(dp), intent(in) :: guide_scale
+      integer, intent(in) :: guide_steps
+      real(dp), intent(in) :: d
+      real(dp), intent(out) :: ufbar
+      integer, intent(out) :: status
+      real(dp) :: x, dx_dd, d2x_dd2, t
+      integer :: interval, candidate, k
+      if (d > 0.0_dp .and. d < D_MIN_CRACK) then
+         status = STATUS_BAD_COEFFICIENTS
+         return
+      end if
+      call crack_variable(variable, d, x, dx_dd, d2x_dd2)
+      include 'interphase_guided_interval.inc'
+      ufbar = coef_table(IC_UFBAR, 0, interval) + t*(coef_table(IC_UFBAR, 1, interval) &
+         + t*(coef_table(IC_UFBAR, 2, interval) + t*coef_table(IC_UFBAR, 3, interval)))
+   end subroutine table_ufbar
 
    !> The coefficients at n damages D(1:n) from the selected table, values only (no derivatives):
    !> the vectorised block update's provider (interphase_block). Each value is bit for bit what

@@ -12,11 +12,11 @@ module interphase_provider
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
       STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
-   use interphase_micro_coefficients, only: micro_coefficients, custom_table_loaded
+   use interphase_micro_coefficients, only: micro_coefficients, micro_ufbar, custom_table_loaded
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    implicit none
    private
-   public :: coefficients_at, check_run_time_data
+   public :: coefficients_at, ufbar_at, check_run_time_data
 
 contains
 
@@ -38,6 +38,24 @@ contains
          status = STATUS_MODEL_UNAVAILABLE
       end select
    end subroutine coefficients_at
+
+   !> ufbar(D) alone (-), the number coefficients_at's set holds (bit for bit), for the slip
+   !> measure m = D ufbar; the same statuses.
+   pure subroutine ufbar_at(params, d, ufbar, status)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d                                   !! damage D = a/b
+      real(dp), intent(out) :: ufbar
+      integer, intent(out) :: status
+      select case (params%model)
+      case (MODEL_SIMPLIFIED)
+         ufbar = SIMPLIFIED_UFBAR
+         status = STATUS_OK
+      case (MODEL_MICROMECHANICAL)
+         call micro_ufbar(params%table, d, ufbar, status)
+      case default
+         status = STATUS_MODEL_UNAVAILABLE
+      end select
+   end subroutine ufbar_at
 
    !> STATUS_OK when the data `params` needs at run time is loaded; else STATUS_TABLE_NOT_LOADED
    !> (micromechanical model on the custom table) or STATUS_RCURVE_NOT_LOADED (fracture law with

@@ -4,11 +4,10 @@
 module interphase_response
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
-   use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
-      MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL
+   use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
-   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
-   use interphase_provider, only: coefficients_at
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
+   use interphase_provider, only: ufbar_at
    implicit none
    private
    public :: response_type, respond, growth_trial_slip, slip_measure, contact_band_shape, band_stiffness
@@ -36,17 +35,13 @@ contains
       real(dp), intent(in) :: d                           !! damage D (-)
       real(dp), intent(out) :: m                          !! m(D) (-)
       integer, intent(out) :: status
-      type(coefficient_set_type) :: c, dc
+      real(dp) :: ufbar
       status = STATUS_OK
       m = 0.0_dp
       if (.not. (d > 0.0_dp)) return
-      if (params%model == MODEL_SIMPLIFIED) then
-         ! (ufbar is a constant: no coefficient set to evaluate)
-         m = d*SIMPLIFIED_UFBAR
-         return
-      end if
-      call coefficients_at(params, d, c, dc, status)
-      if (status == STATUS_OK) m = d*c%ufbar
+      ! (ufbar alone: the one coefficient m needs, not the set)
+      call ufbar_at(params, d, ufbar, status)
+      if (status == STATUS_OK) m = d*ufbar
    end subroutine slip_measure
 
    !> The slip from which the friction step at damage D starts, for a crack that has grown from
