@@ -57,38 +57,8 @@ contains
       end select
    end subroutine ufbar_at
 
-   !> STATUS_OK when the data `params` needs at run time is loaded; else STATUS_TABLE_NOT_LOADED
-   !> (micromechanical model on the custom table) or STATUS_RCURVE_NOT_LOADED (fracture law with
-   !> the tabulated R-curve), with a message that says how to load it, or
-   !> STATUS_RCURVE_OUT_OF_RANGE when the loaded R-curve does not cover D0 (naming file and D0). Called by the UMAT at every
-   !> update: two integer tests when all is well (`message` is then left alone, not blanked).
-   pure subroutine check_run_time_data(params, status, message)
-      type(law_params_type), intent(in) :: params
-      integer, intent(out) :: status
-      character(len=MESSAGE_LEN), intent(inout) :: message
-      integer :: ios
-      status = STATUS_OK
-      if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_CUSTOM_CODE) then
-         if (.not. custom_table_loaded()) then
-            status = STATUS_TABLE_NOT_LOADED
-            write (message, '(a,i0,a)') 'PROPS(', PROP_TABLE, ') = 1 selects the custom RVE table, but none was '// &
-               'loaded at start-up: set INTERPHASE_TABLE to the table file and link uexternaldb (Abaqus/Standard) '// &
-               'or vexternaldb (Abaqus/Explicit), docs/abaqus.md'
-            return
-         end if
-      end if
-      if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) then
-         if (.not. rcurve_loaded()) then
-            status = STATUS_RCURVE_NOT_LOADED
-            message = 'the R-curve selector 3 selects the tabulated R-curve, but none was loaded at start-up: '// &
-               'set INTERPHASE_RCURVE to the R-curve file and link uexternaldb (Abaqus/Standard) or vexternaldb '// &
-               '(Abaqus/Explicit), docs/abaqus.md'
-         else if (.not. rcurve_covers(params%d0)) then
-            status = STATUS_RCURVE_OUT_OF_RANGE
-            write (message, '(a,a,a)', iostat=ios) rcurve_coverage(), ', not the initial crack D0 = ', real_text(params%d0, 6)
-         end if
-      end if
-   end subroutine check_run_time_data
+   ! (the source is shared with the UMAT, which includes it where it can be inlined)
+   include 'interphase_run_time_data.inc'
 
    ! the simplified model's coefficients, here where `coefficients_at` inlines them
    ! (interphase_coefficients' public one, from the same source)
