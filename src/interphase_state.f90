@@ -11,6 +11,9 @@ module interphase_state
    implicit none
    private
    public :: interface_state_type, state_unpack, state_pack, unpack_statev, pack_statev, count_invalid_states, state_slots
+   ! (the bit-pattern constants below are public for the STATEV reader's second copy, in the
+   ! UMAT: interphase_statev.inc)
+   public :: ONE_BITS, SLIP_MAX_BITS, SIGN_BIT, REGIME_BITS
 
    !> Bit pattern of 1.0_dp.
    integer(int64), parameter :: ONE_BITS = int(z'3FF0000000000000', int64)
@@ -53,60 +56,10 @@ contains
       call unpack_statev(size(statev), statev, ntens, with_inviscid, state, status, message)
    end subroutine state_unpack
 
-   !> `state_unpack` for a STATEV array of explicit size NSTATV, assigning every component of
-   !> `state` (so that a caller's variable is neither default-initialised again nor passed with
-   !> a descriptor: the UMAT's entry).
-   pure subroutine unpack_statev(nstatv, statev, ntens, with_inviscid, state, status, message)
-      integer, intent(in) :: nstatv                      !! NSTATV
-      real(dp), intent(in) :: statev(nstatv)             !! STATEV as given by the host
-      integer, intent(in) :: ntens                       !! 2 (2-D) or 3 (3-D)
-      logical, intent(in) :: with_inviscid               !! read STATEV(SV_DAMAGE_INVISCID) too
-      type(interface_state_type), intent(inout) :: state !! (undefined on failure)
-      integer, intent(out) :: status
-      character(len=MESSAGE_LEN), intent(out) :: message
-      integer :: needed
-
-      status = STATUS_OK
-      needed = merge(NSTATV_VISCOUS, NSTATV_REQUIRED, with_inviscid)
-      if (nstatv < needed) then
-         status = STATUS_BAD_NSTATV
-         write (message, '(a,i0,a,i0,a)') 'NSTATV = ', nstatv, &
-            ' but interphase needs at least ', needed, trim(merge(' (viscous regularisation)', '                         ', &
-            with_inviscid))
-         return
-      end if
-      state%d = statev(SV_DAMAGE)
-      state%slip(1) = statev(SV_SLIP_1)
-      state%slip(2) = 0.0_dp
-      if (ntens == 3) state%slip(2) = statev(SV_SLIP_2)
-      state%regime = regime_code(binary64_bits(statev(SV_REGIME)))
-      if (damage_admissible(binary64_bits(state%d)) == 0) then
-         status = STATUS_BAD_STATE
-         write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE, ') D = ', state%d, &
-            ' must lie in [0, 1]'
-      else if (slip_admissible(binary64_bits(state%slip(1)))*slip_admissible(binary64_bits(state%slip(2))) == 0) then
-         status = STATUS_BAD_STATE
-         write (message, '(a,i0,a,i0,a,2es12.4,a,es8.1,a)') 'STATEV(', SV_SLIP_1, ':', SV_SLIP_2, &
-            ') slip = ', state%slip, ' is not finite or exceeds |lambda_i| <= ', SLIP_MAX, ' mm'
-      else if (state%regime < REGIME_INTACT) then
-         status = STATUS_BAD_STATE
-         write (message, '(a,i0,a,es12.5,a)') 'STATEV(', SV_REGIME, ') regime = ', &
-            statev(SV_REGIME), ' is not a regime code 0..3'
-      end if
-      state%d_inviscid = state%d
-      if (status /= STATUS_OK .or. .not. with_inviscid) return
-      state%d_inviscid = statev(SV_DAMAGE_INVISCID)
-      ! D_v <= D <= 1 (the regularised damage never overtakes the damage law's)
-      if (damage_admissible(binary64_bits(state%d_inviscid)) == 0) then
-         status = STATUS_BAD_STATE
-      else if (state%d_inviscid < state%d) then
-         status = STATUS_BAD_STATE
-      end if
-      if (status /= STATUS_OK) write (message, '(a,i0,a,es12.5,a,i0,a,es12.5,a)') 'STATEV(', SV_DAMAGE_INVISCID, &
-         ') D = ', state%d_inviscid, ' must lie in [STATEV(', SV_DAMAGE, ') = ', state%d, ', 1]'
-   end subroutine unpack_statev
-
    include 'interphase_binary64_bits.inc'
+   ! (the STATEV reader and writer: the source is shared with the UMAT, which includes it where
+   ! it can be inlined)
+   include 'interphase_statev.inc'
 
    !> Number of STATEV slots a material's state takes: NSTATV_REQUIRED, or NSTATV_VISCOUS with
    !> viscous regularisation.
@@ -140,21 +93,6 @@ contains
       nbad = int(nbad_bits)
    end function count_invalid_states
 
-   !> 1 when the binary64 number of bit pattern b lies in [0, 1] (-0 included), else 0 (integer
-   !> operations only: no exception for NaN).
-   elemental integer(int64) function damage_admissible(b)
-      integer(int64), intent(in) :: b
-      damage_admissible = max(merge(1_int64, 0_int64, b >= 0_int64 .and. b <= ONE_BITS), &
-         merge(1_int64, 0_int64, ibclr(b, SIGN_BIT) == 0_int64))
-   end function damage_admissible
-
-   !> 1 when the binary64 number x of bit pattern b is finite with |x| <= SLIP_MAX, else 0 (integer
-   !> operations only: no exception for NaN).
-   elemental integer(int64) function slip_admissible(b)
-      integer(int64), intent(in) :: b
-      slip_admissible = merge(1_int64, 0_int64, ibclr(b, SIGN_BIT) <= SLIP_MAX_BITS)
-   end function slip_admissible
-
    !> 1 when bit pattern b is exactly the real number of a REGIME_* code, else 0.
    elemental integer(int64) function regime_known(b)
       integer(int64), intent(in) :: b
@@ -164,17 +102,6 @@ contains
          regime_known = regime_known + merge(1_int64, 0_int64, b == REGIME_BITS(candidate))
       end do
    end function regime_known
-
-   !> The regime code c when bit pattern b is exactly the real number c of a REGIME_* code, else
-   !> -1 (no exception for NaN or a fraction, no branch).
-   elemental integer function regime_code(b) result(code)
-      integer(int64), intent(in) :: b
-      integer :: candidate
-      code = -1
-      do candidate = REGIME_INTACT, REGIME_SLIP
-         code = code + merge(candidate + 1, 0, b == REGIME_BITS(candidate))
-      end do
-   end function regime_code
 
    !> Store the state into STATEV (slots beyond NSTATV_REQUIRED, or NSTATV_VISCOUS with `viscous`,
    !> are left alone).
@@ -187,18 +114,5 @@ contains
       if (present(viscous)) with_inviscid = viscous
       call pack_statev(state, statev, with_inviscid)
    end subroutine state_pack
-
-   !> `state_pack` into an explicit-shape STATEV (no descriptor at the UMAT's call).
-   pure subroutine pack_statev(state, statev, with_inviscid)
-      type(interface_state_type), intent(in) :: state
-      !> STATEV, size >= NSTATV_REQUIRED (NSTATV_VISCOUS with_inviscid)
-      real(dp), intent(inout) :: statev(*)
-      logical, intent(in) :: with_inviscid               !! write STATEV(SV_DAMAGE_INVISCID) too
-      statev(SV_DAMAGE) = state%d
-      statev(SV_SLIP_1) = state%slip(1)
-      statev(SV_SLIP_2) = state%slip(2)
-      statev(SV_REGIME) = real(state%regime, dp)
-      if (with_inviscid) statev(SV_DAMAGE_INVISCID) = state%d_inviscid
-   end subroutine pack_statev
 
 end module interphase_state

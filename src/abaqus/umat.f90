@@ -35,13 +35,15 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_real_text, only: real_text, es_fields
    use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
-      STATUS_BAD_TIME_INCREMENT, STATUS_BAD_NTENS, STATUS_BAD_OPTION, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED
-   use interphase_params, only: law_params_type, decode_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX
+      STATUS_BAD_TIME_INCREMENT, STATUS_BAD_NTENS, STATUS_BAD_OPTION, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
+      STATUS_BAD_STATE, STATUS_BAD_NSTATV
+   use interphase_params, only: law_params_type, decode_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX, SLIP_MAX
    use interphase_layer, only: layer_map_type
    use interphase_layout, only: HOST_CALCULIX, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, NPROPS_FRACTURE_EXTRA, &
       OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, MODEL_MICROMECHANICAL, DAMAGE_FRACTURE, PROP_TABLE, TABLE_CUSTOM_CODE, &
-      RCURVE_TABULATED
-   use interphase_state, only: interface_state_type, unpack_statev, pack_statev
+      RCURVE_TABULATED, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, NSTATV_REQUIRED, &
+      NSTATV_VISCOUS, REGIME_INTACT, REGIME_SLIP
+   use interphase_state, only: interface_state_type, ONE_BITS, SLIP_MAX_BITS, SIGN_BIT, REGIME_BITS
    use interphase_kernel, only: update_point
    use interphase_rcurve, only: rcurve_coverage, rcurve_loaded, rcurve_covers
    use interphase_micro_coefficients, only: custom_table_loaded
@@ -199,12 +201,14 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
 
 contains
 
-   ! the range tests of the host's values, the components' map and the run-time data check, here
-   ! where the compiler inlines them (interphase_finite's tests, interphase_layer's map and
-   ! interphase_provider's check, from the same source)
+   ! the range tests of the host's values, the components' map, the run-time data check and the
+   ! STATEV reader and writer, here where the compiler inlines them (interphase_finite's tests,
+   ! interphase_layer's map, interphase_provider's check and interphase_state's reader, from the
+   ! same source)
    include 'interphase_binary64_bits.inc'
    include 'interphase_within.inc'
    include 'interphase_layer_map.inc'
    include 'interphase_run_time_data.inc'
+   include 'interphase_statev.inc'
 
 end subroutine umat
