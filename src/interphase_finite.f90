@@ -30,11 +30,7 @@ contains
 
    include 'interphase_binary64_bits.inc'
 
-   !> True when x is neither NaN nor +-Inf.
-   elemental logical function is_finite(x)
-      real(dp), intent(in) :: x
-      is_finite = iand(binary64_bits(x), EXPONENT_MASK) /= EXPONENT_MASK
-   end function is_finite
+   include 'interphase_is_finite.inc'
 
    include 'interphase_within.inc'
 

@@ -9,17 +9,17 @@
 module interphase_micro_coefficients
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
-   use interphase_logarithm, only: ln_positive_block
+   use interphase_logarithm, only: ln_positive, ln_positive_block
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
       STATUS_TABLE_INTERPOLANT, status_message, message_path, STATUS_SPLINE_OUT_OF_RANGE, &
       STATUS_SPLINE_NONFINITE_ARGUMENT
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
-   use interphase_finite, only: is_finite
+   use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
    use interphase_spline, only: spline_type, spline_build, spline_export, &
       cubic_locate, cubic_eval, guide_build
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
-      interpolation_data, crack_variable, N_COEFFICIENTS, TABLE_SPLINE_METHOD, VARIABLE_DAMAGE, IC_K_N, IC_K_T, &
+      interpolation_data, N_COEFFICIENTS, TABLE_SPLINE_METHOD, VARIABLE_DAMAGE, IC_K_N, IC_K_T, &
       IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_CF_T, IC_DTF, IC_UFBAR
    use interphase_default_table, only: DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_SOURCE, &
       DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS
@@ -45,6 +45,13 @@ module interphase_micro_coefficients
    character(len=:), allocatable, protected :: custom_source
 
 contains
+
+   ! the crack variable's finiteness test, here where the compiler inlines it (interphase_finite's,
+   ! from the same source)
+   include 'interphase_binary64_bits.inc'
+   include 'interphase_is_finite.inc'
+   ! (the interpolation variable, from interphase_rve_table's source)
+   include 'interphase_crack_variable.inc'
 
    !> Coefficients at D from the selected table (TABLE_DEFAULT_CODE or TABLE_CUSTOM_CODE).
    pure subroutine micro_coefficients(table, d, coef, dcoef_dd, status, d2coef_dd2)

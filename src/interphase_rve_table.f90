@@ -629,30 +629,9 @@ contains
       beta = (g_m*(k_b - 1.0_dp) - g_b*(k_m - 1.0_dp))/(g_m*(k_b + 1.0_dp) + g_b*(k_m + 1.0_dp))
    end function dundurs_beta
 
-   !> The interpolation variable x(D), dx/dD and d2x/dD2: VARIABLE_DAMAGE x = D; VARIABLE_LOG_LIGAMENT
-   !> x = w = 1/(1 - ln(1 - D)), dw/dD = -w^2/(1 - D), d2w/dD2 = (2w^3 - w^2)/(1 - D)^2 (both
-   !> returned as 0 at D = 1, where they are infinite and never used: damage no longer grows).
-   elemental subroutine crack_variable(variable, d, x, dx_dd, d2x_dd2)
-      integer, intent(in) :: variable     !! VARIABLE_*
-      real(dp), intent(in) :: d           !! damage D = a/b, 0 <= D <= 1
-      real(dp), intent(out) :: x          !! the interpolation variable at D
-      real(dp), intent(out) :: dx_dd      !! dx/dD
-      real(dp), intent(out) :: d2x_dd2    !! d2x/dD2
-      if (variable == VARIABLE_DAMAGE) then
-         x = d
-         dx_dd = 1.0_dp
-         d2x_dd2 = 0.0_dp
-      else if (d >= 1.0_dp) then
-         x = 0.0_dp
-         dx_dd = 0.0_dp
-         d2x_dd2 = 0.0_dp
-      else
-         ! (ln_positive, not the intrinsic: the block update's vectorised loops compute the same bits)
-         x = 1.0_dp/(1.0_dp - ln_positive(1.0_dp - d))
-         dx_dd = -x*x/(1.0_dp - d)
-         d2x_dd2 = (2.0_dp*x - 1.0_dp)*x*x/(1.0_dp - d)**2
-      end if
-   end subroutine crack_variable
+   ! (the source is shared with interphase_micro_coefficients, which includes it where it can be
+   ! inlined)
+   include 'interphase_crack_variable.inc'
 
    !> Split a line at blanks (spaces, tabs) into fields text(starts(i):ends(i)); nfields counts
    !> them all, but only the first size(starts) are stored.
