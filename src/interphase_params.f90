@@ -91,6 +91,9 @@ module interphase_params
       real(dp) :: inv_s0_t_sq = 0.0_dp               !! 1/s0_T^2 (1/mm^2), for the damage law
    end type law_params_type
 
+   !> The type's default components (those decode_props writes for a law that does not set them).
+   type(law_params_type), parameter :: DEFAULT_PARAMS = law_params_type()
+
 contains
 
    !> Decode and validate an Abaqus PROPS array. On failure `params` is undefined, `status`
@@ -176,10 +179,10 @@ contains
          if (status /= STATUS_OK) return
       else
          ! (the type's defaults, written here: params is not default-initialised on entry)
-         params%d0 = 0.0_dp
-         params%rcurve = 0
-         params%gc_i = 0.0_dp
-         params%gc_ii = 0.0_dp
+         params%d0 = DEFAULT_PARAMS%d0
+         params%rcurve = DEFAULT_PARAMS%rcurve
+         params%gc_i = DEFAULT_PARAMS%gc_i
+         params%gc_ii = DEFAULT_PARAMS%gc_ii
       end if
       if (nprops > nprops_needed) then
          call decode_options(params, nprops - nprops_needed, props(nprops_needed + 1), nprops_needed, status, message)

@@ -112,7 +112,7 @@ contains
       logical :: with_inviscid
       with_inviscid = .false.
       if (present(viscous)) with_inviscid = viscous
-      call pack_statev(state, statev, with_inviscid)
+      call pack_statev(state, size(statev), statev, with_inviscid)
    end subroutine state_pack
 
 end module interphase_state

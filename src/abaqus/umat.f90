@@ -192,7 +192,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
             end do
          end do
       end if
-      call pack_statev(new, statev, params%viscosity > 0.0_dp)
+      call pack_statev(new, nstatv, statev, params%viscosity > 0.0_dp)
       return
    end block update
 

@@ -42,14 +42,14 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       enerinelasnew)
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
-      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID, NSTATV_SHARED
+      SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID, NSTATV_SHARED, NSTATV_VISCOUS
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_RCURVE_OUT_OF_RANGE, status_message, STATUS_BAD_HOST_INPUT
    use interphase_finite, only: is_within
    use interphase_real_text, only: real_text
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_params, only: law_params_type, from_props, refuse_umat_options
-   use interphase_state, only: interface_state_type, state_unpack, state_pack, count_invalid_states, state_slots
+   use interphase_state, only: interface_state_type, unpack_statev, pack_statev, count_invalid_states, state_slots
    use interphase_kernel, only: update_point
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
@@ -102,7 +102,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    logical :: ok(CHUNK)
    real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei_old, ep_old
    logical :: ok_host
-   real(dp) :: s_point(3)
+   real(dp) :: s_point(3), sv(NSTATV_VISCOUS)
    real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
    logical :: blocked, packaging, uniform_density, viscous, bad_state
    integer :: nsv   !! STATEV slots of the state (state_slots)
@@ -190,19 +190,21 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          end if
          ! (in 2-D the slip-2 column is not looked at: slip 1 stands in, so that it is not read)
          ! (with viscous regularisation the point update reads STATEV(SV_DAMAGE_INVISCID) too: every
-         ! point is checked by state_unpack then)
+         ! point is checked by unpack_statev then)
          bad_state = count_invalid_states(n, nt, stateold(k0:k1, SV_DAMAGE), stateold(k0:k1, SV_SLIP_1), &
             stateold(k0:k1, SV_SLIP_1 + nt - 1), stateold(k0:k1, SV_REGIME)) > 0
          if (viscous .and. .not. bad_state) then
             do km = k0, k1
-               call state_unpack(stateold(km, 1:nsv), ntens, old, status, message, viscous)
+               sv(1:nsv) = stateold(km, 1:nsv)
+               call unpack_statev(nsv, sv, ntens, viscous, old, status, message)
                if (status /= STATUS_OK) bad_state = .true.
                if (bad_state) exit
             end do
          end if
          if (bad_state) then
             do km = k0, k1
-               call state_unpack(stateold(km, 1:nsv), ntens, old, status, message, viscous)
+               sv(1:nsv) = stateold(km, 1:nsv)
+               call unpack_statev(nsv, sv, ntens, viscous, old, status, message)
                if (status /= STATUS_OK) exit
             end do
             write (first_message, '(a,i0,a,a)') 'block point ', km, ': ', trim(message)
@@ -276,7 +278,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             do k = 1, n
                km = k0 + k - 1
                ! checked above, cannot fail here
-               call state_unpack(stateold(km, 1:nsv), ntens, old, status, message, viscous)
+               sv(1:nsv) = stateold(km, 1:nsv)
+               call unpack_statev(nsv, sv, ntens, viscous, old, status, message)
                s_point(1:ntens) = statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1)
                call update_point(params, old, ntens, s_point, traction, tangent, new, psi(k), status, dt)
                if (status == STATUS_RCURVE_OUT_OF_RANGE) then
@@ -295,7 +298,10 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   psi(k) = 0.0_dp
                end if
                stressnew(km, 1:ntens) = traction(1:ntens)
-               call state_pack(new, statenew(km, 1:nsv), viscous)
+               ! (through a contiguous copy: a row of the block is strided)
+               sv(1:nsv) = statenew(km, 1:nsv)
+               call pack_statev(new, nsv, sv, viscous)
+               statenew(km, 1:nsv) = sv(1:nsv)
             end do
          end if
 
@@ -304,7 +310,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                first_failed = k0 - 1 + findloc(ok(1:n), .false., dim=1)
                ! the block update reports no status: the point update on that point says why
                if (blocked) then
-                  call state_unpack(stateold(first_failed, 1:nsv), ntens, old, status, message, viscous)
+                  sv(1:nsv) = stateold(first_failed, 1:nsv)
+                  call unpack_statev(nsv, sv, ntens, viscous, old, status, message)
                   s_point(1:ntens) = statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
                   call update_point(params, old, ntens, s_point, traction, tangent, new, psi_old, first_status, dt)
                end if
