@@ -18,8 +18,9 @@
 #     mixed history) in DIR/callgrind, the no-LTO build for -march=x86-64-v2 (valgrind 3.19 does
 #     not decode every AVX instruction a -march=native build may use), if valgrind is installed;
 #   - the UMAT in the one-file Abaqus/Standard source (make-user-file.sh) compiled alone with
-#     -O3 and no LTO, as docs/abaqus.md recommends, and linked with the benchmark driver: best ns
-#     per call (-march=native) and instructions per call (callgrind, -march=x86-64-v2);
+#     -O3, the inlining limits and no LTO, as docs/abaqus.md recommends, and linked with the
+#     benchmark driver: best ns per call (-march=native) and instructions per call (callgrind,
+#     -march=x86-64-v2);
 #   - instructions per VUMAT point (callgrind, nblock = 4096, 4096 points x 140 increments):
 #     vumat_ and the plain copy of its arrays, in the one-file Abaqus/Explicit source
 #     (examples/abaqus/make-user-file.sh --explicit) compiled as docs/abaqus.md recommends, with
@@ -79,6 +80,9 @@ echo "interphase bench-ratios: $(date -u '+%Y-%m-%d %H:%M UTC'), commit $commit,
 "$rel/drivers/interphase-bench" "$calls" 5 >"$work/umat-lto.txt"
 "$nolto/drivers/interphase-bench" "$calls" 5 >"$work/umat-nolto.txt"
 
+# The one-file sources are compiled with the flags docs/abaqus.md recommends for gfortran, the
+# CMake Release build's inlining limits included.
+onefile_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200"
 # the UMAT in the one-file Abaqus/Standard source (make-user-file.sh), compiled ALONE with -O3
 # and without LTO as docs/abaqus.md recommends, linked with the benchmark driver: the build an
 # Abaqus/Standard host makes. Built twice: -march=native for the wall clock, -march=x86-64-v2
@@ -91,7 +95,8 @@ onefile_umat() {
          '   integer, intent(in) :: lop, intv(*)' '   character(len=*), intent(in) :: string' \
          '   double precision, intent(in) :: realv(*)' '   character(len=8), intent(in) :: charv(*)' \
          'end subroutine stdb_abqerr' >stub.f90 \
-      && gfortran -O3 -march="$arch" -fno-trapping-math -ffp-contract=off -frecursive -c standard.f90 \
+      && gfortran -O3 -march="$arch" -fno-trapping-math -ffp-contract=off -frecursive $onefile_inline \
+         -c standard.f90 \
       && gfortran -O2 -fno-inline -c stub.f90 \
       && gfortran -O2 -c "$here/drivers/interphase_driver_text.f90" "$nolto/drivers/interphase_driver_version.f90" \
       && gfortran -O2 -c "$here/drivers/interphase_driver_cli.f90" \
@@ -134,7 +139,7 @@ if command -v valgrind >/dev/null 2>&1 && [ -x "$cgtree/drivers/interphase-bench
          '   integer, intent(in) :: lop, intv(*)' '   character(len=*), intent(in) :: string' \
          '   double precision, intent(in) :: realv(*)' '   character(len=8), intent(in) :: charv(*)' \
          'end subroutine xplb_abqerr' >stub.f90 \
-      && gfortran -O3 -march=x86-64-v3 -fno-trapping-math -ffp-contract=off -c explicit.f90 \
+      && gfortran -O3 -march=x86-64-v3 -fno-trapping-math -ffp-contract=off -frecursive $onefile_inline -c explicit.f90 \
       && gfortran -O2 -fno-inline -c stub.f90 "$here/tests/threads/bench_vumat.f90" \
       && gfortran -o bench-vumat-explicit bench_vumat.o explicit.o stub.o -llapack) >"$work/explicit.log" 2>&1
    if [ -x "$work/bench-vumat-explicit" ]; then
