@@ -298,8 +298,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   psi(k) = 0.0_dp
                end if
                stressnew(km, 1:ntens) = traction(1:ntens)
-               ! (through a contiguous copy: a row of the block is strided)
-               sv(1:nsv) = statenew(km, 1:nsv)
+               ! (through a contiguous copy: a row of the block is strided; pack_statev writes
+               ! every one of the nsv slots, the damage law's D exactly when viscous)
                call pack_statev(new, nsv, sv, viscous)
                statenew(km, 1:nsv) = sv(1:nsv)
             end do
