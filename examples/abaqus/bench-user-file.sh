@@ -7,8 +7,9 @@
 # flags (as Abaqus compiles a user subroutine; gfortran, or $FC: LLVM flang too), links it with the driver
 # bench_user_file.f90 (one block of 4096 points in the L2 cache, 2000 increments of a cyclic shear
 # under compression, best of 5 runs) and LAPACK, and prints ns per point update for each set.
-# Default flag sets: the recommended one (docs/abaqus.md), -O3 -march=native without
-# -fno-trapping-math (with flang: without -ffp-contract=off), and -O2. --build-dir: a configured and built interphase build directory
+# Default flag sets: the recommended one (docs/abaqus.md; with gfortran also without GCC's
+# inlining limits), -O3 -march=native without -fno-trapping-math (with flang: without
+# -ffp-contract=off), and -O2. --build-dir: a configured and built interphase build directory
 # (default ./build/release), for the generated sources of the built-in table.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -32,7 +33,8 @@ if [ ${#flag_sets[@]} -eq 0 ]; then
                     "-O3 -march=native"
                     "-O2") ;;
       *)
-         flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive"
+         flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive --param=max-inline-insns-auto=400 --param=inline-unit-growth=200"
+                    "-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive"
                     "-O3 -march=native -frecursive"
                     "-O2 -frecursive") ;;
    esac
