@@ -33,7 +33,9 @@ if [ ${#flag_sets[@]} -eq 0 ]; then
                     "-O3 -march=native"
                     "-O2") ;;
       *)
-         flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive --param=max-inline-insns-auto=400 --param=inline-unit-growth=200"
+         # (GCC's inlining limits: those of the CMake Release build, CMakeLists.txt)
+         gcc_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200"
+         flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive $gcc_inline"
                     "-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive"
                     "-O3 -march=native -frecursive"
                     "-O2 -frecursive") ;;

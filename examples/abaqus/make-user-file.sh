@@ -110,8 +110,8 @@ state[__intrinsic__]=done
 for f in "${roots[@]}"; do visit "$f"; done
 
 # a source with its INCLUDE lines replaced by the files they name (src/*.inc: one source of the
-# procedures and statements included where the compiler must inline them), so that the one file needs no
-# other file. An INCLUDE line must name one file of src/ in quotes, alone on its line; an included
+# procedures and statements included where the compiler must inline them), so that the one file
+# needs no other file. An INCLUDE line must name one file of src/ in quotes, alone on its line; an included
 # file may not include another (what else starts with INCLUDE is refused, not copied).
 expand_includes() {
    local line name lower

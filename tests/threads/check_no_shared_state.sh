@@ -1,8 +1,8 @@
 #!/bin/bash
 # Usage: check_no_shared_state.sh <dir>...
 # Scans every .f90/.F90/.f/.F file, and every .inc file (sources the others include), under the
-# given directories for state shared between calls (SAVE, COMMON, DATA, module variables that are not PARAMETER or PROTECTED, initialised local
-# variables) with check_no_shared_state.awk. Exit status 0 when none is found, 1 otherwise.
+# given directories for state shared between calls (SAVE, COMMON, DATA, module variables that are
+# not PARAMETER or PROTECTED, initialised local variables) with check_no_shared_state.awk. Exit status 0 when none is found, 1 otherwise.
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 files=()
