@@ -114,7 +114,7 @@ contains
          slip_trial = load%slip_old
          dslip_dd = 0.0_dp
       end if
-      call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, at%r, status, dslip_dd)
+      call respond(params, c, dc, d, slip_trial, load%s_n, load%st, ntens, .true., at%r, status, dslip_dd)
       if (status /= STATUS_OK) return
       closed = at%r%closed
       slip = at%r%slip

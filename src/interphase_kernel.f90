@@ -112,6 +112,8 @@ contains
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
       integer :: nt, j, m
+      !> the damage grows in the increment, dD/ds may be non-zero: the tangent needs dt/dD
+      logical :: grows
 
       nt = ntens - 1
       if (ntens /= 2 .and. ntens /= 3) then
@@ -139,7 +141,8 @@ contains
          d_law = max(old%d_inviscid, old%d)
          d = max(d_law, min(1.0_dp, d_hat)) + 0.0_dp
          dd_ds = 0.0_dp
-         if (d_hat > d_law .and. d_hat < 1.0_dp) then
+         grows = d_hat > d_law .and. d_hat < 1.0_dp
+         if (grows) then
             dd_ds(1) = dd_dsn
             t = sqrt(t_sq)
             if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
@@ -161,10 +164,10 @@ contains
             if (status /= STATUS_OK) return
             call growth_trial_slip(params%growth_slip, old%d, m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
          end if
-         call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
+         call respond(params, c, dc, d, slip_trial, s_n, st, ntens, grows, r, status, dslip_dd)
          if (status /= STATUS_OK) return
       else
-         call fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, status)
+         call fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, grows, status)
          if (status /= STATUS_OK) return
       end if
 
@@ -186,7 +189,20 @@ contains
          tangent(1:m, 1:m) = r%tangent(1:m, 1:m)
          if (r%regime == REGIME_SLIP) tangent(2:m, 1) = 0.0_dp
       case default
-         if (m == 2) then
+         if (.not. grows) then
+            ! dD/ds = 0: the tangent at fixed D (the 2-D one written out, the 3-D one in whole
+            ! columns: an assignment of a run-time extent compiles to a byte loop)
+            if (m == 2) then
+               tangent(1, 1) = r%tangent(1, 1)
+               tangent(2, 1) = r%tangent(2, 1)
+               tangent(1, 2) = r%tangent(1, 2)
+               tangent(2, 2) = r%tangent(2, 2)
+            else
+               do j = 1, 3
+                  tangent(1:3, j) = r%tangent(1:3, j)
+               end do
+            end if
+         else if (m == 2) then
             ! (written out: the loop over a run-time extent costs more than the 2-D tangent)
             tangent(1, 1) = r%tangent(1, 1) + r%dtrac_dd(1)*dd_ds(1)
             tangent(2, 1) = r%tangent(2, 1) + r%dtrac_dd(2)*dd_ds(1)
@@ -236,7 +252,7 @@ contains
 
    !> The fracture-mechanics law: D from g = 0, the response at that D, and dD/ds (the root
    !> search returns both from its last evaluation; only D = 1 needs its own).
-   pure subroutine fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, status)
+   pure subroutine fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, grows, status)
       type(law_params_type), intent(in) :: params
       type(interface_state_type), intent(in) :: old
       real(dp), intent(in) :: s_n, st(2)
@@ -244,6 +260,7 @@ contains
       real(dp), intent(out) :: d                      !! damage at the end of the increment
       type(response_type), intent(out) :: r           !! response at d
       real(dp), intent(out) :: dd_ds(3)               !! dD/ds (0 unless the crack grows)
+      logical, intent(out) :: grows                   !! the crack grows to D < 1: dd_ds may be non-zero
       integer, intent(out) :: status
 
       type(crack_load_type) :: load
@@ -259,6 +276,7 @@ contains
       call grow_crack(params, d_n, load, ntens, d, status, at, which)
       if (status /= STATUS_OK) return
       dd_ds = 0.0_dp
+      grows = .false.
       if (which == 0) then
          ! D = 1 (the crack ran to b)
          call broken_response(params, d_n, load%m_from, d, old%slip, s_n, st, ntens, r, status)
@@ -267,7 +285,8 @@ contains
       r = at(which)%r
 
       ! dD/ds from g(D, s, lambda(D, s)) = 0 while the crack grows
-      if (d > d_n .and. d < 1.0_dp) then
+      grows = d > d_n .and. d < 1.0_dp
+      if (grows) then
          numerator = at(which)%g_s
          denominator = at(which)%g_d
          do j = 1, nt
@@ -295,7 +314,7 @@ contains
       call coefficients_at(params, d, c, dc, status)
       if (status /= STATUS_OK) return
       call growth_trial_slip(params%growth_slip, d_n, m_n, d, c, dc, slip_old, slip_trial, dslip_dd)
-      call respond(params, c, dc, d, slip_trial, s_n, st, ntens, r, status, dslip_dd)
+      call respond(params, c, dc, d, slip_trial, s_n, st, ntens, .false., r, status, dslip_dd)
    end subroutine broken_response
 
    ! the separation's range test, here where the compiler inlines it (interphase_finite's, from

@@ -81,13 +81,16 @@ contains
    !> expression, in the same operation order, as the array form it replaces; the shear
    !> components of traction and dt/dD as pairs, whose second member, beyond ntens in 2-D, is the
    !> 3-D formula's with s_T2 = 0; the tangent and d lambda/ds hold zeros beyond ntens.)
-   pure subroutine respond(params, c, dc, d, slip_old, s_n, st, ntens, r, status, dslip_dd)
+   pure subroutine respond(params, c, dc, d, slip_old, s_n, st, ntens, with_dd, r, status, dslip_dd)
       type(law_params_type), intent(in) :: params
       type(coefficient_set_type), intent(in) :: c, dc     !! coefficients at D and d/dD
       real(dp), intent(in) :: d                           !! damage D
       real(dp), intent(in) :: slip_old(2)                 !! slip the friction step starts from (mm)
       real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
       integer, intent(in) :: ntens
+      !> also dt/dD and d lambda/dD (the tangent of a growing crack and the fracture law's search
+      !> need them); without, r%dtrac_dd and r%dlam_dd of the closed crack are zeros
+      logical, intent(in) :: with_dd
       type(response_type), intent(out) :: r
       integer, intent(out) :: status
       real(dp), intent(in), optional :: dslip_dd(2)       !! d(slip_old)/dD (mm), 0 if absent
@@ -156,16 +159,21 @@ contains
          r%regime = REGIME_SLIP
          r%traction(2:3) = kk_t*st + c%cf_t*slip
          r%psi = closed_energy(c, d, s_n, st, ntens, r%traction, slip)
-         ! d lambda/dD at fixed s
-         dtau_dd = dc%tc_t*st + dc%tf*slip_old
-         if (present(dslip_dd)) dtau_dd = dtau_dd + c%tf*dslip_dd
-         n_dot = nvec(1)*dtau_dd(1) + nvec(2)*dtau_dd(2)
-         dphi_dd = params%mu*dc%sc_n*s_n + n_dot
-         proj_dtau = dtau_dd - n_dot*nvec
-         dlam_dd = (nvec*dphi_dd + (phi/tau_norm)*proj_dtau)/kf + dgamma*nvec*dc%tf/kf
-         if (present(dslip_dd)) dlam_dd = dlam_dd + dslip_dd
-         r%dlam_dd = dlam_dd
-         r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip + c%cf_t*dlam_dd
+         if (with_dd) then
+            ! d lambda/dD at fixed s
+            dtau_dd = dc%tc_t*st + dc%tf*slip_old
+            if (present(dslip_dd)) dtau_dd = dtau_dd + c%tf*dslip_dd
+            n_dot = nvec(1)*dtau_dd(1) + nvec(2)*dtau_dd(2)
+            dphi_dd = params%mu*dc%sc_n*s_n + n_dot
+            proj_dtau = dtau_dd - n_dot*nvec
+            dlam_dd = (nvec*dphi_dd + (phi/tau_norm)*proj_dtau)/kf + dgamma*nvec*dc%tf/kf
+            if (present(dslip_dd)) dlam_dd = dlam_dd + dslip_dd
+            r%dlam_dd = dlam_dd
+            r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip + c%cf_t*dlam_dd
+         else
+            r%dlam_dd = 0.0_dp
+            r%dtrac_dd(2:3) = 0.0_dp
+         end if
          ! d lambda/d s_T = (T^c_T/kf) [I + (mu sigma/|tau|)(I - n n)], d lambda/d s_N = (mu S^c_N/kf) n:
          ! entry (i, 1 + j) = (T^c_T/kf) (delta_ij (1 + ratio) - ratio n_i n_j), delta_ij (1 + ratio)
          ! formed as 1 (1 + ratio) and 0 (1 + ratio)
@@ -209,7 +217,10 @@ contains
          r%psi = closed_energy(c, d, s_n, st, ntens, r%traction, slip)
          call set_diagonal_tangent(kk_n, kk_t, ntens, r%tangent)
          r%dlam_ds = 0.0_dp
-         if (present(dslip_dd)) then
+         if (.not. with_dd) then
+            r%dlam_dd = 0.0_dp
+            r%dtrac_dd(2:3) = 0.0_dp
+         else if (present(dslip_dd)) then
             r%dlam_dd = dslip_dd
             r%dtrac_dd(2:3) = (dc%k_t + dc%kc_t)*st + dc%cf_t*slip_old + c%cf_t*dslip_dd
          else
