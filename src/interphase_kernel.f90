@@ -133,19 +133,26 @@ contains
 
       if (params%damage_law == DAMAGE_DISPLACEMENT) then
          ! damage first (eq 39), then the response at that damage
-         t_sq = st(1)**2 + st(2)**2
-         call displacement_damage(params, s_n, t_sq, d_hat, dd_dsn, dd_dt)
          ! the damage law's own D, the history maximum (without viscous regularisation old%d_inviscid
          ! is old%d); + 0: an incoming D = -0 leaves as +0 whichever operand max picks (the block
          ! update of interphase_block does the same, so both agree bit for bit)
          d_law = max(old%d_inviscid, old%d)
-         d = max(d_law, min(1.0_dp, d_hat)) + 0.0_dp
          dd_ds = 0.0_dp
-         grows = d_hat > d_law .and. d_hat < 1.0_dp
-         if (grows) then
-            dd_ds(1) = dd_dsn
-            t = sqrt(t_sq)
-            if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
+         if (d_law >= 1.0_dp) then
+            ! the crack has reached b: D stays (what max(D_law, min(1, D^(s))) gives; no need of
+            ! D^(s))
+            d = d_law + 0.0_dp
+            grows = .false.
+         else
+            t_sq = st(1)**2 + st(2)**2
+            call displacement_damage(params, s_n, t_sq, d_hat, dd_dsn, dd_dt)
+            d = max(d_law, min(1.0_dp, d_hat)) + 0.0_dp
+            grows = d_hat > d_law .and. d_hat < 1.0_dp
+            if (grows) then
+               dd_ds(1) = dd_dsn
+               t = sqrt(t_sq)
+               if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
+            end if
          end if
          new%d_inviscid = d
          if (params%viscosity > 0.0_dp) then
