@@ -36,7 +36,7 @@ module interphase_kernel
       STATUS_SEPARATION_OUT_OF_RANGE
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at
-   use interphase_damage, only: displacement_damage
+   use interphase_damage, only: damage_terms_type, displacement_damage, damage_slopes
    use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
    use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure
    use interphase_state, only: interface_state_type
@@ -109,6 +109,7 @@ contains
 
       type(coefficient_set_type) :: c, dc
       type(response_type) :: r
+      type(damage_terms_type) :: terms
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
       integer :: nt, j, m
@@ -145,10 +146,11 @@ contains
             grows = .false.
          else
             t_sq = st(1)**2 + st(2)**2
-            call displacement_damage(params, s_n, t_sq, d_hat, dd_dsn, dd_dt)
+            call displacement_damage(params, s_n, t_sq, d_hat, terms)
             d = max(d_law, min(1.0_dp, d_hat)) + 0.0_dp
             grows = d_hat > d_law .and. d_hat < 1.0_dp
             if (grows) then
+               call damage_slopes(params, t_sq, d_hat, terms, dd_dsn, dd_dt)
                dd_ds(1) = dd_dsn
                t = sqrt(t_sq)
                if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
