@@ -35,7 +35,7 @@ module interphase_kernel
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, STATUS_BAD_TIME_INCREMENT, &
       STATUS_SEPARATION_OUT_OF_RANGE
    use interphase_coefficients, only: coefficient_set_type
-   use interphase_provider, only: coefficients_at
+   use interphase_provider, only: coefficients_at, coefficient_values_at
    use interphase_damage, only: damage_terms_type, displacement_damage, damage_slopes
    use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
    use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure
@@ -161,7 +161,12 @@ contains
             call regularise_damage(params%viscosity, old%d, d, dd_ds, status, dt)
             if (status /= STATUS_OK) return
          end if
-         call coefficients_at(params, d, c, dc, status)
+         ! (the derivatives only where the tangent needs dt/dD)
+         if (grows) then
+            call coefficients_at(params, d, c, dc, status)
+         else
+            call coefficient_values_at(params, d, c, dc, status)
+         end if
          if (status /= STATUS_OK) return
          slip_trial = old%slip
          dslip_dd = 0.0_dp
@@ -320,7 +325,7 @@ contains
       integer, intent(out) :: status
       type(coefficient_set_type) :: c, dc
       real(dp) :: slip_trial(2), dslip_dd(2)
-      call coefficients_at(params, d, c, dc, status)
+      call coefficient_values_at(params, d, c, dc, status)
       if (status /= STATUS_OK) return
       call growth_trial_slip(params%growth_slip, d_n, m_n, d, c, dc, slip_old, slip_trial, dslip_dd)
       call respond(params, c, dc, d, slip_trial, s_n, st, ntens, .false., r, status, dslip_dd)

@@ -58,7 +58,8 @@ contains
       integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
       real(dp), intent(in) :: d                              !! damage D = a/b
       type(coefficient_set_type), intent(out) :: coef        !! coefficients at D
-      type(coefficient_set_type), intent(out) :: dcoef_dd    !! their derivatives d/dD
+      !> their derivatives d/dD (absent: not formed; then d2coef_dd2 must be absent too)
+      type(coefficient_set_type), intent(out), optional :: dcoef_dd
       integer, intent(out) :: status
       type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives
       if (table == TABLE_CUSTOM_CODE) then
@@ -89,7 +90,8 @@ contains
       real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)
       real(dp), intent(in) :: d
       type(coefficient_set_type), intent(out) :: coef
-      type(coefficient_set_type), intent(out) :: dcoef_dd
+      !> first derivatives d/dD (absent: not formed, nor d2coef_dd2)
+      type(coefficient_set_type), intent(out), optional :: dcoef_dd
       integer, intent(out) :: status
       type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives d2/dD2
       !> the knots' interval guide (guide_build), all three or none: the interval from x's cell
@@ -121,12 +123,18 @@ contains
             end do
             ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
             d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
-         else
+         else if (present(dcoef_dd)) then
             do j = 1, N_COEFFICIENTS
                v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
                   + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
                dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
                   + 3.0_dp*t*coef_table(j, 3, interval))
+            end do
+         else
+            ! the values alone (the same Horner form, so the same numbers)
+            do j = 1, N_COEFFICIENTS
+               v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
+                  + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
             end do
          end if
       else
@@ -140,15 +148,14 @@ contains
             call cubic_eval(knots, coef_table, interval, x, v, dv)
          end if
       end if
-      dv = dv*dx_dd
       ! T^f = v/D, T^f' = (v' - T^f)/D, T^f'' = (v'' - 2 T^f')/D with v = D T^f
       tf = -huge(1.0_dp)
-      dtf = 0.0_dp
-      if (d > 0.0_dp) then
-         tf = v(IC_DTF)/d
-         dtf = (dv(IC_DTF) - tf)/d
-      end if
+      if (d > 0.0_dp) tf = v(IC_DTF)/d
       coef = as_set(v, tf)
+      if (.not. present(dcoef_dd)) return
+      dv = dv*dx_dd
+      dtf = 0.0_dp
+      if (d > 0.0_dp) dtf = (dv(IC_DTF) - tf)/d
       dcoef_dd = as_set(dv, dtf)
       if (present(d2coef_dd2)) then
          d2tf = 0.0_dp

@@ -16,7 +16,7 @@ module interphase_provider
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    implicit none
    private
-   public :: coefficients_at, ufbar_at, check_run_time_data
+   public :: coefficients_at, coefficient_values_at, ufbar_at, check_run_time_data
 
 contains
 
@@ -38,6 +38,30 @@ contains
          status = STATUS_MODEL_UNAVAILABLE
       end select
    end subroutine coefficients_at
+
+   !> The coefficients at D alone, the numbers coefficients_at's set holds (bit for bit), with
+   !> the same statuses, for a caller that uses no D-derivative (the response at a damage that
+   !> does not grow: `respond` with with_dd = .false.); dc is the set of zeros (NO_COEFFICIENTS),
+   !> not the derivatives. The micromechanical table's derivatives are not formed (a third of
+   !> its cost).
+   pure subroutine coefficient_values_at(params, d, c, dc, status)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d                                   !! damage D = a/b
+      type(coefficient_set_type), intent(out) :: c                !! coefficients
+      type(coefficient_set_type), intent(out) :: dc               !! zeros
+      integer, intent(out) :: status
+      dc = NO_COEFFICIENTS
+      select case (params%model)
+      case (MODEL_SIMPLIFIED)
+         call simplified_coefficients(params%k_n, params%k_t, d, c, dc)
+         dc = NO_COEFFICIENTS
+         status = STATUS_OK
+      case (MODEL_MICROMECHANICAL)
+         call micro_coefficients(params%table, d, c, status=status)
+      case default
+         status = STATUS_MODEL_UNAVAILABLE
+      end select
+   end subroutine coefficient_values_at
 
    !> ufbar(D) alone (-), the number coefficients_at's set holds (bit for bit), for the slip
    !> measure m = D ufbar; the same statuses.
