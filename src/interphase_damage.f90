@@ -50,7 +50,7 @@ contains
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: t_sq      !! |s_T|^2 (mm^2)
       real(dp), intent(in) :: d_hat     !! D^ (-), > 0
-      type(damage_terms_type), intent(in) :: terms
+      type(damage_terms_type), intent(in) :: terms   !! from displacement_damage at the same s
       real(dp), intent(out) :: dd_dsn   !! dD^/ds_N (1/mm)
       real(dp), intent(out) :: dd_dt    !! dD^/dt with t = |s_T| (1/mm)
 

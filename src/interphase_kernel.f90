@@ -113,7 +113,9 @@ contains
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
       integer :: nt, j, m
-      !> the damage grows in the increment, dD/ds may be non-zero: the tangent needs dt/dD
+      !> the damage law's D is on its growing branch (displacement law: D_law < D^ < 1; fracture
+      !> law: D_n < D < 1), the only case where dD/ds can be non-zero and the tangent needs dt/dD
+      !> (D can change otherwise too: a jump to 1, viscous relaxation; dD/ds is 0 there)
       logical :: grows
 
       nt = ntens - 1
@@ -148,7 +150,9 @@ contains
             t_sq = st(1)**2 + st(2)**2
             call displacement_damage(params, s_n, t_sq, d_hat, terms)
             d = max(d_law, min(1.0_dp, d_hat)) + 0.0_dp
-            grows = d_hat > d_law .and. d_hat < 1.0_dp
+            ! (D^ > 0 too: an incoming D below 0, which the hosts' STATEV check refuses, would
+            ! otherwise ask for the slopes of D^ = 0, where displacement_damage forms no terms)
+            grows = d_hat > max(d_law, 0.0_dp) .and. d_hat < 1.0_dp
             if (grows) then
                call damage_slopes(params, t_sq, d_hat, terms, dd_dsn, dd_dt)
                dd_ds(1) = dd_dsn

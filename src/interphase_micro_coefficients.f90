@@ -90,7 +90,8 @@ contains
       real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)
       real(dp), intent(in) :: d
       type(coefficient_set_type), intent(out) :: coef
-      !> first derivatives d/dD (absent: not formed, nor d2coef_dd2)
+      !> first derivatives d/dD (absent: not formed; d2coef_dd2, which needs them, must then be
+      !> absent too: it would be left undefined)
       type(coefficient_set_type), intent(out), optional :: dcoef_dd
       integer, intent(out) :: status
       type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives d2/dD2

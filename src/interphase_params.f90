@@ -263,8 +263,8 @@ contains
 
    !> The options' components of `params` from their values (OPTION_SPECS' order).
    pure subroutine store_options(values, params)
-      real(dp), intent(in) :: values(NPROPS_OPTIONS)
-      type(law_params_type), intent(inout) :: params
+      real(dp), intent(in) :: values(NPROPS_OPTIONS)    !! the option values, OPT_* order
+      type(law_params_type), intent(inout) :: params    !! its option components set
       ! (the selectors hold exact small integers here: int, which compiles to one instruction,
       ! where nint is a call of libm's lround)
       params%growth_slip = int(values(OPT_GROWTH_SLIP))

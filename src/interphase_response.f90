@@ -88,8 +88,10 @@ contains
       real(dp), intent(in) :: slip_old(2)                 !! slip the friction step starts from (mm)
       real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
       integer, intent(in) :: ntens
-      !> also dt/dD and d lambda/dD (the tangent of a growing crack and the fracture law's search
-      !> need them); without, r%dtrac_dd and r%dlam_dd of the closed crack are zeros
+      !> also the closed crack's shear dt/dD and d lambda/dD (the tangent of a growing crack and
+      !> the fracture law's search need them); without, those are zeros, and the rest of r%dtrac_dd
+      !> is formed from dc as given (a caller without D-derivatives passes zeros:
+      !> coefficient_values_at)
       logical, intent(in) :: with_dd
       type(response_type), intent(out) :: r
       integer, intent(out) :: status
