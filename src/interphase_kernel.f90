@@ -204,22 +204,12 @@ contains
       case (STIFFNESS_FIXED_DAMAGE)
          ! the tangent at fixed D, without the slipping crack's coupling of the shear traction to
          ! s_N (through the friction bound mu sigma): symmetric, positive semi-definite
-         tangent(1:m, 1:m) = r%tangent(1:m, 1:m)
+         call copy_tangent(m, r%tangent, tangent)
          if (r%regime == REGIME_SLIP) tangent(2:m, 1) = 0.0_dp
       case default
          if (.not. grows) then
-            ! dD/ds = 0: the tangent at fixed D (the 2-D one written out, the 3-D one in whole
-            ! columns: an assignment of a run-time extent compiles to a byte loop)
-            if (m == 2) then
-               tangent(1, 1) = r%tangent(1, 1)
-               tangent(2, 1) = r%tangent(2, 1)
-               tangent(1, 2) = r%tangent(1, 2)
-               tangent(2, 2) = r%tangent(2, 2)
-            else
-               do j = 1, 3
-                  tangent(1:3, j) = r%tangent(1:3, j)
-               end do
-            end if
+            ! dD/ds = 0: the tangent at fixed D
+            call copy_tangent(m, r%tangent, tangent)
          else if (m == 2) then
             ! (written out: the loop over a run-time extent costs more than the 2-D tangent)
             tangent(1, 1) = r%tangent(1, 1) + r%dtrac_dd(1)*dd_ds(1)
@@ -236,6 +226,25 @@ contains
       end select
       psi = r%psi
    end subroutine update_point
+
+   !> tangent(1:m, 1:m) = from(1:m, 1:m) for m = 2 or 3 (the 2-D block written out, the 3-D one in
+   !> whole columns: an assignment of a run-time extent compiles to a byte loop).
+   pure subroutine copy_tangent(m, from, tangent)
+      integer, intent(in) :: m                        !! 2 or 3
+      real(dp), intent(in) :: from(3, 3)              !! (MPa/mm)
+      real(dp), intent(inout) :: tangent(3, 3)        !! (MPa/mm); entries beyond m kept
+      integer :: j
+      if (m == 2) then
+         tangent(1, 1) = from(1, 1)
+         tangent(2, 1) = from(2, 1)
+         tangent(1, 2) = from(1, 2)
+         tangent(2, 2) = from(2, 2)
+      else
+         do j = 1, 3
+            tangent(1:3, j) = from(1:3, j)
+         end do
+      end if
+   end subroutine copy_tangent
 
    !> Viscous regularisation of the damage (Duvaut-Lions, docs/theory.md 'Viscous
    !> regularisation'): from the damage law's D and dD/ds to the regularised

@@ -50,11 +50,12 @@ contains
       type(coefficient_set_type), intent(out) :: c                !! coefficients
       type(coefficient_set_type), intent(out) :: dc               !! zeros
       integer, intent(out) :: status
+      type(coefficient_set_type) :: unused_derivatives
       dc = NO_COEFFICIENTS
       select case (params%model)
       case (MODEL_SIMPLIFIED)
-         call simplified_coefficients(params%k_n, params%k_t, d, c, dc)
-         dc = NO_COEFFICIENTS
+         ! (its derivatives are constants, formed with the values and dropped)
+         call simplified_coefficients(params%k_n, params%k_t, d, c, unused_derivatives)
          status = STATUS_OK
       case (MODEL_MICROMECHANICAL)
          call micro_coefficients(params%table, d, c, status=status)

@@ -8,15 +8,23 @@ module interphase_test_support
    use interphase_state, only: interface_state_type
    use interphase_kernel, only: interface_update
    use interphase_status, only: MESSAGE_LEN
+   use interphase_coefficients, only: coefficient_set_type
    implicit none
    private
    public :: paper_params, paper_k_n, paper_k_t, fd_tangent, linear_path, micro_params, source_path, &
-      scratch_path, paper_props, micro_props, tabulated_rcurve_props
+      scratch_path, paper_props, micro_props, tabulated_rcurve_props, coefficient_array
 
    !> RVE data of the paper's section 5 (mm, MPa).
    real(dp), parameter :: H_M = 2.0_dp, H_B = 3.0_dp, E_M = 1000.0_dp, E_B = 16000.0_dp, NU = 0.15_dp
 
 contains
+
+   !> The 11 coefficients of a set as an array, in the type's order (for comparisons).
+   pure function coefficient_array(c) result(v)
+      type(coefficient_set_type), intent(in) :: c
+      real(dp) :: v(11)
+      v = [c%k_n, c%k_t, c%kc_n, c%kc_t, c%dbar_n, c%dbar_t, c%tc_t, c%sc_n, c%cf_t, c%tf, c%ufbar]
+   end function coefficient_array
 
    !> K_T = C^_TT/h from the laminate closed form of docs/rve.md, 'Exact identities' (MPa/mm).
    pure real(dp) function paper_k_t()
