@@ -26,19 +26,24 @@ module interphase_block
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    use interphase_finite, only: MAGNITUDE_MASK
-   use interphase_params, only: law_params_type, SEPARATION_MAX, DENSITY_MIN, DENSITY_MAX
+   use interphase_params, only: law_params_type, SEPARATION_MAX, DENSITY_MIN, DENSITY_MAX, HOST_VALUE_MAX, &
+      HOST_INCREMENT_MAX
    use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT
    use interphase_micro_coefficients, only: micro_block_coefficients
    implicit none
    private
-   public :: block_update, simplified_block_update, micromechanical_block_update, density_counts, block_supports
+   public :: block_update, simplified_block_update, micromechanical_block_update, density_counts, block_supports, &
+      block_energies
 
    !> Bit patterns of DENSITY_MIN and DENSITY_MAX (positive numbers are ordered like their bits).
    integer(int64), parameter :: DENSITY_MIN_BITS = transfer(DENSITY_MIN, 0_int64)
    integer(int64), parameter :: DENSITY_MAX_BITS = transfer(DENSITY_MAX, 0_int64)
    !> Bit pattern of SEPARATION_MAX: |x| <= SEPARATION_MAX exactly when the bits of |x| are at most these.
    integer(int64), parameter :: SEPARATION_MAX_BITS = transfer(SEPARATION_MAX, 0_int64)
+   !> Bit patterns of HOST_VALUE_MAX and HOST_INCREMENT_MAX (the same test on |x|).
+   integer(int64), parameter :: HOST_VALUE_MAX_BITS = transfer(HOST_VALUE_MAX, 0_int64)
+   integer(int64), parameter :: HOST_INCREMENT_MAX_BITS = transfer(HOST_INCREMENT_MAX, 0_int64)
 
 contains
 
@@ -634,5 +639,90 @@ contains
       nbad = int(nbad_bits)
       ndiff = int(ndiff_bits)
    end subroutine density_counts
+
+   !> The energies per unit mass at the end of the increment of a block's points (Abaqus/Explicit's
+   !> enerInternNew and enerInelasNew), in one vectorised pass, and the count of points whose host
+   !> values lie out of range. With the layer's mass per unit area rho t:
+   !>   psi_n = (e_int,n - e_inel,n) rho t,
+   !>   e_inel = e_inel,n + (1/2 (sigma_n + sigma).ds - (psi - psi_n))/(rho t),
+   !>   e_int = e_inel + psi/(rho t).
+   !> A point is out of range (counted in nbad, its energies finite but meaningless, computed from
+   !> zeros) where its incoming stress, e_int,n or e_inel,n exceeds HOST_VALUE_MAX in magnitude,
+   !> or a separation increment HOST_INCREMENT_MAX (bit patterns: NaN and Inf count, without an
+   !> exception). In 2-D (nt = 1) the third columns are checked but do not enter the energies
+   !> (pass the second columns again: the pass reads them either way). `uniform`: every rho(k) has the
+   !> bits of rho(1) (density_counts' ndiff = 0), so that one division serves the block.
+   pure subroutine block_energies(n, nt, thickness, rho, uniform, so_n, so_t1, so_t2, ds_n, ds_t1, ds_t2, &
+         t_n, t_t1, t_t2, psi, ei_old, ep_old, ei_new, ep_new, nbad)
+      integer, intent(in) :: n                       !! number of points
+      integer, intent(in) :: nt                      !! tangential components: 1 (2-D) or 2 (3-D)
+      real(dp), intent(in) :: thickness              !! constitutive thickness t (mm)
+      real(dp), intent(in) :: rho(n)                 !! density (tonne/mm^3), within [DENSITY_MIN, DENSITY_MAX]
+      logical, intent(in) :: uniform                 !! one density in the block
+      real(dp), intent(in) :: so_n(n), so_t1(n), so_t2(n)   !! tractions at the start (MPa)
+      real(dp), intent(in) :: ds_n(n), ds_t1(n), ds_t2(n)   !! separation increments (mm)
+      real(dp), intent(in) :: t_n(n), t_t1(n), t_t2(n)      !! tractions at the end (MPa)
+      real(dp), intent(in) :: psi(n)                 !! stored energy at the end (N/mm)
+      real(dp), intent(in) :: ei_old(n), ep_old(n)   !! e_int,n and e_inel,n (per unit mass)
+      real(dp), intent(out) :: ei_new(n), ep_new(n)  !! e_int and e_inel (per unit mass)
+      integer, intent(out) :: nbad                   !! points with host values out of range
+
+      real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei, ep, work, rho_t, inv_rho, rho_t_uniform, inv_rho_uniform
+      real(dp) :: psi_old, energy_inelas
+      integer(int64) :: nbad_count, big_value, big_increment
+      logical :: ok
+      integer :: k
+
+      nbad_count = 0
+      rho_t_uniform = rho(1)*thickness
+      inv_rho_uniform = 1.0_dp/rho_t_uniform
+      do k = 1, n
+         ! (the values loaded first: gfortran vectorises a transfer of a local value, not one of
+         ! an array element)
+         so1 = so_n(k)
+         so2 = so_t1(k)
+         ds1 = ds_n(k)
+         ds2 = ds_t1(k)
+         ei = ei_old(k)
+         ep = ep_old(k)
+         so3 = so_t2(k)
+         ds3 = ds_t2(k)
+         ! the largest magnitudes' bits, a value's and an increment's (the third columns in 2-D too)
+         big_value = max(magnitude_bits(so1), magnitude_bits(so2), magnitude_bits(so3), magnitude_bits(ei), &
+            magnitude_bits(ep))
+         big_increment = max(magnitude_bits(ds1), magnitude_bits(ds2), magnitude_bits(ds3))
+         ok = big_value <= HOST_VALUE_MAX_BITS .and. big_increment <= HOST_INCREMENT_MAX_BITS
+         nbad_count = nbad_count + merge(0_int64, 1_int64, ok)
+         so1 = merge(so1, 0.0_dp, ok)
+         so2 = merge(so2, 0.0_dp, ok)
+         ds1 = merge(ds1, 0.0_dp, ok)
+         ds2 = merge(ds2, 0.0_dp, ok)
+         ei = merge(ei, 0.0_dp, ok)
+         ep = merge(ep, 0.0_dp, ok)
+         so3 = merge(so3, 0.0_dp, ok)
+         ds3 = merge(ds3, 0.0_dp, ok)
+         ! (the third term selected, not branched on: a branch stops the vectorisation)
+         work = (so1 + t_n(k))*ds1 + (so2 + t_t1(k))*ds2
+         work = merge(work + (so3 + t_t2(k))*ds3, work, nt == 2)
+         if (uniform) then
+            rho_t = rho_t_uniform
+            inv_rho = inv_rho_uniform
+         else
+            rho_t = rho(k)*thickness
+            inv_rho = 1.0_dp/rho_t
+         end if
+         psi_old = (ei - ep)*rho_t
+         energy_inelas = ep + (0.5_dp*work - (psi(k) - psi_old))*inv_rho
+         ep_new(k) = energy_inelas
+         ei_new(k) = energy_inelas + psi(k)*inv_rho
+      end do
+      nbad = int(nbad_count)
+   end subroutine block_energies
+
+   !> The bit pattern of |x| (positive numbers, +Inf and NaN are ordered like their bits).
+   elemental integer(int64) function magnitude_bits(x)
+      real(dp), intent(in) :: x
+      magnitude_bits = iand(transfer(x, 0_int64), MAGNITUDE_MASK)
+   end function magnitude_bits
 
 end module interphase_block

@@ -44,8 +44,7 @@ contains
 
    !> ln_y(i) = ln_positive(y(i)), i = 1..n, in one call: the same operations on each element
    !> (so the same bits), in loops the compiler vectorises where a caller's own loop could not
-   !> inline a function of another translation unit. The bit patterns are moved as whole arrays,
-   !> a chunk at a time on the stack: a TRANSFER of one element would keep the loops scalar.
+   !> inline a function of another translation unit, a chunk at a time on the stack.
    pure subroutine ln_positive_block(n, y, ln_y)
       integer, intent(in) :: n
       real(dp), intent(in) :: y(n)        !! positive, finite, normal
@@ -56,12 +55,14 @@ contains
       integer :: i, first, k
       do first = 1, n, CHUNK
          k = min(CHUNK, n - first + 1)
-         bits(1:k) = transfer(y(first:first + k - 1), bits, k)
+         ! (element by element, vectorised by gfortran 12: a section's transfer of run-time length
+         ! is built in a heap temporary, with a malloc, a copy and a free per chunk)
          do i = 1, k
+            bits(i) = transfer(y(first + i - 1), 0_int64)
             up(i) = above_sqrt2(bits(i))
             m_bits(i) = reduced_mantissa(bits(i), up(i))
+            m(i) = transfer(m_bits(i), 0.0_dp)
          end do
-         m(1:k) = transfer(m_bits(1:k), m, k)
          do i = 1, k
             ln_y(first + i - 1) = ln_series(real(int(ishft(bits(i), -52)) - 1023 + int(up(i)), dp), m(i))
          end do

@@ -53,7 +53,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_kernel, only: update_point
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
-   use interphase_block, only: block_update, density_counts, block_supports
+   use interphase_block, only: block_update, density_counts, block_supports, block_energies
    use interphase_rcurve, only: rcurve_coverage
    use interphase_abaqus_interfaces, only: interphase_host_message
    use interphase_replay_file, only: write_replay
@@ -100,11 +100,9 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    type(coefficient_set_type) :: intact, intact_rate
    real(dp) :: ds(CHUNK, 3), psi(CHUNK)
    logical :: ok(CHUNK)
-   real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei_old, ep_old
-   logical :: ok_host
    real(dp) :: s_point(3), sv(NSTATV_VISCOUS)
-   real(dp) :: traction(3), tangent(3, 3), work_k, rho_t, rho_t_uniform, inv_rho, inv_rho_uniform, psi_old, energy_inelas
-   logical :: blocked, packaging, uniform_density, viscous, bad_state
+   real(dp) :: traction(3), tangent(3, 3), psi_first
+   logical :: blocked, packaging, viscous, bad_state
    integer :: nsv   !! STATEV slots of the state (state_slots)
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
@@ -313,7 +311,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   sv(1:nsv) = stateold(first_failed, 1:nsv)
                   call unpack_statev(nsv, sv, ntens, viscous, old, status, message)
                   s_point(1:ntens) = statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
-                  call update_point(params, old, ntens, s_point, traction, tangent, new, psi_old, first_status, dt)
+                  call update_point(params, old, ntens, s_point, traction, tangent, new, psi_first, first_status, dt)
                end if
                write (first_message, '(a,3es12.4)') 'separation (mm) ', &
                   statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
@@ -325,45 +323,20 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             end do
          end if
 
-         ! energies, one pass without branches: the work 1/2 (t_old + t).ds, then per unit mass;
-         ! 1/(rho T0) once for the chunk when its density is uniform (one material, the usual
-         ! case), else per point (the compiler makes one loop of each case and dimension out of
-         ! this one); the same numbers either way
-         uniform_density = ndiff == 0
-         nbad_energy = 0
-         rho_t_uniform = density(k0)*THICKNESS
-         inv_rho_uniform = 1.0_dp/rho_t_uniform
-         do k = 1, n
-            km = k0 + k - 1
-            ! the host's values enter only when within HOST_VALUE_MAX (no branch: selected, never
-            ! computed on; a NaN or Inf would raise no exception either), the culprits counted
-            ok_host = is_within(stressold(km, 1), HOST_VALUE_MAX) .and. is_within(stressold(km, 2), HOST_VALUE_MAX) &
-               .and. is_within(stressold(km, ntens), HOST_VALUE_MAX) .and. is_within(enerinternold(km), HOST_VALUE_MAX) &
-               .and. is_within(enerinelasold(km), HOST_VALUE_MAX) .and. is_within(ds(k, 1), HOST_INCREMENT_MAX) &
-               .and. is_within(ds(k, 2), HOST_INCREMENT_MAX) .and. is_within(ds(k, ntens), HOST_INCREMENT_MAX)
-            nbad_energy = nbad_energy + merge(0, 1, ok_host)
-            so1 = merge(stressold(km, 1), 0.0_dp, ok_host)
-            so2 = merge(stressold(km, 2), 0.0_dp, ok_host)
-            so3 = merge(stressold(km, ntens), 0.0_dp, ok_host)
-            ds1 = merge(ds(k, 1), 0.0_dp, ok_host)
-            ds2 = merge(ds(k, 2), 0.0_dp, ok_host)
-            ds3 = merge(ds(k, ntens), 0.0_dp, ok_host)
-            ei_old = merge(enerinternold(km), 0.0_dp, ok_host)
-            ep_old = merge(enerinelasold(km), 0.0_dp, ok_host)
-            work_k = (so1 + stressnew(km, 1))*ds1 + (so2 + stressnew(km, 2))*ds2
-            if (ntens == 3) work_k = work_k + (so3 + stressnew(km, 3))*ds3
-            if (uniform_density) then
-               rho_t = rho_t_uniform
-               inv_rho = inv_rho_uniform
-            else
-               rho_t = density(km)*THICKNESS
-               inv_rho = 1.0_dp/rho_t
-            end if
-            psi_old = (ei_old - ep_old)*rho_t
-            energy_inelas = ep_old + (0.5_dp*work_k - (psi(k) - psi_old))*inv_rho
-            enerinelasnew(km) = energy_inelas
-            enerinternnew(km) = energy_inelas + psi(k)*inv_rho
-         end do
+         ! the energies per unit mass, with the check of the host's values (block_energies: one
+         ! vectorised pass without branches; 1/(rho T0) once for the chunk when its density is
+         ! uniform, the usual case)
+         if (ntens == 3) then
+            call block_energies(n, nt, THICKNESS, density(k0:k1), ndiff == 0, stressold(k0:k1, 1), &
+               stressold(k0:k1, 2), stressold(k0:k1, 3), ds(1:n, 1), ds(1:n, 2), ds(1:n, 3), stressnew(k0:k1, 1), &
+               stressnew(k0:k1, 2), stressnew(k0:k1, 3), psi(1:n), enerinternold(k0:k1), enerinelasold(k0:k1), &
+               enerinternnew(k0:k1), enerinelasnew(k0:k1), nbad_energy)
+         else
+            call block_energies(n, nt, THICKNESS, density(k0:k1), ndiff == 0, stressold(k0:k1, 1), &
+               stressold(k0:k1, 2), stressold(k0:k1, 2), ds(1:n, 1), ds(1:n, 2), ds(1:n, 2), stressnew(k0:k1, 1), &
+               stressnew(k0:k1, 2), stressnew(k0:k1, 2), psi(1:n), enerinternold(k0:k1), enerinelasold(k0:k1), &
+               enerinternnew(k0:k1), enerinelasnew(k0:k1), nbad_energy)
+         end if
          if (nbad_energy > 0) then
             do k = 1, n
                km = k0 + k - 1
