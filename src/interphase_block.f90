@@ -677,8 +677,6 @@ contains
       rho_t_uniform = rho(1)*thickness
       inv_rho_uniform = 1.0_dp/rho_t_uniform
       do k = 1, n
-         ! (the values loaded first: gfortran vectorises a transfer of a local value, not one of
-         ! an array element)
          so1 = so_n(k)
          so2 = so_t1(k)
          ds1 = ds_n(k)

@@ -326,17 +326,11 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          ! the energies per unit mass, with the check of the host's values (block_energies: one
          ! vectorised pass without branches; 1/(rho T0) once for the chunk when its density is
          ! uniform, the usual case)
-         if (ntens == 3) then
-            call block_energies(n, nt, THICKNESS, density(k0:k1), ndiff == 0, stressold(k0:k1, 1), &
-               stressold(k0:k1, 2), stressold(k0:k1, 3), ds(1:n, 1), ds(1:n, 2), ds(1:n, 3), stressnew(k0:k1, 1), &
-               stressnew(k0:k1, 2), stressnew(k0:k1, 3), psi(1:n), enerinternold(k0:k1), enerinelasold(k0:k1), &
-               enerinternnew(k0:k1), enerinelasnew(k0:k1), nbad_energy)
-         else
-            call block_energies(n, nt, THICKNESS, density(k0:k1), ndiff == 0, stressold(k0:k1, 1), &
-               stressold(k0:k1, 2), stressold(k0:k1, 2), ds(1:n, 1), ds(1:n, 2), ds(1:n, 2), stressnew(k0:k1, 1), &
-               stressnew(k0:k1, 2), stressnew(k0:k1, 2), psi(1:n), enerinternold(k0:k1), enerinelasold(k0:k1), &
-               enerinternnew(k0:k1), enerinelasnew(k0:k1), nbad_energy)
-         end if
+         ! (column ntens is the third in 3-D, the second again in 2-D, where it only is checked)
+         call block_energies(n, nt, THICKNESS, density(k0:k1), ndiff == 0, stressold(k0:k1, 1), &
+            stressold(k0:k1, 2), stressold(k0:k1, ntens), ds(1:n, 1), ds(1:n, 2), ds(1:n, ntens), &
+            stressnew(k0:k1, 1), stressnew(k0:k1, 2), stressnew(k0:k1, ntens), psi(1:n), enerinternold(k0:k1), &
+            enerinelasold(k0:k1), enerinternnew(k0:k1), enerinelasnew(k0:k1), nbad_energy)
          if (nbad_energy > 0) then
             do k = 1, n
                km = k0 + k - 1
