@@ -14,7 +14,9 @@ here=$(cd "$(dirname "$0")/.." && pwd)
 root=${1:-$here/build}
 jobs=$(nproc 2>/dev/null || echo 2)
 
-bash "$here/tools/ensure-packages.sh" freefem gnuplot pkgconfig numpy scipy matplotlib pytest
+# flang is installed before the first build: the gfortran builds' one-file Abaqus source check
+# (abaqus_user_file_compiles) compiles with every supported compiler found at configure time
+bash "$here/tools/ensure-packages.sh" freefem gnuplot pkgconfig numpy scipy matplotlib pytest flang
 
 # suite <compiler> <name prefix of the build directories>
 suite() {
@@ -37,7 +39,6 @@ start=$SECONDS
 suite "$(command -v gfortran)" ""
 echo "== gfortran suite: $((SECONDS - start)) s"
 
-bash "$here/tools/ensure-packages.sh" flang
 if ! command -v flang-new-19 >/dev/null 2>&1; then
   if [ "${CI:-}" = true ]; then
     echo "run-tests: LLVM flang (flang-new-19) is not installed and could not be installed;" \
