@@ -32,7 +32,8 @@ module interphase_fracture
       band_stiffness
    implicit none
    private
-   public :: crack_load_type, growth_point_type, grow_crack
+   ! (growth_point: public for the tests, which check the search's roots against g itself)
+   public :: crack_load_type, growth_point_type, grow_crack, growth_point
 
    !> What the crack sees in the increment: the separation at its end and the slip at its
    !> start (the friction step at each trial D starts from it, or from the slip that conserves
@@ -57,6 +58,9 @@ module interphase_fracture
       real(dp) :: g_d                   !! dg/dD at fixed s, lambda (-)
       real(dp) :: dg_dd                 !! dg/dD along lambda(D): g_d + g_lam . lambda_D (-)
       real(dp) :: m                     !! m(D) = D ufbar(D) (-), as `slip_measure` gives it
+      real(dp) :: h                     !! the search's function h(g) (`search_function`) (-);
+                                        !! h and dh_dd are set where the derivatives are
+      real(dp) :: dh_dd                 !! dh/dD along lambda(D) (-)
       type(response_type) :: r          !! the response at D (friction from the trial slip at D)
    end type growth_point_type
 
@@ -193,7 +197,8 @@ contains
       g_lam = 0.0_dp
       if (equivalent_open) then
          if (load%s_n > 0.0_dp) g_s(1) = 2.0_dp*load%s_n/sig_n**2
-         g_s(2:ntens) = 2.0_dp*load%st(1:nt)/sig_t**2
+         g_s(2) = 2.0_dp*load%st(1)/sig_t**2
+         if (ntens == 3) g_s(3) = 2.0_dp*load%st(2)/sig_t**2
          g_d = -2.0_dp*gi*dsig_n/sig_n - 2.0_dp*gii*dsig_t/sig_t
       else
          gi_s = 0.0_dp
@@ -205,7 +210,8 @@ contains
                gi_s(1) = -2.0_dp*dc%k_n*load%s_n
                gi_d = -d2c%k_n*load%s_n**2
             end if
-            gii_s(2:ntens) = -2.0_dp*dc%k_t*load%st(1:nt)
+            gii_s(2) = -2.0_dp*dc%k_t*load%st(1)
+            if (ntens == 3) gii_s(3) = -2.0_dp*dc%k_t*load%st(2)
             gii_d = -d2c%k_t*t2
             if (in_band) then
                gii_s(1:ntens) = gii_s(1:ntens) - dq*band_grad(1:ntens)
@@ -214,8 +220,12 @@ contains
          else
             call closed_release_slopes(params%growth_slip, c, dc, d2c, d, a2, b2)
             gii_s(1) = -2.0_dp*(dc%k_n + dc%kc_n)*load%s_n
-            gii_s(2:ntens) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1:nt) - 2.0_dp*a1*slip(1:nt)
-            gii_lam(1:nt) = -2.0_dp*a1*load%st(1:nt) + 2.0_dp*b1*slip(1:nt)
+            gii_s(2) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(1) - 2.0_dp*a1*slip(1)
+            gii_lam(1) = -2.0_dp*a1*load%st(1) + 2.0_dp*b1*slip(1)
+            if (ntens == 3) then
+               gii_s(3) = -2.0_dp*(dc%k_t + dc%kc_t)*load%st(2) - 2.0_dp*a1*slip(2)
+               gii_lam(2) = -2.0_dp*a1*load%st(2) + 2.0_dp*b1*slip(2)
+            end if
             gii_d = -((d2c%k_n + d2c%kc_n)*load%s_n**2 + (d2c%k_t + d2c%kc_t)*t2) - 2.0_dp*a2*lam_s &
                + b2*lam2
          end if
@@ -260,7 +270,30 @@ contains
          end if
       end if
       at%dg_dd = g_d + g_lam(1)*dlam_dd(1) + g_lam(2)*dlam_dd(2)
+      call search_function(g, at%dg_dd, at%h, at%dh_dd)
    end subroutine growth_point
+
+   !> The function whose root the search finds (docs/theory.md, the fracture law's 'The update'):
+   !> h = sqrt(1 + g) - 1, formed as g/(1 + sqrt(1 + g)) (no cancellation; h has g's sign and the
+   !> same root), and dh/dD = (dg/dD)/(2 sqrt(1 + g)). 1 + g is eq 24's sum of release rate over
+   !> toughness, quadratic in the separation, and with the equivalent R-curve it holds
+   !> 1/sigma(D)^2 = ((1 - D (1 - eta))/s0)^2: its square root takes both out, so that h is
+   !> linear in D where the rest of G/G_c does not depend on D (an open crack in a pure mode:
+   !> Newton from D_n lands on the root), where g itself is a quadratic. Where 1 + g <= 0 (a
+   !> negative release rate, far below any root) h = g.
+   elemental subroutine search_function(g, dg_dd, h, dh_dd)
+      real(dp), intent(in) :: g, dg_dd                !! g(D) and dg/dD along lambda(D) (-)
+      real(dp), intent(out) :: h, dh_dd               !! h(D) and dh/dD (-)
+      real(dp) :: root
+      if (1.0_dp + g > 0.0_dp) then
+         root = sqrt(1.0_dp + g)
+         h = g/(1.0_dp + root)
+         dh_dd = dg_dd/(2.0_dp*root)
+      else
+         h = g
+         dh_dd = dg_dd
+      end if
+   end subroutine search_function
 
    !> The factors of the closed crack's release rate, G_II = -kk' s.s - 2 A lambda.s_T + B |lambda|^2.
    !> With m = D ufbar: GROWTH_FIXED_PI: A = C^f' - C^f m'/m, B = T^f' m - T^f m';
@@ -314,17 +347,19 @@ contains
 
    !> Crack growth in the increment from D_from (eqs 41-42, 50): the predictor keeps D_from when
    !> g(D_from) < 0; otherwise D is the first root of g in (D_from, 1], found by a safeguarded
-   !> Newton iteration from D_from on g(D) along the slip lambda(D) (slope dg/dD = g_D +
-   !> g_lambda . lambda_D, the tangent's denominator); from the second evaluation on, the Newton
-   !> point is corrected for the curvature of g by the inverse cubic Hermite interpolant through
-   !> the last two evaluations (`hermite_root`), so that a growing increment mostly ends at its
-   !> third evaluation (D_n, the Newton point, the root). The search never passes the points of a
+   !> Newton iteration from D_from along the slip lambda(D) on h(g) = sqrt(1 + g) - 1
+   !> (`search_function`: the same root and sign as g, nearly linear in D where g is quadratic;
+   !> slope dh/dD from dg/dD = g_D + g_lambda . lambda_D, the tangent's denominator); from the
+   !> second evaluation on, the Newton point is corrected for the curvature of h by the inverse
+   !> cubic Hermite interpolant through the last two evaluations (`hermite_root`), so that a
+   !> growing increment mostly ends at its second or third evaluation (D_n, the Newton point, the
+   !> root). The search never passes the points of a
    !> geometric scan towards D = 1 (N_SCAN points per run, down to 1 - D = SCAN_DEPTH (1 -
    !> D_from)) without evaluating them: a step beyond the next scan point, or uphill
-   !> (dg/dD >= 0), is replaced by that point, or by the bisection of a bracket once g < 0 has been
+   !> (dh/dD >= 0), is replaced by that point, or by the bisection of a bracket once g < 0 has been
    !> seen (as is a step inside the bracket longer than half the step before the last); g >= 0 at
    !> every scan point lets the crack run to b (D = 1). Converged when the Newton
-   !> step |g/(dg/dD)| at a point is at most ROOT_TOL + 4 eps D (D is that point), or when a
+   !> step |h/(dh/dD)| at a point is at most ROOT_TOL + 4 eps D (D is that point), or when a
    !> bracket g(D_lo) >= 0 > g(D_hi) has shrunk to ROOT_TOL + 4 eps D_hi (D is D_lo). For a closed
    !> crack every evaluation of g alternates the two sub-problems of the paper's staggered scheme
    !> (friction with D frozen, damage with lambda frozen), so the root is the staggered scheme's
@@ -379,8 +414,8 @@ contains
          step = 0.0_dp
          how = BY_SCAN
          if (have_hi) how = BY_BISECTION
-         if (at(k)%dg_dd < 0.0_dp) then
-            step = -at(k)%g/at(k)%dg_dd
+         if (at(k)%dh_dd < 0.0_dp) then
+            step = -at(k)%h/at(k)%dh_dd
             if (abs(step) <= ROOT_TOL + 4.0_dp*epsilon(1.0_dp)*at(k)%d) then
                d_new = at(k)%d                  ! >= d_from: every point searched is
                which = k
@@ -437,24 +472,24 @@ contains
       status = STATUS_STAGGER_NOT_CONVERGED
    end subroutine grow_crack
 
-   !> The search's step from two evaluations of g with their slopes: at the latest, p1 (D_1,
-   !> g_1, g_1' < 0, Newton step s = -g_1/g_1'), and another, p0 (D_0, g_0, g_0' < 0). D(g), the
-   !> inverse of g between them, is interpolated by the cubic that matches D and dD/dg = 1/g' at
-   !> both (Hermite); its value at g = 0, with u = g_1/(g_1 - g_0),
-   !>   D = D_1 + (1 - u)^2 s + u ((1 - u) g_1/g_0' + u (3 - 2u)(D_0 - D_1)),
-   !> is the Newton point D_1 + s corrected for the curvature of g: its error is of the order of
+   !> The search's step from two evaluations of h (`search_function`) with their slopes: at the
+   !> latest, p1 (D_1, h_1, h_1' < 0, Newton step s = -h_1/h_1'), and another, p0 (D_0, h_0,
+   !> h_0' < 0). D(h), the inverse of h between them, is interpolated by the cubic that matches D
+   !> and dD/dh = 1/h' at both (Hermite); its value at h = 0, with u = h_1/(h_1 - h_0),
+   !>   D = D_1 + (1 - u)^2 s + u ((1 - u) h_1/h_0' + u (3 - 2u)(D_0 - D_1)),
+   !> is the Newton point D_1 + s corrected for the curvature of h: its error is of the order of
    !> (D_0 - D)^2 (D_1 - D)^2 where Newton's is (D_1 - D)^2, so that from D_n and one Newton point
    !> the next point is mostly the root to the search's tolerance. Used (d_next returned changed)
-   !> only where g falls from p0 to p1 and the correction is at most half the Newton step;
+   !> only where h falls from p0 to p1 and the correction is at most half the Newton step;
    !> otherwise d_next stays the Newton point.
    pure subroutine hermite_root(p0, p1, s, d_next)
       type(growth_point_type), intent(in) :: p0, p1
       real(dp), intent(in) :: s                    !! Newton step from p1 (-)
       real(dp), intent(inout) :: d_next            !! in: p1%d + s; out: the step's end (-)
       real(dp) :: u, d_h
-      if (.not. (p0%dg_dd < 0.0_dp .and. (p1%d - p0%d)*(p1%g - p0%g) < 0.0_dp)) return
-      u = p1%g/(p1%g - p0%g)
-      d_h = p1%d + (1.0_dp - u)**2*s + u*((1.0_dp - u)*p1%g/p0%dg_dd + u*(3.0_dp - 2.0_dp*u)*(p0%d - p1%d))
+      if (.not. (p0%dh_dd < 0.0_dp .and. (p1%d - p0%d)*(p1%h - p0%h) < 0.0_dp)) return
+      u = p1%h/(p1%h - p0%h)
+      d_h = p1%d + (1.0_dp - u)**2*s + u*((1.0_dp - u)*p1%h/p0%dh_dd + u*(3.0_dp - 2.0_dp*u)*(p0%d - p1%d))
       if (abs(d_h - d_next) <= 0.5_dp*abs(s)) d_next = d_h
    end subroutine hermite_root
 
