@@ -58,9 +58,10 @@ module interphase_fracture
       real(dp) :: g_d                   !! dg/dD at fixed s, lambda (-)
       real(dp) :: dg_dd                 !! dg/dD along lambda(D): g_d + g_lam . lambda_D (-)
       real(dp) :: m                     !! m(D) = D ufbar(D) (-), as `slip_measure` gives it
-      real(dp) :: h                     !! the search's function h(g) (`search_function`) (-);
-                                        !! h and dh_dd are set where the derivatives are
-      real(dp) :: dh_dd                 !! dh/dD along lambda(D) (-)
+      !> the search's function h(g) (`search_function`) and dh/dD along lambda(D) (-): set where
+      !> the derivatives are formed, undefined where growth_point returns at D_n with g < 0
+      real(dp) :: h
+      real(dp) :: dh_dd
       type(response_type) :: r          !! the response at D (friction from the trial slip at D)
    end type growth_point_type
 
@@ -80,7 +81,8 @@ contains
    !> with that slip (lambda frozen). Where the crack grows (g >= 0, or D > D_n) also the partial
    !> derivatives dg/ds (Abaqus order, normal first), dg/dlambda and dg/dD at fixed lambda (these
    !> need the coefficients' second derivatives), and dg/dD along lambda(D), the slope of the root
-   !> search (at D = D_n, that of the side D > D_n); elsewhere these are zero.
+   !> search (at D = D_n, that of the side D > D_n), with the search's h and dh/dD; elsewhere these
+   !> derivatives are zero. load%d_from (D_n) and load%m_from are those `grow_crack` sets.
    pure subroutine growth_point(params, d, load, ntens, at, status)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d
@@ -275,22 +277,26 @@ contains
 
    !> The function whose root the search finds (docs/theory.md, the fracture law's 'The update'):
    !> h = sqrt(1 + g) - 1, formed as g/(1 + sqrt(1 + g)) (no cancellation; h has g's sign and the
-   !> same root), and dh/dD = (dg/dD)/(2 sqrt(1 + g)). 1 + g is eq 24's sum of release rate over
-   !> toughness, quadratic in the separation, and with the equivalent R-curve it holds
-   !> 1/sigma(D)^2 = ((1 - D (1 - eta))/s0)^2: its square root takes both out, so that h is
-   !> linear in D where the rest of G/G_c does not depend on D (an open crack in a pure mode:
-   !> Newton from D_n lands on the root), where g itself is a quadratic. Where 1 + g <= 0 (a
-   !> negative release rate, far below any root) h = g.
+   !> same root), and dh/dD = (dg/dD)/(2 sqrt(1 + g)). 1 + g is eq 24's sum
+   !> G_I/(2 G_cI) + G_II/(2 G_cII), quadratic in the separation; with the equivalent R-curve each
+   !> mode's G_c holds sigma(D)^2, sigma(D) = s0/(1 - D (1 - eta)), and the square root takes both
+   !> out: h is linear in D in mode I (open crack) and in mode II (closed crack at s_N = 0, without
+   !> friction), where Newton from D_n lands on the root and g itself is a quadratic (nearly so in
+   !> open mixed mode, where eta_N and eta_T differ little). Below g = -3/4 (a release rate under
+   !> a quarter of the toughness, far below any root) h = g + 1/4, which joins the square root's
+   !> branch with the same value and slope (dh/dg = 1) and keeps g's sign: the slope of h stays
+   !> bounded where 1 + g reaches 0 (a closed crack's G_II can change sign), so that a Newton step
+   !> |h/h'| is never below two thirds of g's |g/g'|.
    elemental subroutine search_function(g, dg_dd, h, dh_dd)
       real(dp), intent(in) :: g, dg_dd                !! g(D) and dg/dD along lambda(D) (-)
       real(dp), intent(out) :: h, dh_dd               !! h(D) and dh/dD (-)
       real(dp) :: root
-      if (1.0_dp + g > 0.0_dp) then
+      if (g > -0.75_dp) then
          root = sqrt(1.0_dp + g)
          h = g/(1.0_dp + root)
          dh_dd = dg_dd/(2.0_dp*root)
       else
-         h = g
+         h = g + 0.25_dp
          dh_dd = dg_dd
       end if
    end subroutine search_function
