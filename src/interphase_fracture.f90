@@ -56,10 +56,10 @@ module interphase_fracture
       real(dp) :: g_s(3)                !! dg/ds at fixed lambda, D (1/mm)
       real(dp) :: g_lam(2)              !! dg/dlambda at fixed s, D (1/mm)
       real(dp) :: g_d                   !! dg/dD at fixed s, lambda (-)
-      real(dp) :: dg_dd                 !! dg/dD along lambda(D): g_d + g_lam . lambda_D (-)
       real(dp) :: m                     !! m(D) = D ufbar(D) (-), as `slip_measure` gives it
-      !> the search's function h(g) (`search_function`) and dh/dD along lambda(D) (-): set where
-      !> the derivatives are formed, undefined where growth_point returns at D_n with g < 0
+      !> the search's function h(g) (`search_function`) and its slope dh/dD along lambda(D), from
+      !> dg/dD = g_d + g_lam . lambda_D (-): set where the derivatives are formed, undefined where
+      !> growth_point returns at D_n with g < 0
       real(dp) :: h
       real(dp) :: dh_dd
       type(response_type) :: r          !! the response at D (friction from the trial slip at D)
@@ -80,9 +80,9 @@ contains
    !> response at D (what the update returns when D is the root), then the release rates at D
    !> with that slip (lambda frozen). Where the crack grows (g >= 0, or D > D_n) also the partial
    !> derivatives dg/ds (Abaqus order, normal first), dg/dlambda and dg/dD at fixed lambda (these
-   !> need the coefficients' second derivatives), and dg/dD along lambda(D), the slope of the root
-   !> search (at D = D_n, that of the side D > D_n), with the search's h and dh/dD; elsewhere these
-   !> derivatives are zero. load%d_from (D_n) and load%m_from are those `grow_crack` sets.
+   !> need the coefficients' second derivatives), and the search's h with its slope dh/dD along
+   !> lambda(D) (at D = D_n, that of the side D > D_n); elsewhere the partial derivatives are zero
+   !> and h, dh/dD undefined. load%d_from (D_n) and load%m_from are those `grow_crack` sets.
    pure subroutine growth_point(params, d, load, ntens, at, status)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d
@@ -96,6 +96,7 @@ contains
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
       real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, a1, a2, b1, b2, lam_s, lam2, kappa, dkappa
       real(dp) :: ratio, dratio, band_g, band_grad(3), q, dq, d2q, tau(2), tau_norm, n_dir(2), n_dot
+      real(dp) :: dg_dd                   ! dg/dD along lambda(D) (-)
       logical :: closed, in_band, equivalent_open
       integer :: nt
 
@@ -191,7 +192,6 @@ contains
          at%g_s = 0.0_dp
          at%g_lam = 0.0_dp
          at%g_d = 0.0_dp
-         at%dg_dd = 0.0_dp
          return
       end if
 
@@ -271,8 +271,8 @@ contains
             end if
          end if
       end if
-      at%dg_dd = g_d + g_lam(1)*dlam_dd(1) + g_lam(2)*dlam_dd(2)
-      call search_function(g, at%dg_dd, at%h, at%dh_dd)
+      dg_dd = g_d + g_lam(1)*dlam_dd(1) + g_lam(2)*dlam_dd(2)
+      call search_function(g, dg_dd, at%h, at%dh_dd)
    end subroutine growth_point
 
    !> The function whose root the search finds (docs/theory.md, the fracture law's 'The update'):
