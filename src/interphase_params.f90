@@ -61,6 +61,9 @@ module interphase_params
    !> and its bit pattern.
    integer, parameter :: MAX_SELECTOR = 9
    integer(int64), parameter :: MAX_SELECTOR_BITS = transfer(real(MAX_SELECTOR, dp), 0_int64)
+   !> The bit patterns of the selector values 1, 2 and 3 (and of 1 as D0's upper end).
+   integer(int64), parameter :: ONE_BITS = transfer(1.0_dp, 0_int64), TWO_BITS = transfer(2.0_dp, 0_int64), &
+      THREE_BITS = transfer(3.0_dp, 0_int64)
 
    !> Parameters of one interface material (immutable once decoded).
    type :: law_params_type
@@ -116,9 +119,150 @@ contains
       integer, intent(out) :: status                    !! STATUS_OK or a STATUS_BAD_* code
       character(len=MESSAGE_LEN), intent(out) :: message   !! set only on failure
 
-      integer :: model, damage_law, table, nm, nprops_needed
+      integer :: model, damage_law, nm, nprops_needed, table
+      real(dp) :: k_n, k_t     !! K_N, K_T (MPa/mm): the simplified model's, 0 for the micromechanical one
+      logical :: accepted
 
       status = STATUS_OK
+      ! the common case in one pass over the bit patterns (`accept_constants`); anything it does
+      ! not accept, a bad value among it, takes the checks that name the first bad value
+      call accept_constants(nprops, props, model, damage_law, nprops_needed, accepted)
+      if (.not. accepted) then
+         call check_constants(nprops, props, model, damage_law, nprops_needed, status, message)
+         if (status /= STATUS_OK) return
+      end if
+
+      ! the constants, checked: stored in place (params is not default-initialised on entry;
+      ! the selectors hold exact small codes now, so int is their value)
+      if (model == MODEL_SIMPLIFIED) then
+         nm = NPROPS_SIMPLIFIED
+         k_n = props(PROP_K_N)
+         k_t = props(PROP_K_T)
+         table = TABLE_DEFAULT_CODE
+      else
+         nm = NPROPS_MICROMECHANICAL
+         k_n = 0.0_dp
+         k_t = 0.0_dp
+         table = int(props(PROP_TABLE))
+      end if
+      ! (one call: the compiler inlines it)
+      call store_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), &
+         props(PROP_S0_T), props(PROP_SF_T), k_n, k_t, table, params)
+      if (damage_law == DAMAGE_FRACTURE) then
+         call store_fracture(props(nm + LFM_D0), int(props(nm + LFM_RCURVE)), props(nm + LFM_GC_I), &
+            props(nm + LFM_GC_II), params)
+      else
+         ! (the type's defaults, written here)
+         params%d0 = DEFAULT_PARAMS%d0
+         params%rcurve = DEFAULT_PARAMS%rcurve
+         params%gc_i = DEFAULT_PARAMS%gc_i
+         params%gc_ii = DEFAULT_PARAMS%gc_ii
+      end if
+      if (nprops > nprops_needed) then
+         call decode_options(params, nprops - nprops_needed, props(nprops_needed + 1), nprops_needed, status, message)
+      else
+         ! (no option constants: the element passed is not read; a branch per case costs 3 to 7
+         ! instructions per call fewer than a section or a clamped index, callgrind)
+         call decode_options(params, 0, props(1), nprops_needed, status, message)
+      end if
+   end subroutine decode_props
+
+   !> The test of decode_props' common case, on the bit patterns alone (no floating-point
+   !> operation, so no exception for NaN or Inf): PROPS(1) and PROPS(2) are exactly 1 or 2,
+   !> NPROPS is the count of their model and law with at most NPROPS_OPTIONS option constants
+   !> after it, mu lies in [+0, 1e20], s0 and sf (mm) and, for the simplified model, K (MPa/mm)
+   !> in [1e-20, 1e20] with sf > s0, the table selector is +0 or 1, and for the fracture law D0
+   !> lies in (0, 1), the R-curve selector is 1, 2 or 3 and G_cI, G_cII (N/mm) lie in
+   !> [1e-20, 1e20] for the constant R-curve and are +0 for the others. `accepted` is true only
+   !> for constants that `check_constants` accepts too (which also takes -0 for mu, G_cI and
+   !> G_cII); false says nothing but that check_constants must decide. The option constants are
+   !> not tested here (decode_options). model, damage_law and nprops_needed are set when
+   !> accepted.
+   pure subroutine accept_constants(nprops, props, model, damage_law, nprops_needed, accepted)
+      integer, intent(in) :: nprops
+      real(dp), intent(in) :: props(nprops)
+      integer, intent(out) :: model, damage_law, nprops_needed
+      logical, intent(out) :: accepted
+
+      integer(int64) :: b, s0, sf
+      integer :: nm
+      logical :: ok
+
+      accepted = .false.
+      model = MODEL_SIMPLIFIED
+      damage_law = DAMAGE_DISPLACEMENT
+      nprops_needed = NPROPS_SIMPLIFIED
+      if (nprops < NPROPS_MICROMECHANICAL) return
+      b = binary64_bits(props(PROP_MODEL))
+      if (b == TWO_BITS) then
+         model = MODEL_MICROMECHANICAL
+      else if (b /= ONE_BITS) then
+         return
+      end if
+      b = binary64_bits(props(PROP_DAMAGE_LAW))
+      if (b == TWO_BITS) then
+         damage_law = DAMAGE_FRACTURE
+      else if (b /= ONE_BITS) then
+         return
+      end if
+      nm = NPROPS_SIMPLIFIED
+      if (model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
+      nprops_needed = nm
+      if (damage_law == DAMAGE_FRACTURE) nprops_needed = nm + NPROPS_FRACTURE_EXTRA
+      if (nprops < nprops_needed .or. nprops > nprops_needed + NPROPS_OPTIONS) return
+
+      ! (positive binary64 numbers are ordered like their bit patterns read as signed integers;
+      ! negative ones, -0 included, lie below every positive one, +Inf and NaN above 1e20)
+      b = binary64_bits(props(PROP_MU))
+      ok = b >= 0_int64 .and. b <= WINDOW_MAX_BITS
+      s0 = binary64_bits(props(PROP_S0_N))
+      sf = binary64_bits(props(PROP_SF_N))
+      ok = ok .and. s0 >= WINDOW_MIN_BITS .and. sf <= WINDOW_MAX_BITS .and. sf > s0
+      s0 = binary64_bits(props(PROP_S0_T))
+      sf = binary64_bits(props(PROP_SF_T))
+      ok = ok .and. s0 >= WINDOW_MIN_BITS .and. sf <= WINDOW_MAX_BITS .and. sf > s0
+      if (model == MODEL_SIMPLIFIED) then
+         b = binary64_bits(props(PROP_K_N))
+         ok = ok .and. b >= WINDOW_MIN_BITS .and. b <= WINDOW_MAX_BITS
+         b = binary64_bits(props(PROP_K_T))
+         ok = ok .and. b >= WINDOW_MIN_BITS .and. b <= WINDOW_MAX_BITS
+      else
+         b = binary64_bits(props(PROP_TABLE))
+         ok = ok .and. (b == 0_int64 .or. b == ONE_BITS)
+      end if
+      if (damage_law == DAMAGE_FRACTURE) then
+         b = binary64_bits(props(nm + LFM_D0))
+         ok = ok .and. b > 0_int64 .and. b < ONE_BITS
+         b = binary64_bits(props(nm + LFM_RCURVE))
+         if (b == ONE_BITS) then
+            s0 = binary64_bits(props(nm + LFM_GC_I))
+            sf = binary64_bits(props(nm + LFM_GC_II))
+            ok = ok .and. s0 >= WINDOW_MIN_BITS .and. s0 <= WINDOW_MAX_BITS .and. &
+               sf >= WINDOW_MIN_BITS .and. sf <= WINDOW_MAX_BITS
+         else
+            ok = ok .and. (b == TWO_BITS .or. b == THREE_BITS) .and. &
+               binary64_bits(props(nm + LFM_GC_I)) == 0_int64 .and. binary64_bits(props(nm + LFM_GC_II)) == 0_int64
+         end if
+      end if
+      accepted = ok
+   end subroutine accept_constants
+
+   !> The checks of decode_props, each of which names the first bad value: NPROPS, the
+   !> selectors, then every constant (`check_values`, `check_fracture`). Sets model, damage_law
+   !> and nprops_needed on success; the option constants are checked by decode_options.
+   pure subroutine check_constants(nprops, props, model, damage_law, nprops_needed, status, message)
+      integer, intent(in) :: nprops
+      real(dp), intent(in) :: props(nprops)
+      integer, intent(out) :: model, damage_law, nprops_needed
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+
+      integer :: table, nm
+
+      status = STATUS_OK
+      model = 0
+      damage_law = 0
+      nprops_needed = 0
       if (nprops < PROP_DAMAGE_LAW) then
          status = STATUS_BAD_NPROPS
          write (message, '(a,i0,a)') 'NPROPS = ', nprops, &
@@ -155,12 +299,9 @@ contains
          return
       end if
 
-      ! (the decoder of params_from_values, called directly: params is filled in place, without
-      ! optional arguments and a second default initialisation)
       if (model == MODEL_SIMPLIFIED) then
-         call decode_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), &
-            props(PROP_S0_T), props(PROP_SF_T), props(PROP_K_N), props(PROP_K_T), TABLE_DEFAULT_CODE, &
-            params, status, message)
+         call check_values(model, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), props(PROP_S0_T), &
+            props(PROP_SF_T), props(PROP_K_N), props(PROP_K_T), status, message)
       else
          table = selector_code(props(PROP_TABLE))
          if (table /= TABLE_DEFAULT_CODE .and. table /= TABLE_CUSTOM_CODE) then
@@ -169,29 +310,15 @@ contains
                ' is not a table selector: use 0 (built-in table) or 1 (custom table loaded at start-up)'
             return
          end if
-         call decode_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), &
-            props(PROP_S0_T), props(PROP_SF_T), 0.0_dp, 0.0_dp, table, params, status, message)
+         call check_values(model, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), props(PROP_S0_T), &
+            props(PROP_SF_T), 0.0_dp, 0.0_dp, status, message)
       end if
       if (status /= STATUS_OK) return
       if (damage_law == DAMAGE_FRACTURE) then
-         call set_fracture_params(params, props(nm + LFM_D0), selector_code(props(nm + LFM_RCURVE)), &
-            props(nm + LFM_RCURVE), props(nm + LFM_GC_I), props(nm + LFM_GC_II), nm, status, message)
-         if (status /= STATUS_OK) return
-      else
-         ! (the type's defaults, written here: params is not default-initialised on entry)
-         params%d0 = DEFAULT_PARAMS%d0
-         params%rcurve = DEFAULT_PARAMS%rcurve
-         params%gc_i = DEFAULT_PARAMS%gc_i
-         params%gc_ii = DEFAULT_PARAMS%gc_ii
+         call check_fracture(props(nm + LFM_D0), selector_code(props(nm + LFM_RCURVE)), props(nm + LFM_RCURVE), &
+            props(nm + LFM_GC_I), props(nm + LFM_GC_II), nm, status, message)
       end if
-      if (nprops > nprops_needed) then
-         call decode_options(params, nprops - nprops_needed, props(nprops_needed + 1), nprops_needed, status, message)
-      else
-         ! (no option constants: the element passed is not read; a branch per case costs 3 to 7
-         ! instructions per call fewer than a section or a clamped index, callgrind)
-         call decode_options(params, 0, props(1), nprops_needed, status, message)
-      end if
-   end subroutine decode_props
+   end subroutine check_constants
 
    !> Decode and validate the optional trailing option constants (PROPS(base + OPT_*)); the
    !> options not given keep their defaults. `base` is the PROPS index before them.
@@ -396,6 +523,19 @@ contains
       type(law_params_type), intent(inout) :: params
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
+      call check_values(model, mu, s0_n, sf_n, s0_t, sf_t, k_n_used, k_t_used, status, message)
+      if (status /= STATUS_OK) return
+      call store_values(model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n_used, k_t_used, table, params)
+   end subroutine decode_values
+
+   !> The checks of the law's constants (PROPS(3:9)): the first bad value named, with its PROPS
+   !> index, in `message`. k_n, k_t are checked for the simplified model only.
+   pure subroutine check_values(model, mu, s0_n, sf_n, s0_t, sf_t, k_n_used, k_t_used, status, message)
+      integer, intent(in) :: model
+      real(dp), intent(in) :: mu, s0_n, sf_n, s0_t, sf_t
+      real(dp), intent(in) :: k_n_used, k_t_used   !! (MPa/mm)
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
 
       status = STATUS_OK
       ! Each test fails for NaN and Inf without comparing them (no FP exception is raised).
@@ -416,8 +556,16 @@ contains
       else if (model == MODEL_SIMPLIFIED .and. .not. in_window(k_t_used)) then
          call reject(STATUS_BAD_K_T, PROP_K_T, 'K_T', k_t_used, 'must lie in '//WINDOW_TEXT//' MPa/mm', status, message)
       end if
-      if (status /= STATUS_OK) return
+   end subroutine check_values
 
+   !> The law's constants, checked, and the values derived from them, stored in `params` (its
+   !> other components keep what they hold).
+   pure subroutine store_values(model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n_used, k_t_used, table, params)
+      integer, intent(in) :: model, damage_law
+      real(dp), intent(in) :: mu, s0_n, sf_n, s0_t, sf_t
+      real(dp), intent(in) :: k_n_used, k_t_used   !! (MPa/mm)
+      integer, intent(in) :: table
+      type(law_params_type), intent(inout) :: params
       params%model = model
       params%damage_law = damage_law
       params%mu = mu
@@ -432,7 +580,7 @@ contains
       params%eta_t = s0_t/sf_t
       params%inv_s0_n = 1.0_dp/s0_n
       params%inv_s0_t_sq = (1.0_dp/s0_t)**2
-   end subroutine decode_values
+   end subroutine store_values
 
    !> Add and validate the fracture-mechanics law's constants; `base` is the PROPS index before
    !> them (for the messages: D0 is PROPS(base + 1), ...).
@@ -445,9 +593,26 @@ contains
       integer, intent(in) :: base            !! PROPS index before the law's constants
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
+      call check_fracture(d0, rcurve, rcurve_value, gc_i, gc_ii, base, status, message)
+      if (status /= STATUS_OK) return
+      call store_fracture(d0, rcurve, gc_i, gc_ii, params)
+   end subroutine set_fracture_params
+
+   !> The checks of the fracture law's constants (set_fracture_params' arguments), the first bad
+   !> value named in `message`.
+   pure subroutine check_fracture(d0, rcurve, rcurve_value, gc_i, gc_ii, base, status, message)
+      real(dp), intent(in) :: d0, rcurve_value, gc_i, gc_ii
+      integer, intent(in) :: rcurve, base
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: message
+      logical :: valid
 
       status = STATUS_OK
-      if (.not. (finite_above(d0, 0.0_dp) .and. finite_above(1.0_dp, d0))) then
+      ! (d0 compared with 1 only once it is known finite: a NaN D0 raises no invalid-operation
+      ! exception, which a build trapping them would stop on)
+      valid = finite_above(d0, 0.0_dp)
+      if (valid) valid = d0 < 1.0_dp
+      if (.not. valid) then
          call reject(STATUS_BAD_D0, base + LFM_D0, 'D0 = a0/b', d0, &
             'must lie in (0, 1): the fracture-mechanics law needs an initial crack', status, message)
          return
@@ -475,12 +640,18 @@ contains
                'is used by the constant R-curve only: set it to 0', status, message)
          end if
       end if
-      if (status /= STATUS_OK) return
+   end subroutine check_fracture
+
+   !> The fracture law's constants, checked, stored in `params`.
+   pure subroutine store_fracture(d0, rcurve, gc_i, gc_ii, params)
+      real(dp), intent(in) :: d0, gc_i, gc_ii
+      integer, intent(in) :: rcurve
+      type(law_params_type), intent(inout) :: params
       params%d0 = d0
       params%rcurve = rcurve
       params%gc_i = gc_i
       params%gc_ii = gc_ii
-   end subroutine set_fracture_params
+   end subroutine store_fracture
 
    !> Set a rejection status and its message: PROPS(index) symbol = value is out of range: rule.
    pure subroutine reject(code, index, symbol, value, rule, status, message)
