@@ -64,7 +64,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    type(interface_state_type) :: old, new
    real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6), work
    integer :: status, severity, nsep, i, j
-   logical :: host_energies
+   logical :: host_energies, within
    !> the host is CalculiX (known once PROPS are decoded): its DDSDDE is uninitialised, and it
    !> symmetrises and stores it even from a call that asks for a cut-back
    logical :: calculix
@@ -93,18 +93,28 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       ! the host's values, before any arithmetic on them (so that none can raise an exception):
       ! STRAN and DSTRAN as the separation is checked (within HOST_INCREMENT_MAX; a smaller
       ! increment may help), STRESS, SSE and SPD within HOST_VALUE_MAX (the values the UMAT
-      ! returned last: fatal otherwise)
-      if (.not. (all_within(ntens, stran, HOST_INCREMENT_MAX) .and. all_within(ntens, dstran, HOST_INCREMENT_MAX))) then
-         ! (es_fields: an infinity reads Infinity with every compiler)
-         message = 'STRAN '//es_fields(stran, 12, 4)
-         stress_text = es_fields(dstran, 11, 3)
-         message = trim(message)//', DSTRAN'//trim(stress_text)
-         status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
-            all(is_finite(stran)) .and. all(is_finite(dstran)))
-         severity = SEVERITY_WARNING
-         exit update
-      end if
-      if (.not. all_within(ntens, stress, HOST_VALUE_MAX)) then
+      ! returned last: fatal otherwise). STRAN, DSTRAN and STRESS in one pass; which of them
+      ! failed is looked at only on failure.
+      ! (NTENS >= 2 once the layer map is set: the first two components written out)
+      within = is_within(stran(1), HOST_INCREMENT_MAX) .and. is_within(stran(2), HOST_INCREMENT_MAX) .and. &
+         is_within(dstran(1), HOST_INCREMENT_MAX) .and. is_within(dstran(2), HOST_INCREMENT_MAX) .and. &
+         is_within(stress(1), HOST_VALUE_MAX) .and. is_within(stress(2), HOST_VALUE_MAX)
+      do i = 3, ntens
+         within = within .and. is_within(stran(i), HOST_INCREMENT_MAX) .and. is_within(dstran(i), HOST_INCREMENT_MAX) &
+            .and. is_within(stress(i), HOST_VALUE_MAX)
+      end do
+      if (.not. within) then
+         if (.not. (all_within(ntens, stran, HOST_INCREMENT_MAX) .and. all_within(ntens, dstran, HOST_INCREMENT_MAX))) then
+            ! (es_fields: an infinity reads Infinity with every compiler)
+            message = 'STRAN '//es_fields(stran, 12, 4)
+            stress_text = es_fields(dstran, 11, 3)
+            message = trim(message)//', DSTRAN'//trim(stress_text)
+            status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
+               all(is_finite(stran)) .and. all(is_finite(dstran)))
+            severity = SEVERITY_WARNING
+            exit update
+         end if
+         ! STRAN and DSTRAN in range: STRESS is not
          stress_text = es_fields(stress, 11, 3)
          write (message, '(a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), &
             ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned last)'
