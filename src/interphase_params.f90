@@ -205,10 +205,7 @@ contains
       else if (b /= ONE_BITS) then
          return
       end if
-      nm = NPROPS_SIMPLIFIED
-      if (model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
-      nprops_needed = nm
-      if (damage_law == DAMAGE_FRACTURE) nprops_needed = nm + NPROPS_FRACTURE_EXTRA
+      call constants_count(model, damage_law, nm, nprops_needed)
       if (nprops < nprops_needed .or. nprops > nprops_needed + NPROPS_OPTIONS) return
 
       ! (positive binary64 numbers are ordered like their bit patterns read as signed integers;
@@ -247,6 +244,16 @@ contains
       accepted = ok
    end subroutine accept_constants
 
+   !> The number of the model's constants (PROPS(1:nm)) and of all constants before the options.
+   pure subroutine constants_count(model, damage_law, nm, nprops_needed)
+      integer, intent(in) :: model, damage_law
+      integer, intent(out) :: nm, nprops_needed
+      nm = NPROPS_SIMPLIFIED
+      if (model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
+      nprops_needed = nm
+      if (damage_law == DAMAGE_FRACTURE) nprops_needed = nm + NPROPS_FRACTURE_EXTRA
+   end subroutine constants_count
+
    !> The checks of decode_props, each of which names the first bad value: NPROPS, the
    !> selectors, then every constant (`check_values`, `check_fracture`). Sets model, damage_law
    !> and nprops_needed on success; the option constants are checked by decode_options.
@@ -284,10 +291,7 @@ contains
             'or 2 (fracture mechanics, eqs 20-24)'
          return
       end if
-      nm = NPROPS_SIMPLIFIED
-      if (model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
-      nprops_needed = nm
-      if (damage_law == DAMAGE_FRACTURE) nprops_needed = nm + NPROPS_FRACTURE_EXTRA
+      call constants_count(model, damage_law, nm, nprops_needed)
       if (nprops < nprops_needed .or. nprops > nprops_needed + NPROPS_OPTIONS) then
          status = STATUS_BAD_NPROPS
          write (message, '(a,i0,a,a,a,a,a,i0,a,i0,a)') 'NPROPS = ', nprops, ' but the ', &
