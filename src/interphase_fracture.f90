@@ -23,13 +23,12 @@ module interphase_fracture
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
    use interphase_enums, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI, &
-      MODEL_MICROMECHANICAL, REGIME_STICK, REGIME_SLIP
-   use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED
-   use interphase_coefficients, only: coefficient_set_type
+      MODEL_MICROMECHANICAL, REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+   use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED, STATUS_BAD_COEFFICIENTS
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
    use interphase_provider, only: coefficients_at
    use interphase_rcurve, only: tabulated_rcurve
-   use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure, contact_band_shape, &
-      band_stiffness
+   use interphase_response, only: response_type
    implicit none
    private
    ! (growth_point: public for the tests, which check the search's roots against g itself)
@@ -127,6 +126,11 @@ contains
       slip = at%r%slip
       ! the contact band (open crack, 0 < s_N < chi |s_T|): psi holds 1/2 q g, so G_II holds -q' g
       in_band = .false.
+      ! (q and its slopes set outside the band too: only to keep the compiler's uninitialised-use
+      ! analysis quiet, they are read only in the band)
+      q = 0.0_dp
+      dq = 0.0_dp
+      d2q = 0.0_dp
       if (params%contact_band > 0.0_dp .and. params%model == MODEL_MICROMECHANICAL .and. .not. closed &
          .and. params%rcurve /= RCURVE_EQUIVALENT) then
          call contact_band_shape(params%contact_band, load%s_n, load%st, ntens, in_band, band_g, band_grad)
@@ -505,5 +509,9 @@ contains
       integer, intent(in) :: j
       scan_point = 1.0_dp - (1.0_dp - d_from)*SCAN_DEPTH**(real(j, dp)/real(N_SCAN, dp))
    end function scan_point
+
+   ! the response at fixed D, here where the compiler inlines it into the search's evaluation
+   ! (interphase_response's, from the same source: a private copy)
+   include 'interphase_response.inc'
 
 end module interphase_fracture

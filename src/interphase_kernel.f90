@@ -31,14 +31,14 @@ module interphase_kernel
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
-      REGIME_SLIP
+      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, STATUS_BAD_TIME_INCREMENT, &
-      STATUS_SEPARATION_OUT_OF_RANGE
-   use interphase_coefficients, only: coefficient_set_type
+      STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_COEFFICIENTS
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
    use interphase_provider, only: coefficients_at, coefficient_values_at
    use interphase_damage, only: damage_terms_type, displacement_damage, damage_slopes
    use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
-   use interphase_response, only: response_type, respond, growth_trial_slip, slip_measure
+   use interphase_response, only: response_type, slip_measure
    use interphase_state, only: interface_state_type
    implicit none
    private
@@ -348,5 +348,8 @@ contains
    ! the same source)
    include 'interphase_binary64_bits.inc'
    include 'interphase_within.inc'
+   ! the response at fixed D, here where the compiler inlines it into the update
+   ! (interphase_response's, from the same source: a private copy)
+   include 'interphase_response.inc'
 
 end module interphase_kernel
