@@ -25,8 +25,8 @@ module interphase_micro_coefficients
       DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS
    implicit none
    private
-   public :: micro_coefficients, micro_ufbar, load_custom_table, custom_table_source, table_coefficients, custom_table_loaded, &
-      check_interpolant, default_table_data, micro_block_coefficients
+   public :: micro_coefficients, micro_values, micro_ufbar, load_custom_table, custom_table_source, table_coefficients, &
+      custom_table_loaded, check_interpolant, default_table_data, micro_block_coefficients
 
    !> Points per interval between two rows at which `check_interpolant` evaluates the interpolant.
    integer, parameter :: INTERPOLANT_SAMPLES = 16
@@ -132,11 +132,11 @@ contains
                   + 3.0_dp*t*coef_table(j, 3, interval))
             end do
          else
-            ! the values alone (the same Horner form, so the same numbers)
-            do j = 1, N_COEFFICIENTS
-               v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
-                  + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
-            end do
+            ! the values alone: table_values (the same guide, the same Horner form, so the same
+            ! numbers)
+            call table_values(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, &
+               d, coef, status)
+            return
          end if
       else
          call cubic_locate(knots, x, interval, status)
@@ -164,6 +164,62 @@ contains
          d2coef_dd2 = as_set(d2v, d2tf)
       end if
    end subroutine table_coefficients
+
+   !> The coefficients at D from the selected table, values only (`micro_coefficients` without
+   !> derivatives, the entry of the updates that need none: the same numbers bit for bit, the
+   !> same statuses; a procedure of its own, so that its code does not depend on how the compiler
+   !> specialises the optional arguments of table_coefficients).
+   pure subroutine micro_values(table, d, coef, status)
+      integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
+      real(dp), intent(in) :: d                              !! damage D = a/b
+      type(coefficient_set_type), intent(out) :: coef        !! coefficients at D
+      integer, intent(out) :: status
+      if (table == TABLE_CUSTOM_CODE) then
+         if (.not. allocated(custom_coef)) then
+            status = STATUS_TABLE_NOT_LOADED
+            return
+         end if
+         call table_values(custom_variable, size(custom_knots), custom_knots, custom_coef, size(custom_guide), &
+            custom_guide, custom_guide_scale, custom_guide_steps, d, coef, status)
+      else
+         call table_values(DEFAULT_TABLE_VARIABLE, size(DEFAULT_TABLE_KNOTS), DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, &
+            size(DEFAULT_TABLE_GUIDE), DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS, d, &
+            coef, status)
+      end if
+   end subroutine micro_values
+
+   !> table_coefficients' values without derivatives (its guided path): the interval from the
+   !> guide, every column's cubic in Horner form, T^f = (D T^f)/D (-huge at D = 0). (Arrays of
+   !> explicit shape: no descriptors, and the column stride a constant, whichever table it is.)
+   pure subroutine table_values(variable, n_knots, knots, coef_table, n_guide, guide, guide_scale, guide_steps, d, &
+         coef, status)
+      integer, intent(in) :: variable                        !! VARIABLE_* of the knots
+      integer, intent(in) :: n_knots                         !! knots (>= 2)
+      real(dp), intent(in) :: knots(n_knots)                 !! knots, ascending
+      real(dp), intent(in) :: coef_table(N_COEFFICIENTS, 0:3, n_knots - 1)   !! as table_coefficients'
+      integer, intent(in) :: n_guide                         !! cells of the guide
+      integer, intent(in) :: guide(n_guide)
+      real(dp), intent(in) :: guide_scale
+      integer, intent(in) :: guide_steps
+      real(dp), intent(in) :: d
+      type(coefficient_set_type), intent(out) :: coef
+      integer, intent(out) :: status
+      real(dp) :: x, dx_dd, d2x_dd2, t, v(N_COEFFICIENTS), tf
+      integer :: interval, candidate, j, k
+      if (d > 0.0_dp .and. d < D_MIN_CRACK) then
+         status = STATUS_BAD_COEFFICIENTS
+         return
+      end if
+      call crack_variable(variable, d, x, dx_dd, d2x_dd2)
+      include 'interphase_guided_interval.inc'
+      do j = 1, N_COEFFICIENTS
+         v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
+            + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
+      end do
+      tf = -huge(1.0_dp)
+      if (d > 0.0_dp) tf = v(IC_DTF)/d
+      coef = as_set(v, tf)
+   end subroutine table_values
 
    !> ufbar(D) alone, for the slip measure m = D ufbar (interphase_response): the column IC_UFBAR
    !> of micro_coefficients' set, at the same interval in the same Horner form, so the same

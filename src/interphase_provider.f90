@@ -12,7 +12,7 @@ module interphase_provider
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
       STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
-   use interphase_micro_coefficients, only: micro_coefficients, micro_ufbar, custom_table_loaded
+   use interphase_micro_coefficients, only: micro_coefficients, micro_values, micro_ufbar, custom_table_loaded
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    implicit none
    private
@@ -58,7 +58,7 @@ contains
          call simplified_coefficients(params%k_n, params%k_t, d, c, unused_derivatives)
          status = STATUS_OK
       case (MODEL_MICROMECHANICAL)
-         call micro_coefficients(params%table, d, c, status=status)
+         call micro_values(params%table, d, c, status)
       case default
          status = STATUS_MODEL_UNAVAILABLE
       end select
