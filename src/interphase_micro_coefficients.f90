@@ -102,42 +102,27 @@ contains
       integer, intent(in), optional :: guide_steps
 
       real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS), d2v(N_COEFFICIENTS)
-      real(dp) :: tf, dtf, d2tf, t
-      integer :: interval, candidate, j, k
+      real(dp) :: tf, dtf, d2tf
+      integer :: interval
 
       if (d > 0.0_dp .and. d < D_MIN_CRACK) then
          status = STATUS_BAD_COEFFICIENTS
          return
       end if
+      if (present(guide) .and. .not. present(dcoef_dd)) then
+         ! the values alone: table_values (the same guide, the same Horner form, so the same
+         ! numbers)
+         call table_values(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, &
+            d, coef, status)
+         return
+      end if
       call crack_variable(variable, d, x, dx_dd, d2x_dd2)
       if (present(guide)) then
-         ! the interval from the guide, and cubic_eval's Horner form, here where the loop knows
-         ! its columns and the data's unit strides
-         include 'interphase_guided_interval.inc'
-         if (present(d2coef_dd2)) then
-            do j = 1, N_COEFFICIENTS
-               v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
-                  + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
-               dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
-                  + 3.0_dp*t*coef_table(j, 3, interval))
-               d2v(j) = 2.0_dp*coef_table(j, 2, interval) + 6.0_dp*t*coef_table(j, 3, interval)
-            end do
-            ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
-            d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
-         else if (present(dcoef_dd)) then
-            do j = 1, N_COEFFICIENTS
-               v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
-                  + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
-               dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
-                  + 3.0_dp*t*coef_table(j, 3, interval))
-            end do
-         else
-            ! the values alone: table_values (the same guide, the same Horner form, so the same
-            ! numbers)
-            call table_values(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, &
-               d, coef, status)
-            return
-         end if
+         call guided_cubics(size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, x, &
+            present(d2coef_dd2), v, dv, d2v, status)
+         if (status /= STATUS_OK) return
+         ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
+         if (present(d2coef_dd2)) d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
       else
          call cubic_locate(knots, x, interval, status)
          if (status /= STATUS_OK) return
@@ -164,6 +149,44 @@ contains
          d2coef_dd2 = as_set(d2v, d2tf)
       end if
    end subroutine table_coefficients
+
+   !> The guided path of table_coefficients: the interval of x from the knots' guide, and every
+   !> column's cubic in cubic_eval's Horner form with its first derivative in x (and the second,
+   !> `second`), here where the loop knows its columns and the data's unit strides (arrays of
+   !> explicit shape: no descriptors).
+   pure subroutine guided_cubics(n_knots, knots, coef_table, n_guide, guide, guide_scale, guide_steps, x, second, &
+         v, dv, d2v, status)
+      integer, intent(in) :: n_knots                         !! knots (>= 2)
+      real(dp), intent(in) :: knots(n_knots)                 !! knots, ascending
+      real(dp), intent(in) :: coef_table(N_COEFFICIENTS, 0:3, n_knots - 1)   !! as table_coefficients'
+      integer, intent(in) :: n_guide                         !! cells of the guide
+      integer, intent(in) :: guide(n_guide)
+      real(dp), intent(in) :: guide_scale
+      integer, intent(in) :: guide_steps
+      real(dp), intent(in) :: x                              !! the crack variable
+      logical, intent(in) :: second                          !! d2v too (else left undefined)
+      real(dp), intent(out) :: v(N_COEFFICIENTS), dv(N_COEFFICIENTS), d2v(N_COEFFICIENTS)  !! in x
+      integer, intent(out) :: status
+      real(dp) :: t
+      integer :: interval, candidate, j, k
+      include 'interphase_guided_interval.inc'
+      if (second) then
+         do j = 1, N_COEFFICIENTS
+            v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
+               + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
+            dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
+               + 3.0_dp*t*coef_table(j, 3, interval))
+            d2v(j) = 2.0_dp*coef_table(j, 2, interval) + 6.0_dp*t*coef_table(j, 3, interval)
+         end do
+      else
+         do j = 1, N_COEFFICIENTS
+            v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
+               + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
+            dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
+               + 3.0_dp*t*coef_table(j, 3, interval))
+         end do
+      end if
+   end subroutine guided_cubics
 
    !> The coefficients at D from the selected table, values only (`micro_coefficients` without
    !> derivatives, the entry of the updates that need none: the same numbers bit for bit, the
