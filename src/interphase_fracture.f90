@@ -23,10 +23,11 @@ module interphase_fracture
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type
    use interphase_enums, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI, &
-      MODEL_MICROMECHANICAL, REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
-   use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED, STATUS_BAD_COEFFICIENTS
-   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
-   use interphase_provider, only: coefficients_at
+      MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+   use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED, STATUS_BAD_COEFFICIENTS, &
+      STATUS_MODEL_UNAVAILABLE
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
+   use interphase_micro_coefficients, only: micro_coefficients
    use interphase_rcurve, only: tabulated_rcurve
    use interphase_response, only: response_type
    implicit none
@@ -513,5 +514,9 @@ contains
    ! the response at fixed D, here where the compiler inlines it into the search's evaluation
    ! (interphase_response's, from the same source: a private copy)
    include 'interphase_response.inc'
+   ! the coefficient set at D with its derivatives, here where the compiler inlines it into the
+   ! growth function (interphase_provider's, from the same source: private copies)
+   include 'interphase_coefficients_at.inc'
+   include 'interphase_simplified.inc'
 
 end module interphase_fracture

@@ -31,12 +31,12 @@ module interphase_kernel
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
-      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, MODEL_MICROMECHANICAL
+      REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, STATUS_BAD_TIME_INCREMENT, &
-      STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_COEFFICIENTS
-   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
-   use interphase_provider, only: coefficients_at, coefficient_values_at
-   use interphase_damage, only: damage_terms_type, displacement_damage, damage_slopes
+      STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_COEFFICIENTS, STATUS_MODEL_UNAVAILABLE
+   use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
+   use interphase_micro_coefficients, only: micro_coefficients, micro_values
+   use interphase_damage, only: damage_terms_type
    use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
    use interphase_response, only: response_type, slip_measure
    use interphase_state, only: interface_state_type
@@ -351,5 +351,13 @@ contains
    ! the response at fixed D, here where the compiler inlines it into the update
    ! (interphase_response's, from the same source: a private copy)
    include 'interphase_response.inc'
+   ! the displacement law, here where the compiler inlines it into the update (interphase_damage's,
+   ! from the same source: a private copy)
+   include 'interphase_damage.inc'
+   ! the coefficient set at D, here where the compiler inlines it into the update
+   ! (interphase_provider's, from the same source: private copies)
+   include 'interphase_coefficients_at.inc'
+   include 'interphase_coefficient_values_at.inc'
+   include 'interphase_simplified.inc'
 
 end module interphase_kernel

@@ -20,49 +20,8 @@ module interphase_provider
 
 contains
 
-   !> Coefficients at D (and d/dD; d2/dD2 when `d2c` is present).
-   pure subroutine coefficients_at(params, d, c, dc, status, d2c)
-      type(law_params_type), intent(in) :: params
-      real(dp), intent(in) :: d                                   !! damage D = a/b
-      type(coefficient_set_type), intent(out) :: c, dc            !! coefficients and d/dD
-      integer, intent(out) :: status
-      type(coefficient_set_type), intent(out), optional :: d2c    !! d2/dD2
-      select case (params%model)
-      case (MODEL_SIMPLIFIED)
-         call simplified_coefficients(params%k_n, params%k_t, d, c, dc)
-         if (present(d2c)) d2c = NO_COEFFICIENTS   ! linear in D
-         status = STATUS_OK
-      case (MODEL_MICROMECHANICAL)
-         call micro_coefficients(params%table, d, c, dc, status, d2c)
-      case default
-         status = STATUS_MODEL_UNAVAILABLE
-      end select
-   end subroutine coefficients_at
-
-   !> The coefficients at D alone, the numbers coefficients_at's set holds (bit for bit), with
-   !> the same statuses, for a caller that uses no D-derivative (the response at a damage that
-   !> does not grow: `respond` with with_dd = .false.); dc is the set of zeros (NO_COEFFICIENTS),
-   !> not the derivatives. The micromechanical table's derivatives are not formed (a third of
-   !> its cost).
-   pure subroutine coefficient_values_at(params, d, c, dc, status)
-      type(law_params_type), intent(in) :: params
-      real(dp), intent(in) :: d                                   !! damage D = a/b
-      type(coefficient_set_type), intent(out) :: c                !! coefficients
-      type(coefficient_set_type), intent(out) :: dc               !! zeros
-      integer, intent(out) :: status
-      type(coefficient_set_type) :: unused_derivatives
-      dc = NO_COEFFICIENTS
-      select case (params%model)
-      case (MODEL_SIMPLIFIED)
-         ! (its derivatives are constants, formed with the values and dropped)
-         call simplified_coefficients(params%k_n, params%k_t, d, c, unused_derivatives)
-         status = STATUS_OK
-      case (MODEL_MICROMECHANICAL)
-         call micro_values(params%table, d, c, status)
-      case default
-         status = STATUS_MODEL_UNAVAILABLE
-      end select
-   end subroutine coefficient_values_at
+   include 'interphase_coefficients_at.inc'
+   include 'interphase_coefficient_values_at.inc'
 
    !> ufbar(D) alone (-), the number coefficients_at's set holds (bit for bit), for the slip
    !> measure m = D ufbar; the same statuses.
