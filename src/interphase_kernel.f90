@@ -117,6 +117,9 @@ contains
       !> law: D_n < D < 1), the only case where dD/ds can be non-zero and the tangent needs dt/dD
       !> (D can change otherwise too: a jump to 1, viscous relaxation; dD/ds is 0 there)
       logical :: grows
+      !> the response at D is still to be formed (by `respond`, from c, dc and the trial slip):
+      !> the displacement law, and the fracture law's crack that ran to b
+      logical :: form_response
 
       nt = ntens - 1
       if (ntens /= 2 .and. ntens /= 3) then
@@ -182,10 +185,16 @@ contains
             if (status /= STATUS_OK) return
             call growth_trial_slip(params%growth_slip, old%d, m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
          end if
-         call respond(params, c, dc, d, slip_trial, s_n, st, ntens, grows, r, status, dslip_dd)
-         if (status /= STATUS_OK) return
+         form_response = .true.
       else
-         call fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, grows, status)
+         call fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, grows, status, form_response, c, dc, &
+            slip_trial, dslip_dd)
+         if (status /= STATUS_OK) return
+      end if
+      ! the response at D: the displacement law's, and the fracture law's where the crack ran to b
+      ! (one call of the response in the update, which the compiler inlines)
+      if (form_response) then
+         call respond(params, c, dc, d, slip_trial, s_n, st, ntens, grows, r, status, dslip_dd)
          if (status /= STATUS_OK) return
       end if
 
@@ -279,16 +288,22 @@ contains
 
    !> The fracture-mechanics law: D from g = 0, the response at that D, and dD/ds (the root
    !> search returns both from its last evaluation; only D = 1 needs its own).
-   pure subroutine fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, grows, status)
+   pure subroutine fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, grows, status, broken, c, dc, &
+         slip_trial, dslip_dd)
       type(law_params_type), intent(in) :: params
       type(interface_state_type), intent(in) :: old
       real(dp), intent(in) :: s_n, st(2)
       integer, intent(in) :: ntens
       real(dp), intent(out) :: d                      !! damage at the end of the increment
-      type(response_type), intent(out) :: r           !! response at d
+      type(response_type), intent(inout) :: r         !! response at d (unless broken)
       real(dp), intent(out) :: dd_ds(3)               !! dD/ds (0 unless the crack grows)
       logical, intent(out) :: grows                   !! the crack grows to D < 1: dd_ds may be non-zero
       integer, intent(out) :: status
+      !> the crack ran to b (D = 1): r is not set, the caller forms it by `respond` (without
+      !> D-derivatives) from c, dc at D = 1 and the trial slip (`broken_setup`)
+      logical, intent(out) :: broken
+      type(coefficient_set_type), intent(inout) :: c, dc   !! at D = 1 where broken
+      real(dp), intent(inout) :: slip_trial(2), dslip_dd(2)   !! lambda_trial, its D-slope, where broken
 
       type(crack_load_type) :: load
       type(growth_point_type) :: at(2)
@@ -300,13 +315,15 @@ contains
       load%s_n = s_n
       load%st = st
       load%slip_old = old%slip
+      broken = .false.
       call grow_crack(params, d_n, load, ntens, d, status, at, which)
       if (status /= STATUS_OK) return
       dd_ds = 0.0_dp
       grows = .false.
       if (which == 0) then
          ! D = 1 (the crack ran to b)
-         call broken_response(params, d_n, load%m_from, d, old%slip, s_n, st, ntens, r, status)
+         broken = .true.
+         call broken_setup(params, d_n, load%m_from, d, old%slip, c, dc, slip_trial, dslip_dd, status)
          return
       end if
       r = at(which)%r
@@ -324,25 +341,21 @@ contains
       end if
    end subroutine fracture_update
 
-   !> The response of the fracture law's crack that has run to b in the increment (D = 1), its
-   !> trial slip from D_n (a routine of its own: the update does not set up its coefficient sets
-   !> otherwise).
-   pure subroutine broken_response(params, d_n, m_n, d, slip_old, s_n, st, ntens, r, status)
+   !> What the response of the fracture law's crack that has run to b in the increment (D = 1)
+   !> is formed from: the coefficients at D = 1 and the trial slip from D_n (a routine of its own:
+   !> the update does not set up its coefficient sets otherwise).
+   pure subroutine broken_setup(params, d_n, m_n, d, slip_old, c, dc, slip_trial, dslip_dd, status)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d_n, m_n                !! D_n and m(D_n) (-)
       real(dp), intent(in) :: d                       !! D = 1 (-)
       real(dp), intent(in) :: slip_old(2)             !! lambda_n (mm)
-      real(dp), intent(in) :: s_n, st(2)
-      integer, intent(in) :: ntens
-      type(response_type), intent(out) :: r
+      type(coefficient_set_type), intent(inout) :: c, dc   !! at D, and zeros (no derivatives)
+      real(dp), intent(inout) :: slip_trial(2), dslip_dd(2)   !! lambda_trial (mm), d/dD (mm)
       integer, intent(out) :: status
-      type(coefficient_set_type) :: c, dc
-      real(dp) :: slip_trial(2), dslip_dd(2)
       call coefficient_values_at(params, d, c, dc, status)
       if (status /= STATUS_OK) return
       call growth_trial_slip(params%growth_slip, d_n, m_n, d, c, dc, slip_old, slip_trial, dslip_dd)
-      call respond(params, c, dc, d, slip_trial, s_n, st, ntens, .false., r, status, dslip_dd)
-   end subroutine broken_response
+   end subroutine broken_setup
 
    ! the separation's range test, here where the compiler inlines it (interphase_finite's, from
    ! the same source)
