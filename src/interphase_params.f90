@@ -22,6 +22,9 @@ module interphase_params
    private
    public :: law_params_type, from_props, decode_props, params_from_values, set_fracture_params, set_options, to_props, &
       refuse_umat_options
+   ! (for the UMAT, which includes decode_props' source: interphase_decode_props.inc)
+   public :: check_constants, decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, ONE_BITS, TWO_BITS, &
+      THREE_BITS
 
    !> Admissible magnitudes of the dimensional PROPS (s0, sf in mm; K in MPa/mm; G_c in N/mm) and
    !> the largest friction coefficient: every product the update forms of up to eight such
@@ -109,150 +112,7 @@ contains
       call decode_props(size(props), props, params, status, message)
    end subroutine from_props
 
-   !> `from_props` for a PROPS array of explicit size NPROPS, assigning every component of
-   !> `params` on success (so that a caller's variable is neither default-initialised again nor
-   !> passed with a descriptor: the UMAT decodes PROPS at every call this way).
-   pure subroutine decode_props(nprops, props, params, status, message)
-      integer, intent(in) :: nprops                     !! NPROPS
-      real(dp), intent(in) :: props(nprops)             !! PROPS as given by the host
-      type(law_params_type), intent(inout) :: params    !! decoded parameters (undefined on failure)
-      integer, intent(out) :: status                    !! STATUS_OK or a STATUS_BAD_* code
-      character(len=MESSAGE_LEN), intent(out) :: message   !! set only on failure
-
-      integer :: model, damage_law, nm, nprops_needed, table
-      real(dp) :: k_n, k_t     !! K_N, K_T (MPa/mm): the simplified model's, 0 for the micromechanical one
-      logical :: accepted
-
-      status = STATUS_OK
-      ! the common case in one pass over the bit patterns (`accept_constants`); anything it does
-      ! not accept, a bad value among it, takes the checks that name the first bad value
-      call accept_constants(nprops, props, model, damage_law, nprops_needed, accepted)
-      if (.not. accepted) then
-         call check_constants(nprops, props, model, damage_law, nprops_needed, status, message)
-         if (status /= STATUS_OK) return
-      end if
-
-      ! the constants, checked: stored in place (params is not default-initialised on entry;
-      ! the selectors hold exact small codes now, so int is their value)
-      if (model == MODEL_SIMPLIFIED) then
-         nm = NPROPS_SIMPLIFIED
-         k_n = props(PROP_K_N)
-         k_t = props(PROP_K_T)
-         table = TABLE_DEFAULT_CODE
-      else
-         nm = NPROPS_MICROMECHANICAL
-         k_n = 0.0_dp
-         k_t = 0.0_dp
-         table = int(props(PROP_TABLE))
-      end if
-      ! (one call: the compiler inlines it)
-      call store_values(model, damage_law, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), &
-         props(PROP_S0_T), props(PROP_SF_T), k_n, k_t, table, params)
-      if (damage_law == DAMAGE_FRACTURE) then
-         call store_fracture(props(nm + LFM_D0), int(props(nm + LFM_RCURVE)), props(nm + LFM_GC_I), &
-            props(nm + LFM_GC_II), params)
-      else
-         ! (the type's defaults, written here)
-         params%d0 = DEFAULT_PARAMS%d0
-         params%rcurve = DEFAULT_PARAMS%rcurve
-         params%gc_i = DEFAULT_PARAMS%gc_i
-         params%gc_ii = DEFAULT_PARAMS%gc_ii
-      end if
-      if (nprops > nprops_needed) then
-         call decode_options(params, nprops - nprops_needed, props(nprops_needed + 1), nprops_needed, status, message)
-      else
-         ! (no option constants: the element passed is not read; a branch per case costs 3 to 7
-         ! instructions per call fewer than a section or a clamped index, callgrind)
-         call decode_options(params, 0, props(1), nprops_needed, status, message)
-      end if
-   end subroutine decode_props
-
-   !> The test of decode_props' common case, on the bit patterns alone (no floating-point
-   !> operation, so no exception for NaN or Inf): PROPS(1) and PROPS(2) are exactly 1 or 2,
-   !> NPROPS is the count of their model and law with at most NPROPS_OPTIONS option constants
-   !> after it, mu lies in [+0, 1e20], s0 and sf (mm) and, for the simplified model, K (MPa/mm)
-   !> in [1e-20, 1e20] with sf > s0, the table selector is +0 or 1, and for the fracture law D0
-   !> lies in (0, 1), the R-curve selector is 1, 2 or 3 and G_cI, G_cII (N/mm) lie in
-   !> [1e-20, 1e20] for the constant R-curve and are +0 for the others. `accepted` is true only
-   !> for constants that `check_constants` accepts too (which also takes -0 for mu, G_cI and
-   !> G_cII); false says nothing but that check_constants must decide. The option constants are
-   !> not tested here (decode_options). model, damage_law and nprops_needed are set when
-   !> accepted.
-   pure subroutine accept_constants(nprops, props, model, damage_law, nprops_needed, accepted)
-      integer, intent(in) :: nprops
-      real(dp), intent(in) :: props(nprops)
-      integer, intent(out) :: model, damage_law, nprops_needed
-      logical, intent(out) :: accepted
-
-      integer(int64) :: b, s0, sf
-      integer :: nm
-      logical :: ok
-
-      accepted = .false.
-      model = MODEL_SIMPLIFIED
-      damage_law = DAMAGE_DISPLACEMENT
-      nprops_needed = NPROPS_SIMPLIFIED
-      if (nprops < NPROPS_MICROMECHANICAL) return
-      b = binary64_bits(props(PROP_MODEL))
-      if (b == TWO_BITS) then
-         model = MODEL_MICROMECHANICAL
-      else if (b /= ONE_BITS) then
-         return
-      end if
-      b = binary64_bits(props(PROP_DAMAGE_LAW))
-      if (b == TWO_BITS) then
-         damage_law = DAMAGE_FRACTURE
-      else if (b /= ONE_BITS) then
-         return
-      end if
-      call constants_count(model, damage_law, nm, nprops_needed)
-      if (nprops < nprops_needed .or. nprops > nprops_needed + NPROPS_OPTIONS) return
-
-      ! (positive binary64 numbers are ordered like their bit patterns read as signed integers;
-      ! negative ones, -0 included, lie below every positive one, +Inf and NaN above 1e20)
-      b = binary64_bits(props(PROP_MU))
-      ok = b >= 0_int64 .and. b <= WINDOW_MAX_BITS
-      s0 = binary64_bits(props(PROP_S0_N))
-      sf = binary64_bits(props(PROP_SF_N))
-      ok = ok .and. s0 >= WINDOW_MIN_BITS .and. sf <= WINDOW_MAX_BITS .and. sf > s0
-      s0 = binary64_bits(props(PROP_S0_T))
-      sf = binary64_bits(props(PROP_SF_T))
-      ok = ok .and. s0 >= WINDOW_MIN_BITS .and. sf <= WINDOW_MAX_BITS .and. sf > s0
-      if (model == MODEL_SIMPLIFIED) then
-         b = binary64_bits(props(PROP_K_N))
-         ok = ok .and. b >= WINDOW_MIN_BITS .and. b <= WINDOW_MAX_BITS
-         b = binary64_bits(props(PROP_K_T))
-         ok = ok .and. b >= WINDOW_MIN_BITS .and. b <= WINDOW_MAX_BITS
-      else
-         b = binary64_bits(props(PROP_TABLE))
-         ok = ok .and. (b == 0_int64 .or. b == ONE_BITS)
-      end if
-      if (damage_law == DAMAGE_FRACTURE) then
-         b = binary64_bits(props(nm + LFM_D0))
-         ok = ok .and. b > 0_int64 .and. b < ONE_BITS
-         b = binary64_bits(props(nm + LFM_RCURVE))
-         if (b == ONE_BITS) then
-            s0 = binary64_bits(props(nm + LFM_GC_I))
-            sf = binary64_bits(props(nm + LFM_GC_II))
-            ok = ok .and. s0 >= WINDOW_MIN_BITS .and. s0 <= WINDOW_MAX_BITS .and. &
-               sf >= WINDOW_MIN_BITS .and. sf <= WINDOW_MAX_BITS
-         else
-            ok = ok .and. (b == TWO_BITS .or. b == THREE_BITS) .and. &
-               binary64_bits(props(nm + LFM_GC_I)) == 0_int64 .and. binary64_bits(props(nm + LFM_GC_II)) == 0_int64
-         end if
-      end if
-      accepted = ok
-   end subroutine accept_constants
-
-   !> The number of the model's constants (PROPS(1:nm)) and of all constants before the options.
-   pure subroutine constants_count(model, damage_law, nm, nprops_needed)
-      integer, intent(in) :: model, damage_law
-      integer, intent(out) :: nm, nprops_needed
-      nm = NPROPS_SIMPLIFIED
-      if (model == MODEL_MICROMECHANICAL) nm = NPROPS_MICROMECHANICAL
-      nprops_needed = nm
-      if (damage_law == DAMAGE_FRACTURE) nprops_needed = nm + NPROPS_FRACTURE_EXTRA
-   end subroutine constants_count
+   include 'interphase_decode_props.inc'
 
    !> The checks of decode_props, each of which names the first bad value: NPROPS, the
    !> selectors, then every constant (`check_values`, `check_fracture`). Sets model, damage_law
@@ -391,21 +251,6 @@ contains
       end if
       call store_options(values, params)
    end subroutine decode_options
-
-   !> The options' components of `params` from their values (OPTION_SPECS' order).
-   pure subroutine store_options(values, params)
-      real(dp), intent(in) :: values(NPROPS_OPTIONS)    !! the option values, OPT_* order
-      type(law_params_type), intent(inout) :: params    !! its option components set
-      ! (the selectors hold exact small integers here: int, which compiles to one instruction,
-      ! where nint is a call of libm's lround)
-      params%growth_slip = int(values(OPT_GROWTH_SLIP))
-      params%contact_band = values(OPT_CONTACT_BAND)
-      params%viscosity = values(OPT_VISCOSITY)
-      params%stiffness = int(values(OPT_STIFFNESS))
-      params%layer_thickness = values(OPT_LAYER_THICKNESS)
-      params%layer_normal = int(values(OPT_LAYER_NORMAL))
-      params%host = int(values(OPT_HOST))
-   end subroutine store_options
 
    !> Entry points that take separations (the VUMAT, the C API) refuse a material that sets the
    !> UMAT's own options, the thin-layer mode (OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL) and the
@@ -562,30 +407,6 @@ contains
       end if
    end subroutine check_values
 
-   !> The law's constants, checked, and the values derived from them, stored in `params` (its
-   !> other components keep what they hold).
-   pure subroutine store_values(model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n_used, k_t_used, table, params)
-      integer, intent(in) :: model, damage_law
-      real(dp), intent(in) :: mu, s0_n, sf_n, s0_t, sf_t
-      real(dp), intent(in) :: k_n_used, k_t_used   !! (MPa/mm)
-      integer, intent(in) :: table
-      type(law_params_type), intent(inout) :: params
-      params%model = model
-      params%damage_law = damage_law
-      params%mu = mu
-      params%s0_n = s0_n
-      params%sf_n = sf_n
-      params%s0_t = s0_t
-      params%sf_t = sf_t
-      params%k_n = k_n_used
-      params%k_t = k_t_used
-      params%table = table
-      params%eta_n = s0_n/sf_n
-      params%eta_t = s0_t/sf_t
-      params%inv_s0_n = 1.0_dp/s0_n
-      params%inv_s0_t_sq = (1.0_dp/s0_t)**2
-   end subroutine store_values
-
    !> Add and validate the fracture-mechanics law's constants; `base` is the PROPS index before
    !> them (for the messages: D0 is PROPS(base + 1), ...).
    pure subroutine set_fracture_params(params, d0, rcurve, rcurve_value, gc_i, gc_ii, base, status, message)
@@ -645,17 +466,6 @@ contains
          end if
       end if
    end subroutine check_fracture
-
-   !> The fracture law's constants, checked, stored in `params`.
-   pure subroutine store_fracture(d0, rcurve, gc_i, gc_ii, params)
-      real(dp), intent(in) :: d0, gc_i, gc_ii
-      integer, intent(in) :: rcurve
-      type(law_params_type), intent(inout) :: params
-      params%d0 = d0
-      params%rcurve = rcurve
-      params%gc_i = gc_i
-      params%gc_ii = gc_ii
-   end subroutine store_fracture
 
    !> Set a rejection status and its message: PROPS(index) symbol = value is out of range: rule.
    pure subroutine reject(code, index, symbol, value, rule, status, message)

@@ -37,10 +37,14 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
       STATUS_BAD_TIME_INCREMENT, STATUS_BAD_NTENS, STATUS_BAD_OPTION, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
       STATUS_BAD_STATE, STATUS_BAD_NSTATV
-   use interphase_params, only: law_params_type, decode_props, HOST_VALUE_MAX, HOST_INCREMENT_MAX, SLIP_MAX
+   use interphase_params, only: law_params_type, HOST_VALUE_MAX, HOST_INCREMENT_MAX, SLIP_MAX, check_constants, &
+      decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS
    use interphase_layer, only: layer_map_type
    use interphase_layout, only: HOST_CALCULIX, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, NPROPS_FRACTURE_EXTRA, &
       OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, MODEL_MICROMECHANICAL, DAMAGE_FRACTURE, PROP_TABLE, TABLE_CUSTOM_CODE, &
+      PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, PROP_SF_T, PROP_K_N, PROP_K_T, &
+      NPROPS_OPTIONS, LFM_D0, LFM_RCURVE, LFM_GC_I, LFM_GC_II, OPT_GROWTH_SLIP, OPT_CONTACT_BAND, OPT_VISCOSITY, &
+      OPT_STIFFNESS, OPT_HOST, OPTION_DEFAULTS, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, TABLE_DEFAULT_CODE, &
       RCURVE_TABULATED, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, NSTATV_REQUIRED, &
       NSTATV_VISCOUS, REGIME_INTACT, REGIME_SLIP
    use interphase_state, only: interface_state_type, ONE_BITS, SLIP_MAX_BITS, SIGN_BIT, REGIME_BITS
@@ -211,14 +215,15 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
 
 contains
 
-   ! the range tests of the host's values, the components' map, the run-time data check and the
-   ! STATEV reader and writer, here where the compiler inlines them (interphase_finite's tests,
-   ! interphase_layer's map, interphase_provider's check and interphase_state's reader, from the
-   ! same source)
+   ! the range tests of the host's values, the components' map, the run-time data check, the
+   ! STATEV reader and writer and the PROPS decoder's common path, here where the compiler inlines
+   ! them (interphase_finite's tests, interphase_layer's map, interphase_provider's check,
+   ! interphase_state's reader and interphase_params' decoder, from the same source)
    include 'interphase_binary64_bits.inc'
    include 'interphase_within.inc'
    include 'interphase_layer_map.inc'
    include 'interphase_run_time_data.inc'
    include 'interphase_statev.inc'
+   include 'interphase_decode_props.inc'
 
 end subroutine umat
