@@ -254,6 +254,7 @@ contains
       integer, intent(out) :: status
       if (table == TABLE_CUSTOM_CODE) then
          if (.not. allocated(custom_coef)) then
+            ufbar = 0.0_dp
             status = STATUS_TABLE_NOT_LOADED
             return
          end if
@@ -278,6 +279,9 @@ contains
       integer, intent(out) :: status
       real(dp) :: x, dx_dd, d2x_dd2, t
       integer :: interval, candidate, k
+      ! (ufbar defined on the failure paths too, 0 there: with the callers inlined, for the
+      ! compiler's uninitialised-use analysis)
+      ufbar = 0.0_dp
       if (d > 0.0_dp .and. d < D_MIN_CRACK) then
          status = STATUS_BAD_COEFFICIENTS
          return

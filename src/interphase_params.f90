@@ -23,8 +23,7 @@ module interphase_params
    public :: law_params_type, from_props, decode_props, params_from_values, set_fracture_params, set_options, to_props, &
       refuse_umat_options
    ! (for the UMAT, which includes decode_props' source: interphase_decode_props.inc)
-   public :: check_constants, decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, ONE_BITS, TWO_BITS, &
-      THREE_BITS
+   public :: check_constants, decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS
 
    !> Admissible magnitudes of the dimensional PROPS (s0, sf in mm; K in MPa/mm; G_c in N/mm) and
    !> the largest friction coefficient: every product the update forms of up to eight such
@@ -217,8 +216,9 @@ contains
 
       status = STATUS_OK
       if (noptions == 0) then
-         ! no option constants (most materials): the defaults, stored as constants (the copy of
-         ! OPTION_DEFAULTS into `values` below cost 18 instructions a UMAT call, callgrind)
+         ! no option constants: the defaults, stored as constants (decode_props stores them
+         ! itself; the copy of OPTION_DEFAULTS into `values` below cost 18 instructions a UMAT
+         ! call, callgrind)
          call store_options(OPTION_DEFAULTS, params)
          return
       end if

@@ -37,6 +37,7 @@ contains
       case (MODEL_MICROMECHANICAL)
          call micro_ufbar(params%table, d, ufbar, status)
       case default
+         ufbar = 0.0_dp
          status = STATUS_MODEL_UNAVAILABLE
       end select
    end subroutine ufbar_at
