@@ -296,15 +296,15 @@ contains
       real(dp), intent(in) :: s_n, st(2)
       integer, intent(in) :: ntens
       real(dp), intent(out) :: d                      !! damage at the end of the increment
-      type(response_type), intent(inout) :: r         !! response at d (unless broken)
+      type(response_type), intent(out) :: r           !! response at d (unless broken)
       real(dp), intent(out) :: dd_ds(3)               !! dD/ds (0 unless the crack grows)
       logical, intent(out) :: grows                   !! the crack grows to D < 1: dd_ds may be non-zero
       integer, intent(out) :: status
       !> the crack ran to b (D = 1): r is not set, the caller forms it by `respond` (without
-      !> D-derivatives) from c, dc at D = 1 and the trial slip (`broken_setup`)
+      !> D-derivatives) from c, dc at D = 1 and the trial slip from D_n
       logical, intent(out) :: broken
-      type(coefficient_set_type), intent(inout) :: c, dc   !! at D = 1 where broken
-      real(dp), intent(inout) :: slip_trial(2), dslip_dd(2)   !! lambda_trial, its D-slope, where broken
+      type(coefficient_set_type), intent(out) :: c, dc     !! at D = 1 where broken
+      real(dp), intent(out) :: slip_trial(2), dslip_dd(2)     !! lambda_trial, its D-slope, where broken
 
       type(crack_load_type) :: load
       type(growth_point_type) :: at(2)
@@ -324,7 +324,9 @@ contains
       if (which == 0) then
          ! D = 1 (the crack ran to b)
          broken = .true.
-         call broken_setup(params, d_n, load%m_from, d, old%slip, c, dc, slip_trial, dslip_dd, status)
+         call coefficient_values_at(params, d, c, dc, status)
+         if (status /= STATUS_OK) return
+         call growth_trial_slip(params%growth_slip, d_n, load%m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
          return
       end if
       r = at(which)%r
@@ -341,22 +343,6 @@ contains
          if (abs(denominator) > 0.0_dp) dd_ds(1:ntens) = -numerator(1:ntens)/denominator
       end if
    end subroutine fracture_update
-
-   !> What the response of the fracture law's crack that has run to b in the increment (D = 1)
-   !> is formed from: the coefficients at D = 1 and the trial slip from D_n (a routine of its own:
-   !> the update does not set up its coefficient sets otherwise).
-   pure subroutine broken_setup(params, d_n, m_n, d, slip_old, c, dc, slip_trial, dslip_dd, status)
-      type(law_params_type), intent(in) :: params
-      real(dp), intent(in) :: d_n, m_n                !! D_n and m(D_n) (-)
-      real(dp), intent(in) :: d                       !! D = 1 (-)
-      real(dp), intent(in) :: slip_old(2)             !! lambda_n (mm)
-      type(coefficient_set_type), intent(inout) :: c, dc   !! at D, and zeros (no derivatives)
-      real(dp), intent(inout) :: slip_trial(2), dslip_dd(2)   !! lambda_trial (mm), d/dD (mm)
-      integer, intent(out) :: status
-      call coefficient_values_at(params, d, c, dc, status)
-      if (status /= STATUS_OK) return
-      call growth_trial_slip(params%growth_slip, d_n, m_n, d, c, dc, slip_old, slip_trial, dslip_dd)
-   end subroutine broken_setup
 
    ! the separation's range test, here where the compiler inlines it (interphase_finite's, from
    ! the same source)

@@ -215,15 +215,9 @@ contains
       integer :: k
 
       status = STATUS_OK
-      if (noptions == 0) then
-         ! no option constants: the defaults, stored as constants (decode_props stores them
-         ! itself; the copy of OPTION_DEFAULTS into `values` below cost 18 instructions a UMAT
-         ! call, callgrind)
-         call store_options(OPTION_DEFAULTS, params)
-         return
-      end if
       ! every option from its entry in OPTION_SPECS: the default, or the value given when it
-      ! passes the entry's check
+      ! passes the entry's check (with no option constants, the defaults; decode_props stores
+      ! those itself)
       values = OPTION_DEFAULTS
       do k = 1, noptions
          ! (the table's components read in place: a local copy of an entry, a derived type with
