@@ -161,6 +161,11 @@ contains
                dd_ds(1) = dd_dsn
                t = sqrt(t_sq)
                if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
+            else if (d_hat < 1.0_dp .and. d_law >= 0.0_dp) then
+               ! D stays D_n (D^ <= D_n): the value max gave, assigned again from D_n alone, so
+               ! that the coefficients and the response, which follow, wait on a predicted branch
+               ! and not on D^'s square root and division (3-4 ns a call, docs/performance.md)
+               d = d_law + 0.0_dp
             end if
          end if
          new%d_inviscid = d
