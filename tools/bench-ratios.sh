@@ -19,13 +19,17 @@
 #     not decode every AVX instruction a -march=native build may use), if valgrind is installed;
 #   - the UMAT in the one-file Abaqus/Standard source (make-user-file.sh) compiled alone with
 #     -O3, the inlining limits and no LTO, as docs/abaqus.md recommends, and linked with the
-#     benchmark driver: best ns per call (-march=native) and instructions per call (callgrind,
-#     -march=x86-64-v2);
+#     benchmark driver (compiled with the flags the CMake Release build gives it, so that the
+#     builds are timed by the same loop): best ns per call (-march=native) and instructions per
+#     call (callgrind, -march=x86-64-v2);
+#   - the benchmark's own cost: the same driver linked with an empty UMAT (the loop, the 38
+#     arguments and the call, nothing else), best ns per call;
 #   - instructions per VUMAT point (callgrind, nblock = 4096, 4096 points x 140 increments):
 #     vumat_ and the plain copy of its arrays, in the one-file Abaqus/Explicit source
 #     (examples/abaqus/make-user-file.sh --explicit) compiled as docs/abaqus.md recommends, with
 #     -march=x86-64-v3 (AVX2) for valgrind: the build an Abaqus/Explicit host makes.
 # --quick: fewer points and calls (a smoke test of the script, not figures to record).
+# KEEP_WORK=1 in the environment keeps the work directory (the one-file builds' logs) on exit.
 # Not a test: nothing is checked against a goal here; docs/performance.md records the figures.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -69,7 +73,7 @@ calls=999996
 callgrind_calls=6000
 if [ $quick = yes ]; then points=8192; calls=60000; callgrind_calls=600; fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/interphase-bench-ratios.XXXXXX")
-trap 'rm -rf "$work"' EXIT
+trap '[ -n "${KEEP_WORK:-}" ] || rm -rf "$work"' EXIT
 
 commit=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
 if ! git -C "$here" diff --quiet HEAD 2>/dev/null; then commit="$commit+changes"; fi
@@ -86,9 +90,15 @@ onefile_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200
 # the UMAT in the one-file Abaqus/Standard source (make-user-file.sh), compiled ALONE with -O3
 # and without LTO as docs/abaqus.md recommends, linked with the benchmark driver: the build an
 # Abaqus/Standard host makes. Built twice: -march=native for the wall clock, -march=x86-64-v2
-# for callgrind. (Needs the generated table and driver version source of a build tree.)
+# for callgrind. (Needs the generated table and driver version source of a build tree.) The
+# driver is compiled with the CMake Release build's flags for it (without LTO), as in DIR/nolto:
+# its loop alone takes 4-5 ns a call more at -O3 than at -O2 (docs/performance.md), so that
+# drivers compiled differently would not time the builds alike. With native, also the same
+# driver linked with an empty UMAT (bench-umat-empty: standard.o's umat made a weak symbol, which
+# the empty one replaces), the benchmark's own cost.
 onefile_umat() {
    local arch=$1 dir=$work/standard-$1
+   local driver_flags="-O3 -march=$arch -frecursive -ffp-contract=off"
    mkdir -p "$dir"
    (cd "$dir" && bash "$here/examples/abaqus/make-user-file.sh" --build-dir "$nolto" -o standard.f90 >/dev/null \
       && printf '%s\n' 'subroutine stdb_abqerr(lop, string, intv, realv, charv)' \
@@ -98,11 +108,29 @@ onefile_umat() {
       && gfortran -O3 -march="$arch" -fno-trapping-math -ffp-contract=off -frecursive $onefile_inline \
          -c standard.f90 \
       && gfortran -O2 -fno-inline -c stub.f90 \
-      && gfortran -O2 -c "$here/drivers/interphase_driver_text.f90" "$nolto/drivers/interphase_driver_version.f90" \
-      && gfortran -O2 -c "$here/drivers/interphase_driver_cli.f90" \
-      && gfortran -O2 -c "$here/drivers/bench_umat.f90" \
+      && gfortran $driver_flags -c "$here/drivers/interphase_driver_text.f90" "$nolto/drivers/interphase_driver_version.f90" \
+      && gfortran $driver_flags -c "$here/drivers/interphase_driver_cli.f90" \
+      && gfortran $driver_flags -c "$here/drivers/bench_umat.f90" \
       && gfortran -o bench-umat-standard bench_umat.o standard.o stub.o interphase_driver_cli.o \
-         interphase_driver_text.o interphase_driver_version.o -llapack) >"$work/standard-$arch.log" 2>&1
+         interphase_driver_text.o interphase_driver_version.o -llapack) >"$work/standard-$arch.log" 2>&1 || return 1
+   [ "$arch" = native ] || return 0
+   (cd "$dir" && printf '%s\n' \
+         'subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, dstran, &' \
+         '      time, dtime, temp, dtemp, predef, dpred, cmname, ndi, nshr, ntens, nstatv, props, nprops, &' \
+         '      coords, drot, pnewdt, celent, dfgrd0, dfgrd1, noel, npt, layer, kspt, jstep, kinc)' \
+         '   implicit none' \
+         '   integer, intent(in) :: ndi, nshr, ntens, nstatv, nprops, noel, npt, layer, kspt, kinc, jstep(4)' \
+         '   double precision, intent(inout) :: stress(ntens), statev(nstatv), ddsdde(ntens, ntens), sse, spd' \
+         '   double precision, intent(inout) :: scd, rpl, pnewdt, ddsddt(ntens), drplde(ntens), drpldt' \
+         '   double precision, intent(in) :: stran(ntens), dstran(ntens), time(2), dtime, temp, dtemp' \
+         '   double precision, intent(in) :: predef(*), dpred(*), props(nprops), coords(3), drot(3, 3)' \
+         '   double precision, intent(in) :: celent, dfgrd0(3, 3), dfgrd1(3, 3)' \
+         '   character(len=80), intent(in) :: cmname' \
+         'end subroutine umat' >empty_umat.f90 \
+      && gfortran -O2 -c empty_umat.f90 \
+      && objcopy --weaken-symbol=umat_ standard.o standard-weak.o \
+      && gfortran -o bench-umat-empty bench_umat.o empty_umat.o standard-weak.o stub.o interphase_driver_cli.o \
+         interphase_driver_text.o interphase_driver_version.o -llapack) >>"$work/standard-$arch.log" 2>&1
 }
 onefile_umat native || true
 if [ -x "$work/standard-native/bench-umat-standard" ]; then
@@ -110,6 +138,11 @@ if [ -x "$work/standard-native/bench-umat-standard" ]; then
 else
    echo "(the one-file Standard benchmark did not build: see below)"; cat "$work/standard-native.log"
    : >"$work/umat-onefile.txt"
+fi
+if [ -x "$work/standard-native/bench-umat-empty" ]; then
+   "$work/standard-native/bench-umat-empty" "$calls" 5 >"$work/umat-empty.txt"
+else
+   : >"$work/umat-empty.txt"
 fi
 
 have_valgrind=no
@@ -197,6 +230,10 @@ for row in "${rows[@]}"; do
    printf '%-34s %10s %10s %10s %12s %12s\n' "$name ${hist#mixed }" "${lto[$c]}" "${nol[$c]}" "${one[$c]}" \
       "${ir[$c]}" "${irf[$c]}"
 done
+empty2=$(umat_ns "$work/umat-empty.txt" "simplified + disp." "mixed 2-D")
+empty3=$(umat_ns "$work/umat-empty.txt" "simplified + disp." "mixed 3-D")
+echo "the benchmark's own loop, arguments and call: the same driver with an empty UMAT, best ns per"
+echo "call: ${empty2:--} (2-D), ${empty3:--} (3-D); every ns figure above includes it"
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {if (a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.2f", a/b}'; }
 echo
 printf '%-50s %8s %8s %8s %12s %12s\n' "ratio" "LTO" "no LTO" "one-file" "instructions" "one-file"
