@@ -13,9 +13,10 @@
 !> times each from the virgin state, and prints the best and median wall time per call
 !> (`system_clock`, int64). The sum of all returned tractions is printed as a checksum so the
 !> calls cannot be optimised away. Material: the paper's Table 1 data as in drivers/cases.
-!> The time per call includes this program's own loop and the call with its 38 arguments:
-!> tools/bench-ratios.sh times the same program linked with an empty UMAT (about 12 ns a call
-!> compiled as the CMake Release build compiles it, 8 ns at -O2; docs/performance.md).
+!> The time per call includes this program's own loop and the call with its 37 arguments (and
+!> CMNAME's hidden length): tools/bench-ratios.sh times the same program linked with an empty
+!> UMAT (about 12 ns a call compiled as the CMake Release build without LTO compiles it, 7.6-8.9
+!> ns at -O2; with LTO the UMAT is specialised to the constant arguments; docs/performance.md).
 program bench_umat
    use, intrinsic :: iso_fortran_env, only: int64, output_unit, error_unit
    use interphase_kinds, only: dp

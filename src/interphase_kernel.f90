@@ -162,9 +162,11 @@ contains
                t = sqrt(t_sq)
                if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
             else if (d_hat < 1.0_dp .and. d_law >= 0.0_dp) then
-               ! D stays D_n (D^ <= D_n): the value max gave, assigned again from D_n alone, so
-               ! that the coefficients and the response, which follow, wait on a predicted branch
-               ! and not on D^'s square root and division (3-4 ns a call, docs/performance.md)
+               ! D stays D_law (not growing, D^ < 1: D^ <= D_law): the value max gave, assigned
+               ! again from D_law alone, so that the coefficients and the response, which follow,
+               ! wait on a predicted branch and not on D^'s square root and division (2-4 ns a
+               ! call without LTO, docs/performance.md; a compiler that turned this branch into a
+               ! conditional move would bring the wait back, not change a result)
                d = d_law + 0.0_dp
             end if
          end if

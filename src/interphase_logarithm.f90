@@ -6,10 +6,10 @@
 !>
 !> Method: y = 2^e m with m in [sqrt(1/2), sqrt(2)) from the bits of y (exact), then
 !> ln y = e ln 2 + ln m, ln m = 2 atanh(s) = 2 s + s z P(z), s = (m - 1)/(m + 1), z = s^2,
-!> P(z) = sum_{k=1..10} 2 z^(k-1)/(2k + 1) (the Taylor series of atanh; |s| <= 0.1716,
-!> z <= 0.0295, so the first neglected term is below 1e-18 relative). m - 1 is exact
-!> (Sterbenz), the division rounds once: the result is within a few units in the last place of
-!> ln y (tests/test_spline.pf compares it with the intrinsic over many decades).
+!> P(z) = sum_{k=1..10} 2 z^(k-1)/(2k + 1) (the Taylor series of atanh, evaluated in Estrin's
+!> scheme; |s| <= 0.1716, z <= 0.0295, so the first neglected term is below 1e-18 relative).
+!> m - 1 is exact (Sterbenz), the division rounds once: the result is within a few units in the
+!> last place of ln y (tests/test_spline.pf compares it with the intrinsic over many decades).
 module interphase_logarithm
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
@@ -83,15 +83,21 @@ contains
    end function reduced_mantissa
 
    !> ln y = e ln 2 + ln m, m in [1/sqrt(2), sqrt(2)]: ln m = 2 atanh(s), s = (m - 1)/(m + 1),
-   !> as its series to s^21.
+   !> as its series to s^21. P(z) in Estrin's scheme: the pairs C_k + z C_(k+1), combined with
+   !> z^2, then z^4, so that the chain of dependent operations after z is four multiply-adds
+   !> long, where Horner's form is ten (the point update waits for this logarithm before the table
+   !> lookup can start: 6 ns of the micromechanical UMAT call, docs/performance.md). The same
+   !> operations, in the same order, in the scalar and the block form.
    elemental real(dp) function ln_series(e, m) result(ln_y)
       real(dp), intent(in) :: e, m
-      real(dp) :: f, s, z
+      real(dp) :: f, s, z, z2, z4
       f = m - 1.0_dp
       s = f/(2.0_dp + f)
       z = s*s
-      ln_y = e*LN2 + (2.0_dp*s + s*(z*(C1 + z*(C2 + z*(C3 + z*(C4 + z*(C5 + z*(C6 + z*(C7 + z*(C8 + z*(C9 &
-         + z*C10)))))))))))
+      z2 = z*z
+      z4 = z2*z2
+      ln_y = e*LN2 + (2.0_dp*s + s*(z*(((C1 + z*C2) + z2*(C3 + z*C4)) &
+         + z4*(((C5 + z*C6) + z2*(C7 + z*C8)) + z4*(C9 + z*C10)))))
    end function ln_series
 
 end module interphase_logarithm

@@ -22,8 +22,8 @@
 #     benchmark driver (compiled with the flags the CMake Release build gives it, so that the
 #     builds are timed by the same loop): best ns per call (-march=native) and instructions per
 #     call (callgrind, -march=x86-64-v2);
-#   - the benchmark's own cost: the same driver linked with an empty UMAT (the loop, the 38
-#     arguments and the call, nothing else), best ns per call;
+#   - the benchmark's own cost: the same driver linked with an empty UMAT (the loop, the 37
+#     arguments and CMNAME's hidden length, and the call, nothing else), best ns per call;
 #   - instructions per VUMAT point (callgrind, nblock = 4096, 4096 points x 140 increments):
 #     vumat_ and the plain copy of its arrays, in the one-file Abaqus/Explicit source
 #     (examples/abaqus/make-user-file.sh --explicit) compiled as docs/abaqus.md recommends, with
@@ -41,7 +41,7 @@ while [ $# -gt 0 ]; do
       --no-build) build=no ;;
       --quick) quick=yes ;;
       --build-root) root=$2; shift ;;
-      -h|--help) sed -n '2,24p' "$0"; exit 0 ;;
+      -h|--help) sed -n '2,/^# Not a test/p' "$0"; exit 0 ;;
       *) echo "bench-ratios.sh: unknown argument '$1' (see --help)" >&2; exit 2 ;;
    esac
    shift
@@ -74,6 +74,7 @@ callgrind_calls=6000
 if [ $quick = yes ]; then points=8192; calls=60000; callgrind_calls=600; fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/interphase-bench-ratios.XXXXXX")
 trap '[ -n "${KEEP_WORK:-}" ] || rm -rf "$work"' EXIT
+if [ -n "${KEEP_WORK:-}" ]; then echo "bench-ratios.sh: the work directory $work is kept (KEEP_WORK)"; fi
 
 commit=$(git -C "$here" rev-parse --short HEAD 2>/dev/null || echo unknown)
 if ! git -C "$here" diff --quiet HEAD 2>/dev/null; then commit="$commit+changes"; fi
@@ -92,13 +93,13 @@ onefile_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200
 # Abaqus/Standard host makes. Built twice: -march=native for the wall clock, -march=x86-64-v2
 # for callgrind. (Needs the generated table and driver version source of a build tree.) The
 # driver is compiled with the CMake Release build's flags for it (without LTO), as in DIR/nolto:
-# its loop alone takes 4-5 ns a call more at -O3 than at -O2 (docs/performance.md), so that
+# its loop alone takes 3-4 ns a call more at -O3 than at -O2 (docs/performance.md), so that
 # drivers compiled differently would not time the builds alike. With native, also the same
 # driver linked with an empty UMAT (bench-umat-empty: standard.o's umat made a weak symbol, which
 # the empty one replaces), the benchmark's own cost.
 onefile_umat() {
    local arch=$1 dir=$work/standard-$1
-   local driver_flags="-O3 -march=$arch -frecursive -ffp-contract=off"
+   local driver_flags="-O3 -march=$arch -frecursive -ffp-contract=off $onefile_inline"
    mkdir -p "$dir"
    (cd "$dir" && bash "$here/examples/abaqus/make-user-file.sh" --build-dir "$nolto" -o standard.f90 >/dev/null \
       && printf '%s\n' 'subroutine stdb_abqerr(lop, string, intv, realv, charv)' \
@@ -142,6 +143,9 @@ fi
 if [ -x "$work/standard-native/bench-umat-empty" ]; then
    "$work/standard-native/bench-umat-empty" "$calls" 5 >"$work/umat-empty.txt"
 else
+   if [ -x "$work/standard-native/bench-umat-standard" ]; then
+      echo "(the benchmark with an empty UMAT did not build: see below)"; cat "$work/standard-native.log"
+   fi
    : >"$work/umat-empty.txt"
 fi
 
@@ -233,7 +237,8 @@ done
 empty2=$(umat_ns "$work/umat-empty.txt" "simplified + disp." "mixed 2-D")
 empty3=$(umat_ns "$work/umat-empty.txt" "simplified + disp." "mixed 3-D")
 echo "the benchmark's own loop, arguments and call: the same driver with an empty UMAT, best ns per"
-echo "call: ${empty2:--} (2-D), ${empty3:--} (3-D); every ns figure above includes it"
+echo "call: ${empty2:--} (2-D), ${empty3:--} (3-D); the no-LTO and one-file figures above include it"
+echo "(with LTO the UMAT is specialised to the benchmark's constant arguments: no such call)"
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN {if (a == "-" || b == "-" || b + 0 == 0) print "-"; else printf "%.2f", a/b}'; }
 echo
 printf '%-50s %8s %8s %8s %12s %12s\n' "ratio" "LTO" "no LTO" "one-file" "instructions" "one-file"
