@@ -170,22 +170,13 @@ contains
       real(dp) :: t
       integer :: interval, candidate, j, k
       include 'interphase_guided_interval.inc'
-      if (second) then
-         do j = 1, N_COEFFICIENTS
-            v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
-               + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
-            dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
-               + 3.0_dp*t*coef_table(j, 3, interval))
-            d2v(j) = 2.0_dp*coef_table(j, 2, interval) + 6.0_dp*t*coef_table(j, 3, interval)
-         end do
-      else
-         do j = 1, N_COEFFICIENTS
-            v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
-               + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
-            dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
-               + 3.0_dp*t*coef_table(j, 3, interval))
-         end do
-      end if
+      do j = 1, N_COEFFICIENTS
+         v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
+            + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
+         dv(j) = coef_table(j, 1, interval) + t*(2.0_dp*coef_table(j, 2, interval) &
+            + 3.0_dp*t*coef_table(j, 3, interval))
+         if (second) d2v(j) = 2.0_dp*coef_table(j, 2, interval) + 6.0_dp*t*coef_table(j, 3, interval)
+      end do
    end subroutine guided_cubics
 
    !> The coefficients at D from the selected table, values only (`micro_coefficients` without
