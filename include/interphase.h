@@ -243,9 +243,10 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  *                              imposed values or the update's detail)
  * @param detail_len            size of @p detail in bytes (257 holds any message)
  * @return INTERPHASE_STATUS_OK; a material status as interphase_update;
- *         INTERPHASE_STATUS_BAD_HISTORY (nrows 0, times, controls, increments, output_every,
- *         traction_tolerance); INTERPHASE_STATUS_BEYOND_PEAK (an imposed traction is raised
- *         beyond the largest the point reached: no solution), INTERPHASE_STATUS_MIXED_NOT_CONVERGED
+ *         INTERPHASE_STATUS_BAD_HISTORY (nrows 0, times, a value that is not finite, controls,
+ *         increments, output_every, traction_tolerance: checked before any update);
+ *         INTERPHASE_STATUS_BEYOND_PEAK (an imposed traction is raised beyond the largest the
+ *         point reached, or the point no longer carries load in its direction: no solution), INTERPHASE_STATUS_MIXED_NOT_CONVERGED
  *         (Newton failed even after the halvings), or the status of an update that failed even
  *         after the halvings or for good; INTERPHASE_STATUS_OUTPUT_FULL when the replay has more
  *         rows than @p capacity (the arrays hold the first @p capacity rows: call again with

@@ -23,7 +23,11 @@
 !> Sub-stepping: when an update fails (a status other than STATUS_OK) or Newton does not
 !> converge, the step is halved and retried, up to MAX_HALVINGS times within one sub-increment.
 !> When that is not enough and an imposed traction is being raised beyond the largest the point
-!> reached, no solution exists: STATUS_BEYOND_PEAK. An update failure that the update marks as
+!> reached, no solution exists: STATUS_BEYOND_PEAK. A traction-controlled block whose pivot is
+!> below FLAT_STIFFNESS times the largest tangent entry met in the replay is numerically flat and
+!> gives no Newton step: a fully damaged point carries no more load (drivers/README.md, 'Mixed
+!> control'), where the micromechanical table's round-off stiffness would otherwise reach any
+!> imposed traction at a separation of 1e11 mm or more. An update failure that the update marks as
 !> fatal (a setup error found during the run: no smaller step can cure it) ends the replay at
 !> once.
 !>
@@ -43,6 +47,14 @@ module interphase_mixed_control
    integer, parameter, public :: MAX_HALVINGS = 10
    !> Largest number of Newton iterations (updates) of one mixed-control step.
    integer, parameter, public :: MAX_NEWTON = 25
+   !> A pivot of the traction-controlled block of the tangent below FLAT_STIFFNESS times the
+   !> largest |tangent entry| the replay has met (the intact point's stiffness, as a rule) is
+   !> taken as zero (-). The fully damaged micromechanical point's stiffnesses are round-off of
+   !> zero: on the built-in table 4.5e-16 of the intact ones open (k_n at D = 1) and about 5e-15
+   !> when the closed crack slips at sigma = 0, where C^f_T lambda cancels (k_t + kc_t) s_T. A
+   !> stiffness of 1e-12 K would need a separation of 1e10 times s0 or more to carry a traction of
+   !> the order of the strength.
+   real(dp), parameter, public :: FLAT_STIFFNESS = 1.0e-12_dp
 
    !> What ended a replay that did not reach the end of its history.
    integer, parameter, public :: FAILURE_NONE = 0      !! the history was replayed to its end
@@ -166,12 +178,15 @@ contains
       type(path_point_type), intent(out) :: point
       type(path_failure_type), intent(out) :: failure
       real(dp) :: zero(size(value, 1)), start(size(value, 1))
+      !> the largest |tangent entry| of the converged steps so far (MPa/mm)
+      real(dp) :: stiffness_scale
       integer :: ntens, nrows, k, j, i
       logical :: ok
 
       ntens = size(value, 1)
       nrows = size(value, 2)
       zero = 0.0_dp
+      stiffness_scale = 0.0_dp
       point = virgin_point(ntens, time(1))
       if (any(abs(value(:, 1)) > 0.0_dp)) then
          do j = 1, increments
@@ -249,7 +264,7 @@ contains
                target(:ntens) = v_a + theta*(v_b - v_a)
                time_new = time_a + theta*(time_b - time_a)
             end if
-            call solve_step(law, point, target(:ntens), controls, time_new, tolerance, trial, &
+            call solve_step(law, point, target(:ntens), controls, time_new, tolerance, stiffness_scale, trial, &
                tangent(:ntens, :ntens), converged, status, fatal, residual, iterations)
             if (.not. converged) then
                if (status /= STATUS_OK .and. fatal) then
@@ -268,6 +283,7 @@ contains
             end if
             call law%accept(point, trial, tangent(:ntens, :ntens), output_part)
             point = trial
+            stiffness_scale = max(stiffness_scale, maxval(abs(tangent(:ntens, :ntens))))
             where (abs(point%traction(:ntens)) > failure%peak(:ntens)) failure%peak(:ntens) = abs(point%traction(:ntens))
             done = attempt
             failure%converged_steps = failure%converged_steps + 1
@@ -323,16 +339,19 @@ contains
 
    !> One step from `point` to the targets at `time_new`; `trial` holds the result. Without a
    !> traction-controlled component, one update; with one, Newton's method on the
-   !> traction-controlled block of the tangent. `converged` false: a smaller step is needed
-   !> (`status` the failed update's, or STATUS_OK when Newton failed).
-   subroutine solve_step(law, point, target, controls, time_new, tolerance, trial, tangent, converged, status, &
-         fatal, residual, iterations)
+   !> traction-controlled block of the tangent, whose pivots must exceed FLAT_STIFFNESS times the
+   !> larger of `stiffness_scale` and the iteration's largest |tangent entry|. `converged` false:
+   !> a smaller step is needed (`status` the failed update's, or STATUS_OK when Newton failed).
+   subroutine solve_step(law, point, target, controls, time_new, tolerance, stiffness_scale, trial, tangent, &
+         converged, status, fatal, residual, iterations)
       class(point_law_type), intent(inout) :: law
       type(path_point_type), intent(in) :: point   !! the last converged state
       real(dp), intent(in) :: target(:)           !! separation (mm) or traction (MPa) per component
       logical, intent(in) :: controls(:)          !! true where `target` is a traction
       real(dp), intent(in) :: time_new            !! time at the end of the step
       real(dp), intent(in) :: tolerance           !! MPa
+      !> the largest |tangent entry| of the replay's converged steps (MPa/mm; 0 before the first)
+      real(dp), intent(in) :: stiffness_scale
       type(path_point_type), intent(inout) :: trial  !! the state at the end of the step
       real(dp), intent(out) :: tangent(:, :)      !! its tangent (MPa/mm)
       logical, intent(out) :: converged
@@ -371,7 +390,8 @@ contains
          if (residual <= tolerance) exit
          if (iterations >= MAX_NEWTON) return
          block(:nfree, :nfree) = tangent(free(:nfree), free(:nfree))
-         call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved)
+         call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved, &
+            FLAT_STIFFNESS*max(stiffness_scale, maxval(abs(tangent))))
          if (.not. solved) return
          s(free(:nfree)) = s(free(:nfree)) - delta(:nfree)
       end do
@@ -379,23 +399,27 @@ contains
    end subroutine solve_step
 
    !> Solve the small system a x = b (n <= 3) by Gaussian elimination with partial pivoting;
-   !> `solved` false when a pivot is zero or the result is not finite.
-   pure subroutine solve_small(a, b, x, solved)
+   !> `solved` false when a pivot is not above `pivot_min` in magnitude (default 0) or the result
+   !> is not finite.
+   pure subroutine solve_small(a, b, x, solved, pivot_min)
       real(dp), intent(in) :: a(:, :)             !! the matrix (MPa/mm)
       real(dp), intent(in) :: b(:)                !! right-hand side (MPa)
       real(dp), intent(out) :: x(:)               !! solution (mm), size(b)
       logical, intent(out) :: solved
+      real(dp), intent(in), optional :: pivot_min !! the largest |pivot| taken as zero (MPa/mm)
       real(dp) :: m(3, 3), row(3)   ! the first n x n used (n <= 3): no allocation
-      real(dp) :: factor
+      real(dp) :: factor, smallest
       integer :: n, i, p, r
 
+      smallest = 0.0_dp
+      if (present(pivot_min)) smallest = pivot_min
       n = size(b)
       m(:n, :n) = a
       x = b
       solved = .false.
       do i = 1, n
          p = i - 1 + maxloc(abs(m(i:n, i)), 1)
-         if (.not. abs(m(p, i)) > 0.0_dp) return
+         if (.not. abs(m(p, i)) > smallest) return
          if (p /= i) then
             row(:n) = m(i, :n)
             m(i, :n) = m(p, :n)

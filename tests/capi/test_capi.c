@@ -662,7 +662,33 @@ static void test_run_history(const char *csv_path) {
             done > 1 && done < 201 && o_tr[2 * (done - 1)] <= K_N * 0.00044,
         "beyond the peak: status %d, %zu rows: %s", status, done, detail);
 
+  /* the micromechanical model: an imposed Sigma_N, then Sigma_T at s_N = 0, raised to 5 MPa. The
+   * fully damaged point's stiffnesses are round-off of zero (1e-13 MPa/mm); without the flat-
+   * tangent test Newton met 5 MPa at s_N = 2e13 mm. The rows stop at the peak, below sf. */
+  double micro[NPROPS_MICRO];
+  micro_props(micro, 0.0);
+  const double far[4] = {0, 0, 5.0, 0};
+  status = interphase_run_history(micro, NPROPS_MICRO, 2, 2, t3, far, both, 100, 1e-12, 1, ROWS, NULL, o_s, o_tr,
+                                  NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BEYOND_PEAK && done > 1 && o_s[2 * (done - 1)] < 0.04 &&
+            o_tr[2 * (done - 1)] > 0.2 && o_tr[2 * (done - 1)] < 0.3,
+        "micromechanical Sigma_N beyond the peak: status %d, %zu rows, last s_N %g mm, Sigma_N %g MPa: %s", status,
+        done, done > 0 ? o_s[2 * (done - 1)] : 0.0, done > 0 ? o_tr[2 * (done - 1)] : 0.0, detail);
+  const double far_shear[4] = {0, 0, 0, 5.0};
+  const int shear_only[4] = {0, 1, 0, 1};
+  status = interphase_run_history(micro, NPROPS_MICRO, 2, 2, t3, far_shear, shear_only, 100, 1e-12, 1, ROWS, NULL,
+                                  o_s, o_tr, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BEYOND_PEAK && done > 1 && fabs(o_s[2 * (done - 1) + 1]) < 0.06 &&
+            o_tr[2 * (done - 1) + 1] > 0.3 && o_tr[2 * (done - 1) + 1] < 0.4,
+        "micromechanical Sigma_T beyond the peak: status %d, %zu rows, last s_T %g mm, Sigma_T %g MPa: %s", status,
+        done, done > 0 ? o_s[2 * (done - 1) + 1] : 0.0, done > 0 ? o_tr[2 * (done - 1) + 1] : 0.0, detail);
+
   /* a bad history, arrays that are too short */
+  const double nan_value[6] = {0, 0, 0, NAN, 0, 0};
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, nan_value, NULL, 10, 1e-12, 1, ROWS,
+                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 && strstr(detail, "value[3] (row 1, component 1)"),
+        "a NaN in the history: status %d: %s", status, detail);
   const double back[3] = {0, 2, 1};
   status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, back, shear, control, 10, 1e-12, 1, ROWS,
                                   NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);

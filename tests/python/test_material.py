@@ -143,9 +143,10 @@ def test_run_input_checks():
         m.run([0.0, 0.01])
     with pytest.raises(ValueError, match="increments"):
         m.run([[0, 0], [0.01, 0]], increments=0)
-    with pytest.raises(interphase.InterphaseError) as caught:
+    # a value that is not finite: refused before any update, naming its row and component
+    with pytest.raises(interphase.InterphaseError, match=r"value\[2\] \(row 1, component 0\) = NaN") as caught:
         m.run([[0, 0], [float("nan"), 0]])
-    assert caught.value.status == interphase.STATUS_NONFINITE_SEPARATION
+    assert caught.value.status == interphase.STATUS_BAD_HISTORY
     with pytest.raises(ValueError, match="state must hold 4"):
         m.update([0.0, 0.0], np.zeros(5))
 
@@ -275,6 +276,17 @@ def test_mixed_control_errors_carry_the_library_status():
         m.run([[0.0, 0.0], [0.1, 0.0]], control=[True, False, False])
     with pytest.raises(ValueError, match="booleans"):
         m.run([[0.0, 0.0], [0.1, 0.0]], control=[1, 0])
+
+
+def test_a_fully_damaged_micromechanical_point_carries_no_more_load():
+    """Sigma_N raised to 5 MPa: the point stops at its peak (0.281 MPa, below sf_N), not at the
+    separation where the table's round-off stiffness at D = 1 would carry 5 MPa (2e13 mm)."""
+    m = interphase.Material(**MICRO)
+    with pytest.raises(interphase.InterphaseError, match="beyond the peak") as caught:
+        m.run([[0.0, 0.0], [5.0, 0.0]], increments=100, control=[True, True])
+    last = caught.value.result
+    assert caught.value.status == interphase.STATUS_BEYOND_PEAK
+    assert 0.2 < last.traction[-1, 0] < 0.3 and last.separation[-1, 0] < 0.04
 
 
 def test_run_history_c_entry(tmp_path):
