@@ -27,7 +27,7 @@ program interphase_check_deck
    use interphase_params, only: law_params_type, from_props
    use interphase_driver_cli, only: get_argument, exit_program, print_version
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      tried_path, clip_text, TEXT_LINE, TEXT_END
+      tried_path, clip_text, parse_real, TEXT_LINE, TEXT_END
    use interphase_driver_text, only: int_to_string, real_to_string
    implicit none
    !> The smallest contact band width chi that keeps the stored energy convex at every D of the
@@ -43,11 +43,14 @@ program interphase_check_deck
    type :: material_type
       character(len=80) :: name = ''
       integer :: user_line = 0                 !! line of *USER MATERIAL (0: none)
-      integer :: nconstants = -1               !! CONSTANTS=
+      integer :: nconstants = -1               !! CONSTANTS= (-1: not given, or not a whole number)
+      character(len=80) :: constants_text = '' !! CONSTANTS= as the deck gives it
       integer :: nread = 0                     !! constants read from the data lines
+      logical :: bad_constant = .false.        !! a field of its *USER MATERIAL data is not a number
+      character(len=512) :: bad_data = ''      !! the first such field of its data, as reported
       real(dp) :: constants(MAX_CONSTANTS) = 0.0_dp
       logical :: unsymm = .false.
-      integer :: depvar = -1                   !! *DEPVAR (-1: none)
+      integer :: depvar = -1                   !! *DEPVAR (-1: none; -2: not a whole number, reported)
       real(dp) :: density = -1.0_dp            !! *DENSITY (-1: none)
       integer :: line = 0                      !! line of *MATERIAL
       character(len=16), allocatable :: options_seen(:)   !! *USER MATERIAL, *DEPVAR, *DENSITY so far
@@ -58,6 +61,7 @@ program interphase_check_deck
       integer :: line = 0
       character(len=80) :: elset = '', material = '', response = '', thickness_mode = ''
       real(dp) :: thickness = -1.0_dp
+      character(len=512) :: bad_data = ''      !! a field of its data line that is not a number
    end type section_type
 
    character(len=:), allocatable :: path
@@ -122,10 +126,12 @@ contains
       character(len=LINE_LEN) :: line
       character(len=MESSAGE_LEN) :: message
       character(len=80) :: keyword, field, repeated
+      character(len=80) :: keyword_text        !! the keyword as the deck writes it (for messages)
+      character(len=512) :: bad_text           !! a data field that is not a number, as reported
       character(len=80), allocatable :: parameter_names(:)
       character(len=LINE_LEN), allocatable :: parameter_values(:)
       real(dp) :: values(16)
-      integer :: ios, lineno, nvalues, k, current, data_lines, i, outcome
+      integer :: ios, lineno, nvalues, k, current, data_lines, i, outcome, bad_field
       logical :: explicit, opened
 
       allocate (materials(0), sections(0))
@@ -164,6 +170,7 @@ contains
          if (len_trim(line) == 0 .or. line(1:min(2, len(line))) == '**') cycle
          if (line(1:1) == '*') then
             keyword = upper_compact(before_comma(line(2:)))
+            keyword_text = adjustl(before_comma(line(2:)))
             data_lines = 0
             ! a parameter given twice on a keyword line: which one counts is not for us to guess
             call keyword_parameters(line, parameter_names, parameter_values, repeated)
@@ -203,8 +210,14 @@ contains
                   materials(current)%user_line = lineno
                   materials(current)%unsymm = has_parameter(line, 'UNSYMM')
                   field = parameter_value(line, 'CONSTANTS')
-                  read (field, *, iostat=ios) materials(current)%nconstants
-                  if (ios /= 0) materials(current)%nconstants = -1
+                  materials(current)%constants_text = field
+                  ! a whole number: every character a digit (-1, reported later, otherwise)
+                  materials(current)%nconstants = -1
+                  if (len_trim(field) > 0 .and. len_trim(field) <= 9) then
+                     if (verify(trim(field), '0123456789') == 0) read (field, '(i9)', iostat=ios) &
+                        materials(current)%nconstants
+                     if (ios /= 0) materials(current)%nconstants = -1
+                  end if
                end if
             case ('COHESIVESECTION')
                sections = [sections, section_type(line=lineno, &
@@ -221,19 +234,49 @@ contains
          end if
          ! a data line of the current keyword
          data_lines = data_lines + 1
-         call parse_numbers(line, values, nvalues)
+         call parse_numbers(line, values, nvalues, bad_field)
+         select case (trim(keyword))
+         case ('USERMATERIAL', 'DEPVAR', 'DENSITY', 'COHESIVESECTION')
+            ! the data read here are numbers (every line of *USER MATERIAL, the first line of the
+            ! others): a field that is not one is named by the check of the sections that use it,
+            ! and a material's constants are then not decoded (nor CONSTANTS= compared)
+            if (bad_field > 0 .and. (trim(keyword) == 'USERMATERIAL' .or. data_lines == 1)) then
+               bad_text = path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' data line: field '// &
+                  int_to_string(bad_field)//" '"//clip_text(field_text(line, bad_field))//"' is not a number"
+               if (trim(keyword) == 'COHESIVESECTION') then
+                  if (size(sections) > 0) then
+                     if (len_trim(sections(size(sections))%bad_data) == 0) sections(size(sections))%bad_data = bad_text
+                  end if
+               else if (current > 0) then
+                  if (len_trim(materials(current)%bad_data) == 0) materials(current)%bad_data = bad_text
+                  if (trim(keyword) == 'USERMATERIAL') materials(current)%bad_constant = .true.
+               end if
+            end if
+         end select
          select case (trim(keyword))
          case ('USERMATERIAL')
             if (current > 0) then
                do k = 1, nvalues
-                  if (materials(current)%nread < MAX_CONSTANTS) then
-                     materials(current)%nread = materials(current)%nread + 1
+                  materials(current)%nread = materials(current)%nread + 1
+                  if (materials(current)%nread <= MAX_CONSTANTS) &
                      materials(current)%constants(materials(current)%nread) = values(k)
-                  end if
                end do
             end if
          case ('DEPVAR')
-            if (current > 0 .and. data_lines == 1 .and. nvalues >= 1) materials(current)%depvar = nint(values(1))
+            if (current > 0 .and. data_lines == 1) then
+               if (bad_field > 0) then
+                  materials(current)%depvar = -2
+               else if (nvalues >= 1) then
+                  if (abs(values(1)) <= 1.0e9_dp .and. .not. abs(values(1) - aint(values(1))) > 0.0_dp) then
+                     materials(current)%depvar = nint(values(1))
+                  else
+                     materials(current)%depvar = -2
+                     if (len_trim(materials(current)%bad_data) == 0) materials(current)%bad_data = &
+                        path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' '// &
+                        clip_text(field_text(line, 1))//' is not a whole number'
+                  end if
+               end if
+            end if
          case ('DENSITY')
             if (current > 0 .and. data_lines == 1 .and. nvalues >= 1) materials(current)%density = values(1)
          case ('COHESIVESECTION')
@@ -271,6 +314,7 @@ contains
       solver = merge('Abaqus/Explicit (VUMAT)', 'Abaqus/Standard (UMAT) ', explicit)
       where = path//':'//int_to_string(section%line)//': *COHESIVE SECTION, ELSET='//trim(section%elset)
       section_where = where
+      if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
       if (section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') &
          call record_failure(where//': RESPONSE='//trim(section%response)//' but interphase is a traction-separation '// &
             'law: RESPONSE=TRACTION SEPARATION (or CONTINUUM with the layer thickness option, docs/abaqus.md)', nfail)
@@ -286,7 +330,8 @@ contains
       t_layer = 0.0_dp
       normal = 0
       if (m > 0) then
-         if (materials(m)%user_line /= 0 .and. materials(m)%nconstants == materials(m)%nread) then
+         if (materials(m)%user_line /= 0 .and. materials(m)%nconstants == materials(m)%nread .and. &
+            .not. materials(m)%bad_constant .and. materials(m)%nread <= MAX_CONSTANTS) then
             call from_props(materials(m)%constants(1:materials(m)%nread), params, status, message)
             if (status == STATUS_OK) then
                t_layer = params%layer_thickness
@@ -304,9 +349,24 @@ contains
          associate (mat => materials(m))
             where = path//':'//int_to_string(mat%user_line)//': *USER MATERIAL of '//trim(mat%name)
             status = -1
-            if (mat%nconstants /= mat%nread) then
-               call record_failure(where//': CONSTANTS='//int_to_string(mat%nconstants)//' but '//int_to_string(mat%nread)// &
-                  ' values follow', nfail)
+            if (len_trim(mat%bad_data) > 0) call record_failure(trim(mat%bad_data), nfail)
+            if (mat%bad_constant) then
+               continue     ! its constants are not decoded: the field that is not a number is named above
+            else if (mat%nconstants < 0) then
+               call record_failure(where//': CONSTANTS='//trim(mat%constants_text)//' is not a whole number '// &
+                  '(CONSTANTS= is the number of PROPS)', nfail)
+            else if (mat%nconstants /= mat%nread) then
+               if (mat%nread > mat%nconstants) then
+                  call record_failure(where//': CONSTANTS='//int_to_string(mat%nconstants)//' but '// &
+                     int_to_string(mat%nread)//' values follow (fields are separated by commas: a decimal comma '// &
+                     'splits a number in two; write 0.75, not 0,75)', nfail)
+               else
+                  call record_failure(where//': CONSTANTS='//int_to_string(mat%nconstants)//' but '// &
+                     int_to_string(mat%nread)//' values follow', nfail)
+               end if
+            else if (mat%nread > MAX_CONSTANTS) then
+               call record_failure(where//': '//int_to_string(mat%nread)//' constants: interphase takes far fewer '// &
+                  '(docs/abaqus.md, PROPS)', nfail)
             else
                call from_props(mat%constants(1:mat%nread), params, status, message)
                if (status /= STATUS_OK) then
@@ -342,7 +402,9 @@ contains
             if (status == STATUS_OK .and. .not. explicit) then
                if (params%viscosity > 0.0_dp) depvar_needed = NSTATV_VISCOUS
             end if
-            if (mat%depvar < 0) then
+            if (mat%depvar == -2) then
+               continue     ! named above
+            else if (mat%depvar < 0) then
                call record_failure(where//': no *DEPVAR: '//trim(solver)//' needs at least '//int_to_string(depvar_needed), nfail)
             else if (mat%depvar < depvar_needed) then
                call record_failure(where//': *DEPVAR '//int_to_string(mat%depvar)//' but '//trim(solver)//' needs at least '// &
@@ -498,16 +560,24 @@ contains
    end function has_parameter
 
    !> The numbers of a comma-separated data line (empty fields skipped, text fields stop).
-   subroutine parse_numbers(line, values, n)
+   subroutine parse_numbers(line, values, n, bad_field)
       character(len=*), intent(in) :: line
       real(dp), intent(out) :: values(:)
       integer, intent(out) :: n
+      !> the first comma-separated field (1-based, blank fields counted) that is not one finite
+      !> real literal (interphase_text_input's parse_real); 0 when all are (blank fields are
+      !> skipped, and the values stop there)
+      integer, intent(out) :: bad_field
       character(len=len(line)) :: rest, item
-      integer :: i, ios
+      character(len=32) :: why
+      integer :: i, k
       real(dp) :: x
+      logical :: ok
       n = 0
+      bad_field = 0
       values = 0.0_dp
       rest = line
+      k = 0
       do while (len_trim(rest) > 0 .and. n < size(values))
          i = index(rest, ',')
          if (i > 0) then
@@ -517,12 +587,39 @@ contains
             item = rest
             rest = ''
          end if
+         k = k + 1
          if (len_trim(item) == 0) cycle
-         read (item, *, iostat=ios) x
-         if (ios /= 0) exit
+         call parse_real(item, x, ok, why)
+         if (.not. ok) then
+            bad_field = k
+            exit
+         end if
          n = n + 1
          values(n) = x
       end do
    end subroutine parse_numbers
+
+   !> Field k (1-based, comma-separated) of a data line, blanks trimmed.
+   function field_text(line, k) result(text)
+      character(len=*), intent(in) :: line
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      integer :: j, first, next
+      first = 1
+      do j = 1, k - 1
+         next = index(line(first:), ',')
+         if (next == 0) then
+            text = ''
+            return
+         end if
+         first = first + next
+      end do
+      next = index(line(first:), ',')
+      if (next == 0) then
+         text = trim(adjustl(line(first:)))
+      else
+         text = trim(adjustl(line(first:first + next - 2)))
+      end if
+   end function field_text
 
 end program interphase_check_deck
