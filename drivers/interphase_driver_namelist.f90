@@ -3,7 +3,8 @@
 !> twice, when an entry of a group comes twice, or when an entry's value is not of its kind: one
 !> real literal, one integer, one logical (.true./.false.) or one quoted string. Messages name
 !> the file, the line, the group and the entry (`&loading: plot = 'yes' (line 9) is not .true.
-!> or .false.`). Entries it does not know are left to the namelist read (which names them).
+!> or .false.`). A group or an entry that the program does not read is refused, with the list of
+!> those it reads (`&material: sf_tt (line 6) is not an entry of &material; its entries: ...`).
 module interphase_driver_namelist
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_text_input, only: is_real_literal, clip_text, MAX_FILE_BYTES
@@ -90,6 +91,11 @@ contains
                   first = i + 1
                   i = scan_word_end(line, first)
                   group = to_lower(line(first:i - 1))
+                  if (len(group_entries(group)) == 0) then
+                     call fail('&'//clip_text(group)//' is not a group of this case file; its groups: '// &
+                        known_groups())
+                     return
+                  end if
                   if (index(seen_groups, ' '//group//' ') > 0) then
                      call fail('&'//group//' given twice: a case file has one group of each name')
                      return
@@ -210,8 +216,14 @@ contains
          do j = 1, size(known)
             if (trim(known(j)%name) == group//'.'//name) kind = known(j)%kind
          end do
-         if (kind == 0) return
          where = path//':'//int_to_string(entry_line)//': &'//group//': '//name
+         if (kind == 0) then
+            good = .false.
+            message = path//':'//int_to_string(entry_line)//': &'//group//': '//clip_text(name)// &
+               ' is not an entry of &'//group//'; its entries: '//group_entries(group)
+            call close_text_file(unit)
+            return
+         end if
          if (nvalues /= 1) then
             good = .false.
             message = where//' needs one value, got '//int_to_string(nvalues)
@@ -244,6 +256,32 @@ contains
          message = path//':'//int_to_string(line_number)//': '//text
          call close_text_file(unit)
       end subroutine fail
+
+      !> The entries of `known` in group `g`, comma-separated ('' when g is not a group of it).
+      function group_entries(g) result(list)
+         character(len=*), intent(in) :: g
+         character(len=:), allocatable :: list
+         integer :: j
+         list = ''
+         do j = 1, size(known)
+            if (index(known(j)%name, g//'.') /= 1) cycle
+            if (len(list) > 0) list = list//', '
+            list = list//trim(known(j)%name(len(g) + 2:))
+         end do
+      end function group_entries
+
+      !> The groups of `known`, in order of first appearance ('&material, &loading').
+      function known_groups() result(list)
+         character(len=:), allocatable :: list
+         integer :: j, dot
+         list = ''
+         do j = 1, size(known)
+            dot = index(known(j)%name, '.')
+            if (index(list//',', '&'//known(j)%name(:dot - 1)//',') > 0) cycle
+            if (len(list) > 0) list = list//', '
+            list = list//'&'//known(j)%name(:dot - 1)
+         end do
+      end function known_groups
 
    end subroutine check_namelist_file
 
