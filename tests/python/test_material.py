@@ -207,6 +207,35 @@ def test_read_history(source_dir, tmp_path):
         interphase.read_history(bad)
 
 
+def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
+    """read_case refuses what interphase-point refuses, with the same file, line and entry."""
+    good = (source_dir / "drivers" / "cases" / "h1I.nml").read_text()
+    (tmp_path / "h1I.txt").write_text((source_dir / "drivers" / "cases" / "h1I.txt").read_text())
+    cases = {
+        "comma": (good.replace("mu = 0.75", "mu = 2,5"), r"comma.nml:\d+: &material: mu needs one value, got 2"),
+        "typo": (good.replace("sf_t", "sf_tt"), r"typo.nml:\d+: &material: sf_tt is not an entry of &material; "
+                                                r"its entries: model, damage_law"),
+        "group": (good.replace("&loading", "&load"), r"group.nml:\d+: &load is not a group of this case file"),
+        "integer": (good.replace("increments = ", "increments = 2.5 !"), r"increments = 2.5 is not an integer"),
+        "string": (good.replace("mu = 0.75", "mu = '0.75'"), r"mu = '0.75' is not a number"),
+    }
+    assert "mu = 0.75" in good and "sf_t" in good and "&loading" in good and "increments = " in good
+    for name, (text, message) in cases.items():
+        path = tmp_path / f"{name}.nml"
+        path.write_text(text)
+        with pytest.raises(ValueError, match=message):
+            interphase.read_case(path)
+    (tmp_path / "ok.nml").write_text(good)
+    assert interphase.read_case(tmp_path / "ok.nml").increments >= 1
+
+
+def test_numeric_entries_must_be_numbers():
+    for value in ("0.75", "1.0e", True):
+        with pytest.raises(TypeError, match="mu must be a number"):
+            interphase.Material(**dict(SIMPLIFIED, mu=value))
+    assert interphase.Material(**dict(SIMPLIFIED, mu=np.float64(0.5))).props[2] == 0.5
+
+
 def test_threads_give_the_numbers_of_one():
     """The C entry points keep no state: threads running at once get the serial numbers."""
     m = interphase.Material(**MICRO)

@@ -108,64 +108,162 @@ def read_history(path, control=False):
     return time, value
 
 
-def read_namelist(path):
-    """{group: {entry: value}} of a namelist file (strings, numbers, logicals; one value each)."""
-    text = open(path, encoding="utf-8").read()
-    tokens = []
-    for line in text.splitlines():
+_INTEGER = re.compile(r"^[+-]?\d+$")
+
+
+def _namelist_entries(path):
+    """{group: {entry: (value, line)}} of a namelist file, read as strictly as the driver's
+    pre-check reads it (drivers/interphase_driver_namelist.f90): one group of each name, each
+    entry once and with one value (a quoted string, a number, .true./.false.), nothing outside a
+    group. Numbers are int when written as integers, else float."""
+    groups, group, name, values, entry_line = {}, None, None, [], 0
+    group_lines = {}
+
+    def fail(line, text):
+        raise ValueError(f"{path}:{line}: {text}")
+
+    def finish():
+        if name is None:
+            return
+        if len(values) != 1:
+            fail(entry_line, f"&{group}: {name} needs one value, got {len(values)}")
+        kind, text = values[0]
+        where = f"{path}:{entry_line}: &{group}: {name}"
+        if kind == "string":
+            value = text
+        elif text.lower() in (".true.", "t", ".t."):
+            value = True
+        elif text.lower() in (".false.", "f", ".f."):
+            value = False
+        elif _INTEGER.match(text):
+            value = int(text)
+        else:
+            value = _number(text, where)
+        groups[group][name] = (value, entry_line)
+
+    with open(path, encoding="utf-8") as f:
+        lines = f.read().splitlines()
+    for number, line in enumerate(lines, 1):
         i, n = 0, len(line)
         while i < n:
             c = line[i]
-            if c in " \t,":
+            if c in " \t":
                 i += 1
             elif c == "!":
                 break
+            elif group is None:
+                if c != "&":
+                    fail(number, f'text outside a group: "{line[i:].strip()}"')
+                j = i + 1
+                while j < n and line[j] not in " \t,/=!":
+                    j += 1
+                group = line[i + 1:j].lower()
+                if group in groups:
+                    fail(number, f"&{group} given twice: a case file has one group of each name")
+                groups[group] = {}
+                group_lines[group] = number
+                name, values = None, []
+                i = j
+            elif c == "/" or line[i:i + 4].lower() == "&end":
+                finish()
+                group, name, values = None, None, []
+                i += 1 if c == "/" else 4
+            elif c == ",":
+                i += 1
+            elif c == "=":
+                fail(number, f'&{group}: "=" without an entry name')
             elif c in "'\"":
-                j, value = i + 1, ""
+                j, text = i + 1, ""
                 while j < n:
                     if line[j] == c:
                         if j + 1 < n and line[j + 1] == c:
-                            value += c
+                            text += c
                             j += 2
                             continue
                         break
-                    value += line[j]
+                    text += line[j]
                     j += 1
-                tokens.append(("string", value))
+                if j >= n:
+                    fail(number, f"&{group}: a string that does not end on its line: {line[i:]}")
+                if name is None:
+                    fail(number, f"&{group}: a value without an entry name: {line[i:j + 1]}")
+                values.append(("string", text))
                 i = j + 1
-            elif c in "=/":
-                tokens.append((c, c))
-                i += 1
             else:
                 j = i
                 while j < n and line[j] not in " \t,=/!":
                     j += 1
-                tokens.append(("word", line[i:j]))
+                word = line[i:j]
+                k = j
+                while k < n and line[k] in " \t":
+                    k += 1
+                if k < n and line[k] == "=":
+                    finish()
+                    name, values, entry_line = word.lower(), [], number
+                    if name in groups[group]:
+                        fail(number, f"&{group}: entry {name} given twice")
+                    i = k + 1
+                    continue
+                if name is None:
+                    fail(number, f"&{group}: a value without an entry name: {word}")
+                values.append(("word", word))
                 i = j
-    groups, group, name = {}, None, None
-    for kind, value in tokens:
-        if group is None:
-            if kind == "word" and value.startswith("&"):
-                group = value[1:].lower()
-                groups[group] = {}
-            continue
-        if kind == "/":
-            group = None
-        elif kind == "=":
-            continue
-        elif name is None:
-            name = value.lower()
-        else:
-            if kind == "string":
-                groups[group][name] = value
-            elif value.lower() in (".true.", "t", ".t."):
-                groups[group][name] = True
-            elif value.lower() in (".false.", "f", ".f."):
-                groups[group][name] = False
-            else:
-                groups[group][name] = _number(value, f"{path}: &{group}: {name}")
-            name = None
-    return groups
+    if group is not None:
+        raise ValueError(f'{path}: &{group} is not closed by "/"')
+    return groups, group_lines
+
+
+def read_namelist(path):
+    """{group: {entry: value}} of a namelist file: quoted strings (str), numbers (int when written
+    as integers, else float) and logicals (bool), one value each; the file is read as strictly as
+    the driver's pre-check reads it (a group or an entry given twice, an entry with no value or
+    with several, text outside a group: ValueError naming the file and the line)."""
+    return {g: {k: v for k, (v, _) in entries.items()} for g, entries in _namelist_entries(path)[0].items()}
+
+
+# the entries of interphase-point's groups and their kinds (drivers/interphase_driver_case.f90)
+_KINDS = {
+    "material": dict([(k, "string") for k in ("model", "damage_law", "table", "rcurve", "rcurve_file",
+                                              "growth_slip", "stiffness")]
+                     + [(k, "real") for k in ("mu", "s0_n", "sf_n", "s0_t", "sf_t", "k_n", "k_t", "d0",
+                                              "g_ci", "g_cii", "contact_band", "viscosity")]),
+    "loading": {"history": "string", "output": "string", "increments": "integer", "plot": "logical",
+                "traction_tolerance": "real", "output_every": "integer", "tangent_check": "real",
+                "tangent_step": "real"},
+}
+_KIND_WORDS = {"string": "a quoted string", "real": "a number", "integer": "an integer",
+               "logical": ".true. or .false."}
+
+
+def _checked_case_entries(path):
+    """The case file's groups, each entry checked against its kind (as interphase-point checks
+    them): ValueError naming the file, the line, the group and the entry."""
+    groups, group_lines = _namelist_entries(path)
+    known = ", ".join("&" + g for g in _KINDS)
+    for group, entries in groups.items():
+        if group not in _KINDS:
+            raise ValueError(f"{path}:{group_lines[group]}: &{group} is not a group of this case file; "
+                             f"its groups: {known}")
+        for name, (value, line) in entries.items():
+            where = f"{path}:{line}: &{group}: {name}"
+            kind = _KINDS[group].get(name)
+            if kind is None:
+                raise ValueError(f"{where} is not an entry of &{group}; its entries: "
+                                 + ", ".join(_KINDS[group]))
+            good = {"string": isinstance(value, str),
+                    "real": isinstance(value, (int, float)) and not isinstance(value, bool),
+                    "integer": isinstance(value, int) and not isinstance(value, bool),
+                    "logical": isinstance(value, bool)}[kind]
+            if not good:
+                raise ValueError(f"{where} = {value!r} is not {_KIND_WORDS[kind]}")
+    for group in _KINDS:
+        if group not in groups:
+            raise ValueError(f'{path}: &{group}: group not found (expected "&{group} ... /")')
+    missing = [k for k in ("history", "increments", "output") if k not in groups["loading"]]
+    if missing:
+        raise ValueError(f"{path}: &loading: missing entr{'ies' if len(missing) > 1 else 'y'} "
+                         + ", ".join(missing))
+    return {g: {k: v for k, (v, _) in entries.items()} for g, entries in groups.items()}
 
 
 class Case:
@@ -198,17 +296,20 @@ def read_case(path):
     The paths it names (history, table, rcurve_file) are taken relative to its folder, as the
     driver takes them. The history may impose tractions (`# columns:` lines).
     """
-    groups = read_namelist(path)
+    groups = _checked_case_entries(path)
     base = os.path.dirname(os.path.abspath(path))
-    if "material" not in groups or "loading" not in groups:
-        raise ValueError(f"{path}: needs the groups &material and &loading")
     entries = dict(groups["material"])
     for key in ("table", "rcurve_file"):
         if key in entries:
             entries[key] = os.path.join(base, entries[key])
-    material = Material(**entries)
+    try:
+        material = Material(**entries)
+    except TypeError as error:          # a missing entry: name the file
+        raise TypeError(f"{path}: &material: {error}") from None
     loading = groups["loading"]
+    if loading["increments"] < 1:
+        raise ValueError(f"{path}: &loading: increments must be at least 1, got {loading['increments']}")
     time, value, control = read_history(os.path.join(base, loading["history"]), control=True)
-    return Case(material, time, value, int(loading["increments"]), loading.get("output"), control=control,
+    return Case(material, time, value, loading["increments"], loading["output"], control=control,
                 traction_tolerance=float(loading.get("traction_tolerance", DEFAULT_TRACTION_TOLERANCE)),
-                output_every=int(loading.get("output_every", 1)))
+                output_every=loading.get("output_every", 1))

@@ -1,6 +1,7 @@
 """Material, one-point update and history replay over the C interface (include/interphase.h)."""
 
 import math
+import numbers
 import os
 import struct
 import ctypes
@@ -42,6 +43,14 @@ def _as_c(array):
 
 def _same_bits(a, b):
     return struct.pack("<d", a) == struct.pack("<d", b)
+
+
+def _real(name, value):
+    """The float of a numeric entry: a real number (int, float, a numpy scalar), not a string or a
+    bool (interphase-point refuses a quoted number as well)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
+        raise TypeError(f"Material: {name} must be a number, got {value!r} ({type(value).__name__})")
+    return float(value)
 
 
 def _keyword(name, value, choices, status):
@@ -94,12 +103,12 @@ class Material:
         self.entries = dict(e)
         self.table_path = None
         self.rcurve_path = None
-        values = [float(e[k]) for k in ("mu", "s0_n", "sf_n", "s0_t", "sf_t")]
+        values = [_real(k, e[k]) for k in ("mu", "s0_n", "sf_n", "s0_t", "sf_t")]
         if model == "simplified":
             if "table" in e:
                 raise InterphaseError(st.STATUS_BAD_TABLE_SELECTOR,
                                       "table is an entry of model = 'micromechanical' only")
-            props = [MODEL_SIMPLIFIED, 0.0] + values + [float(e["k_n"]), float(e["k_t"])]
+            props = [MODEL_SIMPLIFIED, 0.0] + values + [_real("k_n", e["k_n"]), _real("k_t", e["k_t"])]
         elif model == "micromechanical":
             if "k_n" in e or "k_t" in e:
                 raise InterphaseError(st.STATUS_BAD_NPROPS, "k_n and k_t are entries of model = "
@@ -130,7 +139,7 @@ class Material:
                 if "g_ci" not in e or "g_cii" not in e:
                     raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" not in e else st.STATUS_BAD_GC_II,
                                           "rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)")
-                gc = [float(e["g_ci"]), float(e["g_cii"])]
+                gc = [_real("g_ci", e["g_ci"]), _real("g_cii", e["g_cii"])]
             elif "g_ci" in e or "g_cii" in e:
                 raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" in e else st.STATUS_BAD_GC_II,
                                       "g_ci and g_cii are entries of rcurve = 'constant' only")
@@ -140,7 +149,7 @@ class Material:
                 self.rcurve_path = os.path.abspath(os.fspath(e["rcurve_file"]))
             elif "rcurve_file" in e:
                 raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve_file is an entry of rcurve = 'tabulated' only")
-            props += [float(e["d0"]), float(rcurve)] + gc
+            props += [_real("d0", e["d0"]), float(rcurve)] + gc
         else:
             raise InterphaseError(st.STATUS_BAD_DAMAGE_LAW, f"unknown damage_law {e['damage_law']!r} "
                                   "(available: 'displacement', 'fracture')")
@@ -148,8 +157,8 @@ class Material:
         options = [
             float(_keyword("growth_slip", e.get("growth_slip"), {"fixed-pi": GROWTH_FIXED_PI,
                            "fixed-lambda": GROWTH_FIXED_LAMBDA}, st.STATUS_BAD_OPTION)),
-            float(e.get("contact_band", 0.0)),
-            float(e.get("viscosity", 0.0)),
+            _real("contact_band", e.get("contact_band", 0.0)),
+            _real("viscosity", e.get("viscosity", 0.0)),
             float(_keyword("stiffness", e.get("stiffness"), {"consistent": STIFFNESS_CONSISTENT,
                            "symmetric": STIFFNESS_SYMMETRIC, "fixed-damage": STIFFNESS_FIXED_DAMAGE},
                            st.STATUS_BAD_OPTION))]
