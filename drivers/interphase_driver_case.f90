@@ -158,8 +158,10 @@ contains
       type(case_type), intent(out) :: run        !! the case, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      integer :: unit, ios
+      integer :: unit, ios, status
       character(len=512) :: iomsg
+      type(law_params_type) :: params
+      character(len=MESSAGE_LEN) :: why
 
       ok = .false.
       run%path = path
@@ -180,6 +182,13 @@ contains
          call read_loading(unit, run, ok, message)
       end if
       close (unit)
+      if (.not. ok) return
+      ! the material's constants as the UMAT decodes them: refused here, once, before any update
+      call from_props(run%props, params, status, why)
+      if (status /= STATUS_OK) then
+         ok = .false.
+         message = path//': &material: '//trim(why)
+      end if
    end subroutine read_case
 
    !> Read the `&material` group and pack it into PROPS.

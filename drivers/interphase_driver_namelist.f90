@@ -236,10 +236,15 @@ contains
             good = value_kind == 0 .and. is_real_literal(value)
             if (.not. good) message = where//' = '//clip_text(value)//' is not a number'
          case (KIND_INTEGER)
-            good = value_kind == 0 .and. len(value) > 0 .and. len(value) <= 9
+            good = value_kind == 0 .and. len(value) > 0
             if (good) good = verify(value(merge(2, 1, scan(value(1:1), '+-') > 0):), '0123456789') == 0 &
                .and. len(value) > merge(1, 0, scan(value(1:1), '+-') > 0)
-            if (.not. good) message = where//' = '//clip_text(value)//' is not an integer'
+            if (.not. good) then
+               message = where//' = '//clip_text(value)//' is not an integer'
+            else if (len(value) - merge(1, 0, scan(value(1:1), '+-') > 0) > 9) then
+               good = .false.
+               message = where//' = '//clip_text(value)//' is too large: an integer of at most 9 digits'
+            end if
          case (KIND_LOGICAL)
             good = value_kind == 0 .and. (lower == '.true.' .or. lower == '.false.' .or. lower == 't' &
                .or. lower == 'f' .or. lower == '.t.' .or. lower == '.f.')

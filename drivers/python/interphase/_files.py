@@ -256,6 +256,8 @@ def _checked_case_entries(path):
                     "logical": isinstance(value, bool)}[kind]
             if not good:
                 raise ValueError(f"{where} = {value!r} is not {_KIND_WORDS[kind]}")
+            if kind == "integer" and abs(value) > 999_999_999:
+                raise ValueError(f"{where} = {value!r} is too large: an integer of at most 9 digits")
     for group in _KINDS:
         if group not in groups:
             raise ValueError(f'{path}: &{group}: group not found (expected "&{group} ... /")')
