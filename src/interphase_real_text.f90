@@ -16,30 +16,44 @@ module interphase_real_text
 
 contains
 
-   !> The value in `g0.<digits>` editing (default 17 significant digits: every double told
-   !> apart, as gfortran's `g0`), no blanks, with the leading zero of a magnitude below 1
-   !> (0.5, -0.5, 0.1E-4) and a non-finite value as NaN, Infinity or -Infinity.
+   !> The value in `g0.<digits>` editing, no blanks, with the leading zero of a magnitude below 1
+   !> (0.5, -0.5, 0.1E-4), a digit after a final point (-1.0, not -1.) and a non-finite value as
+   !> NaN, Infinity or -Infinity. Without `digits`, the fewest significant digits (at most 17)
+   !> whose text reads back as the same double: 0.75, 0.5625E-1, 0.1E-4, -1.0, not
+   !> 0.75000000000000000 or 0.10000000000000001E-4 (every double still told apart).
    pure function real_text(value, digits) result(text)
       real(dp), intent(in) :: value               !! the number
-      integer, intent(in), optional :: digits     !! significant digits, 1..17 (default 17)
+      integer, intent(in), optional :: digits     !! significant digits, 1..17 (default: the fewest exact)
       character(len=:), allocatable :: text
       character(len=40) :: buffer
       character(len=12) :: edit
       integer :: d, ios
+      real(dp) :: back
 
       if (.not. is_finite(value)) then
          text = non_finite_text(value)
          return
       end if
-      d = 17
-      if (present(digits)) d = max(1, min(17, digits))
-      write (edit, '(a,i0,a)') '(g0.', d, ')'
-      write (buffer, edit, iostat=ios) value
+      if (present(digits)) then
+         d = max(1, min(17, digits))
+         write (edit, '(a,i0,a)') '(g0.', d, ')'
+         write (buffer, edit, iostat=ios) value
+      else
+         do d = 1, 17
+            write (edit, '(a,i0,a)') '(g0.', d, ')'
+            write (buffer, edit, iostat=ios) value
+            if (ios /= 0) exit
+            read (buffer, *, iostat=ios) back
+            if (ios /= 0) exit
+            if (transfer(back, 0_int64) == transfer(value, 0_int64)) exit
+         end do
+      end if
       if (ios /= 0) then
          text = '?'
          return
       end if
       text = trim(adjustl(buffer))
+      if (text(len(text):len(text)) == '.') text = text//'0'
       if (text(1:1) == '.') then
          text = '0'//text
       else if (len(text) > 1) then
