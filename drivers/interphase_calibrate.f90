@@ -7,7 +7,8 @@
 !> CASE.nml is a micromechanical case file (its &loading group is not used). The program runs
 !> the monotonic mode-I and mode-II tests (h1I, h1II) to full damage through `umat`, takes the
 !> fracture energies G_I, G_II as the dissipated energy at the end (SPD) and the undamaged
-!> stiffnesses K_N, K_T from the tangent at the origin, and sets
+!> stiffnesses K_N, K_T from the tangent at the origin (the UMAT's DDSDDE at zero separation of the
+!> virgin point, whatever the step), and sets
 !>     s0_N = 2 G_I/(K_N sf_N),   s0_T = 2 G_II/(K_T sf_T)
 !> so that the simplified model's fracture energies 1/2 K s0 sf equal them (sf kept). It prints
 !> the numbers and, with --write, a `&material` group of the calibrated simplified model.
@@ -20,13 +21,17 @@ program interphase_calibrate
    use interphase_layout, only: PROP_TABLE
    use interphase_driver_case, only: case_type, read_case, load_start_up_data
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
-   use interphase_driver_text, only: int_to_string
+   use interphase_driver_text, only: int_to_string, real_to_string
+   use interphase_params, only: law_params_type, from_props
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_cli, only: get_argument, exit_program, print_version
    implicit none
 
    type(case_type) :: run
+   type(law_params_type) :: params
    character(len=:), allocatable :: case_path, write_path, message, argument
-   integer :: increments, i, nargs, unit, ios
+   character(len=MESSAGE_LEN) :: why
+   integer :: increments, i, nargs, unit, ios, status
    logical :: ok
    real(dp) :: g_i, g_ii, k_n, k_t, peak_n, peak_t, s_peak_n, s_peak_t, s0_n, s0_t
 
@@ -48,14 +53,20 @@ program interphase_calibrate
       case ('--increments')
          i = i + 1
          call get_argument(i, argument)
-         read (argument, *, iostat=ios) increments
-         if (ios /= 0 .or. increments < 10) call fail('--increments needs an integer >= 10')
+         ! a whole number of at most 9 digits
+         ios = 1
+         if (len(argument) > 0 .and. len(argument) <= 9) then
+            if (verify(argument, '0123456789') == 0) read (argument, '(i9)', iostat=ios) increments
+         end if
+         if (ios /= 0) call fail("--increments needs a whole number (at most 9 digits), got '"//argument//"'")
+         if (increments < 10) call fail('--increments needs at least 10, got '//argument)
       case ('--write')
          i = i + 1
          call get_argument(i, write_path)
          if (len(write_path) == 0) call fail('--write needs a file name')
       case default
          if (argument(1:1) == '-') call fail('unknown option '//argument)
+         if (len(case_path) > 0) call fail('one case file only: '//case_path//' and '//argument//' given')
          case_path = argument
       end select
    end do
@@ -69,7 +80,13 @@ program interphase_calibrate
    if (.not. ok) call fail(message)
    if (nint(run%props(PROP_MODEL)) /= MODEL_MICROMECHANICAL) &
       call fail(case_path//": the case must use model = 'micromechanical'")
-   call load_start_up_data(run%table_path, '', ok, message)
+   ! the tests are quasi-static, one second a step: a viscous damage would depend on the step
+   call from_props(run%props, params, status, why)
+   if (status /= STATUS_OK) call fail(case_path//': '//trim(why))
+   if (params%viscosity > 0.0_dp) call fail(case_path//': &material: viscosity = '// &
+      real_to_string(params%viscosity)//' s: the calibration''s tests are quasi-static (rate-independent '// &
+      'fracture energies): set it to 0')
+   call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
    if (.not. ok) call fail(message)
 
    call monotonic(1, run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)
@@ -120,20 +137,25 @@ contains
       integer, intent(in) :: component
       real(dp), intent(in) :: sf
       real(dp), intent(out) :: energy, stiffness, peak, s_peak
-      type(point_state_type) :: point
+      type(point_state_type) :: point, probe
       real(dp) :: s(2), pnewdt, ddsdde(2, 2)
       integer :: k
       point = new_point(2, 0.0_dp)
       peak = 0.0_dp
       s_peak = 0.0_dp
-      stiffness = 0.0_dp
+      ! the undamaged stiffness: the tangent at the origin of the virgin point (a zero increment,
+      ! whose state is not kept), not that of the first step, which may already pass s0
+      probe = point
+      s = 0.0_dp
+      call call_umat(run%props, probe, s, 0.0_dp, pnewdt, ddsdde)
+      if (pnewdt < 1.0_dp) call fail('the UMAT failed at the origin of the monotonic test; see its message above')
+      stiffness = ddsdde(component, component)
       do k = 1, increments
          s = 0.0_dp
          s(component) = 1.01_dp*sf*real(k, dp)/real(increments, dp)
          call call_umat(run%props, point, s, real(k, dp), pnewdt, ddsdde)
          if (pnewdt < 1.0_dp) call fail('the UMAT failed at step '//int_to_string(k)// &
             ' of the monotonic test; see its message above')
-         if (k == 1) stiffness = ddsdde(component, component)
          if (abs(point%stress(component)) > peak) then
             peak = abs(point%stress(component))
             s_peak = s(component)
