@@ -187,6 +187,7 @@ contains
       !> The message of a step that did not converge even after MAX_HALVINGS halvings.
       function failure_text() result(text)
          character(len=:), allocatable :: text
+         character(len=:), allocatable :: why
          logical :: separations(ntens), tractions(ntens)
          integer :: i
 
@@ -196,10 +197,16 @@ contains
          if (any(failure%controls(:ntens))) then
             if (failure%status == STATUS_BEYOND_PEAK) then
                i = failure%component
+               if (failure%flat) then
+                  why = 'what the material can carry: it carries no more load in '// &
+                     component_name(i, .true., ntens)//' (a flat tangent; '
+               else
+                  why = 'the peak the material can carry ('
+               end if
                text = text//'no solution from t = '//real_to_string(last%time)//' to t = '// &
                   real_to_string(failure%time_to)//': the imposed traction '//component_name(i, .true., ntens)// &
-                  ' = '//real_to_string(failure%target(i))//' MPa is beyond the peak the material can carry '// &
-                  '(the largest |'//component_name(i, .true., ntens)//'| reached is '// &
+                  ' = '//real_to_string(failure%target(i))//' MPa is beyond '//why// &
+                  'the largest |'//component_name(i, .true., ntens)//'| reached is '// &
                   real_to_string(failure%peak(i))//' MPa; last converged state: '// &
                   values_text(last%separation(:ntens), separations)//', '// &
                   values_text(last%traction(:ntens), tractions)//', D = '// &

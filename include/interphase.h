@@ -246,7 +246,8 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  *         INTERPHASE_STATUS_BAD_HISTORY (nrows 0, times, a value that is not finite, controls,
  *         increments, output_every, traction_tolerance: checked before any update);
  *         INTERPHASE_STATUS_BEYOND_PEAK (an imposed traction is raised beyond the largest the
- *         point reached, or the point no longer carries load in its direction: no solution), INTERPHASE_STATUS_MIXED_NOT_CONVERGED
+ *         point reached, or is met only on a flat tangent, where the point carries no more load
+ *         in its direction: no solution), INTERPHASE_STATUS_MIXED_NOT_CONVERGED
  *         (Newton failed even after the halvings), or the status of an update that failed even
  *         after the halvings or for good; INTERPHASE_STATUS_OUTPUT_FULL when the replay has more
  *         rows than @p capacity (the arrays hold the first @p capacity rows: call again with

@@ -23,11 +23,15 @@
 !> Sub-stepping: when an update fails (a status other than STATUS_OK) or Newton does not
 !> converge, the step is halved and retried, up to MAX_HALVINGS times within one sub-increment.
 !> When that is not enough and an imposed traction is being raised beyond the largest the point
-!> reached, no solution exists: STATUS_BEYOND_PEAK. A traction-controlled block whose pivot is
-!> below FLAT_STIFFNESS times the largest tangent entry met in the replay is numerically flat and
-!> gives no Newton step: a fully damaged point carries no more load (drivers/README.md, 'Mixed
-!> control'), where the micromechanical table's round-off stiffness would otherwise reach any
-!> imposed traction at a separation of 1e11 mm or more. An update failure that the update marks as
+!> reached, no solution exists: STATUS_BEYOND_PEAK. Nor is a state where Newton meets the imposed
+!> traction on a numerically flat tangent (a pivot of the traction-controlled block at most
+!> FLAT_STIFFNESS times the largest tangent entry met in the replay) a solution: there the
+!> traction is carried by round-off, as on a fully damaged open micromechanical crack, whose
+!> table stiffnesses would otherwise meet any imposed traction at a separation of 1e11 mm or more
+!> (drivers/README.md, 'Mixed control'). Newton may pass through such states (an open crack
+!> closed by an imposed compression reaches the contact branch that way); it may not stop there.
+!> A step that still fails after the halvings on such a state is STATUS_BEYOND_PEAK too: the
+!> point no longer carries the imposed traction. An update failure that the update marks as
 !> fatal (a setup error found during the run: no smaller step can cure it) ends the replay at
 !> once.
 !>
@@ -47,9 +51,9 @@ module interphase_mixed_control
    integer, parameter, public :: MAX_HALVINGS = 10
    !> Largest number of Newton iterations (updates) of one mixed-control step.
    integer, parameter, public :: MAX_NEWTON = 25
-   !> A pivot of the traction-controlled block of the tangent below FLAT_STIFFNESS times the
-   !> largest |tangent entry| the replay has met (the intact point's stiffness, as a rule) is
-   !> taken as zero (-). The fully damaged micromechanical point's stiffnesses are round-off of
+   !> A converged state whose traction-controlled block of the tangent has a pivot at most
+   !> FLAT_STIFFNESS times the largest |tangent entry| the replay has met (the intact point's
+   !> stiffness, as a rule) is no solution (-). The fully damaged micromechanical point's stiffnesses are round-off of
    !> zero: on the built-in table 4.5e-16 of the intact ones open (k_n at D = 1) and about 5e-15
    !> when the closed crack slips at sigma = 0, where C^f_T lambda cancels (k_t + kc_t) s_T. A
    !> stiffness of 1e-12 K would need a separation of 1e10 times s0 or more to carry a traction of
@@ -90,6 +94,9 @@ module interphase_mixed_control
       integer :: component = 0
       real(dp) :: peak(3) = 0.0_dp                !! largest |traction| reached per component (MPa)
       integer :: converged_steps = 0              !! steps kept (output or not)
+      !> the last attempt met the imposed traction(s) only on a flat tangent (FLAT_STIFFNESS):
+      !> with STATUS_BEYOND_PEAK, the point no longer carries load in failure%component
+      logical :: flat = .false.
    end type path_failure_type
 
    !> A material point's update and what to do with each converged step: extended by each caller.
@@ -241,7 +248,7 @@ contains
          real(dp) :: done, step, attempt, theta, time_new, residual
          ! fixed sizes, the first ntens used: no allocation per step
          real(dp) :: target(3), tangent(3, 3)
-         integer :: halvings, iterations, status
+         integer :: halvings, iterations, status, flat_component
          logical :: converged, fatal
 
          success = .false.
@@ -265,17 +272,17 @@ contains
                time_new = time_a + theta*(time_b - time_a)
             end if
             call solve_step(law, point, target(:ntens), controls, time_new, tolerance, stiffness_scale, trial, &
-               tangent(:ntens, :ntens), converged, status, fatal, residual, iterations)
+               tangent(:ntens, :ntens), converged, status, fatal, residual, iterations, flat_component)
             if (.not. converged) then
                if (status /= STATUS_OK .and. fatal) then
                   call record_failure(failure, FAILURE_FATAL, status, time_new, target(:ntens), controls, residual, &
-                     iterations, point)
+                     iterations, point, 0)
                   return
                end if
                halvings = halvings + 1
                if (halvings > MAX_HALVINGS) then
                   call record_failure(failure, FAILURE_HALVINGS, status, time_new, target(:ntens), controls, residual, &
-                     iterations, point)
+                     iterations, point, flat_component)
                   return
                end if
                step = 0.5_dp*step
@@ -306,12 +313,14 @@ contains
 
    !> Record the failure of the step to `target` at `time_new` from `point`: its status is the
    !> update's, or, for a mixed-control step still failing after the halvings, STATUS_BEYOND_PEAK
-   !> (an imposed traction raised beyond the largest one reached has no solution) or
-   !> STATUS_MIXED_NOT_CONVERGED (Newton failed, no update did).
+   !> (an imposed traction raised beyond the largest one reached, or met only on a flat tangent:
+   !> `flat_component` > 0, has no solution) or STATUS_MIXED_NOT_CONVERGED (Newton failed, no
+   !> update did).
    pure subroutine record_failure(failure, kind, update_status, time_new, target, controls, residual, &
-         iterations, point)
+         iterations, point, flat_component)
       type(path_failure_type), intent(inout) :: failure
       integer, intent(in) :: kind, update_status, iterations
+      integer, intent(in) :: flat_component     !! the flat component of the last attempt, or 0
       real(dp), intent(in) :: time_new, target(:), residual
       logical, intent(in) :: controls(:)
       type(path_point_type), intent(in) :: point
@@ -325,7 +334,14 @@ contains
       failure%residual = residual
       failure%iterations = iterations
       failure%status = update_status
+      failure%flat = .false.
       if (kind /= FAILURE_HALVINGS .or. .not. any(controls)) return
+      if (flat_component > 0 .and. update_status == STATUS_OK) then
+         failure%component = flat_component
+         failure%status = STATUS_BEYOND_PEAK
+         failure%flat = .true.
+         return
+      end if
       do c = 1, ntens
          if (.not. controls(c)) cycle
          if (abs(target(c)) > failure%peak(c) .and. target(c)*point%traction(c) >= 0.0_dp) then
@@ -339,11 +355,13 @@ contains
 
    !> One step from `point` to the targets at `time_new`; `trial` holds the result. Without a
    !> traction-controlled component, one update; with one, Newton's method on the
-   !> traction-controlled block of the tangent, whose pivots must exceed FLAT_STIFFNESS times the
-   !> larger of `stiffness_scale` and the iteration's largest |tangent entry|. `converged` false:
-   !> a smaller step is needed (`status` the failed update's, or STATUS_OK when Newton failed).
+   !> traction-controlled block of the tangent; where it meets the targets, the block's pivots must
+   !> exceed FLAT_STIFFNESS times the larger of `stiffness_scale` and that state's largest
+   !> |tangent entry| (else no convergence, and `flat_component` names the flat one). `converged`
+   !> false: a smaller step is needed (`status` the failed update's, or STATUS_OK when Newton
+   !> failed).
    subroutine solve_step(law, point, target, controls, time_new, tolerance, stiffness_scale, trial, tangent, &
-         converged, status, fatal, residual, iterations)
+         converged, status, fatal, residual, iterations, flat_component)
       class(point_law_type), intent(inout) :: law
       type(path_point_type), intent(in) :: point   !! the last converged state
       real(dp), intent(in) :: target(:)           !! separation (mm) or traction (MPa) per component
@@ -359,8 +377,11 @@ contains
       logical, intent(out) :: fatal               !! the last update failed for good
       real(dp), intent(out) :: residual           !! max |traction - imposed| of the last iteration (MPa)
       integer, intent(out) :: iterations          !! updates made
+      !> where the targets were met on a flat tangent: the first traction-controlled component
+      !> whose diagonal entry is flat (or the first traction-controlled one); else 0
+      integer, intent(out) :: flat_component
       ! fixed sizes, the first ntens (nfree) used: no allocation per iteration
-      real(dp) :: s(3), r(3), delta(3), block(3, 3)
+      real(dp) :: s(3), r(3), delta(3), block(3, 3), flat_bound
       integer :: free(3)
       integer :: nfree, i, ntens
       logical :: solved
@@ -371,6 +392,7 @@ contains
       status = STATUS_OK
       residual = 0.0_dp
       iterations = 0
+      flat_component = 0
       s(:ntens) = point%separation(:ntens)
       where (.not. controls) s(:ntens) = target
       nfree = 0
@@ -387,11 +409,20 @@ contains
          if (nfree == 0) exit
          r(:nfree) = trial%traction(free(:nfree)) - target(free(:nfree))
          residual = maxval(abs(r(:nfree)))
-         if (residual <= tolerance) exit
-         if (iterations >= MAX_NEWTON) return
          block(:nfree, :nfree) = tangent(free(:nfree), free(:nfree))
-         call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved, &
-            FLAT_STIFFNESS*max(stiffness_scale, maxval(abs(tangent))))
+         if (residual <= tolerance) then
+            ! met: a solution only where the tangent carries the traction (not round-off)
+            flat_bound = FLAT_STIFFNESS*max(stiffness_scale, maxval(abs(tangent)))
+            call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved, flat_bound)
+            if (solved) exit
+            flat_component = free(1)
+            do i = nfree, 1, -1
+               if (.not. abs(tangent(free(i), free(i))) > flat_bound) flat_component = free(i)
+            end do
+            return
+         end if
+         if (iterations >= MAX_NEWTON) return
+         call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved)
          if (.not. solved) return
          s(free(:nfree)) = s(free(:nfree)) - delta(:nfree)
       end do
@@ -476,7 +507,13 @@ contains
       case (FAILURE_FATAL)
          long = trim(long)//' '//trim(update_detail)
       case (FAILURE_HALVINGS)
-         if (failure%status == STATUS_BEYOND_PEAK) then
+         if (failure%status == STATUS_BEYOND_PEAK .and. failure%flat) then
+            c = failure%component
+            name = component_name(c, .true., point%ntens)
+            write (long, '(a,1x,a,a,a,g0.6,a,a,a,a,a,g0.6,a)', iostat=ios) trim(long), 'the imposed traction ', name, &
+               ' = ', failure%target(c), ' MPa is beyond what the material can carry: it carries no more load in ', &
+               name, ' (a flat tangent; the largest |', name, '| reached is ', failure%peak(c), ' MPa)'
+         else if (failure%status == STATUS_BEYOND_PEAK) then
             c = failure%component
             name = component_name(c, .true., point%ntens)
             write (long, '(a,1x,a,a,a,g0.6,a,a,a,g0.6,a)', iostat=ios) trim(long), 'the imposed traction ', name, &

@@ -86,6 +86,13 @@ module interphase_rve_table
       real(dp), allocatable :: i_fnt(:)           !! I_fNT of each row (MPa mm); only with has_betti
       logical :: has_elastic = .false.            !! the header gives E_m, nu_m, E_b, nu_b
       real(dp) :: elastic(4) = 0.0_dp             !! E_m (MPa), nu_m, E_b (MPa), nu_b; with has_elastic
+      !> the header gives the layers' heights h_m, h_b (mm) too: with the elastic constants, the
+      !> intact laminate's closed forms are checked against the a = 0 row (check_rve_table)
+      logical :: has_layers = .false.
+      real(dp) :: layers(2) = 0.0_dp              !! h_m, h_b (mm); with has_layers
+      !> the header's closed forms Chat_TT, Chat_NN (MPa; per unit E), checked against the a = 0 row
+      logical :: has_chat(2) = .false.
+      real(dp) :: chat(2) = 0.0_dp
    end type rve_table_type
 
 contains
@@ -107,10 +114,12 @@ contains
       character(len=32) :: why
       integer :: starts(MAX_FIELDS + 1), ends(MAX_FIELDS + 1)
       integer :: outcome, nfields, position(N_TABLE_COLUMNS), ncols, nrows, j, k, first, eq, position_i
-      real(dp) :: values(MAX_FIELDS), b, h, a_tf_limit, elastic(4)
+      real(dp) :: values(MAX_FIELDS), b, h, a_tf_limit, elastic(4), layers(2), chat(2)
       real(dp), allocatable :: rows(:, :)
       integer, allocatable :: lines(:)
-      logical :: ok, have_columns, have_b, have_h, have_variable, have_limit, have_elastic(4)
+      logical :: ok, have_columns, have_b, have_h, have_variable, have_limit, have_elastic(4), have_layers(2), &
+         have_chat(2), have_format, known
+      integer :: format_number
 
       status = STATUS_OK
       message = ''
@@ -127,8 +136,14 @@ contains
       have_variable = .false.
       have_limit = .false.
       have_elastic = .false.
+      have_layers = .false.
+      have_chat = .false.
+      have_format = .false.
+      format_number = 0
       a_tf_limit = 0.0_dp
       elastic = 0.0_dp
+      layers = 0.0_dp
+      chat = 0.0_dp
       position = 0
       position_i = 0
       ncols = 0
@@ -182,7 +197,28 @@ contains
                      end do
                      do k = 1, nfields
                         if (line(starts(k):ends(k)) == trim(BETTI_COLUMN)) position_i = k
+                        ! a name that is no column of the format (a misspelt I_fNT would otherwise
+                        ! make a format-1 table of it, without the Betti checks)
+                        known = line(starts(k):ends(k)) == trim(BETTI_COLUMN)
+                        do j = 1, N_TABLE_COLUMNS
+                           if (line(starts(k):ends(k)) == trim(TABLE_COLUMNS(j))) known = .true.
+                        end do
+                        if (.not. known) then
+                           call fail(STATUS_TABLE_BAD_HEADER, 'the "# columns:" line names column "'// &
+                              clip_text(line(starts(k):ends(k)))//'", which is not a table column (tables/'// &
+                              'README.md: the 23 of format 1, and '//trim(BETTI_COLUMN)//' in format 2)')
+                           return
+                        end if
                      end do
+                     if (format_number == 2 .and. position_i == 0) then
+                        call fail(STATUS_TABLE_MISSING_COLUMN, 'the header says format 2, but the "# columns:" '// &
+                           'line lacks its column '//trim(BETTI_COLUMN))
+                        return
+                     else if (format_number == 1 .and. position_i > 0) then
+                        call fail(STATUS_TABLE_BAD_HEADER, 'the header says format 1, but the "# columns:" '// &
+                           'line names the format-2 column '//trim(BETTI_COLUMN))
+                        return
+                     end if
                      if (.not. (have_b .and. have_h)) then
                         call fail(STATUS_TABLE_MISSING_KEY, 'the header before "# columns:" must give '// &
                            '"b = ..." and "h = ..." (mm)')
@@ -220,6 +256,34 @@ contains
                case ('nu_b')
                   call header_real('nu_b', line(eq + 3:), -1.0_dp, 0.5_dp, .false., elastic(4), have_elastic(4))
                   if (status /= STATUS_OK) return
+               case ('h_m')
+                  call header_number('h_m', line(eq + 3:), layers(1), have_layers(1))
+                  if (status /= STATUS_OK) return
+               case ('h_b')
+                  call header_number('h_b', line(eq + 3:), layers(2), have_layers(2))
+                  if (status /= STATUS_OK) return
+               case ('Chat_TT')
+                  call header_number('Chat_TT', line(eq + 3:), chat(1), have_chat(1))
+                  if (status /= STATUS_OK) return
+               case ('Chat_NN')
+                  call header_number('Chat_NN', line(eq + 3:), chat(2), have_chat(2))
+                  if (status /= STATUS_OK) return
+               case ('format')
+                  if (have_format) then
+                     call fail(STATUS_TABLE_BAD_HEADER, 'key "format" given twice')
+                     return
+                  end if
+                  have_format = .true.
+                  select case (trim(adjustl(line(eq + 3:))))
+                  case ('interphase-rve-table 1')
+                     format_number = 1
+                  case ('interphase-rve-table 2')
+                     format_number = 2
+                  case default
+                     call fail(STATUS_TABLE_BAD_HEADER, 'format = "'//clip_text(trim(adjustl(line(eq + 3:))))// &
+                        '" is not one this reader knows ("interphase-rve-table 1" or "interphase-rve-table 2")')
+                     return
+                  end select
                case ('interpolation_variable')
                   if (have_variable) then
                      call fail(STATUS_TABLE_BAD_HEADER, 'key "interpolation_variable" given twice')
@@ -300,6 +364,10 @@ contains
       end if
       table%has_elastic = all(have_elastic)
       if (table%has_elastic) table%elastic = elastic
+      table%has_layers = all(have_layers) .and. table%has_elastic
+      if (table%has_layers) table%layers = layers
+      table%has_chat = have_chat
+      table%chat = chat
 
    contains
 
@@ -411,6 +479,40 @@ contains
          if (.not. (c0_t > 0.0_dp .and. c0_n > 0.0_dp)) then
             call identity(1, 'C_TT(0) > 0 and C_NN(0) > 0', min(c0_t, c0_n), status, message)
             return
+         end if
+         ! the intact laminate (a = 0) in closed form, from the header's layers and elastic constants
+         ! (plane strain, layers in series: shear moduli G, and constrained moduli M for s_N),
+         ! and the header's own Chat: a header that does not describe the data is refused
+         if (table%has_layers) then
+            if (abs(table%layers(1) + table%layers(2) - h) > 1.0e-12_dp*h) then
+               call identity(1, 'h = h_m + h_b (header)', table%layers(1) + table%layers(2), status, message)
+               return
+            end if
+            term(1) = h/(table%layers(1)/shear_modulus(table%elastic(1), table%elastic(2)) + &
+               table%layers(2)/shear_modulus(table%elastic(3), table%elastic(4)))
+            term(2) = h/(table%layers(1)/constrained_modulus(table%elastic(1), table%elastic(2)) + &
+               table%layers(2)/constrained_modulus(table%elastic(3), table%elastic(4)))
+            if (abs(c0_t - term(1)) > IDENTITY_TOL*term(1)) then
+               call identity(1, 'C_TT(0) = h/(h_m/G_m + h_b/G_b) from the header''s E, nu, h', c0_t, status, message)
+               return
+            end if
+            if (abs(c0_n - term(2)) > IDENTITY_TOL*term(2)) then
+               call identity(1, 'C_NN(0) = h/(h_m/M_m + h_b/M_b), M = E(1 - nu)/((1 + nu)(1 - 2 nu)), from the '// &
+                  'header''s E, nu, h', c0_n, status, message)
+               return
+            end if
+         end if
+         if (table%has_chat(1)) then
+            if (abs(c0_t - table%chat(1)) > IDENTITY_TOL*table%chat(1)) then
+               call identity(1, 'C_TT(0) = Chat_TT (header)', c0_t, status, message)
+               return
+            end if
+         end if
+         if (table%has_chat(2)) then
+            if (abs(c0_n - table%chat(2)) > IDENTITY_TOL*table%chat(2)) then
+               call identity(1, 'C_NN(0) = Chat_NN (header)', c0_n, status, message)
+               return
+            end if
          end if
          scale_c = max(c0_t, c0_n)
          scale_f = c0_t/h
@@ -555,6 +657,18 @@ contains
       end subroutine identity
 
    end subroutine check_rve_table
+
+   !> The shear modulus G = E/(2(1 + nu)) (MPa).
+   elemental real(dp) function shear_modulus(e, nu)
+      real(dp), intent(in) :: e, nu
+      shear_modulus = e/(2.0_dp*(1.0_dp + nu))
+   end function shear_modulus
+
+   !> The constrained (plane-strain uniaxial-strain) modulus M = E(1 - nu)/((1 + nu)(1 - 2 nu)) (MPa).
+   elemental real(dp) function constrained_modulus(e, nu)
+      real(dp), intent(in) :: e, nu
+      constrained_modulus = e*(1.0_dp - nu)/((1.0_dp + nu)*(1.0_dp - 2.0_dp*nu))
+   end function constrained_modulus
 
    !> The knots (ascending values of the table's interpolation variable) and the interpolated
    !> columns in interface units (divided by h where the paper's coefficient is per unit E).

@@ -683,6 +683,21 @@ static void test_run_history(const char *csv_path) {
         "micromechanical Sigma_T beyond the peak: status %d, %zu rows, last s_T %g mm, Sigma_T %g MPa: %s", status,
         done, done > 0 ? o_s[2 * (done - 1) + 1] : 0.0, done > 0 ? o_tr[2 * (done - 1) + 1] : 0.0, detail);
 
+  /* the fully damaged open crack (s_N = 0.1 mm) carries no tension (a flat tangent), but an
+   * imposed compression closes it: Newton passes the flat state to the contact branch */
+  const double open_then[6] = {0, 0, 0.1, 0, -1.0, 0};
+  const int then_normal[6] = {0, 0, 0, 0, 1, 0};
+  status = interphase_run_history(micro, NPROPS_MICRO, 2, 3, t3, open_then, then_normal, 50, 1e-12, 1, ROWS, NULL,
+                                  o_s, o_tr, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == 101 && close_to(o_tr[2 * 100], -1.0, 1e-12, 0.0) &&
+            o_s[2 * 100] < 0.0 && o_s[2 * 100] > -0.01,
+        "recontact under an imposed compression: status %d, %zu rows: %s", status, done, detail);
+  const double open_pull[6] = {0, 0, 0.1, 0, 0.1, 0};
+  status = interphase_run_history(micro, NPROPS_MICRO, 2, 3, t3, open_pull, then_normal, 50, 1e-12, 1, ROWS, NULL,
+                                  o_s, o_tr, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BEYOND_PEAK && strstr(detail, "it carries no more load in Sigma_N") && done == 51,
+        "tension on the fully damaged open crack: status %d, %zu rows: %s", status, done, detail);
+
   /* a bad history, arrays that are too short */
   const double nan_value[6] = {0, 0, 0, NAN, 0, 0};
   status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, nan_value, NULL, 10, 1e-12, 1, ROWS,
