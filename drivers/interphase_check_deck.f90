@@ -50,7 +50,8 @@ program interphase_check_deck
       character(len=512) :: bad_data = ''      !! the first such field of its data, as reported
       real(dp) :: constants(MAX_CONSTANTS) = 0.0_dp
       logical :: unsymm = .false.
-      integer :: depvar = -1                   !! *DEPVAR (-1: none; -2: not a whole number, reported)
+      integer :: depvar = -1                   !! *DEPVAR (-1: none)
+      logical :: depvar_bad = .false.          !! *DEPVAR given, but not a count (reported)
       real(dp) :: density = -1.0_dp            !! *DENSITY (-1: none)
       integer :: line = 0                      !! line of *MATERIAL
       character(len=16), allocatable :: options_seen(:)   !! *USER MATERIAL, *DEPVAR, *DENSITY so far
@@ -128,6 +129,7 @@ contains
       character(len=80) :: keyword, field, repeated
       character(len=80) :: keyword_text        !! the keyword as the deck writes it (for messages)
       character(len=512) :: bad_text           !! a data field that is not a number, as reported
+      character(len=32) :: bad_why             !! why it is not (parse_real)
       character(len=80), allocatable :: parameter_names(:)
       character(len=LINE_LEN), allocatable :: parameter_values(:)
       real(dp) :: values(16)
@@ -214,9 +216,10 @@ contains
                   ! a whole number: every character a digit (-1, reported later, otherwise)
                   materials(current)%nconstants = -1
                   if (len_trim(field) > 0 .and. len_trim(field) <= 9) then
-                     if (verify(trim(field), '0123456789') == 0) read (field, '(i9)', iostat=ios) &
-                        materials(current)%nconstants
-                     if (ios /= 0) materials(current)%nconstants = -1
+                     if (verify(trim(field), '0123456789') == 0) then
+                        read (field, '(i9)', iostat=ios) materials(current)%nconstants
+                        if (ios /= 0) materials(current)%nconstants = -1
+                     end if
                   end if
                end if
             case ('COHESIVESECTION')
@@ -234,7 +237,7 @@ contains
          end if
          ! a data line of the current keyword
          data_lines = data_lines + 1
-         call parse_numbers(line, values, nvalues, bad_field)
+         call parse_numbers(line, values, nvalues, bad_field, bad_why)
          select case (trim(keyword))
          case ('USERMATERIAL', 'DEPVAR', 'DENSITY', 'COHESIVESECTION')
             ! the data read here are numbers (every line of *USER MATERIAL, the first line of the
@@ -242,7 +245,8 @@ contains
             ! and a material's constants are then not decoded (nor CONSTANTS= compared)
             if (bad_field > 0 .and. (trim(keyword) == 'USERMATERIAL' .or. data_lines == 1)) then
                bad_text = path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' data line: field '// &
-                  int_to_string(bad_field)//" '"//clip_text(field_text(line, bad_field))//"' is not a number"
+                  int_to_string(bad_field)//" '"//clip_text(field_text(line, bad_field))//"' is "// &
+                  trim(merge('not a finite number', 'not a number       ', index(bad_why, 'finite') > 0))
                if (trim(keyword) == 'COHESIVESECTION') then
                   if (size(sections) > 0) then
                      if (len_trim(sections(size(sections))%bad_data) == 0) sections(size(sections))%bad_data = bad_text
@@ -265,15 +269,16 @@ contains
          case ('DEPVAR')
             if (current > 0 .and. data_lines == 1) then
                if (bad_field > 0) then
-                  materials(current)%depvar = -2
+                  materials(current)%depvar_bad = .true.
                else if (nvalues >= 1) then
-                  if (abs(values(1)) <= 1.0e9_dp .and. .not. abs(values(1) - aint(values(1))) > 0.0_dp) then
+                  if (values(1) >= 0.0_dp .and. values(1) <= 1.0e9_dp .and. &
+                      .not. abs(values(1) - aint(values(1))) > 0.0_dp) then
                      materials(current)%depvar = nint(values(1))
                   else
-                     materials(current)%depvar = -2
+                     materials(current)%depvar_bad = .true.
                      if (len_trim(materials(current)%bad_data) == 0) materials(current)%bad_data = &
                         path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' '// &
-                        clip_text(field_text(line, 1))//' is not a whole number'
+                        clip_text(field_text(line, 1))//' is not a count (a whole number >= 0)'
                   end if
                end if
             end if
@@ -352,6 +357,9 @@ contains
             if (len_trim(mat%bad_data) > 0) call record_failure(trim(mat%bad_data), nfail)
             if (mat%bad_constant) then
                continue     ! its constants are not decoded: the field that is not a number is named above
+            else if (mat%nconstants < 0 .and. len_trim(mat%constants_text) == 0) then
+               call record_failure(where//': no CONSTANTS= (Abaqus then takes 0) but '//int_to_string(mat%nread)// &
+                  ' values follow: give CONSTANTS= the number of PROPS', nfail)
             else if (mat%nconstants < 0) then
                call record_failure(where//': CONSTANTS='//trim(mat%constants_text)//' is not a whole number '// &
                   '(CONSTANTS= is the number of PROPS)', nfail)
@@ -402,7 +410,7 @@ contains
             if (status == STATUS_OK .and. .not. explicit) then
                if (params%viscosity > 0.0_dp) depvar_needed = NSTATV_VISCOUS
             end if
-            if (mat%depvar == -2) then
+            if (mat%depvar_bad) then
                continue     ! named above
             else if (mat%depvar < 0) then
                call record_failure(where//': no *DEPVAR: '//trim(solver)//' needs at least '//int_to_string(depvar_needed), nfail)
@@ -560,7 +568,7 @@ contains
    end function has_parameter
 
    !> The numbers of a comma-separated data line (empty fields skipped, text fields stop).
-   subroutine parse_numbers(line, values, n, bad_field)
+   subroutine parse_numbers(line, values, n, bad_field, why)
       character(len=*), intent(in) :: line
       real(dp), intent(out) :: values(:)
       integer, intent(out) :: n
@@ -568,13 +576,14 @@ contains
       !> real literal (interphase_text_input's parse_real); 0 when all are (blank fields are
       !> skipped, and the values stop there)
       integer, intent(out) :: bad_field
+      character(len=32), intent(out) :: why    !! parse_real's reason for bad_field
       character(len=len(line)) :: rest, item
-      character(len=32) :: why
       integer :: i, k
       real(dp) :: x
       logical :: ok
       n = 0
       bad_field = 0
+      why = ''
       values = 0.0_dp
       rest = line
       k = 0

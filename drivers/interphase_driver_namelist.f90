@@ -241,7 +241,7 @@ contains
                .and. len(value) > merge(1, 0, scan(value(1:1), '+-') > 0)
             if (.not. good) then
                message = where//' = '//clip_text(value)//' is not an integer'
-            else if (len(value) - merge(1, 0, scan(value(1:1), '+-') > 0) > 9) then
+            else if (significant_digits(value) > 9) then
                good = .false.
                message = where//' = '//clip_text(value)//' is too large: an integer of at most 9 digits'
             end if
@@ -255,6 +255,18 @@ contains
          end select
          if (.not. good) call close_text_file(unit)
       end function finish_entry
+
+      !> The digits of an integer literal without its sign and leading zeros (at least 1).
+      pure integer function significant_digits(literal) result(n)
+         character(len=*), intent(in) :: literal
+         integer :: first
+         first = verify(literal, '+-0')
+         if (first == 0) then
+            n = 1
+         else
+            n = len(literal) - first + 1
+         end if
+      end function significant_digits
 
       subroutine fail(text)
          character(len=*), intent(in) :: text

@@ -426,8 +426,8 @@ contains
             write (message, '(a,i0,a,es12.4,a)', iostat=ios) 'time[', row - 1, '] = ', times(row), ' is not finite'
          else if (.not. all(ieee_is_finite(values(:, row)))) then
             i = findloc(ieee_is_finite(values(:, row)), .false., dim=1)
-            write (message, '(a,i0,a,i0,a,i0,a,g0,a)', iostat=ios) 'value[', (row - 1)*n + i - 1, '] (row ', &
-               row - 1, ', component ', i - 1, ') = ', values(i, row), ' is not finite'
+            write (message, '(a,i0,a,i0,a,i0,a,a,a)', iostat=ios) 'value[', (row - 1)*n + i - 1, '] (row ', &
+               row - 1, ', component ', i - 1, ') = ', real_text(values(i, row)), ' is not finite'
          else if (row > 1) then
             if (.not. times(row) > times(row - 1)) write (message, '(a,i0,a,g0.10,a,g0.10,a)', iostat=ios) &
                'time[', row - 1, '] = ', times(row), ' is not greater than the previous time ', times(row - 1), &

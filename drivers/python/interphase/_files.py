@@ -7,7 +7,23 @@ import numpy as np
 
 from ._material import Material, DEFAULT_TRACTION_TOLERANCE
 
-_NUMBER = re.compile(r"^[+-]?(\d+\.?\d*|\.\d+)([eEdD][+-]?\d+)?$")
+_NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?$")
+#: the largest file the readers take (bytes), as the driver's (interphase_text_input's MAX_FILE_BYTES)
+MAX_FILE_BYTES = 64 * 1024 * 1024
+
+
+def _text_lines(path):
+    """The lines of a text file, read as the driver reads it: bytes as they are (a comment in any
+    encoding is kept, not decoded), at most MAX_FILE_BYTES (a larger file, /dev/zero included,
+    is refused: ValueError naming the file)."""
+    with open(path, "rb") as f:
+        data = f.read(MAX_FILE_BYTES + 1)
+    if len(data) > MAX_FILE_BYTES:
+        raise ValueError(f"{path}: the file is larger than {MAX_FILE_BYTES} bytes")
+    lines = data.decode("latin-1").split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    return [line[:-1] if line.endswith("\r") else line for line in lines]
 
 
 def _number(text, where):
@@ -64,31 +80,30 @@ def read_history(path, control=False):
     """
     rows, flags, lines = [], [], []
     named, names_line = None, 0
-    with open(path, encoding="utf-8") as f:
-        for number, line in enumerate(f, 1):
-            where = f"{path}:{number}"
-            head, hash_, comment = line.partition("#")
-            if hash_ and comment.lstrip().lower().startswith("columns:"):
-                ncolumns, named = _column_names(comment.lstrip(), where)
-                names_line = number
-                if rows and ncolumns != len(rows[0]):
-                    raise ValueError(f'{where}: the "# columns:" line names {ncolumns} columns, but the data '
-                                     f'lines have {len(rows[0])}')
-                named = (ncolumns, named)
-                continue
-            words = head.split()
-            if not words:
-                continue
-            if len(words) not in (3, 4):
-                raise ValueError(f"{where}: {len(words)} columns; a history row is 't s_T s_N' or 't s_T1 s_T2 s_N'")
-            if rows and len(words) != len(rows[0]):
-                raise ValueError(f"{where}: {len(words)} columns, the first row has {len(rows[0])}")
-            if named is not None and named[0] != len(words):
-                raise ValueError(f'{where}: {len(words)} columns, but the "# columns:" line (line {names_line}) '
-                                 f'names {named[0]}')
-            rows.append([_number(w, where) for w in words])
-            flags.append(named[1] if named is not None else [False] * (len(words) - 1))
-            lines.append(number)
+    for number, line in enumerate(_text_lines(path), 1):
+        where = f"{path}:{number}"
+        head, hash_, comment = line.partition("#")
+        if hash_ and comment.lstrip().lower().startswith("columns:"):
+            ncolumns, named = _column_names(comment.lstrip(), where)
+            names_line = number
+            if rows and ncolumns != len(rows[0]):
+                raise ValueError(f'{where}: the "# columns:" line names {ncolumns} columns, but the data '
+                                 f'lines have {len(rows[0])}')
+            named = (ncolumns, named)
+            continue
+        words = head.split()
+        if not words:
+            continue
+        if len(words) not in (3, 4):
+            raise ValueError(f"{where}: {len(words)} columns; a history row is 't s_T s_N' or 't s_T1 s_T2 s_N'")
+        if rows and len(words) != len(rows[0]):
+            raise ValueError(f"{where}: {len(words)} columns, the first row has {len(rows[0])}")
+        if named is not None and named[0] != len(words):
+            raise ValueError(f'{where}: {len(words)} columns, but the "# columns:" line (line {names_line}) '
+                             f'names {named[0]}')
+        rows.append([_number(w, where) for w in words])
+        flags.append(named[1] if named is not None else [False] * (len(words) - 1))
+        lines.append(number)
     if len(rows) < 2:
         raise ValueError(f"{path}: needs at least 2 data rows, found {len(rows)}")
     table = np.array(rows)
@@ -108,7 +123,7 @@ def read_history(path, control=False):
     return time, value
 
 
-_INTEGER = re.compile(r"^[+-]?\d+$")
+_INTEGER = re.compile(r"^[+-]?[0-9]+$")
 
 
 def _namelist_entries(path):
@@ -141,8 +156,7 @@ def _namelist_entries(path):
             value = _number(text, where)
         groups[group][name] = (value, entry_line)
 
-    with open(path, encoding="utf-8") as f:
-        lines = f.read().splitlines()
+    lines = _text_lines(path)
     for number, line in enumerate(lines, 1):
         i, n = 0, len(line)
         while i < n:
@@ -256,7 +270,7 @@ def _checked_case_entries(path):
                     "logical": isinstance(value, bool)}[kind]
             if not good:
                 raise ValueError(f"{where} = {value!r} is not {_KIND_WORDS[kind]}")
-            if kind == "integer" and abs(value) > 999_999_999:
+            if kind == "integer" and abs(value) > 999_999_999:   # (the driver's limit: 9 digits)
                 raise ValueError(f"{where} = {value!r} is too large: an integer of at most 9 digits")
     for group in _KINDS:
         if group not in groups:

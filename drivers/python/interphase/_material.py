@@ -48,6 +48,8 @@ def _same_bits(a, b):
 def _real(name, value):
     """The float of a numeric entry: a real number (int, float, a numpy scalar), not a string or a
     bool (interphase-point refuses a quoted number as well)."""
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "fiu":
+        return float(value)
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
         raise TypeError(f"Material: {name} must be a number, got {value!r} ({type(value).__name__})")
     return float(value)
