@@ -7,7 +7,8 @@
 !> those it reads (`&material: sf_tt (line 6) is not an entry of &material; its entries: ...`).
 module interphase_driver_namelist
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
-   use interphase_text_input, only: is_real_literal, clip_text, MAX_FILE_BYTES
+   use interphase_kinds, only: dp
+   use interphase_text_input, only: is_real_literal, parse_real, clip_text, MAX_FILE_BYTES
    use interphase_driver_text, only: int_to_string, to_lower, read_line, text_file_type, open_line_file, &
       close_text_file
    implicit none
@@ -209,6 +210,8 @@ contains
       logical function finish_entry() result(good)
          integer :: j, kind
          character(len=:), allocatable :: lower, where
+         real(dp) :: number
+         character(len=32) :: why
          good = .true.
          if (.not. in_entry) return
          in_entry = .false.
@@ -234,7 +237,13 @@ contains
          select case (kind)
          case (KIND_REAL)
             good = value_kind == 0 .and. is_real_literal(value)
-            if (.not. good) message = where//' = '//clip_text(value)//' is not a number'
+            if (.not. good) then
+               message = where//' = '//clip_text(value)//' is not a number'
+            else
+               ! one real literal, and a finite double (1e400 is not)
+               call parse_real(value, number, good, why)
+               if (.not. good) message = where//' = '//clip_text(value)//' is '//trim(why)
+            end if
          case (KIND_INTEGER)
             good = value_kind == 0 .and. len(value) > 0
             if (good) good = verify(value(merge(2, 1, scan(value(1:1), '+-') > 0):), '0123456789') == 0 &

@@ -7,6 +7,9 @@ module interphase_fe2d_case
    use, intrinsic :: iso_fortran_env, only: iostat_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
+   use interphase_params, only: law_params_type, from_props
+   use interphase_text_input, only: tried_path
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds
    use interphase_driver_namelist, only: entry_kind_type, KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
@@ -90,8 +93,10 @@ contains
       type(fe2d_case_type), intent(out) :: run    !! the case, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      integer :: unit, ios
+      integer :: unit, ios, status
       character(len=512) :: iomsg
+      type(law_params_type) :: params
+      character(len=MESSAGE_LEN) :: why
 
       ok = .false.
       run%path = path
@@ -113,6 +118,15 @@ contains
       if (ok) call read_joint(unit, run, ok, message)
       if (ok) call read_loading(unit, run, ok, message)
       close (unit)
+      ! the interface material's constants as the UMAT decodes them: refused here, in one message
+      ! naming the case, before any output file is opened
+      if (ok) then
+         call from_props(run%props, params, status, why)
+         if (status /= STATUS_OK) then
+            ok = .false.
+            message = path//': &joint: '//trim(why)
+         end if
+      end if
       if (ok) call read_shear_history(run%history_path, run%history_t, run%history_u, ok, message)
    end subroutine read_fe2d_case
 
@@ -437,7 +451,7 @@ contains
       allocate (t(0), u(0))
       call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
-         message = path//': cannot open the shear history: '//trim(iomsg)
+         message = tried_path(path)//': cannot open the shear history (&loading: history): '//trim(iomsg)
          return
       end if
       line_number = 0
