@@ -359,15 +359,21 @@ contains
       overflows = magnitude > HUGE_MAGNITUDE .or. (magnitude == HUGE_MAGNITUDE .and. digits > HUGE_DIGITS)
    end function overflows
 
-   !> At most the first 60 characters of `text`, with '...' when cut (for messages).
+   !> At most the first 60 characters of `text`, with '...' when cut, and a control character
+   !> other than a tab as '?' (for messages).
    pure function clip_text(text) result(short)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: short
+      integer :: i
       if (len(text) <= 60) then
          short = text
       else
          short = text(1:57)//'...'
       end if
+      ! control characters other than a tab (a binary file read as text) shown as '?'
+      do i = 1, len(short)
+         if ((iachar(short(i:i)) < 32 .and. iachar(short(i:i)) /= 9) .or. iachar(short(i:i)) == 127) short(i:i) = '?'
+      end do
    end function clip_text
 
    !> NaN, Inf or Infinity (any case, optional sign, NaN(...) too).
