@@ -502,18 +502,15 @@ contains
                return
             end if
          end if
-         if (table%has_chat(1)) then
-            if (abs(c0_t - table%chat(1)) > IDENTITY_TOL*table%chat(1)) then
-               call identity(1, 'C_TT(0) = Chat_TT (header)', c0_t, status, message)
+         term(1:2) = [c0_t, c0_n]
+         do j = 1, 2
+            if (.not. table%has_chat(j)) cycle
+            if (abs(term(j) - table%chat(j)) > IDENTITY_TOL*table%chat(j)) then
+               call identity(1, trim(merge('C_TT(0) = Chat_TT (header)', 'C_NN(0) = Chat_NN (header)', j == 1)), &
+                  term(j), status, message)
                return
             end if
-         end if
-         if (table%has_chat(2)) then
-            if (abs(c0_n - table%chat(2)) > IDENTITY_TOL*table%chat(2)) then
-               call identity(1, 'C_NN(0) = Chat_NN (header)', c0_n, status, message)
-               return
-            end if
-         end if
+         end do
          scale_c = max(c0_t, c0_n)
          scale_f = c0_t/h
          tol_i = IDENTITY_TOL
