@@ -321,7 +321,7 @@ contains
             do j = 1, nfields
                call parse_real(line(starts(j):ends(j)), values(j), ok, why)
                if (.not. ok) then
-                  write (text, '(a,i0,a)') 'column ', j, ' is '//trim(why)//': "'// &
+                  write (text, '(a,i0,a)') 'column ', j, ' ('//trim(column_name(j))//') is '//trim(why)//': "'// &
                      clip_text(line(starts(j):ends(j)))//'"'
                   if (index(why, 'finite') > 0) then
                      call fail(STATUS_TABLE_NONFINITE, trim(text))
@@ -380,6 +380,18 @@ contains
          write (message, '(a,a,i0,a,a)', iostat=ios) message_path(table%source), ':', file%line_number, ': ', what
          call close_text_file(file)
       end subroutine fail
+
+      !> The name of field k of a data row, from the "# columns:" line.
+      function column_name(k) result(name)
+         integer, intent(in) :: k
+         character(len=16) :: name
+         integer :: jj
+         name = '?'
+         if (k == position_i) name = BETTI_COLUMN
+         do jj = 1, N_TABLE_COLUMNS
+            if (position(jj) == k) name = TABLE_COLUMNS(jj)
+         end do
+      end function column_name
 
       !> A header value: one positive finite number, the key given once.
       subroutine header_number(key, field, value, found)
