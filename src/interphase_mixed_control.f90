@@ -23,10 +23,10 @@
 !> Sub-stepping: when an update fails (a status other than STATUS_OK) or Newton does not
 !> converge, the step is halved and retried, up to MAX_HALVINGS times within one sub-increment.
 !> When that is not enough and an imposed traction is being raised beyond the largest the point
-!> reached, no solution exists: STATUS_BEYOND_PEAK. Nor is a state where Newton meets the imposed
-!> traction on a numerically flat tangent (a pivot of the traction-controlled block at most
-!> FLAT_STIFFNESS times the largest tangent entry met in the replay) a solution: there the
-!> traction is carried by round-off, as on a fully damaged open micromechanical crack, whose
+!> reached, no solution exists: STATUS_BEYOND_PEAK. Nor is a state where Newton meets a non-zero
+!> imposed traction on a numerically flat tangent (a pivot of the traction-controlled block at
+!> most FLAT_STIFFNESS times the largest tangent entry met in the replay) a solution (a zero one
+!> is: a traction-free crack is one at any opening): there the traction is carried by round-off, as on a fully damaged open micromechanical crack, whose
 !> table stiffnesses would otherwise meet any imposed traction at a separation of 1e11 mm or more
 !> (drivers/README.md, 'Mixed control'). Newton may pass through such states (an open crack
 !> closed by an imposed compression reaches the contact branch that way); it may not stop there.
@@ -384,7 +384,7 @@ contains
       real(dp) :: s(3), r(3), delta(3), block(3, 3), flat_bound
       integer :: free(3)
       integer :: nfree, i, ntens
-      logical :: solved
+      logical :: solved, free_traction
 
       ntens = size(target)
       converged = .false.
@@ -411,14 +411,30 @@ contains
          residual = maxval(abs(r(:nfree)))
          block(:nfree, :nfree) = tangent(free(:nfree), free(:nfree))
          if (residual <= tolerance) then
-            ! met: a solution only where the tangent carries the traction (not round-off)
+            ! met: a solution only where the tangent carries the traction (not round-off), or
+            ! where the traction met on a flat tangent is zero (a traction-free crack is one at
+            ! any opening)
             flat_bound = FLAT_STIFFNESS*max(stiffness_scale, maxval(abs(tangent)))
             call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved, flat_bound)
             if (solved) exit
-            flat_component = free(1)
+            ! the flat components: those with a flat diagonal entry (all of them when the block
+            ! is singular only through its coupling); a solution when each has a zero target
+            flat_component = 0
+            free_traction = .true.
             do i = nfree, 1, -1
-               if (.not. abs(tangent(free(i), free(i))) > flat_bound) flat_component = free(i)
+               if (.not. abs(tangent(free(i), free(i))) > flat_bound) then
+                  flat_component = free(i)
+                  if (abs(target(free(i))) > tolerance) free_traction = .false.
+               end if
             end do
+            if (flat_component == 0) then
+               flat_component = free(1)
+               free_traction = all(abs(target(free(:nfree))) <= tolerance)
+            end if
+            if (free_traction) then
+               flat_component = 0
+               exit
+            end if
             return
          end if
          if (iterations >= MAX_NEWTON) return
