@@ -16,7 +16,7 @@ program interphase_fe2d
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_layout, only: PROP_MU
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
-   use interphase_driver_case, only: load_start_up_data
+   use interphase_driver_case, only: load_start_up_data, material_summary
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot, exit_program, print_version, rename_file
    use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
@@ -57,6 +57,8 @@ program interphase_fe2d
    call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
    if (.not. ok) call fail(message)
    call build_mesh(run, mesh)
+   ! the joint's material, as interphase-point names it (model, table, law, key parameters)
+   write (output_unit, '(a)') run%name//': joint: '//material_summary(run%props)
 
    csv_path = join_path(output_dir, run%output)
    call make_directory(directory_of(csv_path), ok, message)
@@ -72,6 +74,7 @@ program interphase_fe2d
       int_to_string(run%bricks)//' bricks, '//int_to_string(run%nx)//' x '// &
       int_to_string(run%ny)//' elements per brick, '//int_to_string(mesh%nfree)// &
       ' free equations, half bandwidth '//int_to_string(mesh%bandwidth)
+   write (options%log_unit, '(a)') 'joint: '//material_summary(run%props)
    write (options%log_unit, '(a)') 'residual = ||R_free|| / max(||F_ext||, |shear reaction|); '// &
       'correction = ||du|| / ||u_free||'
    call run_analysis(run, mesh, options, result)
