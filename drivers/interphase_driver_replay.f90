@@ -198,14 +198,15 @@ contains
             if (failure%status == STATUS_BEYOND_PEAK) then
                i = failure%component
                if (failure%flat) then
-                  why = 'what the material can carry: it carries no more load in '// &
-                     component_name(i, .true., ntens)//' (a flat tangent; '
+                  why = 'met only on a flat tangent in '//component_name(i, .true., ntens)//' (a stiffness at '// &
+                     'most 1e-12 of the largest met): the point carries no more load in '// &
+                     component_name(i, .true., ntens)//', or its separation there is undetermined ('
                else
-                  why = 'the peak the material can carry ('
+                  why = 'beyond the peak the material can carry ('
                end if
                text = text//'no solution from t = '//real_to_string(last%time)//' to t = '// &
                   real_to_string(failure%time_to)//': the imposed traction '//component_name(i, .true., ntens)// &
-                  ' = '//real_to_string(failure%target(i))//' MPa is beyond '//why// &
+                  ' = '//real_to_string(failure%target(i))//' MPa is '//why// &
                   'the largest |'//component_name(i, .true., ntens)//'| reached is '// &
                   real_to_string(failure%peak(i))//' MPa; last converged state: '// &
                   values_text(last%separation(:ntens), separations)//', '// &

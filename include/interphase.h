@@ -247,7 +247,7 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  *         increments, output_every, traction_tolerance: checked before any update);
  *         INTERPHASE_STATUS_BEYOND_PEAK (an imposed traction is raised beyond the largest the
  *         point reached, or is met only on a flat tangent, where the point carries no more load
- *         in its direction: no solution), INTERPHASE_STATUS_MIXED_NOT_CONVERGED
+ *         in its direction or its separation is undetermined: no solution), INTERPHASE_STATUS_MIXED_NOT_CONVERGED
  *         (Newton failed even after the halvings), or the status of an update that failed even
  *         after the halvings or for good; INTERPHASE_STATUS_OUTPUT_FULL when the replay has more
  *         rows than @p capacity (the arrays hold the first @p capacity rows: call again with

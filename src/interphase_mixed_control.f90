@@ -383,8 +383,9 @@ contains
       ! fixed sizes, the first ntens (nfree) used: no allocation per iteration
       real(dp) :: s(3), r(3), delta(3), block(3, 3), flat_bound
       integer :: free(3)
-      integer :: nfree, i, ntens
-      logical :: solved, free_traction
+      integer :: nfree, i, ntens, first_flat
+      logical :: solved
+      real(dp) :: zero_traction
 
       ntens = size(target)
       converged = .false.
@@ -418,23 +419,26 @@ contains
             call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved, flat_bound)
             if (solved) exit
             ! the flat components: those with a flat diagonal entry (all of them when the block
-            ! is singular only through its coupling); a solution when each has a zero target
+            ! is singular only through its coupling); a solution when each has a zero target:
+            ! at most the tolerance, or what a flat stiffness carries at the last converged
+            ! separation (round-off, not the separation Newton may have reached on it)
+            zero_traction = max(tolerance, flat_bound*maxval(abs(point%separation(:ntens))))
             flat_component = 0
-            free_traction = .true.
+            first_flat = 0
             do i = nfree, 1, -1
                if (.not. abs(tangent(free(i), free(i))) > flat_bound) then
-                  flat_component = free(i)
-                  if (abs(target(free(i))) > tolerance) free_traction = .false.
+                  first_flat = free(i)
+                  if (abs(target(free(i))) > zero_traction) flat_component = free(i)
                end if
             end do
-            if (flat_component == 0) then
-               flat_component = free(1)
-               free_traction = all(abs(target(free(:nfree))) <= tolerance)
+            if (first_flat == 0) then
+               ! singular through the coupling only: named by the first non-zero target
+               do i = nfree, 1, -1
+                  if (abs(target(free(i))) > zero_traction) flat_component = free(i)
+               end do
             end if
-            if (free_traction) then
-               flat_component = 0
-               exit
-            end if
+            ! every flat component traction-free: a solution
+            if (flat_component == 0) exit
             return
          end if
          if (iterations >= MAX_NEWTON) return
@@ -526,9 +530,11 @@ contains
          if (failure%status == STATUS_BEYOND_PEAK .and. failure%flat) then
             c = failure%component
             name = component_name(c, .true., point%ntens)
-            write (long, '(a,1x,a,a,a,g0.6,a,a,a,a,a,g0.6,a)', iostat=ios) trim(long), 'the imposed traction ', name, &
-               ' = ', failure%target(c), ' MPa is beyond what the material can carry: it carries no more load in ', &
-               name, ' (a flat tangent; the largest |', name, '| reached is ', failure%peak(c), ' MPa)'
+            write (long, '(a,1x,a,a,a,g0.6,a,a,a,a,a,a,g0.6,a)', iostat=ios) trim(long), 'the imposed traction ', &
+               name, ' = ', failure%target(c), ' MPa is met only on a flat tangent in ', name, &
+               ' (a stiffness at most 1e-12 of the largest met): the point carries no more load in ', name, &
+               ', or its separation there is undetermined (the largest |', name, '| reached is ', failure%peak(c), &
+               ' MPa)'
          else if (failure%status == STATUS_BEYOND_PEAK) then
             c = failure%component
             name = component_name(c, .true., point%ntens)

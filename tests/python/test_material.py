@@ -227,6 +227,11 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
             interphase.read_case(path)
     (tmp_path / "ok.nml").write_text(good)
     assert interphase.read_case(tmp_path / "ok.nml").increments >= 1
+    # a history named with non-ASCII characters (UTF-8), and a comment in another encoding
+    (tmp_path / "h\u00e9.txt").write_text((source_dir / "drivers" / "cases" / "h1I.txt").read_text())
+    (tmp_path / "accent.nml").write_bytes(b"! s\xb5m\n" + good.replace("'h1I.txt'", "'h\u00e9.txt'").encode("utf-8"))
+    assert "'h1I.txt'" in good
+    assert interphase.read_case(tmp_path / "accent.nml").increments >= 1
 
 
 def test_numeric_entries_must_be_numbers():

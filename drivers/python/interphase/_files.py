@@ -13,14 +13,15 @@ MAX_FILE_BYTES = 64 * 1024 * 1024
 
 
 def _text_lines(path):
-    """The lines of a text file, read as the driver reads it: bytes as they are (a comment in any
-    encoding is kept, not decoded), at most MAX_FILE_BYTES (a larger file, /dev/zero included,
-    is refused: ValueError naming the file)."""
+    """The lines of a text file, read as the driver reads it: bytes as they are (UTF-8, with any
+    other byte kept as a surrogate, so a comment in another encoding is read and a path named in
+    the file opens the file of those bytes), at most MAX_FILE_BYTES (a larger file, /dev/zero
+    included, is refused: ValueError naming the file)."""
     with open(path, "rb") as f:
         data = f.read(MAX_FILE_BYTES + 1)
     if len(data) > MAX_FILE_BYTES:
         raise ValueError(f"{path}: the file is larger than {MAX_FILE_BYTES} bytes")
-    lines = data.decode("latin-1").split("\n")
+    lines = data.decode("utf-8", errors="surrogateescape").split("\n")
     if lines and lines[-1] == "":
         lines.pop()
     return [line[:-1] if line.endswith("\r") else line for line in lines]
