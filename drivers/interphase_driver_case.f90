@@ -25,8 +25,8 @@ module interphase_driver_case
    use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_text_input, only: tried_path
-   use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, KIND_REAL, KIND_INTEGER, &
-      KIND_LOGICAL, KIND_STRING
+   use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, &
+      KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
    implicit none
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, &
@@ -122,12 +122,14 @@ contains
    !> Fortran's namelist read: bounded lines and file size, one group of each name, each entry
    !> once and of its kind (`check_namelist_file`); a file that cannot be opened is named as the
    !> path tried.
-   subroutine precheck_case_file(path, known, ok, message)
+   subroutine precheck_case_file(path, known, ok, message, lines)
       character(len=*), intent(in) :: path                 !! case file
       type(entry_kind_type), intent(in) :: known(:)        !! 'group.entry' names and kinds
       logical, intent(out) :: ok
       character(len=:), allocatable, intent(out) :: message  !! 'file:line: &group: ...' when not ok
-      call check_namelist_file(path, known, ok, message)
+      !> the entries' lines, for the messages of the checks after the namelist read
+      type(entry_line_type), allocatable, intent(out), optional :: lines(:)
+      call check_namelist_file(path, known, ok, message, lines)
       if (.not. ok) then
          if (index(message, path//': cannot open') == 1) message = tried_path(path)//message(len(path) + 1:)
       end if
@@ -162,12 +164,13 @@ contains
       character(len=512) :: iomsg
       type(law_params_type) :: params
       character(len=MESSAGE_LEN) :: why
+      type(entry_line_type), allocatable :: lines(:)
 
       ok = .false.
       run%path = path
       run%name = stem_of(path)
       ! bounded lines, one group of each name, each entry once and of its kind
-      call precheck_case_file(path, [material_entry_kinds('material'), LOADING_ENTRIES], ok, message)
+      call precheck_case_file(path, [material_entry_kinds('material'), LOADING_ENTRIES], ok, message, lines)
       if (.not. ok) return
       ok = .false.
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
@@ -182,7 +185,10 @@ contains
          call read_loading(unit, run, ok, message)
       end if
       close (unit)
-      if (.not. ok) return
+      if (.not. ok) then
+         message = with_entry_line(message, path, lines)
+         return
+      end if
       ! the material's constants as the UMAT decodes them: refused here, once, before any update
       call from_props(run%props, params, status, why)
       if (status /= STATUS_OK) then

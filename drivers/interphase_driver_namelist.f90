@@ -13,7 +13,8 @@ module interphase_driver_namelist
       close_text_file
    implicit none
    private
-   public :: check_namelist_file, entry_kind_type, KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
+   public :: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
+      KIND_LOGICAL, KIND_STRING
 
    !> Kinds of entry values.
    integer, parameter :: KIND_REAL = 1, KIND_INTEGER = 2, KIND_LOGICAL = 3, KIND_STRING = 4
@@ -24,6 +25,12 @@ module interphase_driver_namelist
       integer :: kind = 0
    end type entry_kind_type
 
+   !> Where an entry of a case file was given: 'group.name' (lower case) and its line.
+   type :: entry_line_type
+      character(len=64) :: name = ''
+      integer :: line = 0
+   end type entry_line_type
+
    !> A token of the file: its text (lower-cased for names), its line, and what it is.
    integer, parameter :: TOKEN_WORD = 1, TOKEN_STRING = 2, TOKEN_EQUALS = 3, TOKEN_COMMA = 4, &
       TOKEN_SLASH = 5, TOKEN_GROUP = 6
@@ -32,11 +39,13 @@ contains
 
    !> Check `path` against `known` (entries of every group the program reads). ok = .false. with
    !> `message` ('path:line: &group: ...') on the first problem.
-   subroutine check_namelist_file(path, known, ok, message)
+   subroutine check_namelist_file(path, known, ok, message, lines)
       character(len=*), intent(in) :: path
       type(entry_kind_type), intent(in) :: known(:)
       logical, intent(out) :: ok
       character(len=:), allocatable, intent(out) :: message
+      !> where each entry given was (for the messages of later checks: `with_entry_line`)
+      type(entry_line_type), allocatable, intent(out), optional :: lines(:)
       character(len=:), allocatable :: line, group, seen_groups, seen_entries, name, value
       character(len=512) :: iomsg
       integer :: ios, line_number, i, n, first, k, entry_line, nvalues, value_kind
@@ -46,6 +55,7 @@ contains
       logical :: in_group, in_entry
 
       ok = .false.
+      if (present(lines)) allocate (lines(0))
       call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = path//': cannot open the case file: '//trim(iomsg)
@@ -159,6 +169,7 @@ contains
                            return
                         end if
                         seen_entries = seen_entries//name//' '
+                        if (present(lines)) lines = [lines, entry_line_type(group//'.'//name, line_number)]
                         in_entry = .true.
                         entry_line = line_number
                         nvalues = 0
@@ -310,5 +321,32 @@ contains
       end function known_groups
 
    end subroutine check_namelist_file
+
+   !> `message` ('path: &group: name ...', a check after the namelist read) with the line where
+   !> the entry `name` was given: 'path:line: &group: name ...'; as it is when it does not start
+   !> so or names no entry of `lines`.
+   function with_entry_line(message, path, lines) result(text)
+      character(len=*), intent(in) :: message, path
+      type(entry_line_type), intent(in) :: lines(:)
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: rest, group, word
+      integer :: colon, j, last
+      text = message
+      if (index(message, path//': &') /= 1) return
+      rest = message(len(path) + 4:)
+      colon = index(rest, ': ')
+      if (colon < 2) return
+      group = rest(:colon - 1)
+      rest = rest(colon + 2:)
+      last = verify(rest//' ', 'abcdefghijklmnopqrstuvwxyz0123456789_') - 1
+      if (last < 1) return
+      word = rest(:last)
+      do j = 1, size(lines)
+         if (trim(lines(j)%name) == to_lower(group)//'.'//word) then
+            text = path//':'//int_to_string(lines(j)%line)//': &'//group//': '//rest
+            return
+         end if
+      end do
+   end function with_entry_line
 
 end module interphase_driver_namelist

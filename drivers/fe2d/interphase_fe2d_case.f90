@@ -12,7 +12,8 @@ module interphase_fe2d_case
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds
-   use interphase_driver_namelist, only: entry_kind_type, KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
+   use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
+      KIND_LOGICAL, KIND_STRING
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words, text_file_type, open_line_file, close_text_file
    implicit none
@@ -97,13 +98,14 @@ contains
       character(len=512) :: iomsg
       type(law_params_type) :: params
       character(len=MESSAGE_LEN) :: why
+      type(entry_line_type), allocatable :: lines(:)
 
       ok = .false.
       run%path = path
       run%name = stem_of(path)
       ! the drivers' one pre-check: bounded lines and size, one group of each name, each entry
       ! once and of its kind
-      call precheck_case_file(path, [FE2D_ENTRIES, material_entry_kinds('joint')], ok, message)
+      call precheck_case_file(path, [FE2D_ENTRIES, material_entry_kinds('joint')], ok, message, lines)
       if (.not. ok) return
       ok = .false.
       open (newunit=unit, file=path, status='old', action='read', form='formatted', &
@@ -118,6 +120,8 @@ contains
       if (ok) call read_joint(unit, run, ok, message)
       if (ok) call read_loading(unit, run, ok, message)
       close (unit)
+      ! a check after the namelist read names its entry's line too
+      if (.not. ok) message = with_entry_line(message, path, lines)
       ! the interface material's constants as the UMAT decodes them: refused here, in one message
       ! naming the case, before any output file is opened
       if (ok) then
