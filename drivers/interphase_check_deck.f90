@@ -358,8 +358,13 @@ contains
             if (mat%bad_constant) then
                continue     ! its constants are not decoded: the field that is not a number is named above
             else if (mat%nconstants < 0 .and. len_trim(mat%constants_text) == 0) then
-               call record_failure(where//': no CONSTANTS= (Abaqus then takes 0) but '//int_to_string(mat%nread)// &
-                  ' values follow: give CONSTANTS= the number of PROPS', nfail)
+               if (mat%nread > 0) then
+                  call record_failure(where//': no CONSTANTS= (Abaqus then takes 0) but '// &
+                     int_to_string(mat%nread)//' values follow: give CONSTANTS= the number of PROPS', nfail)
+               else
+                  call record_failure(where//': no CONSTANTS= and no constants: interphase needs its PROPS '// &
+                     '(docs/abaqus.md)', nfail)
+               end if
             else if (mat%nconstants < 0) then
                call record_failure(where//': CONSTANTS='//trim(mat%constants_text)//' is not a whole number '// &
                   '(CONSTANTS= is the number of PROPS)', nfail)

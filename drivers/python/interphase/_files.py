@@ -280,6 +280,9 @@ def _checked_case_entries(path):
     if missing:
         raise ValueError(f"{path}: &loading: missing entr{'ies' if len(missing) > 1 else 'y'} "
                          + ", ".join(missing))
+    increments, line = groups["loading"]["increments"]
+    if increments < 1:
+        raise ValueError(f"{path}:{line}: &loading: increments must be at least 1, got {increments}")
     return {g: {k: v for k, (v, _) in entries.items()} for g, entries in groups.items()}
 
 
@@ -324,8 +327,6 @@ def read_case(path):
     except TypeError as error:          # a missing entry: name the file
         raise TypeError(f"{path}: &material: {error}") from None
     loading = groups["loading"]
-    if loading["increments"] < 1:
-        raise ValueError(f"{path}: &loading: increments must be at least 1, got {loading['increments']}")
     time, value, control = read_history(os.path.join(base, loading["history"]), control=True)
     return Case(material, time, value, loading["increments"], loading["output"], control=control,
                 traction_tolerance=float(loading.get("traction_tolerance", DEFAULT_TRACTION_TOLERANCE)),
