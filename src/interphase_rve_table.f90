@@ -339,13 +339,14 @@ contains
          if (position_i > 0) rows(N_TABLE_COLUMNS + 1, nrows) = values(position_i)
          lines(nrows) = file%line_number
       end do read_lines
+      ! (what the whole file lacks is named without a line: the end of the file is not where)
       if (.not. have_columns) then
-         call fail(STATUS_TABLE_MISSING_COLUMN, 'no "# columns:" line')
+         call fail_file(STATUS_TABLE_MISSING_COLUMN, 'no "# columns:" line')
          return
       end if
       if (.not. have_limit) then
          if (.not. all(have_elastic)) then
-            call fail(STATUS_TABLE_MISSING_KEY, 'the header must give the short-crack limit '// &
+            call fail_file(STATUS_TABLE_MISSING_KEY, 'the header must give the short-crack limit '// &
                '"a_Tf_limit = ..." (MPa) or the layers'' "E_m", "nu_m", "E_b", "nu_b" (plane strain) it '// &
                'follows from')
             return
@@ -380,6 +381,16 @@ contains
          write (message, '(a,a,i0,a,a)', iostat=ios) message_path(table%source), ':', file%line_number, ': ', what
          call close_text_file(file)
       end subroutine fail
+
+      !> Set the status and the message 'file: text' (no line), and close the file.
+      subroutine fail_file(code, what)
+         integer, intent(in) :: code
+         character(len=*), intent(in) :: what
+         integer :: ios
+         status = code
+         write (message, '(a,a,a)', iostat=ios) message_path(table%source), ': ', what
+         call close_text_file(file)
+      end subroutine fail_file
 
       !> The name of field k of a data row, from the "# columns:" line.
       function column_name(k) result(name)
