@@ -129,6 +129,7 @@ contains
       character(len=80) :: keyword, field, repeated
       character(len=80) :: keyword_text        !! the keyword as the deck writes it (for messages)
       character(len=512) :: bad_text           !! a data field that is not a number, as reported
+      character(len=LINE_LEN) :: bad_item      !! that field
       character(len=32) :: bad_why             !! why it is not (parse_real)
       character(len=80), allocatable :: parameter_names(:)
       character(len=LINE_LEN), allocatable :: parameter_values(:)
@@ -237,7 +238,7 @@ contains
          end if
          ! a data line of the current keyword
          data_lines = data_lines + 1
-         call parse_numbers(line, values, nvalues, bad_field, bad_why)
+         call parse_numbers(line, values, nvalues, bad_field, bad_item, bad_why)
          select case (trim(keyword))
          case ('USERMATERIAL', 'DEPVAR', 'DENSITY', 'COHESIVESECTION')
             ! the data read here are numbers (every line of *USER MATERIAL, the first line of the
@@ -245,8 +246,7 @@ contains
             ! and a material's constants are then not decoded (nor CONSTANTS= compared)
             if (bad_field > 0 .and. (trim(keyword) == 'USERMATERIAL' .or. data_lines == 1)) then
                bad_text = path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' data line: field '// &
-                  int_to_string(bad_field)//" '"//clip_text(field_text(line, bad_field))//"' is "// &
-                  trim(merge('not a finite number', 'not a number       ', index(bad_why, 'finite') > 0))
+                  int_to_string(bad_field)//" '"//clip_text(trim(adjustl(bad_item)))//"' is "//trim(bad_why)
                if (trim(keyword) == 'COHESIVESECTION') then
                   if (size(sections) > 0) then
                      if (len_trim(sections(size(sections))%bad_data) == 0) sections(size(sections))%bad_data = bad_text
@@ -278,7 +278,7 @@ contains
                      materials(current)%depvar_bad = .true.
                      if (len_trim(materials(current)%bad_data) == 0) materials(current)%bad_data = &
                         path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' '// &
-                        clip_text(field_text(line, 1))//' is not a count (a whole number >= 0)'
+                        real_to_string(values(1))//' is not a count (a whole number >= 0)'
                   end if
                end if
             end if
@@ -573,7 +573,7 @@ contains
    end function has_parameter
 
    !> The numbers of a comma-separated data line (empty fields skipped, text fields stop).
-   subroutine parse_numbers(line, values, n, bad_field, why)
+   subroutine parse_numbers(line, values, n, bad_field, bad_item, why)
       character(len=*), intent(in) :: line
       real(dp), intent(out) :: values(:)
       integer, intent(out) :: n
@@ -581,6 +581,7 @@ contains
       !> real literal (interphase_text_input's parse_real); 0 when all are (blank fields are
       !> skipped, and the values stop there)
       integer, intent(out) :: bad_field
+      character(len=*), intent(out) :: bad_item  !! that field's text ('' when bad_field = 0)
       character(len=32), intent(out) :: why    !! parse_real's reason for bad_field
       character(len=len(line)) :: rest, item
       integer :: i, k
@@ -588,6 +589,7 @@ contains
       logical :: ok
       n = 0
       bad_field = 0
+      bad_item = ''
       why = ''
       values = 0.0_dp
       rest = line
@@ -606,34 +608,12 @@ contains
          call parse_real(item, x, ok, why)
          if (.not. ok) then
             bad_field = k
+            bad_item = item
             exit
          end if
          n = n + 1
          values(n) = x
       end do
    end subroutine parse_numbers
-
-   !> Field k (1-based, comma-separated) of a data line, blanks trimmed.
-   function field_text(line, k) result(text)
-      character(len=*), intent(in) :: line
-      integer, intent(in) :: k
-      character(len=:), allocatable :: text
-      integer :: j, first, next
-      first = 1
-      do j = 1, k - 1
-         next = index(line(first:), ',')
-         if (next == 0) then
-            text = ''
-            return
-         end if
-         first = first + next
-      end do
-      next = index(line(first:), ',')
-      if (next == 0) then
-         text = trim(adjustl(line(first:)))
-      else
-         text = trim(adjustl(line(first:first + next - 2)))
-      end if
-   end function field_text
 
 end program interphase_check_deck

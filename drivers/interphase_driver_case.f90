@@ -31,7 +31,7 @@ module interphase_driver_case
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, &
       load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset, precheck_case_file, material_entry_kinds, &
-      material_summary
+      check_material_props, material_summary
 
    !> Length of the character entries of the namelists (model names, paths).
    integer, parameter :: ENTRY_LEN = 1024
@@ -160,10 +160,8 @@ contains
       type(case_type), intent(out) :: run        !! the case, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      integer :: unit, ios, status
+      integer :: unit, ios
       character(len=512) :: iomsg
-      type(law_params_type) :: params
-      character(len=MESSAGE_LEN) :: why
       type(entry_line_type), allocatable :: lines(:)
 
       ok = .false.
@@ -189,13 +187,25 @@ contains
          message = with_entry_line(message, path, lines)
          return
       end if
-      ! the material's constants as the UMAT decodes them: refused here, once, before any update
-      call from_props(run%props, params, status, why)
-      if (status /= STATUS_OK) then
-         ok = .false.
-         message = path//': &material: '//trim(why)
-      end if
+      call check_material_props(path, 'material', run%props, ok, message)
    end subroutine read_case
+
+   !> The material's constants as the UMAT decodes them, checked when a case file is read (so that
+   !> the drivers refuse them once, in one message naming the case and the group, before any
+   !> update or output file): ok false with 'path: &group: why' otherwise.
+   subroutine check_material_props(path, group, props, ok, message)
+      character(len=*), intent(in) :: path                 !! case file
+      character(len=*), intent(in) :: group                !! its material group (material, joint)
+      real(dp), intent(in) :: props(:)                     !! PROPS packed from the group
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(out) :: message
+      type(law_params_type) :: params
+      integer :: status
+      character(len=MESSAGE_LEN) :: why
+      call from_props(props, params, status, why)
+      ok = status == STATUS_OK
+      if (.not. ok) message = path//': &'//group//': '//trim(why)
+   end subroutine check_material_props
 
    !> Read the `&material` group and pack it into PROPS.
    subroutine read_material(unit, run, ok, message)

@@ -8,7 +8,7 @@
 module interphase_driver_namelist
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
-   use interphase_text_input, only: is_real_literal, parse_real, clip_text, MAX_FILE_BYTES
+   use interphase_text_input, only: parse_real, clip_text, MAX_FILE_BYTES
    use interphase_driver_text, only: int_to_string, to_lower, read_line, text_file_type, open_line_file, &
       close_text_file
    implicit none
@@ -247,14 +247,11 @@ contains
          lower = to_lower(value)
          select case (kind)
          case (KIND_REAL)
-            good = value_kind == 0 .and. is_real_literal(value)
-            if (.not. good) then
-               message = where//' = '//clip_text(value)//' is not a number'
-            else
-               ! one real literal, and a finite double (1e400 is not)
-               call parse_real(value, number, good, why)
-               if (.not. good) message = where//' = '//clip_text(value)//' is '//trim(why)
-            end if
+            ! one real literal, and a finite double (1e400 is not)
+            good = .false.
+            why = 'not a number'
+            if (value_kind == 0) call parse_real(value, number, good, why)
+            if (.not. good) message = where//' = '//clip_text(value)//' is '//trim(why)
          case (KIND_INTEGER)
             good = value_kind == 0 .and. len(value) > 0
             if (good) good = verify(value(merge(2, 1, scan(value(1:1), '+-') > 0):), '0123456789') == 0 &

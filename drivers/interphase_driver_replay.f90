@@ -50,7 +50,7 @@ module interphase_driver_replay
    use interphase_text_input, only: tried_path
    use interphase_status, only: STATUS_OK, STATUS_BEYOND_PEAK
    use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
-      component_name, MAX_HALVINGS, MAX_NEWTON, FAILURE_NONE, FAILURE_OUTPUT, FAILURE_FATAL
+      component_name, beyond_peak_reason, MAX_HALVINGS, MAX_NEWTON, FAILURE_NONE, FAILURE_OUTPUT, FAILURE_FATAL
    implicit none
    private
    public :: replay_history, MAX_HALVINGS, MAX_NEWTON, point_state_type, new_point, call_umat, &
@@ -187,7 +187,6 @@ contains
       !> The message of a step that did not converge even after MAX_HALVINGS halvings.
       function failure_text() result(text)
          character(len=:), allocatable :: text
-         character(len=:), allocatable :: why
          logical :: separations(ntens), tractions(ntens)
          integer :: i
 
@@ -197,16 +196,9 @@ contains
          if (any(failure%controls(:ntens))) then
             if (failure%status == STATUS_BEYOND_PEAK) then
                i = failure%component
-               if (failure%flat) then
-                  why = 'met only on a flat tangent in '//component_name(i, .true., ntens)//' (a stiffness at '// &
-                     'most 1e-12 of the largest met): the point carries no more load in '// &
-                     component_name(i, .true., ntens)//', or its separation there is undetermined ('
-               else
-                  why = 'beyond the peak the material can carry ('
-               end if
                text = text//'no solution from t = '//real_to_string(last%time)//' to t = '// &
                   real_to_string(failure%time_to)//': the imposed traction '//component_name(i, .true., ntens)// &
-                  ' = '//real_to_string(failure%target(i))//' MPa is '//why// &
+                  ' = '//real_to_string(failure%target(i))//' MPa is '//beyond_peak_reason(failure, ntens)// &
                   'the largest |'//component_name(i, .true., ntens)//'| reached is '// &
                   real_to_string(failure%peak(i))//' MPa; last converged state: '// &
                   values_text(last%separation(:ntens), separations)//', '// &

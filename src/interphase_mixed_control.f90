@@ -26,12 +26,12 @@
 !> reached, no solution exists: STATUS_BEYOND_PEAK. Nor is a state where Newton meets a non-zero
 !> imposed traction on a numerically flat tangent (a pivot of the traction-controlled block at
 !> most FLAT_STIFFNESS times the largest tangent entry met in the replay) a solution (a zero one
-!> is: a traction-free crack is one at any opening): there the traction is carried by round-off, as on a fully damaged open micromechanical crack, whose
-!> table stiffnesses would otherwise meet any imposed traction at a separation of 1e11 mm or more
-!> (drivers/README.md, 'Mixed control'). Newton may pass through such states (an open crack
-!> closed by an imposed compression reaches the contact branch that way); it may not stop there.
-!> A step that still fails after the halvings on such a state is STATUS_BEYOND_PEAK too: the
-!> point no longer carries the imposed traction. An update failure that the update marks as
+!> is: a traction-free crack is one at any opening). There the traction is carried by round-off,
+!> as on a fully damaged open micromechanical crack, whose table stiffnesses would otherwise meet
+!> any imposed traction at a separation of 1e11 mm or more (drivers/README.md, 'Mixed control').
+!> Newton may pass through such states (an open crack closed by an imposed compression reaches
+!> the contact branch that way); it may not stop there. A step that still fails after the
+!> halvings on such a state is STATUS_BEYOND_PEAK too, with failure%flat. An update failure that the update marks as
 !> fatal (a setup error found during the run: no smaller step can cure it) ends the replay at
 !> once.
 !>
@@ -45,7 +45,7 @@ module interphase_mixed_control
    implicit none
    private
    public :: path_point_type, point_law_type, path_failure_type, replay_history_path, virgin_point, solve_small, &
-      describe_failure, component_name
+      describe_failure, component_name, beyond_peak_reason
 
    !> Largest number of halvings of one sub-increment before the replay gives up.
    integer, parameter, public :: MAX_HALVINGS = 10
@@ -53,8 +53,9 @@ module interphase_mixed_control
    integer, parameter, public :: MAX_NEWTON = 25
    !> A converged state whose traction-controlled block of the tangent has a pivot at most
    !> FLAT_STIFFNESS times the largest |tangent entry| the replay has met (the intact point's
-   !> stiffness, as a rule) is no solution (-). The fully damaged micromechanical point's stiffnesses are round-off of
-   !> zero: on the built-in table 4.5e-16 of the intact ones open (k_n at D = 1) and about 5e-15
+   !> stiffness, as a rule) is no solution (-). The fully damaged micromechanical point's
+   !> stiffnesses are round-off of zero: on the built-in table 4.5e-16 of the intact ones open
+   !> (k_n at D = 1) and about 5e-15
    !> when the closed crack slips at sigma = 0, where C^f_T lambda cancels (k_t + kc_t) s_T. A
    !> stiffness of 1e-12 K would need a separation of 1e10 times s0 or more to carry a traction of
    !> the order of the strength.
@@ -377,14 +378,15 @@ contains
       logical, intent(out) :: fatal               !! the last update failed for good
       real(dp), intent(out) :: residual           !! max |traction - imposed| of the last iteration (MPa)
       integer, intent(out) :: iterations          !! updates made
-      !> where the targets were met on a flat tangent: the first traction-controlled component
-      !> whose diagonal entry is flat (or the first traction-controlled one); else 0
+      !> where the targets were met only on a flat tangent: the first flat component (a flat
+      !> diagonal entry; any, when the block is singular through its coupling) whose target is
+      !> not zero; else 0
       integer, intent(out) :: flat_component
       ! fixed sizes, the first ntens (nfree) used: no allocation per iteration
       real(dp) :: s(3), r(3), delta(3), block(3, 3), flat_bound
       integer :: free(3)
-      integer :: nfree, i, ntens, first_flat
-      logical :: solved
+      integer :: nfree, i, ntens
+      logical :: solved, flat(3)
       real(dp) :: zero_traction
 
       ntens = size(target)
@@ -423,20 +425,15 @@ contains
             ! at most the tolerance, or what a flat stiffness carries at the last converged
             ! separation (round-off, not the separation Newton may have reached on it)
             zero_traction = max(tolerance, flat_bound*maxval(abs(point%separation(:ntens))))
-            flat_component = 0
-            first_flat = 0
-            do i = nfree, 1, -1
-               if (.not. abs(tangent(free(i), free(i))) > flat_bound) then
-                  first_flat = free(i)
-                  if (abs(target(free(i))) > zero_traction) flat_component = free(i)
-               end if
+            do i = 1, nfree
+               flat(i) = .not. abs(tangent(free(i), free(i))) > flat_bound
             end do
-            if (first_flat == 0) then
-               ! singular through the coupling only: named by the first non-zero target
-               do i = nfree, 1, -1
-                  if (abs(target(free(i))) > zero_traction) flat_component = free(i)
-               end do
-            end if
+            if (.not. any(flat(:nfree))) flat(:nfree) = .true.   ! singular through the coupling only
+            ! (a loop, not findloc over a masked section: GCC 12's LTO fails on that form, an
+            ! internal compiler error)
+            do i = nfree, 1, -1
+               if (flat(i) .and. abs(target(free(i))) > zero_traction) flat_component = free(i)
+            end do
             ! every flat component traction-free: a solution
             if (flat_component == 0) exit
             return
@@ -510,6 +507,22 @@ contains
       name = name//trim(SUFFIX(i))
    end function component_name
 
+   !> Why a STATUS_BEYOND_PEAK step has no solution, as the messages word it after 'the imposed
+   !> traction X = ... MPa is ', up to an opened parenthesis that the caller closes.
+   pure function beyond_peak_reason(failure, ntens) result(text)
+      type(path_failure_type), intent(in) :: failure
+      integer, intent(in) :: ntens                !! 2 or 3
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: name
+      if (.not. failure%flat) then
+         text = 'beyond the peak the material can carry ('
+         return
+      end if
+      name = component_name(failure%component, .true., ntens)
+      text = 'met only on a flat tangent in '//name//' (a stiffness at most 1e-12 of the largest met): the '// &
+         'point carries no more load in '//name//', or its separation there is undetermined ('
+   end function beyond_peak_reason
+
    !> The library's message of a failed replay (at most MESSAGE_LEN characters): the step's
    !> times, then why; `update_detail` is the failed update's own message ('' for none).
    pure function describe_failure(failure, point, tolerance, update_detail) result(text)
@@ -527,19 +540,11 @@ contains
       case (FAILURE_FATAL)
          long = trim(long)//' '//trim(update_detail)
       case (FAILURE_HALVINGS)
-         if (failure%status == STATUS_BEYOND_PEAK .and. failure%flat) then
+         if (failure%status == STATUS_BEYOND_PEAK) then
             c = failure%component
             name = component_name(c, .true., point%ntens)
-            write (long, '(a,1x,a,a,a,g0.6,a,a,a,a,a,a,g0.6,a)', iostat=ios) trim(long), 'the imposed traction ', &
-               name, ' = ', failure%target(c), ' MPa is met only on a flat tangent in ', name, &
-               ' (a stiffness at most 1e-12 of the largest met): the point carries no more load in ', name, &
-               ', or its separation there is undetermined (the largest |', name, '| reached is ', failure%peak(c), &
-               ' MPa)'
-         else if (failure%status == STATUS_BEYOND_PEAK) then
-            c = failure%component
-            name = component_name(c, .true., point%ntens)
-            write (long, '(a,1x,a,a,a,g0.6,a,a,a,g0.6,a)', iostat=ios) trim(long), 'the imposed traction ', name, &
-               ' = ', failure%target(c), ' MPa is beyond the peak the material can carry (the largest |', name, &
+            write (long, '(a,1x,a,a,a,g0.6,a,a,a,a,g0.6,a)', iostat=ios) trim(long), 'the imposed traction ', name, &
+               ' = ', failure%target(c), ' MPa is ', beyond_peak_reason(failure, point%ntens), 'the largest |', name, &
                '| reached is ', failure%peak(c), ' MPa)'
          else if (failure%status == STATUS_MIXED_NOT_CONVERGED) then
             write (long, '(a,1x,a,i0,a,es9.3,a,i0,a,es8.2,a,i0,a)', iostat=ios) trim(long), &

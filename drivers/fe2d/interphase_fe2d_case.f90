@@ -7,11 +7,9 @@ module interphase_fe2d_case
    use, intrinsic :: iso_fortran_env, only: iostat_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
-   use interphase_params, only: law_params_type, from_props
    use interphase_text_input, only: tried_path
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
-      ENTRY_LEN, precheck_case_file, material_entry_kinds
+      ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
@@ -94,10 +92,8 @@ contains
       type(fe2d_case_type), intent(out) :: run    !! the case, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
-      integer :: unit, ios, status
+      integer :: unit, ios
       character(len=512) :: iomsg
-      type(law_params_type) :: params
-      character(len=MESSAGE_LEN) :: why
       type(entry_line_type), allocatable :: lines(:)
 
       ok = .false.
@@ -122,15 +118,7 @@ contains
       close (unit)
       ! a check after the namelist read names its entry's line too
       if (.not. ok) message = with_entry_line(message, path, lines)
-      ! the interface material's constants as the UMAT decodes them: refused here, in one message
-      ! naming the case, before any output file is opened
-      if (ok) then
-         call from_props(run%props, params, status, why)
-         if (status /= STATUS_OK) then
-            ok = .false.
-            message = path//': &joint: '//trim(why)
-         end if
-      end if
+      if (ok) call check_material_props(path, 'joint', run%props, ok, message)
       if (ok) call read_shear_history(run%history_path, run%history_t, run%history_u, ok, message)
    end subroutine read_fe2d_case
 

@@ -5,7 +5,7 @@ import re
 
 import numpy as np
 
-from ._material import Material, DEFAULT_TRACTION_TOLERANCE
+from ._material import Material, DEFAULT_TRACTION_TOLERANCE, _ENTRIES
 
 _NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?$")
 #: the largest file the readers take (bytes), as the driver's (interphase_text_input's MAX_FILE_BYTES)
@@ -237,11 +237,10 @@ def read_namelist(path):
 
 
 # the entries of interphase-point's groups and their kinds (drivers/interphase_driver_case.f90)
+# (&material's entries are Material's, _ENTRIES; the words among them are strings, the rest numbers)
+_MATERIAL_WORDS = ("model", "damage_law", "table", "rcurve", "rcurve_file", "growth_slip", "stiffness")
 _KINDS = {
-    "material": dict([(k, "string") for k in ("model", "damage_law", "table", "rcurve", "rcurve_file",
-                                              "growth_slip", "stiffness")]
-                     + [(k, "real") for k in ("mu", "s0_n", "sf_n", "s0_t", "sf_t", "k_n", "k_t", "d0",
-                                              "g_ci", "g_cii", "contact_band", "viscosity")]),
+    "material": {k: "string" if k in _MATERIAL_WORDS else "real" for k in _ENTRIES},
     "loading": {"history": "string", "output": "string", "increments": "integer", "plot": "logical",
                 "traction_tolerance": "real", "output_every": "integer", "tangent_check": "real",
                 "tangent_step": "real"},
