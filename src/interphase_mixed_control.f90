@@ -29,8 +29,9 @@
 !> is: a traction-free crack is one at any opening). There the traction is carried by round-off,
 !> as on a fully damaged open micromechanical crack, whose table stiffnesses would otherwise meet
 !> any imposed traction at a separation of 1e11 mm or more (drivers/README.md, 'Mixed control').
-!> Newton may pass through such states (an open crack closed by an imposed compression reaches
-!> the contact branch that way); it may not stop there. A step that still fails after the
+!> Newton may pass through such states; it may not stop there. An open crack with a flat normal
+!> stiffness under an imposed compression (s_N > 0, Sigma_N < 0 imposed) is taken to its closure
+!> point s_N = 0 in one iteration, from where Newton goes on in contact (`solve_step`). A step that still fails after the
 !> halvings on such a state is STATUS_BEYOND_PEAK too, with failure%flat. An update failure that the update marks as
 !> fatal (a setup error found during the run: no smaller step can cure it) ends the replay at
 !> once.
@@ -439,6 +440,18 @@ contains
             return
          end if
          if (iterations >= MAX_NEWTON) return
+         ! The closure step: an open crack whose normal stiffness is flat (fully damaged) under an
+         ! imposed compression. Every interphase law closes its crack at s_N = 0 (contact, the
+         ! full normal stiffness, for s_N <= 0), and no other state of the open crack carries a
+         ! compression; a flat stiffness gives Newton no step there (exactly zero in the simplified
+         ! model; round-off in the micromechanical one, whose step would overshoot by ~1e13 mm),
+         ! so the next iterate is the closure point itself, from where Newton goes on in contact.
+         if (controls(1) .and. s(1) > 0.0_dp .and. target(1) < 0.0_dp) then
+            if (.not. abs(tangent(1, 1)) > FLAT_STIFFNESS*max(stiffness_scale, maxval(abs(tangent)))) then
+               s(1) = 0.0_dp
+               cycle
+            end if
+         end if
          call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved)
          if (.not. solved) return
          s(free(:nfree)) = s(free(:nfree)) - delta(:nfree)

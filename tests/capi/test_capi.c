@@ -692,6 +692,15 @@ static void test_run_history(const char *csv_path) {
   CHECK(status == INTERPHASE_STATUS_OK && done == 101 && close_to(o_tr[2 * 100], -1.0, 1e-12, 0.0) &&
             o_s[2 * 100] < 0.0 && o_s[2 * 100] > -0.01,
         "recontact under an imposed compression: status %d, %zu rows: %s", status, done, detail);
+  /* the simplified model's fully damaged open crack (s_N = 0.1 mm > sf_N): its normal stiffness is
+   * exactly zero, so Newton has no step; the replay closes the crack at s_N = 0 first, and the
+   * compression is met in contact at s_N = -1/K_N */
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, open_then, then_normal, 50, 1e-12, 1,
+                                  ROWS, NULL, o_s, o_tr, o_st, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == 101 && o_st[INTERPHASE_NSTATE * 50] == 1.0 &&
+            close_to(o_tr[2 * 100], -1.0, 1e-12, 0.0) && close_to(o_s[2 * 100], -1.0 / K_N, 1e-12, 0.0),
+        "simplified recontact under an imposed compression: status %d, %zu rows, D %g, s_N %g mm: %s", status, done,
+        done > 50 ? o_st[INTERPHASE_NSTATE * 50] : -1.0, done > 100 ? o_s[2 * 100] : 0.0, detail);
   const double open_pull[6] = {0, 0, 0.1, 0, 0.1, 0};
   status = interphase_run_history(micro, NPROPS_MICRO, 2, 3, t3, open_pull, then_normal, 50, 1e-12, 1, ROWS, NULL,
                                   o_s, o_tr, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
