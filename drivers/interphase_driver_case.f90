@@ -23,7 +23,10 @@ module interphase_driver_case
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, stem_of, join_path
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message, STATUS_BAD_MU, STATUS_BAD_S0_N, &
+      STATUS_BAD_SF_N, STATUS_BAD_S0_T, STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_D0, &
+      STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION
+   use interphase_layout, only: OPTION_SPECS, OPT_CONTACT_BAND, OPT_VISCOSITY
    use interphase_text_input, only: tried_path
    use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, &
       KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
@@ -187,25 +190,68 @@ contains
          message = with_entry_line(message, path, lines)
          return
       end if
-      call check_material_props(path, 'material', run%props, ok, message)
+      call check_material_props(path, 'material', run%props, ok, message, lines)
    end subroutine read_case
 
    !> The material's constants as the UMAT decodes them, checked when a case file is read (so that
    !> the drivers refuse them once, in one message naming the case and the group, before any
-   !> update or output file): ok false with 'path: &group: why' otherwise.
-   subroutine check_material_props(path, group, props, ok, message)
+   !> update or output file): ok false with 'path: &group: why' otherwise, or, where the
+   !> constant refused is a case-file entry, 'path:line: &group: entry: why' (the entry's line from
+   !> `lines`, the pre-check's).
+   subroutine check_material_props(path, group, props, ok, message, lines)
       character(len=*), intent(in) :: path                 !! case file
       character(len=*), intent(in) :: group                !! its material group (material, joint)
       real(dp), intent(in) :: props(:)                     !! PROPS packed from the group
       logical, intent(out) :: ok
       character(len=:), allocatable, intent(out) :: message
+      type(entry_line_type), intent(in), optional :: lines(:)   !! where each entry was given
       type(law_params_type) :: params
       integer :: status
       character(len=MESSAGE_LEN) :: why
+      character(len=:), allocatable :: entry
       call from_props(props, params, status, why)
       ok = status == STATUS_OK
-      if (.not. ok) message = path//': &'//group//': '//trim(why)
+      if (ok) return
+      entry = props_entry(status, why)
+      if (len(entry) == 0) then
+         message = path//': &'//group//': '//trim(why)
+      else
+         message = path//': &'//group//': '//entry//': '//trim(why)
+         if (present(lines)) message = with_entry_line(message, path, lines)
+      end if
    end subroutine check_material_props
+
+   !> The case-file entry that holds the constant a decoder status refuses (the material group's
+   !> names), or '' where none does (the selectors, which the drivers set from their words).
+   pure function props_entry(status, why) result(entry)
+      integer, intent(in) :: status              !! the decoder's STATUS_BAD_*
+      character(len=*), intent(in) :: why        !! its message: 'PROPS(i) symbol = ...'
+      character(len=:), allocatable :: entry
+      select case (status)
+      case (STATUS_BAD_MU);     entry = 'mu'
+      case (STATUS_BAD_S0_N);   entry = 's0_n'
+      case (STATUS_BAD_SF_N);   entry = 'sf_n'
+      case (STATUS_BAD_S0_T);   entry = 's0_t'
+      case (STATUS_BAD_SF_T);   entry = 'sf_t'
+      case (STATUS_BAD_K_N);    entry = 'k_n'
+      case (STATUS_BAD_K_T);    entry = 'k_t'
+      case (STATUS_BAD_D0);     entry = 'd0'
+      case (STATUS_BAD_RCURVE); entry = 'rcurve'
+      case (STATUS_BAD_GC_I);   entry = 'g_ci'
+      case (STATUS_BAD_GC_II);  entry = 'g_cii'
+      case (STATUS_BAD_OPTION)
+         ! (the real options; the selectors are set from the drivers' words)
+         if (index(why, ') '//trim(OPTION_SPECS(OPT_CONTACT_BAND)%symbol)//' =') > 0) then
+            entry = 'contact_band'
+         else if (index(why, ') '//trim(OPTION_SPECS(OPT_VISCOSITY)%symbol)//' =') > 0) then
+            entry = 'viscosity'
+         else
+            entry = ''
+         end if
+      case default
+         entry = ''
+      end select
+   end function props_entry
 
    !> Read the `&material` group and pack it into PROPS.
    subroutine read_material(unit, run, ok, message)

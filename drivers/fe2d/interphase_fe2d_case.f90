@@ -118,7 +118,7 @@ contains
       close (unit)
       ! a check after the namelist read names its entry's line too
       if (.not. ok) message = with_entry_line(message, path, lines)
-      if (ok) call check_material_props(path, 'joint', run%props, ok, message)
+      if (ok) call check_material_props(path, 'joint', run%props, ok, message, lines)
       if (ok) call read_shear_history(run%history_path, run%history_t, run%history_u, ok, message)
    end subroutine read_fe2d_case
 

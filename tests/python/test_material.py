@@ -211,6 +211,7 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
     """read_case refuses what interphase-point refuses, with the same file, line and entry."""
     good = (source_dir / "drivers" / "cases" / "h1I.nml").read_text()
     (tmp_path / "h1I.txt").write_text((source_dir / "drivers" / "cases" / "h1I.txt").read_text())
+    mu_line = next(i for i, line in enumerate(good.splitlines(), 1) if line.strip() == "mu = 0.75")
     cases = {
         "comma": (good.replace("mu = 0.75", "mu = 2,5"), r"comma.nml:\d+: &material: mu needs one value, got 2"),
         "typo": (good.replace("sf_t", "sf_tt"), r"typo.nml:\d+: &material: sf_tt is not an entry of &material; "
@@ -218,6 +219,9 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
         "group": (good.replace("&loading", "&load"), r"group.nml:\d+: &load is not a group of this case file"),
         "integer": (good.replace("increments = ", "increments = 2.5 !"), r"increments = 2.5 is not an integer"),
         "string": (good.replace("mu = 0.75", "mu = '0.75'"), r"mu = '0.75' is not a number"),
+        # a constant the PROPS check refuses: named with its entry's line, as by interphase-point
+        "range": (good.replace("mu = 0.75", "mu = -0.75"),
+                  rf"range.nml:{mu_line}: &material: mu: PROPS\(3\) mu = -7.50000E-001 is out of range"),
     }
     assert "mu = 0.75" in good and "sf_t" in good and "&loading" in good and "increments = " in good
     for name, (text, message) in cases.items():

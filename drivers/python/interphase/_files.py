@@ -5,6 +5,8 @@ import re
 
 import numpy as np
 
+from . import _status
+from ._library import InterphaseError
 from ._material import Material, DEFAULT_TRACTION_TOLERANCE, _ENTRIES
 
 _NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?$")
@@ -282,7 +284,24 @@ def _checked_case_entries(path):
     increments, line = groups["loading"]["increments"]
     if increments < 1:
         raise ValueError(f"{path}:{line}: &loading: increments must be at least 1, got {increments}")
-    return {g: {k: v for k, (v, _) in entries.items()} for g, entries in groups.items()}
+    return ({g: {k: v for k, (v, _) in entries.items()} for g, entries in groups.items()},
+            {g: {k: line for k, (_, line) in entries.items()} for g, entries in groups.items()})
+
+
+# The &material entry that holds the constant a PROPS status refuses (as interphase-point names it:
+# drivers/interphase_driver_case.f90, props_entry); the selectors are set from the entries' words.
+_PROPS_ENTRY = {_status.STATUS_BAD_MU: "mu", _status.STATUS_BAD_S0_N: "s0_n", _status.STATUS_BAD_SF_N: "sf_n",
+                _status.STATUS_BAD_S0_T: "s0_t", _status.STATUS_BAD_SF_T: "sf_t", _status.STATUS_BAD_K_N: "k_n",
+                _status.STATUS_BAD_K_T: "k_t", _status.STATUS_BAD_D0: "d0", _status.STATUS_BAD_RCURVE: "rcurve",
+                _status.STATUS_BAD_GC_I: "g_ci", _status.STATUS_BAD_GC_II: "g_cii"}
+_OPTION_ENTRY = {"contact band chi": "contact_band", "viscosity eta": "viscosity"}
+
+
+def _props_entry(error):
+    """The &material entry an InterphaseError of the PROPS check refers to, or None."""
+    if error.status == _status.STATUS_BAD_OPTION:
+        return next((entry for symbol, entry in _OPTION_ENTRY.items() if f") {symbol} =" in error.detail), None)
+    return _PROPS_ENTRY.get(error.status)
 
 
 class Case:
@@ -315,7 +334,7 @@ def read_case(path):
     The paths it names (history, table, rcurve_file) are taken relative to its folder, as the
     driver takes them. The history may impose tractions (`# columns:` lines).
     """
-    groups = _checked_case_entries(path)
+    groups, lines = _checked_case_entries(path)
     base = os.path.dirname(os.path.abspath(path))
     entries = dict(groups["material"])
     for key in ("table", "rcurve_file"):
@@ -325,6 +344,12 @@ def read_case(path):
         material = Material(**entries)
     except TypeError as error:          # a missing entry: name the file
         raise TypeError(f"{path}: &material: {error}") from None
+    except InterphaseError as error:    # a constant out of range: name the file, its line and entry
+        entry = _props_entry(error)
+        if entry is None or entry not in lines["material"]:
+            raise InterphaseError(error.status, f"{path}: &material: {error.detail}") from None
+        raise InterphaseError(error.status, f"{path}:{lines['material'][entry]}: &material: {entry}: "
+                              f"{error.detail}") from None
     loading = groups["loading"]
     time, value, control = read_history(os.path.join(base, loading["history"]), control=True)
     return Case(material, time, value, loading["increments"], loading["output"], control=control,
