@@ -93,7 +93,7 @@ extern "C" {
 #define INTERPHASE_STATUS_SPLINE_NONFINITE_ARGUMENT 48   /**< interpolation argument NaN or Inf */
 /* RVE coefficient tables (interphase_load_table): reading and checking */
 #define INTERPHASE_STATUS_TABLE_UNREADABLE 50            /**< table file cannot be opened or read */
-#define INTERPHASE_STATUS_TABLE_BAD_HEADER 51            /**< header line is not "# key = value" */
+#define INTERPHASE_STATUS_TABLE_BAD_HEADER 51            /**< header not valid (a line not "# key = value", a key given twice, an unknown format or column) */
 #define INTERPHASE_STATUS_TABLE_MISSING_COLUMN 52        /**< table lacks a required column */
 #define INTERPHASE_STATUS_TABLE_MISSING_KEY 53           /**< header lacks a required key (b, h) */
 #define INTERPHASE_STATUS_TABLE_BAD_ROW 54               /**< row does not hold one number per column */

@@ -149,7 +149,7 @@ contains
       case (STATUS_SPLINE_OUT_OF_RANGE);   message = 'argument outside the interpolation table'
       case (STATUS_SPLINE_NONFINITE_ARGUMENT); message = 'interpolation argument not finite (NaN or Inf)'
       case (STATUS_TABLE_UNREADABLE);      message = 'RVE table file cannot be opened or read'
-      case (STATUS_TABLE_BAD_HEADER);      message = 'RVE table header line is not "# key = value"'
+      case (STATUS_TABLE_BAD_HEADER);      message = 'RVE table header is not valid'
       case (STATUS_TABLE_MISSING_COLUMN);  message = 'RVE table lacks a required column'
       case (STATUS_TABLE_MISSING_KEY);     message = 'RVE table header lacks a required key'
       case (STATUS_TABLE_BAD_ROW);         message = 'RVE table row does not hold one number per column'

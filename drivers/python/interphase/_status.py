@@ -44,7 +44,7 @@ STATUS_SPLINE_NOT_BUILT = 46  # interpolation table not built
 STATUS_SPLINE_OUT_OF_RANGE = 47  # argument outside the table
 STATUS_SPLINE_NONFINITE_ARGUMENT = 48  # interpolation argument NaN or Inf
 STATUS_TABLE_UNREADABLE = 50  # table file cannot be opened or read
-STATUS_TABLE_BAD_HEADER = 51  # header line is not "# key = value"
+STATUS_TABLE_BAD_HEADER = 51  # header not valid (a line not "# key = value", a key given twice, an unknown format or column)
 STATUS_TABLE_MISSING_COLUMN = 52  # table lacks a required column
 STATUS_TABLE_MISSING_KEY = 53  # header lacks a required key (b, h)
 STATUS_TABLE_BAD_ROW = 54  # row does not hold one number per column
