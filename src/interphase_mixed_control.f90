@@ -440,24 +440,40 @@ contains
             return
          end if
          if (iterations >= MAX_NEWTON) return
-         ! The closure step: an open crack whose normal stiffness is flat (fully damaged) under an
-         ! imposed compression. Every interphase law closes its crack at s_N = 0 (contact, the
-         ! full normal stiffness, for s_N <= 0), and no other state of the open crack carries a
-         ! compression; a flat stiffness gives Newton no step there (exactly zero in the simplified
-         ! model; round-off in the micromechanical one, whose step would overshoot by ~1e13 mm),
-         ! so the next iterate is the closure point itself, from where Newton goes on in contact.
-         if (controls(1) .and. s(1) > 0.0_dp .and. target(1) < 0.0_dp) then
-            if (.not. abs(tangent(1, 1)) > FLAT_STIFFNESS*max(stiffness_scale, maxval(abs(tangent)))) then
-               s(1) = 0.0_dp
-               cycle
-            end if
-         end if
-         call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved)
+         call newton_step(nfree, free, block, r, target, stiffness_scale, s, solved)
          if (.not. solved) return
-         s(free(:nfree)) = s(free(:nfree)) - delta(:nfree)
       end do
       converged = .true.
    end subroutine solve_step
+
+   !> One Newton step of `solve_step` on the traction-controlled block: s(free) - delta with
+   !> block delta = r, or the closure step. The closure step: an open crack whose normal stiffness
+   !> is flat (fully damaged) under an imposed compression. Every interphase law closes its crack
+   !> at s_N = 0 (contact, the full normal stiffness, for s_N <= 0), and no other state of the
+   !> open crack carries a compression; a flat stiffness gives Newton no step there (exactly zero
+   !> in the simplified model; round-off in the micromechanical one, whose step would overshoot by
+   !> ~1e13 mm), so the next iterate is the closure point itself, from where Newton goes on in
+   !> contact. Flat: at most FLAT_STIFFNESS times the replay's largest stiffness so far.
+   pure subroutine newton_step(nfree, free, block, r, target, stiffness_scale, s, solved)
+      integer, intent(in) :: nfree                !! traction-controlled components (>= 1)
+      integer, intent(in) :: free(3)              !! which (UMAT order)
+      real(dp), intent(in) :: block(3, 3)         !! their block of the tangent (MPa/mm)
+      real(dp), intent(in) :: r(3)                !! traction - imposed (MPa)
+      real(dp), intent(in) :: target(:)           !! imposed values, all components
+      real(dp), intent(in) :: stiffness_scale     !! the replay's largest |tangent entry| (MPa/mm)
+      real(dp), intent(inout) :: s(3)             !! separation (mm): the next iterate on return
+      logical, intent(out) :: solved              !! false: no step (a singular block)
+      real(dp) :: delta(3)
+      ! (the normal component, when traction-controlled, is the block's first)
+      if (free(1) == 1 .and. s(1) > 0.0_dp .and. target(1) < 0.0_dp .and. &
+         abs(block(1, 1)) <= FLAT_STIFFNESS*stiffness_scale) then
+         s(1) = 0.0_dp
+         solved = .true.
+         return
+      end if
+      call solve_small(block(:nfree, :nfree), r(:nfree), delta(:nfree), solved)
+      if (solved) s(free(:nfree)) = s(free(:nfree)) - delta(:nfree)
+   end subroutine newton_step
 
    !> Solve the small system a x = b (n <= 3) by Gaussian elimination with partial pivoting;
    !> `solved` false when a pivot is not above `pivot_min` in magnitude (default 0) or the result
