@@ -1,14 +1,16 @@
 !> Output of `interphase-fe2d`: the load-displacement CSV and its gnuplot script.
 module interphase_fe2d_output
    use interphase_kinds, only: dp
-   use interphase_driver_text, only: real_to_csv
+   use interphase_driver_text, only: real_to_csv, int_to_string
    implicit none
    private
    public :: write_curve_csv, write_curve_plot_script
 
 contains
 
-   !> Write the header and one line per row (17 significant digits).
+   !> Write the header and one line per row: the first column (the step: 1 precompression, 2
+   !> shear) as a whole number, the others with 17 significant digits (a zero as +0: the sum of
+   !> a force's element contributions can round to -0).
    subroutine write_curve_csv(path, header, rows, ok, message)
       character(len=*), intent(in) :: path        !! CSV file
       character(len=*), intent(in) :: header      !! comma-separated column names
@@ -27,9 +29,9 @@ contains
       end if
       write (unit, '(a)') header
       do r = 1, size(rows, 2)
-         line = real_to_csv(rows(1, r))
+         line = int_to_string(nint(rows(1, r)))
          do c = 2, size(rows, 1)
-            line = line//','//real_to_csv(rows(c, r))
+            line = line//','//real_to_csv(rows(c, r) + 0.0_dp)
          end do
          write (unit, '(a)') line
       end do
