@@ -1,11 +1,17 @@
 !> `interphase-bench`: cost of one `umat` call, simplified and micromechanical (built-in table) models.
 !>
-!>     interphase-bench [CALLS_PER_RUN [RUNS [CASE]]]      (defaults 1000000, 5 and all cases)
+!>     interphase-bench [CALLS_PER_RUN [RUNS [CASE [POINTS]]]]   (defaults 1000000, 5, all cases, 1)
 !>
 !> CASE 1..8 runs one row of the table only (in the order printed: simplified + displacement
 !> law 2-D, 3-D, micromechanical + displacement law 2-D, 3-D, simplified + LFM 2-D, 3-D,
 !> micromechanical + LFM 2-D, 3-D), e.g. for an instruction count of one case under callgrind
 !> (tools/bench-ratios.sh).
+!>
+!> POINTS > 1 calls the UMAT as a host's element loop does: each increment updates POINTS points
+!> one after the other, each with its own STRESS, STATEV, STRAN and energies, and each replaying
+!> the history with its shear scaled by 0.5 + p/POINTS (p = 1..POINTS), so that the points reach
+!> different damages (some D = 1) and take different branches from call to call; CALLS_PER_RUN /
+!> (6 POINTS) increments per segment.
 !>
 !> Replays the paper's mixed-mode history (Table 4: s_N = -0.005 mm throughout, s_T = 0, 0,
 !> 0.05, 0, 0.08, -0.05, 0 mm at t = 0..6) in 2-D and its 3-D version with the shear rotated by
@@ -43,7 +49,7 @@ program bench_umat
    integer :: model, law, variant
    real(dp), allocatable :: ns_per_call(:)
    real(dp) :: checksum
-   integer :: calls_per_run, runs, increments, ntens, run, only_case
+   integer :: calls_per_run, runs, increments, ntens, run, only_case, npoints
    integer(int64) :: count_rate
    character(len=32) :: argument
    character(len=*), parameter :: ROW_FORMAT = '(a20, a12, i6, i12, i6, 2f16.1, es24.15)'
@@ -53,9 +59,10 @@ program bench_umat
    if (command_argument_count() >= 1) then
       call get_command_argument(1, argument)
       if (argument == '-h' .or. argument == '--help') then
-         write (*, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS]]', &
+         write (*, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS [CASE [POINTS]]]]', &
             '       interphase-bench --help | --version', &
-            '  ns per umat call over the paper''s mixed history, 2-D and 3-D, both models; build it', &
+            '  ns per umat call over the paper''s mixed history, 2-D and 3-D, both models (POINTS > 1:', &
+            '  that many points per increment, in a host''s order); build it', &
             '  in a Release tree. Figures and commands: docs/performance.md.'
          call exit_program(0)
       else if (argument == '--version') then
@@ -77,15 +84,22 @@ program bench_umat
          error stop 1
       end if
    end if
-   increments = max(1, calls_per_run/NSEGMENTS)
+   npoints = 1
+   if (command_argument_count() >= 4) then
+      call get_command_argument(4, argument)
+      npoints = parse_positive(argument, 'POINTS')
+   end if
+   increments = max(1, calls_per_run/(NSEGMENTS*npoints))
 
 
    call system_clock(count_rate=count_rate)
    allocate (ns_per_call(runs))
    write (output_unit, '(a)') 'interphase-bench: umat, paper Table 1 data, mixed-mode history'
    write (output_unit, '(a, i0, a, i0, a, i0, a, i0, a)') 'increments per segment: ', increments, &
-      ' (', NSEGMENTS*increments, ' calls per run), runs: ', runs, &
+      ' (', NSEGMENTS*increments*npoints, ' calls per run), runs: ', runs, &
       ', clock resolution: ', count_rate, ' ticks/s'
+   if (npoints > 1) write (output_unit, '(a, i0, a)') 'host order: ', npoints, &
+      ' points per increment, each with its own state and its shear scaled by 0.5 + p/POINTS'
    write (output_unit, '(a20, a12, a6, a12, a6, 2a16, a24)') 'model + damage law', 'history', 'NTENS', 'calls/run', &
       'runs', 'best ns/call', 'median ns/call', 'checksum (MPa)'
    do variant = 1, 4
@@ -95,14 +109,18 @@ program bench_umat
    do ntens = 2, 3
       if (only_case > 0 .and. only_case /= 2*(variant - 1) + ntens - 1) cycle
       do run = 1, runs
-         call one_run(ntens, ns_per_call(run), checksum)
+         if (npoints == 1) then
+            call one_run(ntens, ns_per_call(run), checksum)
+         else
+            call host_run(ntens, npoints, ns_per_call(run), checksum)
+         end if
       end do
       if (ntens == 2) then
-         write (output_unit, ROW_FORMAT) model_name(model, law), 'mixed 2-D', ntens, NSEGMENTS*increments, runs, &
-            minval(ns_per_call), median(ns_per_call), checksum
+         write (output_unit, ROW_FORMAT) model_name(model, law), 'mixed 2-D', ntens, NSEGMENTS*increments*npoints, &
+            runs, minval(ns_per_call), median(ns_per_call), checksum
       else
-         write (output_unit, ROW_FORMAT) model_name(model, law), 'mixed 3-D', ntens, NSEGMENTS*increments, runs, &
-            minval(ns_per_call), median(ns_per_call), checksum
+         write (output_unit, ROW_FORMAT) model_name(model, law), 'mixed 3-D', ntens, NSEGMENTS*increments*npoints, &
+            runs, minval(ns_per_call), median(ns_per_call), checksum
       end if
    end do
    end do
@@ -225,6 +243,94 @@ contains
       checksum = checksum + spd
    end subroutine one_run
 
+   !> Replay the history at npoints points in a host's order (each increment, every point in
+   !> turn, each with its own state; point p's shear scaled by 0.5 + p/npoints), from the virgin
+   !> state; time per call (ns) and checksum (MPa).
+   subroutine host_run(ntens, npoints, ns, checksum)
+      integer, intent(in) :: ntens                !! 2 or 3
+      integer, intent(in) :: npoints              !! points per increment (> 1)
+      real(dp), intent(out) :: ns                 !! wall time per call (ns)
+      real(dp), intent(out) :: checksum           !! sum of all tractions returned (MPa)
+      real(dp) :: stress(ntens, npoints), stran(ntens, npoints), statev(NSTATV_REQUIRED, npoints)
+      real(dp) :: sse(npoints), spd(npoints), scale(npoints)
+      real(dp) :: dstran(ntens), s_a(ntens), s_b(ntens), s_new(ntens)
+      real(dp) :: ddsdde(ntens, ntens), ddsddt(ntens), drplde(ntens)
+      real(dp) :: scd, rpl, drpldt, time(2), dtime, predef(1), dpred(1), coords(3)
+      real(dp) :: drot(3, 3), dfgrd(3, 3), pnewdt, theta, direction(2)
+      integer(int64) :: start, finish
+      integer :: segment, j, kinc, i, p
+      character(len=80), parameter :: CMNAME = 'INTERPHASE'
+
+      direction = [1.0_dp, 0.0_dp]
+      if (ntens == 3) direction = [cos(ANGLE_DEGREES*acos(-1.0_dp)/180.0_dp), &
+         sin(ANGLE_DEGREES*acos(-1.0_dp)/180.0_dp)]
+      do p = 1, npoints
+         scale(p) = 0.5_dp + real(p, dp)/real(npoints, dp)
+      end do
+      stress = 0.0_dp
+      statev = 0.0_dp
+      sse = 0.0_dp
+      spd = 0.0_dp
+      ddsdde = 0.0_dp
+      ddsddt = 0.0_dp
+      drplde = 0.0_dp
+      scd = 0.0_dp
+      rpl = 0.0_dp
+      drpldt = 0.0_dp
+      predef = 0.0_dp
+      dpred = 0.0_dp
+      coords = 0.0_dp
+      drot = 0.0_dp
+      dfgrd = 0.0_dp
+      do i = 1, 3
+         drot(i, i) = 1.0_dp
+         dfgrd(i, i) = 1.0_dp
+      end do
+      dtime = 1.0_dp/real(increments, dp)
+      checksum = 0.0_dp
+      kinc = 0
+      ! the first (elastic) call from zero to s_N = -0.005 mm at every point, not counted
+      time = 0.0_dp
+      stran = 0.0_dp
+      do p = 1, npoints
+         dstran = separation(0, ntens, direction)
+         pnewdt = 1.0_dp
+         call umat(stress(:, p), statev(:, p), ddsdde, sse(p), spd(p), scd, rpl, ddsddt, drplde, drpldt, &
+            stran(:, p), dstran, time, 0.0_dp, 0.0_dp, 0.0_dp, predef, dpred, CMNAME, 1, ntens - 1, ntens, &
+            NSTATV_REQUIRED, props, size(props), coords, drot, pnewdt, 1.0_dp, dfgrd, dfgrd, &
+            p, 1, 1, 1, [1, 0, 0, 0], kinc)
+         call check(pnewdt, 0.0_dp)
+         stran(:, p) = dstran
+      end do
+
+      call system_clock(start)
+      do segment = 1, NSEGMENTS
+         s_a = separation(segment - 1, ntens, direction)
+         s_b = separation(segment, ntens, direction)
+         do j = 1, increments
+            theta = real(j, dp)/real(increments, dp)
+            time = real(segment - 1, dp) + real(j - 1, dp)*dtime
+            kinc = kinc + 1
+            do p = 1, npoints
+               s_new = (1.0_dp - theta)*s_a + theta*s_b
+               s_new(2:) = scale(p)*s_new(2:)
+               dstran = s_new - stran(:, p)
+               pnewdt = 1.0_dp
+               call umat(stress(:, p), statev(:, p), ddsdde, sse(p), spd(p), scd, rpl, ddsddt, drplde, drpldt, &
+                  stran(:, p), dstran, time, dtime, 0.0_dp, 0.0_dp, predef, dpred, CMNAME, 1, ntens - 1, &
+                  ntens, NSTATV_REQUIRED, props, size(props), coords, drot, pnewdt, 1.0_dp, &
+                  dfgrd, dfgrd, p, 1, 1, 1, [1, 0, 0, 0], kinc)
+               if (pnewdt < 1.0_dp) call check(pnewdt, time(2))
+               stran(:, p) = s_new
+               checksum = checksum + sum(stress(:, p)) + ddsdde(1, 1)*1.0e-6_dp
+            end do
+         end do
+      end do
+      call system_clock(finish)
+      ns = 1.0e9_dp*real(finish - start, dp)/real(count_rate, dp)/real(kinc*npoints, dp)
+      checksum = checksum + sum(spd)
+   end subroutine host_run
+
    !> Separation of history row k in UMAT order (normal first), mm.
    pure function separation(k, ntens, direction) result(s)
       integer, intent(in) :: k                    !! row 0..NSEGMENTS
@@ -283,7 +389,7 @@ contains
       if (ios /= 0 .or. verify(trim(text), '0123456789') /= 0) then
          write (error_unit, '(a)') 'interphase-bench: error: '//name//" must be a positive "// &
             "integer, got '"//trim(text)//"'"
-         write (error_unit, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS [CASE]]]'
+         write (error_unit, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS [CASE [POINTS]]]]'
          error stop 1
       end if
       if (parse_positive < 1) then

@@ -30,6 +30,8 @@
 #     -march=x86-64-v3 (AVX2) for valgrind: the build an Abaqus/Explicit host makes.
 # --quick: fewer points and calls (a smoke test of the script, not figures to record).
 # KEEP_WORK=1 in the environment keeps the work directory (the one-file builds' logs) on exit.
+#   - the UMAT in a host's order (256 points per increment, each with its own state) against one
+#     point, the benchmark's own loop subtracted in each (no LTO, 2-D, cases 1, 3 and 7);
 # Not a test: nothing is checked against a goal here; docs/performance.md records the figures.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -252,6 +254,34 @@ ratio_row "micromechanical / simplified, displacement, 2-D" 3 1
 ratio_row "micromechanical / simplified, displacement, 3-D" 4 2
 ratio_row "LFM / displacement law, simplified 2-D" 5 1
 ratio_row "LFM / displacement law, micromechanical 2-D" 7 3
+
+# The UMAT in a host's order: 256 points per increment, each with its own state and its shear
+# scaled by 0.5 + p/256 (interphase-bench's POINTS), against one point, both with 640 increments
+# per segment, in the build without LTO; the benchmark's own loop in either order from the driver
+# with an empty UMAT; the UMAT's own time is the difference.
+host_calls=983040; single_calls=3840; single_runs=300
+if [ $quick = yes ]; then host_calls=98304; single_calls=384; single_runs=30; fi
+echo
+echo "UMAT in a host's order (no LTO, 2-D, 640 increments per segment): best ns per call of one point"
+echo "($single_calls calls, $single_runs runs) and of 256 points per increment (each its own state, its shear scaled"
+echo "by 0.5 + p/256; $host_calls calls, 5 runs), less the benchmark's own loop in the same order"
+echo "(the driver with an empty UMAT):"
+printf '%-34s %10s %10s %10s %10s %8s\n' "case" "1 point" "256 points" "1, net" "256, net" "ratio"
+e1=-; e256=-
+if [ -x "$work/standard-native/bench-umat-empty" ]; then
+   e1=$(umat_ns <("$work/standard-native/bench-umat-empty" "$single_calls" "$single_runs" 1 1) "simplified + disp." "mixed 2-D")
+   e256=$(umat_ns <("$work/standard-native/bench-umat-empty" "$host_calls" 5 1 256) "simplified + disp." "mixed 2-D")
+fi
+for c in 1 3 7; do
+   row=${rows[$((c - 1))]}
+   name=${row%%|*}
+   t1=$(umat_ns <("$nolto/drivers/interphase-bench" "$single_calls" "$single_runs" "$c" 1) "$name" "mixed 2-D")
+   t256=$(umat_ns <("$nolto/drivers/interphase-bench" "$host_calls" 5 "$c" 256) "$name" "mixed 2-D")
+   n1=$(awk -v a="$t1" -v b="$e1" 'BEGIN {if (b == "-") print "-"; else printf "%.1f", a - b}')
+   n256=$(awk -v a="$t256" -v b="$e256" 'BEGIN {if (b == "-") print "-"; else printf "%.1f", a - b}')
+   printf '%-34s %10s %10s %10s %10s %8s\n' "$name 2-D" "$t1" "$t256" "$n1" "$n256" "$(ratio "$n256" "$n1")"
+done
+echo "the benchmark's own loop with an empty UMAT: $e1 ns (1 point), $e256 ns (256 points)"
 if [ $have_valgrind = no ]; then echo "(valgrind not installed, or no DIR/callgrind build: no instruction counts)"; fi
 if [ $have_valgrind = yes ] && [ ${#vir[@]} -eq 0 ]; then
    echo "(the one-file Explicit benchmark did not build: see below)"; cat "$work/explicit.log"
