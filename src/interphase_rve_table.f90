@@ -114,6 +114,7 @@ contains
       character(len=32) :: why
       integer :: starts(MAX_FIELDS + 1), ends(MAX_FIELDS + 1)
       integer :: outcome, nfields, position(N_TABLE_COLUMNS), ncols, nrows, j, k, first, eq, position_i
+      integer :: columns_line        !! the line of the "# columns:" line
       real(dp) :: values(MAX_FIELDS), b, h, a_tf_limit, elastic(4), layers(2), chat(2)
       real(dp), allocatable :: rows(:, :)
       integer, allocatable :: lines(:)
@@ -131,6 +132,7 @@ contains
          return
       end if
       have_columns = .false.
+      columns_line = 0
       have_b = .false.
       have_h = .false.
       have_variable = .false.
@@ -162,8 +164,20 @@ contains
             first = verify(line, ' '//achar(9))
             if (first == 0) cycle read_lines
             if (line(first:first) == '#') then
-               if (have_columns) cycle read_lines                 ! comments after the header
                first = first + verify(line(first + 1:)//'x', ' '//achar(9))
+               if (have_columns) then
+                  ! comments after the header; a second "# columns:" line is refused (one of the two
+                  ! would be ignored)
+                  if (first + 7 <= len(line)) then
+                     if (line(first:first + 7) == 'columns:') then
+                        write (text, '(a,i0,a)') 'a second "# columns:" line (the first on line ', columns_line, &
+                           '): a table has exactly one'
+                        call fail(STATUS_TABLE_BAD_HEADER, trim(text))
+                        return
+                     end if
+                  end if
+                  cycle read_lines
+               end if
                if (first + 7 <= len(line)) then
                   if (line(first:first + 7) == 'columns:') then
                      call split(line(first + 8:), starts, ends, nfields)
@@ -225,6 +239,7 @@ contains
                         return
                      end if
                      have_columns = .true.
+                     columns_line = file%line_number
                      cycle read_lines
                   end if
                end if
