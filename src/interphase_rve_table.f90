@@ -21,6 +21,7 @@ module interphase_rve_table
    use interphase_finite, only: is_finite
    use interphase_logarithm, only: ln_positive
    use interphase_kinds, only: dp
+   use interphase_real_text, only: real_text
    use interphase_spline, only: SPLINE_NOT_A_KNOT
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
       parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END
@@ -523,7 +524,9 @@ contains
          ! and the header's own Chat: a header that does not describe the data is refused
          if (table%has_layers) then
             if (abs(table%layers(1) + table%layers(2) - h) > 1.0e-12_dp*h) then
-               call identity(1, 'h = h_m + h_b (header)', table%layers(1) + table%layers(2), status, message)
+               status = STATUS_TABLE_IDENTITY
+               message = message_path(table%source)//': the header''s h = '//real_text(h)// &
+                  ' mm is not h_m + h_b = '//real_text(table%layers(1) + table%layers(2))//' mm'
                return
             end if
             term(1) = h/(table%layers(1)/shear_modulus(table%elastic(1), table%elastic(2)) + &
@@ -531,12 +534,13 @@ contains
             term(2) = h/(table%layers(1)/constrained_modulus(table%elastic(1), table%elastic(2)) + &
                table%layers(2)/constrained_modulus(table%elastic(3), table%elastic(4)))
             if (abs(c0_t - term(1)) > IDENTITY_TOL*term(1)) then
-               call identity(1, 'C_TT(0) = h/(h_m/G_m + h_b/G_b) from the header''s E, nu, h', c0_t, status, message)
+               call identity(1, 'C_TT(0) = h/(h_m/G_m + h_b/G_b) from the header''s E, nu, h', c0_t, status, message, &
+                  term(1), IDENTITY_TOL*term(1))
                return
             end if
             if (abs(c0_n - term(2)) > IDENTITY_TOL*term(2)) then
                call identity(1, 'C_NN(0) = h/(h_m/M_m + h_b/M_b), M = E(1 - nu)/((1 + nu)(1 - 2 nu)), from the '// &
-                  'header''s E, nu, h', c0_n, status, message)
+                  'header''s E, nu, h', c0_n, status, message, term(2), IDENTITY_TOL*term(2))
                return
             end if
          end if
@@ -545,7 +549,7 @@ contains
             if (.not. table%has_chat(j)) cycle
             if (abs(term(j) - table%chat(j)) > IDENTITY_TOL*table%chat(j)) then
                call identity(1, trim(merge('C_TT(0) = Chat_TT (header)', 'C_NN(0) = Chat_NN (header)', j == 1)), &
-                  term(j), status, message)
+                  term(j), status, message, table%chat(j), IDENTITY_TOL*table%chat(j))
                return
             end if
          end do
@@ -583,19 +587,21 @@ contains
                end if
             end do
             if (abs(r(i, COL_C_TT) + r(i, COL_CC_TT) - c0_t) > IDENTITY_TOL*scale_c) then
-               call identity(i, 'C_TT + Cc_TT = C_TT(0) (eq 52)', r(i, COL_C_TT) + r(i, COL_CC_TT), status, message)
+               call identity(i, 'C_TT + Cc_TT = C_TT(0) (eq 52)', r(i, COL_C_TT) + r(i, COL_CC_TT), status, message, &
+                  c0_t, IDENTITY_TOL*scale_c)
                return
             end if
             if (abs(r(i, COL_C_NN) + r(i, COL_CC_NN) - c0_n) > IDENTITY_TOL*scale_c) then
-               call identity(i, 'C_NN + Cc_NN = C_NN(0) (eq 52)', r(i, COL_C_NN) + r(i, COL_CC_NN), status, message)
+               call identity(i, 'C_NN + Cc_NN = C_NN(0) (eq 52)', r(i, COL_C_NN) + r(i, COL_CC_NN), status, message, &
+                  c0_n, IDENTITY_TOL*scale_c)
                return
             end if
             if (abs(r(i, COL_TC_T) - c0_t) > IDENTITY_TOL*scale_c) then
-               call identity(i, 'Tc_T = C_TT(0)', r(i, COL_TC_T), status, message)
+               call identity(i, 'Tc_T = C_TT(0)', r(i, COL_TC_T), status, message, c0_t, IDENTITY_TOL*scale_c)
                return
             end if
             if (abs(r(i, COL_SC_N) - c0_n) > IDENTITY_TOL*scale_c) then
-               call identity(i, 'Sc_N = C_NN(0)', r(i, COL_SC_N), status, message)
+               call identity(i, 'Sc_N = C_NN(0)', r(i, COL_SC_N), status, message, c0_n, IDENTITY_TOL*scale_c)
                return
             end if
             if (.not. (r(i, COL_TF) < 0.0_dp)) then
@@ -626,35 +632,42 @@ contains
             end if
             ! reciprocity (docs/rve.md, 'Exact identities'): C^c = C(0) D Dbar/h, C^f_T = -(C_TT(0)/h) D ufbar
             if (abs(r(i, COL_CC_TT) - c0_t*r(i, COL_D)*r(i, COL_DBAR_TT)/h) > IDENTITY_TOL*scale_c) then
-               call identity(i, 'Cc_TT = C_TT(0) D Dbar_TT/h (reciprocity)', r(i, COL_CC_TT), status, message)
+               call identity(i, 'Cc_TT = C_TT(0) D Dbar_TT/h (reciprocity)', r(i, COL_CC_TT), status, message, &
+                  c0_t*r(i, COL_D)*r(i, COL_DBAR_TT)/h, IDENTITY_TOL*scale_c)
                return
             end if
             if (abs(r(i, COL_CC_NN) - c0_n*r(i, COL_D)*r(i, COL_DBAR_NN)/h) > IDENTITY_TOL*scale_c) then
-               call identity(i, 'Cc_NN = C_NN(0) D Dbar_NN/h (reciprocity)', r(i, COL_CC_NN), status, message)
+               call identity(i, 'Cc_NN = C_NN(0) D Dbar_NN/h (reciprocity)', r(i, COL_CC_NN), status, message, &
+                  c0_n*r(i, COL_D)*r(i, COL_DBAR_NN)/h, IDENTITY_TOL*scale_c)
                return
             end if
             if (abs(r(i, COL_CF_T) + scale_f*r(i, COL_D)*r(i, COL_UFBAR)) > IDENTITY_TOL*scale_f) then
-               call identity(i, 'Cf_T = -(C_TT(0)/h) D ufbar (reciprocity)', r(i, COL_CF_T), status, message)
+               call identity(i, 'Cf_T = -(C_TT(0)/h) D ufbar (reciprocity)', r(i, COL_CF_T), status, message, &
+                  -scale_f*r(i, COL_D)*r(i, COL_UFBAR), IDENTITY_TOL*scale_f)
                return
             end if
             ! Betti relations (docs/rve.md): (i) is free of I; (ii') and (iii') carry it
             if (abs(r(i, COL_C_TT) - c0_t*(1.0_dp - r(i, COL_D)*r(i, COL_DBAR_TT)/h)) > tol_i*c0_t) then
-               call identity(i, 'C_TT = C_TT(0) (1 - D Dbar_TT/h) (Betti i)', r(i, COL_C_TT), status, message)
+               call identity(i, 'C_TT = C_TT(0) (1 - D Dbar_TT/h) (Betti i)', r(i, COL_C_TT), status, message, &
+                  c0_t*(1.0_dp - r(i, COL_D)*r(i, COL_DBAR_TT)/h), tol_i*c0_t)
                return
             end if
             if (abs(r(i, COL_C_NN) - c0_n*(1.0_dp - r(i, COL_D)*r(i, COL_DBAR_NN)/h)) > tol_i*c0_n) then
-               call identity(i, 'C_NN = C_NN(0) (1 - D Dbar_NN/h) (Betti i)', r(i, COL_C_NN), status, message)
+               call identity(i, 'C_NN = C_NN(0) (1 - D Dbar_NN/h) (Betti i)', r(i, COL_C_NN), status, message, &
+                  c0_n*(1.0_dp - r(i, COL_D)*r(i, COL_DBAR_NN)/h), tol_i*c0_n)
                return
             end if
             if (table%has_betti .and. i > 1) then
                term = [r(i, COL_CF_T), -r(i, COL_D)*r(i, COL_TF)*r(i, COL_DBAR_TT)/h, -table%i_fnt(i)/(2.0_dp*b*h)]
                if (abs(sum(term)) > BETTI_TOL*maxval(abs(term))) then
-                  call identity(i, 'Cf_T = D Tf Dbar_TT/h + I_fNT/(2bh) (Betti ii'')', table%i_fnt(i), status, message)
+                  call identity(i, 'Cf_T = D Tf Dbar_TT/h + I_fNT/(2bh) (Betti ii'')', table%i_fnt(i), status, message, &
+                     table%i_fnt(i) + 2.0_dp*b*h*sum(term), 2.0_dp*b*h*BETTI_TOL*maxval(abs(term)))
                   return
                end if
                term = [r(i, COL_DBAR_TT)*r(i, COL_TF), r(i, COL_UFBAR)*r(i, COL_TC_T), table%i_fnt(i)/(2.0_dp*r(i, COL_A))]
                if (abs(sum(term)) > BETTI_TOL*maxval(abs(term))) then
-                  call identity(i, 'Dbar_TT Tf + ufbar Tc_T = -I_fNT/(2a) (Betti iii'')', table%i_fnt(i), status, message)
+                  call identity(i, 'Dbar_TT Tf + ufbar Tc_T = -I_fNT/(2a) (Betti iii'')', table%i_fnt(i), status, &
+                     message, table%i_fnt(i) - 2.0_dp*r(i, COL_A)*sum(term), 2.0_dp*r(i, COL_A)*BETTI_TOL*maxval(abs(term)))
                   return
                end if
             end if
@@ -679,16 +692,26 @@ contains
 
    contains
 
-      pure subroutine identity(row, what, value, status, message)
+      !> The failure of an identity at a row: what, the value found and, for an equation, the value
+      !> it gives (expected) and the largest difference it allows (allowed).
+      pure subroutine identity(row, what, value, status, message, expected, allowed)
          integer, intent(in) :: row
          character(len=*), intent(in) :: what
          real(dp), intent(in) :: value
          integer, intent(out) :: status
          character(len=MESSAGE_LEN), intent(out) :: message
+         real(dp), intent(in), optional :: expected, allowed
          integer :: ios
          status = STATUS_TABLE_IDENTITY
-         write (message, '(a,a,i0,a,a,a,es24.16,a,es24.16,a)', iostat=ios) message_path(table%source), ':', &
-            table%line(row), ': identity ', what, ' fails: value ', value, ' at a = ', table%rows(row, COL_A), ' mm'
+         if (present(expected) .and. present(allowed)) then
+            write (message, '(a,a,i0,a,a,a,a,a,a,a,es8.1,a,es8.1,a,a,a)', iostat=ios) &
+               message_path(table%source), ':', table%line(row), ': identity ', what, ' fails: value ', &
+               trim(real_text(value)), ', expected ', trim(real_text(expected)), ' (difference', abs(value - expected), &
+               ', allowed', allowed, ') at a = ', trim(real_text(table%rows(row, COL_A))), ' mm'
+         else
+            write (message, '(a,a,i0,a,a,a,es24.16,a,es24.16,a)', iostat=ios) message_path(table%source), ':', &
+               table%line(row), ': identity ', what, ' fails: value ', value, ' at a = ', table%rows(row, COL_A), ' mm'
+         end if
       end subroutine identity
 
    end subroutine check_rve_table
