@@ -42,6 +42,11 @@ while [ $# -gt 0 ]; do
    shift
 done
 [ -n "$output" ] || output=interphase_abaqus_$solver.f90
+out_dir=$(dirname -- "$output")
+if [ ! -d "$out_dir" ]; then
+   echo "make-user-file.sh: the output folder '$out_dir' (of -o $output) does not exist" >&2
+   exit 2
+fi
 if [ $solver = standard ]; then
    roots=("$root/src/abaqus/umat.f90" "$root/src/abaqus/host_abaqus_standard.f90")
    if [ $with_uexternaldb = yes ]; then roots+=("$root/src/abaqus/uexternaldb.f90"); fi
