@@ -453,10 +453,10 @@ contains
       else
          if (finite_above(gc_i, 0.0_dp) .or. .not. finite_at_least(gc_i, 0.0_dp)) then
             call reject(STATUS_BAD_GC_I, base + LFM_GC_I, 'G_cI', gc_i, &
-               'is used by the constant R-curve only: set it to 0', status, message)
+               'must be 0 (only the constant R-curve takes a toughness from PROPS)', status, message)
          else if (finite_above(gc_ii, 0.0_dp) .or. .not. finite_at_least(gc_ii, 0.0_dp)) then
             call reject(STATUS_BAD_GC_II, base + LFM_GC_II, 'G_cII', gc_ii, &
-               'is used by the constant R-curve only: set it to 0', status, message)
+               'must be 0 (only the constant R-curve takes a toughness from PROPS)', status, message)
          end if
       end if
    end subroutine check_fracture
