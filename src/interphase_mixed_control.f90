@@ -387,7 +387,7 @@ contains
       real(dp) :: s(3), r(3), delta(3), block(3, 3), flat_bound
       integer :: free(3)
       integer :: nfree, i, ntens
-      logical :: solved, flat(3)
+      logical :: solved
       real(dp) :: zero_traction
 
       ntens = size(target)
@@ -426,25 +426,50 @@ contains
             ! at most the tolerance, or what a flat stiffness carries at the last converged
             ! separation (round-off, not the separation Newton may have reached on it)
             zero_traction = max(tolerance, flat_bound*maxval(abs(point%separation(:ntens))))
-            do i = 1, nfree
-               flat(i) = .not. abs(tangent(free(i), free(i))) > flat_bound
-            end do
-            if (.not. any(flat(:nfree))) flat(:nfree) = .true.   ! singular through the coupling only
-            ! (a loop, not findloc over a masked section: GCC 12's LTO fails on that form, an
-            ! internal compiler error)
-            do i = nfree, 1, -1
-               if (flat(i) .and. abs(target(free(i))) > zero_traction) flat_component = free(i)
-            end do
+            call flat_target(nfree, free, block, target, flat_bound, zero_traction, flat_component)
             ! every flat component traction-free: a solution
             if (flat_component == 0) exit
             return
          end if
          if (iterations >= MAX_NEWTON) return
          call newton_step(nfree, free, block, r, target, stiffness_scale, s, solved)
-         if (.not. solved) return
+         if (.not. solved) then
+            ! no Newton step: the block is singular, as where a stiffness is exactly zero (the
+            ! simplified model's fully damaged open crack, a friction plateau): a flat component
+            ! whose target is not zero is one the point cannot carry (flat_component, as above)
+            flat_bound = FLAT_STIFFNESS*max(stiffness_scale, maxval(abs(tangent)))
+            zero_traction = max(tolerance, flat_bound*maxval(abs(point%separation(:ntens))))
+            call flat_target(nfree, free, block, target, flat_bound, zero_traction, flat_component)
+            return
+         end if
       end do
       converged = .true.
    end subroutine solve_step
+
+   !> The first flat component of the traction-controlled block whose target is not zero, or 0:
+   !> flat are those with a diagonal entry at most flat_bound (all of them when the block is
+   !> singular only through its coupling); zero a target at most zero_traction (MPa).
+   pure subroutine flat_target(nfree, free, block, target, flat_bound, zero_traction, flat_component)
+      integer, intent(in) :: nfree                !! traction-controlled components (>= 1)
+      integer, intent(in) :: free(3)              !! which (UMAT order)
+      real(dp), intent(in) :: block(3, 3)         !! their block of the tangent (MPa/mm)
+      real(dp), intent(in) :: target(:)           !! imposed values, all components
+      real(dp), intent(in) :: flat_bound          !! the largest flat |stiffness| (MPa/mm)
+      real(dp), intent(in) :: zero_traction       !! the largest zero |traction| (MPa)
+      integer, intent(out) :: flat_component
+      logical :: flat(3)
+      integer :: i
+      do i = 1, nfree
+         flat(i) = .not. abs(block(i, i)) > flat_bound
+      end do
+      if (.not. any(flat(:nfree))) flat(:nfree) = .true.   ! singular through the coupling only
+      ! (a loop, not findloc over a masked section: GCC 12's LTO fails on that form, an internal
+      ! compiler error)
+      flat_component = 0
+      do i = nfree, 1, -1
+         if (flat(i) .and. abs(target(free(i))) > zero_traction) flat_component = free(i)
+      end do
+   end subroutine flat_target
 
    !> One Newton step of `solve_step` on the traction-controlled block: s(free) - delta with
    !> block delta = r, or the closure step. The closure step: an open crack whose normal stiffness
