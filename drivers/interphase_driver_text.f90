@@ -10,7 +10,7 @@ module interphase_driver_text
    private
    public :: int_to_string, real_to_string, real_to_csv, to_lower
    public :: text_file_type, open_line_file, read_line, close_text_file
-   public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote
+   public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote, same_path
 
 contains
 
@@ -184,6 +184,49 @@ contains
          path = directory//'/'//relative
       end if
    end function join_path
+
+   !> Whether two paths name the same file as text says it: both normalised (repeated and
+   !> trailing '/', '.' segments and 'name/..' pairs removed) and compared. Paths that differ in
+   !> this form may still be one file (a symbolic link, one absolute and one relative): false.
+   pure logical function same_path(a, b)
+      character(len=*), intent(in) :: a, b
+      same_path = normal_path(a) == normal_path(b)
+   end function same_path
+
+   !> `a` with repeated '/', '.' segments and 'name/..' pairs removed ('' stays '').
+   pure function normal_path(a) result(path)
+      character(len=*), intent(in) :: a
+      character(len=:), allocatable :: path, segment
+      character(len=len(a)) :: parts(len(a) + 1)
+      integer :: n, start, k
+      logical :: absolute
+      absolute = len(a) > 0
+      if (absolute) absolute = a(1:1) == '/'
+      n = 0
+      start = 1
+      do k = 1, len(a) + 1
+         if (k <= len(a)) then
+            if (a(k:k) /= '/') cycle
+         end if
+         segment = a(start:k - 1)
+         start = k + 1
+         if (len(segment) == 0 .or. segment == '.') cycle
+         if (segment == '..' .and. n > 0) then
+            if (parts(n) /= '..') then
+               n = n - 1
+               cycle
+            end if
+         end if
+         n = n + 1
+         parts(n) = segment
+      end do
+      path = ''
+      if (absolute) path = '/'
+      do k = 1, n
+         if (k > 1) path = path//'/'
+         path = path//trim(parts(k))
+      end do
+   end function normal_path
 
    !> A string quoted for the POSIX shell: 'it''s' becomes 'it'\''s'.
    pure function shell_quote(text) result(quoted)

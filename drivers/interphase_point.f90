@@ -22,7 +22,7 @@ program interphase_point
    use interphase_driver_replay, only: replay_history, replay_report_type
    use interphase_driver_replay_call, only: replay_call_type, is_replay_file, read_replay_call, repeat_replay_call
    use interphase_driver_text, only: int_to_string, real_to_string, directory_of, base_name, stem_of, &
-      join_path
+      join_path, same_path
    implicit none
 
    character(len=:), allocatable :: case_path, output_dir, csv_path, part_path, message, summary
@@ -65,6 +65,7 @@ program interphase_point
 
    ! ---- replay into the CSV ----
    csv_path = join_path(output_dir, run%output)
+   call refuse_overwriting_inputs()
    call make_directory(directory_of(csv_path), ok, message)
    if (.not. ok) call fail(message)
    ! the rows go to CSV.part, renamed to CSV at the end: a failed run leaves a previous CSV as it was
@@ -157,6 +158,30 @@ contains
    end subroutine print_usage
 
    !> Write the gnuplot script next to the CSV and run it, or say why not.
+   !> The files the run writes (the CSV, CSV.part, the replay file, the plot script and the PNG)
+   !> must not be the case file, its history, RVE table or R-curve file: a case whose output names
+   !> one of them would replace it.
+   subroutine refuse_overwriting_inputs()
+      character(len=:), allocatable :: stem, directory
+      directory = directory_of(csv_path)
+      stem = stem_of(csv_path)
+      call refuse(csv_path)
+      call refuse(csv_path//'.part')
+      call refuse(join_path(directory, stem//'.replay.nml'))
+      call refuse(join_path(directory, stem//'.gp'))
+      call refuse(join_path(directory, stem//'.png'))
+   end subroutine refuse_overwriting_inputs
+
+   !> Stop when `written` is one of the run's input files.
+   subroutine refuse(written)
+      character(len=*), intent(in) :: written
+      if (same_path(written, case_path) .or. same_path(written, run%history_path) .or. &
+         (len(run%table_path) > 0 .and. same_path(written, run%table_path)) .or. &
+         (len(run%rcurve_path) > 0 .and. same_path(written, run%rcurve_path))) &
+         call fail(case_path//': &loading: output = '''//run%output//''' would write '//written// &
+         ', which is an input of this run: name another file')
+   end subroutine refuse
+
    subroutine plot_csv()
       character(len=:), allocatable :: directory, stem, script_name
 
