@@ -31,7 +31,7 @@
 !> any imposed traction at a separation of 1e11 mm or more (drivers/README.md, 'Mixed control').
 !> Newton may pass through such states; it may not stop there. An open crack with a flat normal
 !> stiffness under an imposed compression (s_N > 0, Sigma_N < 0 imposed) is taken to its closure
-!> point s_N = 0 in one iteration, from where Newton goes on in contact (`solve_step`). A step that still fails after the
+!> point s_N = 0 in one iteration, from where Newton goes on in contact (`newton_step`). A step that still fails after the
 !> halvings on such a state is STATUS_BEYOND_PEAK too, with failure%flat. An update failure that the update marks as
 !> fatal (a setup error found during the run: no smaller step can cure it) ends the replay at
 !> once.
@@ -474,8 +474,9 @@ contains
    !> One Newton step of `solve_step` on the traction-controlled block: s(free) - delta with
    !> block delta = r, or the closure step. The closure step: an open crack whose normal stiffness
    !> is flat (fully damaged) under an imposed compression. Every interphase law closes its crack
-   !> at s_N = 0 (contact, the full normal stiffness, for s_N <= 0), and no other state of the
-   !> open crack carries a compression; a flat stiffness gives Newton no step there (exactly zero
+   !> at s_N = 0 (contact, the full normal stiffness, for s_N <= 0), and a fully damaged open crack
+   !> carries no compression (with the contact band, the band's share near s_N = 0 is not flat and
+   !> Newton steps as usual); a flat stiffness gives Newton no step there (exactly zero
    !> in the simplified model; round-off in the micromechanical one, whose step would overshoot by
    !> ~1e13 mm), so the next iterate is the closure point itself, from where Newton goes on in
    !> contact. Flat: at most FLAT_STIFFNESS times the replay's largest stiffness so far.
