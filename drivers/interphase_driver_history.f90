@@ -14,7 +14,8 @@
 !> (`Sigma_T`, `Sigma_T1`, `Sigma_T2`, `Sigma_N`; MPa), in the order t, shear(s), normal, and a
 !> word in parentheses (a unit) is skipped. The names hold for the rows below the line, up to
 !> the next `# columns:` line: the segment that ends at a row is controlled as that row's names
-!> say. Without such a line every column is a separation.
+!> say. Without such a line every column is a separation. The line holds nothing before its
+!> `#`; a comment that starts `column:` or `columns :` (`columns_line_kind`) is refused.
 module interphase_driver_history
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
@@ -50,6 +51,9 @@ module interphase_driver_history
       'Sigma_T', 'Sigma_N'], [2, 2])
    character(len=*), parameter :: NAMES_3D(3, 2) = reshape([character(len=8) :: 's_T1', 's_T2', 's_N', &
       'Sigma_T1', 'Sigma_T2', 'Sigma_N'], [3, 2])
+
+   !> `columns_line_kind`'s answers.
+   integer, parameter :: PLAIN_COMMENT = 0, COLUMNS_LINE = 1, MISSPELLED_COLUMNS = 2
 
 contains
 
@@ -102,7 +106,19 @@ contains
          end if
          comment = index(line, '#')
          if (comment > 0) then
-            if (is_columns_line(line(comment + 1:))) then
+            select case (columns_line_kind(line(comment + 1:)))
+            case (MISSPELLED_COLUMNS)
+               message = where//'"#'//trim(line(comment + 1:))//'" looks like a "# columns:" line, but is not '// &
+                  'one: write the key "columns:" (one word, the colon right after it), e.g. "# columns: t s_T Sigma_N"'
+               call close_text_file(unit)
+               return
+            case (COLUMNS_LINE)
+               if (len_trim(line(:comment - 1)) > 0) then
+                  message = where//'a "# columns:" line holds nothing before the ''#'' (here '''// &
+                     trim(adjustl(line(:comment - 1)))//'''): put the data row on a line of its own'
+                  call close_text_file(unit)
+                  return
+               end if
                call read_column_names(line(comment + 1:), named_columns, named, ok, message)
                if (.not. ok) then
                   message = where//message
@@ -118,7 +134,7 @@ contains
                end if
                names_line = line_number
                cycle
-            end if
+            end select
             line = line(:comment - 1)
          end if
          call split_words(line, starts, ends)
@@ -184,16 +200,36 @@ contains
       ok = .true.
    end subroutine read_history
 
-   !> Whether a comment (the text after '#') is a `columns:` line.
-   pure logical function is_columns_line(comment)
+   !> What a comment (the text after '#') is: COLUMNS_LINE when it starts with `columns:` (any
+   !> case, after blanks), MISSPELLED_COLUMNS when it starts with `column` or `columns` and then,
+   !> after blanks, a colon (`column:`, `columns :`: meant as the key, and read as a plain
+   !> comment it would leave the columns as separations), else PLAIN_COMMENT.
+   pure integer function columns_line_kind(comment)
       character(len=*), intent(in) :: comment     !! text after '#'
-      character(len=*), parameter :: KEY = 'columns:'
+      character(len=*), parameter :: KEY = 'columns:', STEM = 'column'
       character(len=len(comment)) :: text
-      text = adjustl(comment)
-      is_columns_line = .false.
-      if (len(text) < len(KEY)) return
-      is_columns_line = to_lower(text(:len(KEY))) == KEY
-   end function is_columns_line
+      integer :: i
+      text = to_lower(adjustl(comment))
+      columns_line_kind = PLAIN_COMMENT
+      if (len(text) < len(STEM)) return
+      if (text(:len(STEM)) /= STEM) return
+      if (len(text) >= len(KEY)) then
+         if (text(:len(KEY)) == KEY) then
+            columns_line_kind = COLUMNS_LINE
+            return
+         end if
+      end if
+      i = len(STEM) + 1
+      if (i <= len(text)) then
+         if (text(i:i) == 's') i = i + 1
+      end if
+      do while (i <= len(text))
+         if (text(i:i) /= ' ' .and. text(i:i) /= char(9)) exit
+         i = i + 1
+      end do
+      if (i > len(text)) return
+      if (text(i:i) == ':') columns_line_kind = MISSPELLED_COLUMNS
+   end function columns_line_kind
 
    !> Read the names of a `columns:` comment: t, then the shear component(s) and the normal one,
    !> each `s_X` (separation) or `Sigma_X` (traction); words in parentheses are skipped.

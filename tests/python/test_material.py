@@ -371,3 +371,17 @@ def test_read_mixed_history(source_dir, tmp_path):
     bad.write_text("# columns: t s_T Tau_N\n0 0 0\n1 0 1\n")
     with pytest.raises(ValueError, match="bad.txt:1: .*column 3 is 'Tau_N'; expected s_N or Sigma_N"):
         interphase.read_history(bad, control=True)
+    # a misspelt key (read as a plain comment it would leave every column a separation), and a
+    # columns line behind a data row (the row was dropped with the comment)
+    for text, line, match in [("# column: t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, 'looks like a "# columns:" line'),
+                              ("#  Columns : t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, 'looks like a "# columns:" line'),
+                              ("0 0 0 # columns: t s_T Sigma_N\n1 0 1\n2 0 2\n", 1,
+                               "holds nothing before the '#' \\(here '0 0 0'\\)")]:
+        bad.write_text(text)
+        with pytest.raises(ValueError, match=f"bad.txt:{line}: .*{match}"):
+            interphase.read_history(bad, control=True)
+    # a plain comment that starts with the word stays a comment
+    fine = tmp_path / "fine.txt"
+    fine.write_text("# column 2 is the shear separation\n0 0 0\n1 0.001 0\n")
+    t, v, c = interphase.read_history(fine, control=True)
+    assert t.tolist() == [0, 1] and not c.any()

@@ -86,7 +86,15 @@ def read_history(path, control=False):
     for number, line in enumerate(_text_lines(path), 1):
         where = f"{path}:{number}"
         head, hash_, comment = line.partition("#")
-        if hash_ and comment.lstrip().lower().startswith("columns:"):
+        key = comment.lstrip().lower()
+        if hash_ and not key.startswith("columns:") and re.match(r"columns?[ \t]*:", key):
+            raise ValueError(f'{where}: "#{comment.rstrip()}" looks like a "# columns:" line, but is not one: '
+                             'write the key "columns:" (one word, the colon right after it), e.g. '
+                             '"# columns: t s_T Sigma_N"')
+        if hash_ and key.startswith("columns:"):
+            if head.strip():
+                raise ValueError(f'{where}: a "# columns:" line holds nothing before the \'#\' (here '
+                                 f"'{head.strip()}'): put the data row on a line of its own")
             ncolumns, named = _column_names(comment.lstrip(), where)
             names_line = number
             if rows and ncolumns != len(rows[0]):
