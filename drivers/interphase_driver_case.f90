@@ -438,6 +438,11 @@ contains
             message = where//"g_ci and g_cii are entries of rcurve = 'constant' only"
             return
          end if
+         if (rcurve /= 'tabulated' .and. len_trim(e%rcurve_file) > 0) then
+            message = where//"rcurve_file is an entry of rcurve = 'tabulated' only (rcurve = '"//rcurve// &
+               "' would not read '"//trim(adjustl(e%rcurve_file))//"')"
+            return
+         end if
       case default
          message = where//"unknown damage_law '"//trim(adjustl(e%damage_law))// &
             "' (available: 'displacement', 'fracture')"
