@@ -25,7 +25,8 @@
 !> When that is not enough and an imposed traction is being raised beyond the largest the point
 !> reached, no solution exists: STATUS_BEYOND_PEAK. Nor is a state where Newton meets a non-zero
 !> imposed traction on a numerically flat tangent (a pivot of the traction-controlled block at
-!> most FLAT_STIFFNESS times the largest tangent entry met in the replay) a solution (a zero one
+!> most FLAT_STIFFNESS times the largest tangent entry met in the replay, the virgin point's
+!> first: a zero increment before the first step) a solution (a zero one
 !> is: a traction-free crack is one at any opening). There the traction is carried by round-off,
 !> as on a fully damaged open micromechanical crack, whose table stiffnesses would otherwise meet
 !> any imposed traction at a separation of 1e11 mm or more (drivers/README.md, 'Mixed control').
@@ -195,8 +196,22 @@ contains
       ntens = size(value, 1)
       nrows = size(value, 2)
       zero = 0.0_dp
-      stiffness_scale = 0.0_dp
       point = virgin_point(ntens, time(1))
+      ! the scale of the flat tests starts at the virgin point's tangent (a zero increment): the
+      ! first converged step may already be flat (an opening that breaks the crack through), and
+      ! a flat tangent's round-off is no scale (the micromechanical model's fully damaged crack
+      ! keeps entries of order 1e-13 of its virgin ones). An update that fails here fails again
+      ! in the first step, which reports it.
+      stiffness_scale = 0.0_dp
+      block
+         type(path_point_type) :: probe
+         real(dp) :: probe_tangent(3, 3)
+         integer :: probe_status
+         logical :: probe_fatal
+         probe = point
+         call law%step(probe, zero, time(1), probe_tangent(:ntens, :ntens), probe_status, probe_fatal)
+         if (probe_status == STATUS_OK) stiffness_scale = maxval(abs(probe_tangent(:ntens, :ntens)))
+      end block
       if (any(abs(value(:, 1)) > 0.0_dp)) then
          do j = 1, increments
             call advance(zero, value(:, 1), traction_control(:, 1), time(1), time(1), &
@@ -370,7 +385,8 @@ contains
       logical, intent(in) :: controls(:)          !! true where `target` is a traction
       real(dp), intent(in) :: time_new            !! time at the end of the step
       real(dp), intent(in) :: tolerance           !! MPa
-      !> the largest |tangent entry| of the replay's converged steps (MPa/mm; 0 before the first)
+      !> the largest |tangent entry| of the virgin point and the replay's converged steps (MPa/mm;
+      !> 0 when the virgin point's update failed)
       real(dp), intent(in) :: stiffness_scale
       type(path_point_type), intent(inout) :: trial  !! the state at the end of the step
       real(dp), intent(out) :: tangent(:, :)      !! its tangent (MPa/mm)
