@@ -540,7 +540,7 @@ contains
       traction_tolerance = DEFAULT_TRACTION_TOLERANCE
       output_every = 1
       tangent_check = 0.0_dp
-      tangent_step = DEFAULT_TANGENT_STEP
+      tangent_step = UNSET_REAL
       read (unit, nml=loading, iostat=ios, iomsg=iomsg)
       if (ios == iostat_end) then
          message = where//'group not found (expected "&loading ... /")'
@@ -577,6 +577,14 @@ contains
       end if
       if (.not. (tangent_check >= 0.0_dp .and. ieee_is_finite(tangent_check))) then
          message = where//'tangent_check must be a finite number >= 0 (0: no check), got '//real_to_string(tangent_check)
+         return
+      end if
+      if (is_unset(tangent_step)) then
+         tangent_step = DEFAULT_TANGENT_STEP
+      else if (.not. tangent_check > 0.0_dp) then
+         ! (the step of a check that is not made: refused, not ignored)
+         message = where//'tangent_step is an entry of the tangent check only: set tangent_check > 0 too, or '// &
+            'drop tangent_step'
          return
       end if
       if (.not. (tangent_step > 0.0_dp .and. ieee_is_finite(tangent_step))) then
