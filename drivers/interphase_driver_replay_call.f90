@@ -14,6 +14,9 @@ module interphase_driver_replay_call
    private
    public :: replay_call_type, is_replay_file, read_replay_call, repeat_replay_call
 
+   !> Marks a `&replay` array value the file did not set.
+   real(dp), parameter :: UNSET = -huge(1.0_dp)
+
    !> The inputs of one call.
    type :: replay_call_type
       character(len=16) :: source = ''
@@ -74,8 +77,9 @@ contains
       source = ''
       failure = ''
       noel = 0; npt = 0; kinc = 0; ntens = 0; ndi = -1; nshr = -1; nprops = 0; nstatv = 0
-      props = 0.0_dp; statev = 0.0_dp; stress = 0.0_dp; sse = 0.0_dp; spd = 0.0_dp
-      stran = 0.0_dp; dstran = 0.0_dp; time = 0.0_dp; dtime = 0.0_dp
+      ! (the arrays marked unset, so that their lengths can be checked against nprops, nstatv, ntens)
+      props = UNSET; statev = UNSET; stress = UNSET; sse = 0.0_dp; spd = 0.0_dp
+      stran = UNSET; dstran = UNSET; time = UNSET; dtime = 0.0_dp
       table = ''; rcurve = ''
       open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
@@ -102,10 +106,46 @@ contains
             ' (1 to '//int_to_string(REPLAY_MAX_PROPS)//' each)'
          return
       end if
+      if (.not. (given(path, 'props', props, nprops, message) .and. given(path, 'statev', statev, nstatv, message) &
+         .and. given(path, 'stress', stress, ntens, message) .and. given(path, 'stran', stran, ntens, message) &
+         .and. given(path, 'dstran', dstran, ntens, message) .and. given(path, 'time', time, 2, message))) return
       call_data = replay_call_type(source, failure, noel, npt, kinc, ntens, ndi, nshr, nprops, nstatv, props, statev, &
          stress, sse, spd, stran, dstran, time, dtime, table, rcurve)
       ok = .true.
    end subroutine read_replay_call
+
+   !> Whether a `&replay` array holds exactly its first n values (each set, none after them); if
+   !> not, the message names the array, how many values it holds and what n says.
+   logical function given(path, name, values, n, message)
+      character(len=*), intent(in) :: path, name
+      real(dp), intent(in) :: values(:)
+      integer, intent(in) :: n                    !! the length nprops, nstatv or ntens gives
+      character(len=:), allocatable, intent(inout) :: message
+      character(len=:), allocatable :: expected
+      integer :: held
+      held = count(.not. unset_value(values))
+      given = held == n .and. .not. any(unset_value(values(:n)))
+      if (given) return
+      select case (name)
+      case ('props'); expected = 'nprops = '//int_to_string(n)
+      case ('statev'); expected = 'nstatv = '//int_to_string(n)
+      case ('time'); expected = 'time holds (step time, total time)'
+      case default; expected = 'ntens = '//int_to_string(n)
+      end select
+      if (held == n) then
+         message = path//': &replay: '//name//' holds '//int_to_string(held)//' values, but not its first '// &
+            int_to_string(n)//' ('//expected//')'
+      else
+         message = path//': &replay: '//name//' holds '//int_to_string(held)//' values; expected '// &
+            int_to_string(n)//' ('//expected//')'
+      end if
+   end function given
+
+   !> Whether a value is the UNSET mark (NaN is a value the file set).
+   elemental logical function unset_value(x)
+      real(dp), intent(in) :: x
+      unset_value = x >= UNSET .and. x <= UNSET
+   end function unset_value
 
 
    !> Call the UMAT once with the replayed inputs; `failed` tells whether it failed again (its
