@@ -701,17 +701,22 @@ contains
          integer, intent(out) :: status
          character(len=MESSAGE_LEN), intent(out) :: message
          real(dp), intent(in), optional :: expected, allowed
+         character(len=:), allocatable :: rest
+         character(len=8) :: difference, bound
+         character(len=12) :: line_text
          integer :: ios
          status = STATUS_TABLE_IDENTITY
+         write (line_text, '(i0)', iostat=ios) table%line(row)
+         rest = ':'//trim(line_text)//': identity '//what//' fails: value '//trim(real_text(value))
          if (present(expected) .and. present(allowed)) then
-            write (message, '(a,a,i0,a,a,a,a,a,a,a,es8.1,a,es8.1,a,a,a)', iostat=ios) &
-               message_path(table%source), ':', table%line(row), ': identity ', what, ' fails: value ', &
-               trim(real_text(value)), ', expected ', trim(real_text(expected)), ' (difference', abs(value - expected), &
-               ', allowed', allowed, ') at a = ', trim(real_text(table%rows(row, COL_A))), ' mm'
-         else
-            write (message, '(a,a,i0,a,a,a,es24.16,a,es24.16,a)', iostat=ios) message_path(table%source), ':', &
-               table%line(row), ': identity ', what, ' fails: value ', value, ' at a = ', table%rows(row, COL_A), ' mm'
+            write (difference, '(es8.1)', iostat=ios) abs(value - expected)
+            write (bound, '(es8.1)', iostat=ios) allowed
+            rest = rest//', expected '//trim(real_text(expected))//' (difference '//trim(adjustl(difference))// &
+               ', allowed '//trim(adjustl(bound))//')'
          end if
+         rest = rest//' at a = '//trim(real_text(table%rows(row, COL_A)))//' mm'
+         ! the path shortened where the message would not fit otherwise: what fails is never cut
+         message = message_path(table%source, MESSAGE_LEN - len(rest))//rest
       end subroutine identity
 
    end subroutine check_rve_table

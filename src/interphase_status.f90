@@ -177,18 +177,23 @@ contains
    end function severity_label
 
    !> A file name as messages show it: whole when it is short, else '...' and its last
-   !> MESSAGE_PATH_LEN - 3 characters, so that a message of MESSAGE_LEN characters keeps room for
-   !> the line number and what is wrong (the end of a path names the file).
-   pure function message_path(path) result(shown)
+   !> characters (the end of a path names the file): at most MESSAGE_PATH_LEN, so that a message
+   !> of MESSAGE_LEN characters keeps room for the line number and what is wrong, or at most
+   !> `room` (not below MIN_PATH_LEN) where the caller knows the rest of its message
+   !> (MESSAGE_LEN - len(rest): the whole message then fits, and nothing at its end is cut).
+   pure function message_path(path, room) result(shown)
       character(len=*), intent(in) :: path
+      integer, intent(in), optional :: room       !! characters the path may take
       character(len=:), allocatable :: shown
-      integer, parameter :: MESSAGE_PATH_LEN = 120
-      integer :: n
+      integer, parameter :: MESSAGE_PATH_LEN = 120, MIN_PATH_LEN = 24
+      integer :: n, most
       n = len_trim(path)
-      if (n <= MESSAGE_PATH_LEN) then
+      most = MESSAGE_PATH_LEN
+      if (present(room)) most = min(most, max(room, MIN_PATH_LEN))
+      if (n <= most) then
          shown = path(1:n)
       else
-         shown = '...'//path(n - MESSAGE_PATH_LEN + 4:n)
+         shown = '...'//path(n - most + 4:n)
       end if
    end function message_path
 
