@@ -629,7 +629,13 @@ contains
       case default
          long = trim(long)//' '//trim(update_detail)
       end select
-      text = long(:MESSAGE_LEN)
+      ! a message longer than MESSAGE_LEN (a long update message behind the times) ends in '...',
+      ! so that a reader sees it was cut
+      if (len_trim(long) > MESSAGE_LEN) then
+         text = long(:MESSAGE_LEN - 3)//'...'
+      else
+         text = long(:MESSAGE_LEN)
+      end if
    end function describe_failure
 
 end module interphase_mixed_control
