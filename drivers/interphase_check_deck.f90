@@ -10,8 +10,9 @@
 !> the same messages the UMAT would give at the first increment), *DEPVAR at least 4 (UMAT; 5 with
 !> viscous regularisation) or 9 (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for
 !> Abaqus/Standard with the consistent tangent (stiffness option 0) and a
-!> *DENSITY > 0 for Abaqus/Explicit. It reads keywords and their data lines only (no *INCLUDE,
-!> no parts/assemblies resolution) and prints one line per cohesive section, and a note when the
+!> *DENSITY > 0 for Abaqus/Explicit. It reads keywords (a keyword line that ends in a comma
+!> continued on the next) and their data lines only (no *INCLUDE, no parts/assemblies
+!> resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) and prints one line per cohesive section, and a note when the
 !> material needs a file loaded at start-up (a custom RVE table, a tabulated R-curve: the run
 !> then needs the environment variable and the start-of-analysis hook, which a deck cannot
 !> show); the exit status is 0 when every check passes, 1 otherwise, 2 when a file cannot be read.
@@ -125,6 +126,10 @@ contains
       type(section_type), allocatable :: sections(:)
       type(text_file_type) :: file
       character(len=LINE_LEN) :: line
+      !> a line read ahead (after a keyword line that ends in a comma) and its number
+      character(len=LINE_LEN) :: held
+      integer :: held_lineno
+      logical :: have_held
       character(len=MESSAGE_LEN) :: message
       character(len=80) :: keyword, field, repeated
       character(len=80) :: keyword_text        !! the keyword as the deck writes it (for messages)
@@ -134,7 +139,7 @@ contains
       character(len=80), allocatable :: parameter_names(:)
       character(len=LINE_LEN), allocatable :: parameter_values(:)
       real(dp) :: values(16)
-      integer :: ios, lineno, nvalues, k, current, data_lines, i, outcome, bad_field
+      integer :: ios, lineno, nvalues, k, current, data_lines, i, bad_field
       logical :: explicit, opened
 
       allocate (materials(0), sections(0))
@@ -152,29 +157,47 @@ contains
       current = 0
       data_lines = 0
       lineno = 0
+      have_held = .false.
       do
-         call read_text_line(file, outcome, message)
-         if (outcome == TEXT_END) exit
-         lineno = file%line_number
-         if (outcome /= TEXT_LINE) then
-            write (error_unit, '(a,i0,a)') 'interphase-check-deck: '//tried_path(path)//':', lineno, ': '//trim(message)
-            call close_text_file(file)
-            status = 2
-            return
+         if (have_held) then
+            line = held
+            lineno = held_lineno
+            have_held = .false.
+         else
+            if (.not. next_line(file, path, line, lineno, status)) exit
          end if
-         if (file%length > LINE_LEN) then
-            write (error_unit, '(a,i0,a,i0,a)') 'interphase-check-deck: '//tried_path(path)//':', lineno, &
-               ': line longer than ', LINE_LEN, ' characters (Abaqus reads at most 256)'
-            call close_text_file(file)
-            status = 2
-            return
-         end if
-         line = adjustl(file%buffer(1:file%length))
+         if (status /= 0) return
          if (len_trim(line) == 0 .or. line(1:min(2, len(line))) == '**') cycle
          if (line(1:1) == '*') then
+            ! a keyword line that ends in a comma continues on the next line (Abaqus' input syntax
+            ! rules): the continuation's parameters join this line's
+            do while (line(len_trim(line):len_trim(line)) == ',')
+               if (.not. next_line(file, path, held, held_lineno, status)) exit
+               if (status /= 0) return
+               if (len_trim(held) == 0) cycle
+               if (held(1:min(2, len(held))) == '**') cycle
+               if (held(1:1) == '*') then
+                  ! a new keyword: the comma ended this line's parameters
+                  have_held = .true.
+                  exit
+               end if
+               if (len_trim(line) + 1 + len_trim(held) > LINE_LEN) then
+                  write (error_unit, '(a,i0,a,i0,a)') 'interphase-check-deck: '//tried_path(path)//':', held_lineno, &
+                     ': keyword line with its continuations longer than ', LINE_LEN, ' characters'
+                  call close_text_file(file)
+                  status = 2
+                  return
+               end if
+               line = trim(line)//' '//trim(held)
+            end do
             keyword = upper_compact(before_comma(line(2:)))
             keyword_text = adjustl(before_comma(line(2:)))
             data_lines = 0
+            ! *USER MATERIAL, TYPE=THERMAL is a UMATHT's (heat transfer), not interphase's: its
+            ! constants are neither decoded nor counted as the material's *USER MATERIAL
+            if (trim(keyword) == 'USERMATERIAL') then
+               if (upper_compact(parameter_value(line, 'TYPE')) == 'THERMAL') keyword = 'USERMATERIAL,THERMAL'
+            end if
             ! a parameter given twice on a keyword line: which one counts is not for us to guess
             call keyword_parameters(line, parameter_names, parameter_values, repeated)
             if (len_trim(repeated) > 0) then
@@ -297,6 +320,7 @@ contains
       do i = 1, size(sections)
          call check_section(path, sections(i), materials, explicit, nfail)
       end do
+
    end subroutine check_deck
 
    !> The checks of one cohesive section and its material; one line of output, plus one line per
@@ -475,6 +499,39 @@ contains
             ' but interphase needs '//rule, nfail)
       end if
    end subroutine check_thickness
+
+   !> The next line of the deck, left-adjusted, and its number; false at the end of the file. A
+   !> line that cannot be read, or is longer than LINE_LEN, is reported: status = 2, the file
+   !> closed, and the result true (the caller stops on the status).
+   logical function next_line(file, path, text, number, status)
+      type(text_file_type), intent(inout) :: file
+      character(len=*), intent(in) :: path
+      character(len=LINE_LEN), intent(out) :: text
+      integer, intent(out) :: number
+      integer, intent(inout) :: status
+      character(len=MESSAGE_LEN) :: message
+      integer :: outcome
+      next_line = .false.
+      text = ''
+      call read_text_line(file, outcome, message)
+      number = file%line_number
+      if (outcome == TEXT_END) return
+      next_line = .true.
+      if (outcome /= TEXT_LINE) then
+         write (error_unit, '(a,i0,a)') 'interphase-check-deck: '//tried_path(path)//':', number, ': '//trim(message)
+         call close_text_file(file)
+         status = 2
+         return
+      end if
+      if (file%length > LINE_LEN) then
+         write (error_unit, '(a,i0,a,i0,a)') 'interphase-check-deck: '//tried_path(path)//':', number, &
+            ': line longer than ', LINE_LEN, ' characters (Abaqus reads at most 256)'
+         call close_text_file(file)
+         status = 2
+         return
+      end if
+      text = adjustl(file%buffer(1:file%length))
+   end function next_line
 
    !> Print a failed check and count it.
    subroutine record_failure(text, nfail)
