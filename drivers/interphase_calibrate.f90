@@ -21,7 +21,7 @@ program interphase_calibrate
    use interphase_layout, only: PROP_TABLE
    use interphase_driver_case, only: case_type, read_case, load_start_up_data
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
-   use interphase_driver_text, only: int_to_string, real_to_string, same_path
+   use interphase_driver_text, only: int_to_string, real_to_string, same_file
    use interphase_params, only: law_params_type, from_props
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_cli, only: get_argument, exit_program, print_version
@@ -78,11 +78,11 @@ program interphase_calibrate
 
    call read_case(case_path, run, ok, message)
    if (.not. ok) call fail(message)
-   ! --write must not replace an input (the paths compared as text: drivers/README.md)
+   ! --write must not replace an input (the paths resolved and compared: drivers/README.md)
    if (len(write_path) > 0) then
-      if (same_path(write_path, case_path) .or. same_path(write_path, run%history_path) .or. &
-         (len(run%table_path) > 0 .and. same_path(write_path, run%table_path)) .or. &
-         (len(run%rcurve_path) > 0 .and. same_path(write_path, run%rcurve_path))) &
+      if (same_file(write_path, case_path) .or. same_file(write_path, run%history_path) .or. &
+         (len(run%table_path) > 0 .and. same_file(write_path, run%table_path)) .or. &
+         (len(run%rcurve_path) > 0 .and. same_file(write_path, run%rcurve_path))) &
          call fail('--write '//write_path//' is an input of this run: name another file')
    end if
    if (nint(run%props(PROP_MODEL)) /= MODEL_MICROMECHANICAL) &

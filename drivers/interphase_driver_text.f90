@@ -2,6 +2,7 @@
 !> line reading, tokenising, lower-casing, path splitting and shell quoting. No physics here.
 module interphase_driver_text
    use, intrinsic :: iso_fortran_env, only: iostat_end
+   use, intrinsic :: iso_c_binding, only: c_char, c_null_char, c_ptr, c_associated
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
@@ -10,7 +11,7 @@ module interphase_driver_text
    private
    public :: int_to_string, real_to_string, real_to_csv, to_lower
    public :: text_file_type, open_line_file, read_line, close_text_file
-   public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote, same_path
+   public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote, same_path, same_file
 
 contains
 
@@ -192,6 +193,60 @@ contains
       character(len=*), intent(in) :: a, b
       same_path = normal_path(a) == normal_path(b)
    end function same_path
+
+   !> Whether two paths name one existing file: both resolved by the C library's realpath
+   !> (symbolic links, '.', '..', the current directory) and compared. A path that does not
+   !> resolve (a file not yet written) names no existing file: false, unless the two are one
+   !> path as text (`same_path`).
+   logical function same_file(a, b)
+      character(len=*), intent(in) :: a, b
+      character(len=:), allocatable :: real_a, real_b
+      logical :: ok_a, ok_b
+      same_file = same_path(a, b)
+      if (same_file) return
+      call resolved_path(a, real_a, ok_a)
+      call resolved_path(b, real_b, ok_b)
+      if (ok_a .and. ok_b) same_file = real_a == real_b
+   end function same_file
+
+   !> The canonical absolute path of an existing file (the C library's realpath); ok false when
+   !> it does not resolve.
+   subroutine resolved_path(path, resolved, ok)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable, intent(out) :: resolved
+      logical, intent(out) :: ok
+      !> PATH_MAX of Linux, with the NUL
+      integer, parameter :: RESOLVED_LEN = 4096
+      interface
+         function c_realpath(name, buffer) bind(c, name='realpath') result(p)
+            import :: c_char, c_ptr
+            character(kind=c_char), intent(in) :: name(*)
+            character(kind=c_char), intent(out) :: buffer(*)
+            type(c_ptr) :: p
+         end function c_realpath
+      end interface
+      character(kind=c_char) :: name(len(path) + 1), buffer(RESOLVED_LEN)
+      integer :: i, n
+      ok = .false.
+      resolved = ''
+      if (len(path) == 0) return
+      do i = 1, len(path)
+         name(i) = path(i:i)
+      end do
+      name(len(path) + 1) = c_null_char
+      buffer = c_null_char
+      if (.not. c_associated(c_realpath(name, buffer))) return
+      n = 0
+      do i = 1, RESOLVED_LEN
+         if (buffer(i) == c_null_char) exit
+         n = i
+      end do
+      resolved = repeat(' ', n)
+      do i = 1, n
+         resolved(i:i) = buffer(i)
+      end do
+      ok = .true.
+   end subroutine resolved_path
 
    !> `a` with repeated '/', '.' segments and 'name/..' pairs removed ('' stays '').
    pure function normal_path(a) result(path)

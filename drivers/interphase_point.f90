@@ -22,7 +22,7 @@ program interphase_point
    use interphase_driver_replay, only: replay_history, replay_report_type
    use interphase_driver_replay_call, only: replay_call_type, is_replay_file, read_replay_call, repeat_replay_call
    use interphase_driver_text, only: int_to_string, real_to_string, directory_of, base_name, stem_of, &
-      join_path, same_path
+      join_path, same_file
    implicit none
 
    character(len=:), allocatable :: case_path, output_dir, csv_path, part_path, message, summary
@@ -175,9 +175,9 @@ contains
    !> Stop when `written` is one of the run's input files.
    subroutine refuse(written)
       character(len=*), intent(in) :: written
-      if (same_path(written, case_path) .or. same_path(written, run%history_path) .or. &
-         (len(run%table_path) > 0 .and. same_path(written, run%table_path)) .or. &
-         (len(run%rcurve_path) > 0 .and. same_path(written, run%rcurve_path))) &
+      if (same_file(written, case_path) .or. same_file(written, run%history_path) .or. &
+         (len(run%table_path) > 0 .and. same_file(written, run%table_path)) .or. &
+         (len(run%rcurve_path) > 0 .and. same_file(written, run%rcurve_path))) &
          call fail(case_path//': &loading: output = '''//run%output//''' would write '//written// &
          ', which is an input of this run: name another file')
    end subroutine refuse
