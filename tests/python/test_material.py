@@ -222,6 +222,9 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
         # a constant the PROPS check refuses: named with its entry's line, as by interphase-point
         "range": (good.replace("mu = 0.75", "mu = -0.75"),
                   rf"range.nml:{mu_line}: &material: mu: PROPS\(3\) mu = -7.50000E-001 is out of range"),
+        # the step of a tangent check that is not made
+        "tangent_step": (good.replace("increments = ", "tangent_step = 1e-7\n  increments = "),
+                         r"tangent_step.nml:\d+: &loading: tangent_step is an entry of the tangent check only"),
     }
     assert "mu = 0.75" in good and "sf_t" in good and "&loading" in good and "increments = " in good
     for name, (text, message) in cases.items():

@@ -292,6 +292,9 @@ def _checked_case_entries(path):
     increments, line = groups["loading"]["increments"]
     if increments < 1:
         raise ValueError(f"{path}:{line}: &loading: increments must be at least 1, got {increments}")
+    if "tangent_step" in groups["loading"] and not groups["loading"].get("tangent_check", (0.0, 0))[0] > 0.0:
+        raise ValueError(f"{path}:{groups['loading']['tangent_step'][1]}: &loading: tangent_step is an entry of "
+                         "the tangent check only: set tangent_check > 0 too, or drop tangent_step")
     return ({g: {k: v for k, (v, _) in entries.items()} for g, entries in groups.items()},
             {g: {k: line for k, (_, line) in entries.items()} for g, entries in groups.items()})
 
