@@ -94,8 +94,8 @@ contains
    !> Read the next line into file%buffer(1:file%length), in pieces, in time linear in its
    !> length. Returns TEXT_LINE, TEXT_END, or (with `message`) TEXT_LINE_TOO_LONG (more than
    !> MAX_LINE_LEN characters), TEXT_FILE_TOO_LARGE (more than MAX_FILE_BYTES read) or
-   !> TEXT_READ_ERROR. A last line without a newline is a line; a trailing carriage return is
-   !> dropped. Reading stops at the limit: a line without end is never read to its end.
+   !> TEXT_READ_ERROR (also for a UTF-8 byte-order mark that starts the file). A last line
+   !> without a newline is a line; a trailing carriage return is dropped. Reading stops at the limit: a line without end is never read to its end.
    subroutine read_text_line(file, outcome, message)
       type(text_file_type), intent(inout) :: file
       integer, intent(out) :: outcome                 !! TEXT_*
@@ -163,6 +163,15 @@ contains
       file%line_number = file%line_number + 1
       if (file%length > 0) then
          if (file%buffer(file%length:file%length) == achar(13)) file%length = file%length - 1
+      end if
+      ! a UTF-8 byte-order mark (some Windows editors write one) would make the first line's first
+      ! word unreadable with a message about that word: named for what it is
+      if (file%line_number == 1 .and. file%length >= 3) then
+         if (file%buffer(1:3) == char(239)//char(187)//char(191)) then
+            outcome = TEXT_READ_ERROR
+            message = 'the file starts with a UTF-8 byte-order mark (bytes EF BB BF): save it without one'
+            return
+         end if
       end if
       outcome = TEXT_LINE
    end subroutine read_text_line
