@@ -383,6 +383,10 @@ def test_read_mixed_history(source_dir, tmp_path):
         bad.write_text(text)
         with pytest.raises(ValueError, match=f"bad.txt:{line}: .*{match}"):
             interphase.read_history(bad, control=True)
+    # a UTF-8 byte-order mark is named, as by the driver
+    bad.write_bytes(b"\xef\xbb\xbf# columns: t s_T s_N\n0 0 0\n1 0 1\n")
+    with pytest.raises(ValueError, match="bad.txt:1: the file starts with a UTF-8 byte-order mark"):
+        interphase.read_history(bad, control=True)
     # a plain comment that starts with the word stays a comment
     fine = tmp_path / "fine.txt"
     fine.write_text("# column 2 is the shear separation\n0 0 0\n1 0.001 0\n")

@@ -18,11 +18,15 @@ def _text_lines(path):
     """The lines of a text file, read as the driver reads it: bytes as they are (UTF-8, with any
     other byte kept as a surrogate, so a comment in another encoding is read and a path named in
     the file opens the file of those bytes), at most MAX_FILE_BYTES (a larger file, /dev/zero
-    included, is refused: ValueError naming the file)."""
+    included, is refused: ValueError naming the file), and without a UTF-8 byte-order mark (refused,
+    as the driver refuses it)."""
     with open(path, "rb") as f:
         data = f.read(MAX_FILE_BYTES + 1)
     if len(data) > MAX_FILE_BYTES:
         raise ValueError(f"{path}: the file is larger than {MAX_FILE_BYTES} bytes")
+    if data.startswith(b"\xef\xbb\xbf"):
+        raise ValueError(f"{path}:1: the file starts with a UTF-8 byte-order mark (bytes EF BB BF): save it "
+                         "without one")
     lines = data.decode("utf-8", errors="surrogateescape").split("\n")
     if lines and lines[-1] == "":
         lines.pop()
