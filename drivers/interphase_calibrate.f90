@@ -32,7 +32,7 @@ program interphase_calibrate
    character(len=:), allocatable :: case_path, write_path, message, argument
    character(len=MESSAGE_LEN) :: why
    integer :: increments, i, nargs, unit, ios, status
-   logical :: ok
+   logical :: ok, clash
    real(dp) :: g_i, g_ii, k_n, k_t, peak_n, peak_t, s_peak_n, s_peak_t, s0_n, s0_t
 
    increments = 20000
@@ -80,9 +80,12 @@ program interphase_calibrate
    if (.not. ok) call fail(message)
    ! --write must not replace an input (the paths resolved and compared: drivers/README.md)
    if (len(write_path) > 0) then
-      if (same_file(write_path, case_path) .or. same_file(write_path, run%history_path) .or. &
-         (len(run%table_path) > 0 .and. same_file(write_path, run%table_path)) .or. &
-         (len(run%rcurve_path) > 0 .and. same_file(write_path, run%rcurve_path))) &
+      ! (one comparison a statement: same_file resolves the paths, a call that is not pure)
+      clash = same_file(write_path, case_path)
+      if (.not. clash) clash = same_file(write_path, run%history_path)
+      if (.not. clash .and. len(run%table_path) > 0) clash = same_file(write_path, run%table_path)
+      if (.not. clash .and. len(run%rcurve_path) > 0) clash = same_file(write_path, run%rcurve_path)
+      if (clash) &
          call fail('--write '//write_path//' is an input of this run: name another file')
    end if
    if (nint(run%props(PROP_MODEL)) /= MODEL_MICROMECHANICAL) &

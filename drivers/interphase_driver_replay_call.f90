@@ -106,26 +106,32 @@ contains
             ' (1 to '//int_to_string(REPLAY_MAX_PROPS)//' each)'
          return
       end if
-      if (.not. (given(path, 'props', props, nprops, message) .and. given(path, 'statev', statev, nstatv, message) &
-         .and. given(path, 'stress', stress, ntens, message) .and. given(path, 'stran', stran, ntens, message) &
-         .and. given(path, 'dstran', dstran, ntens, message) .and. given(path, 'time', time, 2, message))) return
+      call check_length(path, 'props', props, nprops, ok, message)
+      if (ok) call check_length(path, 'statev', statev, nstatv, ok, message)
+      if (ok) call check_length(path, 'stress', stress, ntens, ok, message)
+      if (ok) call check_length(path, 'stran', stran, ntens, ok, message)
+      if (ok) call check_length(path, 'dstran', dstran, ntens, ok, message)
+      if (ok) call check_length(path, 'time', time, 2, ok, message)
+      if (.not. ok) return
+      ok = .false.
       call_data = replay_call_type(source, failure, noel, npt, kinc, ntens, ndi, nshr, nprops, nstatv, props, statev, &
          stress, sse, spd, stran, dstran, time, dtime, table, rcurve)
       ok = .true.
    end subroutine read_replay_call
 
    !> Whether a `&replay` array holds exactly its first n values (each set, none after them); if
-   !> not, the message names the array, how many values it holds and what n says.
-   logical function given(path, name, values, n, message)
+   !> not (ok false), the message names the array, how many values it holds and what n says.
+   subroutine check_length(path, name, values, n, ok, message)
       character(len=*), intent(in) :: path, name
       real(dp), intent(in) :: values(:)
       integer, intent(in) :: n                    !! the length nprops, nstatv or ntens gives
+      logical, intent(out) :: ok
       character(len=:), allocatable, intent(inout) :: message
       character(len=:), allocatable :: expected
       integer :: held
       held = count(.not. unset_value(values))
-      given = held == n .and. .not. any(unset_value(values(:n)))
-      if (given) return
+      ok = held == n .and. .not. any(unset_value(values(:n)))
+      if (ok) return
       select case (name)
       case ('props'); expected = 'nprops = '//int_to_string(n)
       case ('statev'); expected = 'nstatv = '//int_to_string(n)
@@ -139,7 +145,7 @@ contains
          message = path//': &replay: '//name//' holds '//int_to_string(held)//' values; expected '// &
             int_to_string(n)//' ('//expected//')'
       end if
-   end function given
+   end subroutine check_length
 
    !> Whether a value is the UNSET mark (NaN is a value the file set).
    elemental logical function unset_value(x)

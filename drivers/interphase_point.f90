@@ -175,9 +175,13 @@ contains
    !> Stop when `written` is one of the run's input files.
    subroutine refuse(written)
       character(len=*), intent(in) :: written
-      if (same_file(written, case_path) .or. same_file(written, run%history_path) .or. &
-         (len(run%table_path) > 0 .and. same_file(written, run%table_path)) .or. &
-         (len(run%rcurve_path) > 0 .and. same_file(written, run%rcurve_path))) &
+      logical :: clash
+      ! (one comparison a statement: same_file resolves the paths, a call that is not pure)
+      clash = same_file(written, case_path)
+      if (.not. clash) clash = same_file(written, run%history_path)
+      if (.not. clash .and. len(run%table_path) > 0) clash = same_file(written, run%table_path)
+      if (.not. clash .and. len(run%rcurve_path) > 0) clash = same_file(written, run%rcurve_path)
+      if (clash) &
          call fail(case_path//': &loading: output = '''//run%output//''' would write '//written// &
          ', which is an input of this run: name another file')
    end subroutine refuse
