@@ -27,11 +27,11 @@
 #   - instructions per VUMAT point (callgrind, nblock = 4096, 4096 points x 140 increments):
 #     vumat_ and the plain copy of its arrays, in the one-file Abaqus/Explicit source
 #     (examples/abaqus/make-user-file.sh --explicit) compiled as docs/abaqus.md recommends, with
-#     -march=x86-64-v3 (AVX2) for valgrind: the build an Abaqus/Explicit host makes.
+#     -march=x86-64-v3 (AVX2) for valgrind: the build an Abaqus/Explicit host makes;
+#   - the UMAT in a host's order (256 points per increment, each with its own state) against one
+#     point, the benchmark's own loop subtracted in each (no LTO, 2-D, cases 1, 3 and 7).
 # --quick: fewer points and calls (a smoke test of the script, not figures to record).
 # KEEP_WORK=1 in the environment keeps the work directory (the one-file builds' logs) on exit.
-#   - the UMAT in a host's order (256 points per increment, each with its own state) against one
-#     point, the benchmark's own loop subtracted in each (no LTO, 2-D, cases 1, 3 and 7);
 # Not a test: nothing is checked against a goal here; docs/performance.md records the figures.
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
@@ -257,12 +257,13 @@ ratio_row "LFM / displacement law, micromechanical 2-D" 7 3
 
 # The UMAT in a host's order: 256 points per increment, each with its own state and its shear
 # scaled by 0.5 + p/256 (interphase-bench's POINTS), against one point, both with 640 increments
-# per segment, in the build without LTO; the benchmark's own loop in either order from the driver
+# per segment (64 with --quick), in the build without LTO; the benchmark's own loop in either order from the driver
 # with an empty UMAT; the UMAT's own time is the difference.
 host_calls=983040; single_calls=3840; single_runs=300
 if [ $quick = yes ]; then host_calls=98304; single_calls=384; single_runs=30; fi
 echo
-echo "UMAT in a host's order (no LTO, 2-D, 640 increments per segment): best ns per call of one point"
+# (the mixed history has 6 segments: a run of N calls replays it with N/6 increments per segment)
+echo "UMAT in a host's order (no LTO, 2-D, $((single_calls / 6)) increments per segment): best ns per call of one point"
 echo "($single_calls calls, $single_runs runs) and of 256 points per increment (each its own state, its shear scaled"
 echo "by 0.5 + p/256; $host_calls calls, 5 runs), less the benchmark's own loop in the same order"
 echo "(the driver with an empty UMAT):"
