@@ -3,7 +3,7 @@
 !> interphase-point when an update fails. `interphase-point FILE` reads it here and repeats the
 !> call through the UMAT (`repeat_replay_call`).
 module interphase_driver_replay_call
-   use, intrinsic :: iso_fortran_env, only: output_unit, iostat_end
+   use, intrinsic :: iso_fortran_env, only: output_unit, iostat_end, int64
    use interphase_kinds, only: dp
    use interphase_replay_file, only: REPLAY_MAX_PROPS, REPLAY_MAX_STATEV
    use interphase_abaqus_interfaces, only: umat
@@ -147,10 +147,11 @@ contains
       end if
    end subroutine check_length
 
-   !> Whether a value is the UNSET mark (NaN is a value the file set).
+   !> Whether a value is the UNSET mark, compared bit for bit (no floating-point comparison: a NaN
+   !> is a value the file set, and a build that traps invalid operations does not stop on it).
    elemental logical function unset_value(x)
       real(dp), intent(in) :: x
-      unset_value = x >= UNSET .and. x <= UNSET
+      unset_value = transfer(x, 0_int64) == transfer(UNSET, 0_int64)
    end function unset_value
 
 

@@ -188,7 +188,7 @@ contains
       type(path_point_type), intent(out) :: point
       type(path_failure_type), intent(out) :: failure
       real(dp) :: zero(size(value, 1)), start(size(value, 1))
-      !> the largest |tangent entry| of the converged steps so far (MPa/mm)
+      !> the largest |tangent entry| of the virgin point and the converged steps so far (MPa/mm)
       real(dp) :: stiffness_scale
       integer :: ntens, nrows, k, j, i
       logical :: ok
