@@ -113,13 +113,13 @@ contains
                call close_text_file(unit)
                return
             case (COLUMNS_LINE)
-               if (len_trim(line(:comment - 1)) > 0) then
+               if (verify(line(:comment - 1), ' '//char(9)) > 0) then
                   message = where//'a "# columns:" line holds nothing before the ''#'' (here '''// &
                      trim(adjustl(line(:comment - 1)))//'''): put the data row on a line of its own'
                   call close_text_file(unit)
                   return
                end if
-               call read_column_names(line(comment + 1:), named_columns, named, ok, message)
+               call read_column_names(tabs_as_blanks(line(comment + 1:)), named_columns, named, ok, message)
                if (.not. ok) then
                   message = where//message
                   call close_text_file(unit)
@@ -209,7 +209,8 @@ contains
       character(len=*), parameter :: KEY = 'columns:', STEM = 'column'
       character(len=len(comment)) :: text
       integer :: i
-      text = to_lower(adjustl(comment))
+      ! (tabs read as blanks, as the data rows' words are split)
+      text = to_lower(adjustl(tabs_as_blanks(comment)))
       columns_line_kind = PLAIN_COMMENT
       if (len(text) < len(STEM)) return
       if (text(:len(STEM)) /= STEM) return
@@ -230,6 +231,17 @@ contains
       if (i > len(text)) return
       if (text(i:i) == ':') columns_line_kind = MISSPELLED_COLUMNS
    end function columns_line_kind
+
+   !> `text` with every tab a blank.
+   pure function tabs_as_blanks(text) result(blanked)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: blanked
+      integer :: i
+      blanked = text
+      do i = 1, len(text)
+         if (blanked(i:i) == char(9)) blanked(i:i) = ' '
+      end do
+   end function tabs_as_blanks
 
    !> Read the names of a `columns:` comment: t, then the shear component(s) and the normal one,
    !> each `s_X` (separation) or `Sigma_X` (traction); words in parentheses are skipped.
