@@ -19,9 +19,9 @@ program interphase_calibrate
       MODEL_MICROMECHANICAL
    use interphase_micro_coefficients, only: custom_table_source
    use interphase_layout, only: PROP_TABLE
-   use interphase_driver_case, only: case_type, read_case, load_start_up_data
+   use interphase_driver_case, only: case_type, read_case, load_start_up_data, writes_an_input
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
-   use interphase_driver_text, only: int_to_string, real_to_string, same_file
+   use interphase_driver_text, only: int_to_string, real_to_string
    use interphase_params, only: law_params_type, from_props
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_cli, only: get_argument, exit_program, print_version
@@ -32,7 +32,7 @@ program interphase_calibrate
    character(len=:), allocatable :: case_path, write_path, message, argument
    character(len=MESSAGE_LEN) :: why
    integer :: increments, i, nargs, unit, ios, status
-   logical :: ok, clash
+   logical :: ok
    real(dp) :: g_i, g_ii, k_n, k_t, peak_n, peak_t, s_peak_n, s_peak_t, s0_n, s0_t
 
    increments = 20000
@@ -80,12 +80,7 @@ program interphase_calibrate
    if (.not. ok) call fail(message)
    ! --write must not replace an input (the paths resolved and compared: drivers/README.md)
    if (len(write_path) > 0) then
-      ! (one comparison a statement: same_file resolves the paths, a call that is not pure)
-      clash = same_file(write_path, case_path)
-      if (.not. clash) clash = same_file(write_path, run%history_path)
-      if (.not. clash .and. len(run%table_path) > 0) clash = same_file(write_path, run%table_path)
-      if (.not. clash .and. len(run%rcurve_path) > 0) clash = same_file(write_path, run%rcurve_path)
-      if (clash) &
+      if (writes_an_input(run, write_path)) &
          call fail('--write '//write_path//' is an input of this run: name another file')
    end if
    if (nint(run%props(PROP_MODEL)) /= MODEL_MICROMECHANICAL) &

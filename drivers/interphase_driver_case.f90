@@ -20,7 +20,8 @@ module interphase_driver_case
       RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, &
       GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE
    use interphase_params, only: law_params_type, to_props, from_props
-   use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, stem_of, join_path
+   use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, stem_of, join_path, &
+      same_file
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message, STATUS_BAD_MU, STATUS_BAD_S0_N, &
@@ -32,7 +33,7 @@ module interphase_driver_case
       KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
    implicit none
    private
-   public :: case_type, read_case, material_entries_type, material_props, unpack_entries, &
+   public :: case_type, read_case, material_entries_type, material_props, unpack_entries, writes_an_input, &
       load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset, precheck_case_file, material_entry_kinds, &
       check_material_props, material_summary
 
@@ -671,6 +672,18 @@ contains
    end function material_summary
 
    !> True when a real entry still holds UNSET_REAL (a NaN from the file is not "unset").
+   !> Whether writing `path` would replace an input of the run: the case file, its history, RVE
+   !> table or R-curve file (the paths resolved: same_file). One comparison a statement: same_file
+   !> is not pure, and GCC may skip an impure call in an .or. chain.
+   logical function writes_an_input(run, path)
+      type(case_type), intent(in) :: run
+      character(len=*), intent(in) :: path
+      writes_an_input = same_file(path, run%path)
+      if (.not. writes_an_input) writes_an_input = same_file(path, run%history_path)
+      if (.not. writes_an_input .and. len(run%table_path) > 0) writes_an_input = same_file(path, run%table_path)
+      if (.not. writes_an_input .and. len(run%rcurve_path) > 0) writes_an_input = same_file(path, run%rcurve_path)
+   end function writes_an_input
+
    pure logical function is_unset(value)
       real(dp), intent(in) :: value               !! the entry after the namelist read
 

@@ -14,7 +14,7 @@
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_kinds, only: dp
-   use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary
+   use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary, writes_an_input
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot, exit_program, rename_file, print_version
    use interphase_driver_history, only: history_type, read_history
@@ -22,7 +22,7 @@ program interphase_point
    use interphase_driver_replay, only: replay_history, replay_report_type
    use interphase_driver_replay_call, only: replay_call_type, is_replay_file, read_replay_call, repeat_replay_call
    use interphase_driver_text, only: int_to_string, real_to_string, directory_of, base_name, stem_of, &
-      join_path, same_file
+      join_path
    implicit none
 
    character(len=:), allocatable :: case_path, output_dir, csv_path, part_path, message, summary
@@ -175,13 +175,7 @@ contains
    !> Stop when `written` is one of the run's input files.
    subroutine refuse(written)
       character(len=*), intent(in) :: written
-      logical :: clash
-      ! (one comparison a statement: same_file resolves the paths, a call that is not pure)
-      clash = same_file(written, case_path)
-      if (.not. clash) clash = same_file(written, run%history_path)
-      if (.not. clash .and. len(run%table_path) > 0) clash = same_file(written, run%table_path)
-      if (.not. clash .and. len(run%rcurve_path) > 0) clash = same_file(written, run%rcurve_path)
-      if (clash) &
+      if (writes_an_input(run, written)) &
          call fail(case_path//': &loading: output = '''//run%output//''' would write '//written// &
          ', which is an input of this run: name another file')
    end subroutine refuse
