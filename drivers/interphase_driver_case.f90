@@ -410,6 +410,11 @@ contains
          p%d0 = e%d0
          p%gc_i = 0.0_dp
          p%gc_ii = 0.0_dp
+         if (len(rcurve) == 0) then
+            message = where//"missing entry rcurve ('constant', 'equivalent' or 'tabulated', needed by "// &
+               "damage_law = 'fracture')"
+            return
+         end if
          select case (rcurve)
          case ('constant')
             if (is_unset(e%g_ci) .or. is_unset(e%g_cii)) then

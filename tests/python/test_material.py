@@ -49,6 +49,9 @@ def test_props_are_the_umat_layout():
     (dict(damage_law="fracture", d0=0.1, rcurve="equivalent", g_ci=0.01), interphase.STATUS_BAD_GC_I,
      "rcurve = 'constant' only"),
     (dict(damage_law="fracture", d0=0.1, rcurve="measured"), interphase.STATUS_BAD_RCURVE, "rcurve must be"),
+    (dict(damage_law="fracture", d0=0.1, g_ci=0.01, g_cii=0.02), interphase.STATUS_BAD_RCURVE,
+     "missing entry rcurve"),
+    (dict(damage_law="fracture", d0=0.1, rcurve=" "), interphase.STATUS_BAD_RCURVE, "missing entry rcurve"),
     (dict(damage_law="fracture", d0=0.1, rcurve="equivalent", viscosity=1.0), interphase.STATUS_BAD_OPTION,
      "displacement-driven law"),
 ])
@@ -186,6 +189,26 @@ def test_tables_and_rcurves(source_dir, tmp_path):
         interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
                                    rcurve_file=tmp_path / "none.txt"))
     assert caught.value.status == interphase.STATUS_RCURVE_UNREADABLE
+
+
+def test_blank_text_entries_are_left_out(source_dir, tmp_path):
+    """table = '' (or blanks) is no table, as interphase-point reads it from a namelist: the
+    built-in one for the micromechanical model, nothing for the simplified one; an empty
+    rcurve_file is no file."""
+    s = [[0, 0], [0.001, 0.002]]
+    builtin = interphase.Material(**MICRO).run(s, increments=10).traction
+    assert np.array_equal(interphase.Material(**dict(MICRO, table="")).run(s, increments=10).traction, builtin)
+    interphase.Material(**dict(SIMPLIFIED, table="  "))
+    interphase.Material(**dict(SIMPLIFIED, rcurve_file="", growth_slip="", stiffness=""))
+    with pytest.raises(interphase.InterphaseError, match="rcurve = 'tabulated' needs the entry rcurve_file"):
+        interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated", rcurve_file=""))
+    case = (source_dir / "drivers" / "cases" / "micro" / "h1I.nml").read_text()
+    assert "&material" in case
+    (tmp_path / "h1I.txt").write_text((source_dir / "drivers" / "cases" / "h1I.txt").read_text())
+    case = case.replace("'../h1I.txt'", "'h1I.txt'").replace("\n&material\n", "\n&material\n  table = ''\n", 1)
+    assert "'h1I.txt'" in case and "table = ''" in case
+    (tmp_path / "blank.nml").write_text(case)
+    assert interphase.read_case(tmp_path / "blank.nml").material.table_path is None
 
 
 def test_an_rcurve_that_runs_out_stops_the_run(source_dir):

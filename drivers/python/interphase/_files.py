@@ -353,7 +353,7 @@ def read_case(path):
     base = os.path.dirname(os.path.abspath(path))
     entries = dict(groups["material"])
     for key in ("table", "rcurve_file"):
-        if key in entries:
+        if key in entries and entries[key].strip():     # ('': left out, as the driver reads it)
             entries[key] = os.path.join(base, entries[key])
     try:
         material = Material(**entries)

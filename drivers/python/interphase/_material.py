@@ -93,7 +93,10 @@ class Material:
         if unknown:
             raise TypeError("Material: unknown entries " + ", ".join(unknown) + " (the entries of "
                             "&material are " + ", ".join(_ENTRIES) + ")")
-        e = {k: v for k, v in entries.items() if v is not None}
+        # (None, or a text entry that is empty or blank, is an entry left out: a namelist cannot
+        # tell `table = ''` from no table, and interphase-point reads both alike)
+        e = {k: v for k, v in entries.items()
+             if v is not None and not (isinstance(v, str) and v.strip() == "")}
         model = str(e.get("model", "")).strip().lower()
         law = str(e.get("damage_law", "")).strip().lower()
         missing = [k for k in _REQUIRED if k not in e]
@@ -133,7 +136,10 @@ class Material:
             if "d0" not in e:
                 raise InterphaseError(st.STATUS_BAD_D0, "missing entry d0 (initial crack a0/b, needed "
                                       "by damage_law = 'fracture')")
-            rcurve = _keyword("rcurve", e.get("rcurve", "constant"),
+            if "rcurve" not in e:
+                raise InterphaseError(st.STATUS_BAD_RCURVE, "missing entry rcurve ('constant', 'equivalent' or "
+                                      "'tabulated', needed by damage_law = 'fracture')")
+            rcurve = _keyword("rcurve", e["rcurve"],
                               {"constant": RCURVE_CONSTANT, "equivalent": RCURVE_EQUIVALENT,
                                "tabulated": RCURVE_TABULATED}, st.STATUS_BAD_RCURVE)
             gc = [0.0, 0.0]
