@@ -15,7 +15,8 @@
 !> word in parentheses (a unit) is skipped. The names hold for the rows below the line, up to
 !> the next `# columns:` line: the segment that ends at a row is controlled as that row's names
 !> say. Without such a line every column is a separation. The line holds nothing before its
-!> `#`; a comment that starts `column:` or `columns :` (`columns_line_kind`) is refused.
+!> `#`; a comment that starts `column:` or `columns :`, or whose words name traction columns
+!> without the key (`# t s_T Sigma_N`; `columns_line_kind`), is refused.
 module interphase_driver_history
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
@@ -53,7 +54,7 @@ module interphase_driver_history
       'Sigma_T1', 'Sigma_T2', 'Sigma_N'], [3, 2])
 
    !> `columns_line_kind`'s answers.
-   integer, parameter :: PLAIN_COMMENT = 0, COLUMNS_LINE = 1, MISSPELLED_COLUMNS = 2
+   integer, parameter :: PLAIN_COMMENT = 0, COLUMNS_LINE = 1, MISSPELLED_COLUMNS = 2, NAMES_WITHOUT_KEY = 3
 
 contains
 
@@ -110,6 +111,12 @@ contains
             case (MISSPELLED_COLUMNS)
                message = where//'"#'//trim(line(comment + 1:))//'" looks like a "# columns:" line, but is not '// &
                   'one: write the key "columns:" (one word, the colon right after it), e.g. "# columns: t s_T Sigma_N"'
+               call close_text_file(unit)
+               return
+            case (NAMES_WITHOUT_KEY)
+               message = where//'"#'//trim(line(comment + 1:))//'" names traction columns, but is not a '// &
+                  '"# columns:" line, so every column would be read as a separation: write the key "columns:" '// &
+                  'first, e.g. "# columns: t s_T Sigma_N"'
                call close_text_file(unit)
                return
             case (COLUMNS_LINE)
@@ -203,7 +210,11 @@ contains
    !> What a comment (the text after '#') is: COLUMNS_LINE when it starts with `columns:` (any
    !> case, after blanks), MISSPELLED_COLUMNS when it starts with `column` or `columns` and then,
    !> after blanks, a colon (`column:`, `columns :`: meant as the key, and read as a plain
-   !> comment it would leave the columns as separations), else PLAIN_COMMENT.
+   !> comment it would leave the columns as separations), NAMES_WITHOUT_KEY when its words are
+   !> column names, at least one of them a traction's (`Sigma_`), after an optional word `column`
+   !> or `columns` and with words in parentheses (units) skipped (`# t s_T Sigma_N`,
+   !> `# columns t s_T Sigma_N`: meant to name the columns, and read as a plain comment it would
+   !> run the tractions as separations), else PLAIN_COMMENT.
    pure integer function columns_line_kind(comment)
       character(len=*), intent(in) :: comment     !! text after '#'
       character(len=*), parameter :: KEY = 'columns:', STEM = 'column'
@@ -212,6 +223,10 @@ contains
       ! (tabs read as blanks, as the data rows' words are split)
       text = to_lower(adjustl(tabs_as_blanks(comment)))
       columns_line_kind = PLAIN_COMMENT
+      if (names_tractions(text)) then
+         columns_line_kind = NAMES_WITHOUT_KEY
+         return
+      end if
       if (len(text) < len(STEM)) return
       if (text(:len(STEM)) /= STEM) return
       if (len(text) >= len(KEY)) then
@@ -231,6 +246,43 @@ contains
       if (i > len(text)) return
       if (text(i:i) == ':') columns_line_kind = MISSPELLED_COLUMNS
    end function columns_line_kind
+
+   !> True when the words of `text` (lower case, blanks for tabs) are column names, at least one
+   !> a traction's, after an optional first word `column` or `columns`; words in parentheses
+   !> are skipped (`columns_line_kind`).
+   pure logical function names_tractions(text)
+      character(len=*), intent(in) :: text
+      character(len=*), parameter :: NAMES(9) = [character(len=8) :: 't', 's_t', 's_n', 's_t1', 's_t2', &
+         'sigma_t', 'sigma_n', 'sigma_t1', 'sigma_t2']
+      character(len=len(text)) :: kept
+      integer, allocatable :: starts(:), ends(:)
+      integer :: i, depth, first
+      logical :: traction
+
+      names_tractions = .false.
+      kept = text
+      depth = 0
+      do i = 1, len(kept)
+         if (kept(i:i) == '(') depth = depth + 1
+         if (depth > 0) then
+            if (kept(i:i) == ')') depth = depth - 1
+            kept(i:i) = ' '
+         end if
+      end do
+      call split_words(kept, starts, ends)
+      if (size(starts) == 0) return
+      first = 1
+      if (kept(starts(1):ends(1)) == 'column' .or. kept(starts(1):ends(1)) == 'columns') first = 2
+      if (size(starts) < first + 1) return
+      traction = .false.
+      do i = first, size(starts)
+         if (ends(i) - starts(i) + 1 > len(NAMES)) return
+         if (.not. any(kept(starts(i):ends(i)) == NAMES)) return
+         traction = traction .or. kept(starts(i):ends(i)) == 'sigma_t' .or. kept(starts(i):ends(i)) == 'sigma_n' &
+            .or. kept(starts(i):ends(i)) == 'sigma_t1' .or. kept(starts(i):ends(i)) == 'sigma_t2'
+      end do
+      names_tractions = traction
+   end function names_tractions
 
    !> `text` with every tab a blank.
    pure function tabs_as_blanks(text) result(blanked)

@@ -401,6 +401,8 @@ def test_read_mixed_history(source_dir, tmp_path):
     # columns line behind a data row (the row was dropped with the comment)
     for text, line, match in [("# column: t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, 'looks like a "# columns:" line'),
                               ("#  Columns : t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, 'looks like a "# columns:" line'),
+                              ("# columns t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, "names traction columns, but is not"),
+                              ("0 0 0\n#\tt  s_T (mm)  SIGMA_N (MPa)\n1 0 1\n", 2, "names traction columns"),
                               ("0 0 0 # columns: t s_T Sigma_N\n1 0 1\n2 0 2\n", 1,
                                "holds nothing before the '#' \\(here '0 0 0'\\)")]:
         bad.write_text(text)
@@ -412,6 +414,7 @@ def test_read_mixed_history(source_dir, tmp_path):
         interphase.read_history(bad, control=True)
     # a plain comment that starts with the word stays a comment
     fine = tmp_path / "fine.txt"
-    fine.write_text("# column 2 is the shear separation\n0 0 0\n1 0.001 0\n")
+    fine.write_text("# column 2 is the shear separation\n# t s_T s_N\n# columns t s_T s_N\n"
+                    "# Sigma_N held at t = 1\n0 0 0\n1 0.001 0\n")
     t, v, c = interphase.read_history(fine, control=True)
     assert t.tolist() == [0, 1] and not c.any()

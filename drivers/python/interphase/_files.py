@@ -47,10 +47,10 @@ _NAMES = {3: (("s_T", "Sigma_T"), ("s_N", "Sigma_N")),
           4: (("s_T1", "Sigma_T1"), ("s_T2", "Sigma_T2"), ("s_N", "Sigma_N"))}
 
 
-def _column_names(text, where):
-    """The traction flags (file order: shear(s), normal) of a `# columns:` comment."""
+def _without_parentheses(text):
+    """`text` with every character from a '(' to its ')' (to the end, if unclosed) a blank."""
     depth, kept = 0, []
-    for ch in text.split(":", 1)[1]:
+    for ch in text:
         if ch == "(":
             depth += 1
         if depth > 0:
@@ -59,7 +59,12 @@ def _column_names(text, where):
             kept.append(" ")
         else:
             kept.append(ch)
-    words = "".join(kept).split()
+    return "".join(kept)
+
+
+def _column_names(text, where):
+    """The traction flags (file order: shear(s), normal) of a `# columns:` comment."""
+    words = _without_parentheses(text.split(":", 1)[1]).split()
     if len(words) not in (3, 4):
         raise ValueError(f'{where}: "# columns:" names {len(words)} columns; expected t and 2 (2-D) or 3 '
                          '(3-D) components, e.g. "# columns: t s_T Sigma_N"')
@@ -73,6 +78,21 @@ def _column_names(text, where):
                              f'{names[1]} (t, the shear component(s), then the normal one)')
         flags.append(word.lower() == names[1].lower())
     return len(words), flags
+
+
+_COLUMN_NAMES = ("t", "s_t", "s_n", "s_t1", "s_t2", "sigma_t", "sigma_n", "sigma_t1", "sigma_t2")
+
+
+def _names_tractions(comment):
+    """True when the words of a comment (lower case) are column names, at least one a traction's,
+    after an optional first word `column` or `columns`, words in parentheses skipped: meant to
+    name the columns (`# t s_T Sigma_N`), and read as a plain comment it would run the tractions
+    as separations (interphase_driver_history's columns_line_kind)."""
+    words = _without_parentheses(comment).split()
+    if words and words[0] in ("column", "columns"):
+        words = words[1:]
+    return (bool(words) and all(w in _COLUMN_NAMES for w in words)
+            and any(w.startswith("sigma_") for w in words))
 
 
 def read_history(path, control=False):
@@ -95,6 +115,10 @@ def read_history(path, control=False):
             raise ValueError(f'{where}: "#{comment.rstrip()}" looks like a "# columns:" line, but is not one: '
                              'write the key "columns:" (one word, the colon right after it), e.g. '
                              '"# columns: t s_T Sigma_N"')
+        if hash_ and _names_tractions(key):
+            raise ValueError(f'{where}: "#{comment.rstrip()}" names traction columns, but is not a "# columns:" '
+                             'line, so every column would be read as a separation: write the key "columns:" '
+                             'first, e.g. "# columns: t s_T Sigma_N"')
         if hash_ and key.startswith("columns:"):
             if head.strip():
                 raise ValueError(f'{where}: a "# columns:" line holds nothing before the \'#\' (here '
