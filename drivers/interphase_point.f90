@@ -157,7 +157,6 @@ contains
          '  cases to start from in share/interphase/cases.'
    end subroutine print_usage
 
-   !> Write the gnuplot script next to the CSV and run it, or say why not.
    !> The files the run writes (the CSV, CSV.part, the replay file, the plot script and the PNG)
    !> must not be the case file, its history, RVE table or R-curve file: a case whose output names
    !> one of them would replace it.
@@ -180,6 +179,7 @@ contains
          ', which is an input of this run: name another file')
    end subroutine refuse
 
+   !> Write the gnuplot script next to the CSV and run it, or say why not.
    subroutine plot_csv()
       character(len=:), allocatable :: directory, stem, script_name
 
