@@ -11,7 +11,8 @@
 !> viscous regularisation) or 9 (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for
 !> Abaqus/Standard with the consistent tangent (stiffness option 0) and a
 !> *DENSITY > 0 for Abaqus/Explicit. It reads keywords (a keyword line that ends in a comma
-!> continued on the next) and their data lines only (no *INCLUDE, no parts/assemblies
+!> continued on the next; keywords, parameters and values abbreviated as Abaqus allows) and their
+!> data lines only (no *INCLUDE, no parts/assemblies
 !> resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) and prints one line per cohesive section, and a note when the
 !> material needs a file loaded at start-up (a custom RVE table, a tabulated R-curve: the run
 !> then needs the environment variable and the start-of-analysis hook, which a deck cannot
@@ -39,6 +40,33 @@ program interphase_check_deck
    integer, parameter :: LINE_LEN = 1024
    !> Most constants of one *USER MATERIAL.
    integer, parameter :: MAX_CONSTANTS = 64
+   !> Length of a keyword's or a parameter's name (upper case, blanks removed).
+   integer, parameter :: NAME_LEN = 40
+
+   !> The keywords this check reads (upper case, blanks removed, as Abaqus compares them). Abaqus
+   !> takes a keyword, a parameter and most parameter values abbreviated to any start that no
+   !> other one shares (its input syntax rules): `resolve_name` reads such an abbreviation as the
+   !> name it abbreviates, against these and the Abaqus keywords beside them (KEYWORDS_BESIDE).
+   character(len=NAME_LEN), parameter :: KEYWORDS_READ(16) = [character(len=NAME_LEN) :: 'MATERIAL', &
+      'USERMATERIAL', 'DEPVAR', 'DENSITY', 'COHESIVESECTION', 'DYNAMIC', 'DYNAMICTEMPERATURE-DISPLACEMENT', &
+      'INCLUDE', 'STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION']
+   !> Abaqus keywords that begin as a keyword of KEYWORDS_READ does: an abbreviation that could be
+   !> one of them as well is ambiguous (Abaqus refuses it), not one this check reads. (The ones
+   !> known here; a start shared with a keyword missing from this list is read as the keyword of
+   !> KEYWORDS_READ, and Abaqus then refuses the deck itself.)
+   character(len=NAME_LEN), parameter :: KEYWORDS_BESIDE(*) = [character(len=NAME_LEN) :: 'MATRIXASSEMBLE', &
+      'MATRIXCHECK', 'MATRIXGENERATE', 'MATRIXINPUT', 'MATRIXOUTPUT', 'MASS', 'MASSDIFFUSION', 'MASSFLOWRATE', &
+      'MAPSOLUTION', 'USERDEFINEDFIELD', 'USERELEMENT', 'USEROUTPUTVARIABLES', 'USERPROPERTY', 'DESIGNGRADIENT', &
+      'DESIGNPARAMETER', 'DESIGNRESPONSE', 'DETONATIONPOINT', 'DEBOND', 'DEFORMATIONPLASTICITY', &
+      'COHESIVEBEHAVIOR', 'INCIDENTWAVE', 'INCIDENTWAVEINTERACTION', 'INCIDENTWAVEINTERACTIONPROPERTY', &
+      'INCIDENTWAVEPROPERTY', 'INCREMENTATIONOUTPUT', 'STEADYSTATECRITERIA', 'STEADYSTATEDETECTION', &
+      'STEADYSTATEDYNAMICS', 'STEADYSTATENATURALFREQUENCYEXTRACTION', 'STEADYSTATETRANSPORT', 'PARAMETER', &
+      'PARAMETERDEPENDENCE', 'PARAMETERSHAPEVARIATION', 'PARAMETERTABLE', 'PARAMETERTABLETYPE', &
+      'PARTICLEGENERATOR', 'PARTICLEGENERATORFLOW', 'PARTICLEGENERATORINLET', 'PARTICLEGENERATORMIXTURE', &
+      'ASSEMBLEDFASTENER', 'ASSEMBLEDFASTENERPROPERTY', 'NODEFILE', 'NODEOUTPUT', 'NODEPRINT', 'NODERESPONSE', &
+      'NODALENERGYRATE', 'NODALTHICKNESS', 'ELEMENTMATRIXOUTPUT', 'ELEMENTOPERATOROUTPUT', 'ELEMENTOUTPUT', &
+      'ELEMENTPROPERTIES', 'ELEMENTRECOVERYMATRIX', 'ELEMENTRESPONSE', 'ELFILE', 'ELPRINT', 'ELSET', &
+      'SOLUTIONTECHNIQUE', 'SOLVERCONTROLS', 'SHELLGENERALSECTION', 'SHELLTOSOLIDCOUPLING']
 
    !> What the deck says about one material.
    type :: material_type
@@ -132,6 +160,7 @@ contains
       logical :: have_held
       character(len=MESSAGE_LEN) :: message
       character(len=80) :: keyword, field, repeated
+      character(len=:), allocatable :: ambiguous     !! an ambiguous abbreviation's reading, or ''
       character(len=80) :: keyword_text        !! the keyword as the deck writes it (for messages)
       character(len=512) :: bad_text           !! a data field that is not a number, as reported
       character(len=LINE_LEN) :: bad_item      !! that field
@@ -190,16 +219,28 @@ contains
                end if
                line = trim(line)//' '//trim(held)
             end do
-            keyword = upper_compact(before_comma(line(2:)))
             keyword_text = adjustl(before_comma(line(2:)))
+            ! the keyword, an abbreviation read as the keyword it abbreviates
+            keyword = resolve_name(upper_compact(before_comma(line(2:))), [KEYWORDS_READ, KEYWORDS_BESIDE], ambiguous, &
+               '*')
+            if (len(ambiguous) > 0) then
+               call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' could be '// &
+                  ambiguous//': Abaqus refuses an abbreviation that is not unique; spell the keyword out', nfail)
+            end if
             data_lines = 0
+            ! its parameters, abbreviations read as the names they abbreviate
+            call keyword_parameters(line, keyword, parameter_names, parameter_values, repeated, ambiguous)
+            if (len(ambiguous) > 0) then
+               call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//': '//ambiguous// &
+                  ': Abaqus refuses an abbreviation that is not unique; spell the parameter out', nfail)
+            end if
             ! *USER MATERIAL, TYPE=THERMAL is a UMATHT's (heat transfer), not interphase's: its
             ! constants are neither decoded nor counted as the material's *USER MATERIAL
             if (trim(keyword) == 'USERMATERIAL') then
-               if (upper_compact(parameter_value(line, 'TYPE')) == 'THERMAL') keyword = 'USERMATERIAL,THERMAL'
+               if (parameter_choice(parameter_names, parameter_values, 'TYPE', &
+                  [character(len=NAME_LEN) :: 'MECHANICAL', 'THERMAL']) == 'THERMAL') keyword = 'USERMATERIAL,THERMAL'
             end if
             ! a parameter given twice on a keyword line: which one counts is not for us to guess
-            call keyword_parameters(line, parameter_names, parameter_values, repeated)
             if (len_trim(repeated) > 0) then
                call record_failure(path//':'//int_to_string(lineno)//': *'//trim(before_comma(line(2:)))//': parameter '// &
                   trim(repeated)//' given twice: "'//clip_text(trim(line))//'"', nfail)
@@ -207,13 +248,14 @@ contains
             select case (trim(keyword))
             case ('MATERIAL')
                do k = 1, size(materials)
-                  if (materials(k)%name == upper_compact(parameter_value(line, 'NAME'))) then
+                  if (materials(k)%name == upper_compact(parameter_value(parameter_names, parameter_values, 'NAME'))) then
                      call record_failure(path//':'//int_to_string(lineno)//': *MATERIAL, NAME='// &
                         trim(materials(k)%name)//' defined a second time (first at line '// &
                         int_to_string(materials(k)%line)//')', nfail)
                   end if
                end do
-               materials = [materials, material_type(name=upper_compact(parameter_value(line, 'NAME')), line=lineno, &
+               materials = [materials, material_type(name=upper_compact(parameter_value(parameter_names, &
+                  parameter_values, 'NAME')), line=lineno, &
                   options_seen=[character(len=16) ::])]
                current = size(materials)
             case ('USERMATERIAL', 'DEPVAR', 'DENSITY')
@@ -229,13 +271,13 @@ contains
             select case (trim(keyword))
             case ('INCLUDE')
                write (output_unit, '(a)') path//':'//int_to_string(lineno)//': note: *INCLUDE, INPUT='// &
-                  trim(parameter_value(line, 'INPUT'))//' is not read: what it holds is not checked '// &
+                  parameter_value(parameter_names, parameter_values, 'INPUT')//' is not read: what it holds is not checked '// &
                   '(run interphase-check-deck on it too)'
             case ('USERMATERIAL')
                if (current > 0) then
                   materials(current)%user_line = lineno
-                  materials(current)%unsymm = has_parameter(line, 'UNSYMM')
-                  field = parameter_value(line, 'CONSTANTS')
+                  materials(current)%unsymm = any(parameter_names == 'UNSYMM')
+                  field = parameter_value(parameter_names, parameter_values, 'CONSTANTS')
                   materials(current)%constants_text = field
                   ! a whole number: every character a digit (-1, reported later, otherwise)
                   materials(current)%nconstants = -1
@@ -248,12 +290,15 @@ contains
                end if
             case ('COHESIVESECTION')
                sections = [sections, section_type(line=lineno, &
-                  elset=upper_compact(parameter_value(line, 'ELSET')), &
-                  material=upper_compact(parameter_value(line, 'MATERIAL')), &
-                  response=upper_compact(parameter_value(line, 'RESPONSE')), &
-                  thickness_mode=upper_compact(parameter_value(line, 'THICKNESS')))]
-            case ('DYNAMIC')
-               if (has_parameter(line, 'EXPLICIT')) explicit = .true.
+                  elset=upper_compact(parameter_value(parameter_names, parameter_values, 'ELSET')), &
+                  material=upper_compact(parameter_value(parameter_names, parameter_values, 'MATERIAL')), &
+                  response=parameter_choice(parameter_names, parameter_values, 'RESPONSE', &
+                     [character(len=NAME_LEN) :: 'TRACTIONSEPARATION', 'CONTINUUM', 'GASKET']), &
+                  thickness_mode=parameter_choice(parameter_names, parameter_values, 'THICKNESS', &
+                     [character(len=NAME_LEN) :: 'GEOMETRY', 'SPECIFIED']))]
+            case ('DYNAMIC', 'DYNAMICTEMPERATURE-DISPLACEMENT')
+               ! (an explicit dynamic step, with or without the temperatures: Abaqus/Explicit)
+               if (any(parameter_names == 'EXPLICIT')) explicit = .true.
             case ('STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION')
                current = 0
             end select
@@ -571,17 +616,24 @@ contains
    end function upper_compact
 
    !> The parameters of a keyword line, "*KEYWORD, NAME=value, FLAG, ...": their names (upper
-   !> case, blanks removed, as Abaqus compares them), their values as written ('' for a flag)
-   !> and the first name given twice ('' when none).
-   subroutine keyword_parameters(line, names, values, repeated)
+   !> case, blanks removed, as Abaqus compares them; an abbreviation of one of `keyword`'s
+   !> parameters read as the parameter, `parameters_of`), their values as written ('' for a flag),
+   !> the first name given twice ('' when none) and an ambiguous abbreviation's reading ('' when
+   !> none: 'E could be ELEMENT BY ELEMENT or EXPLICIT').
+   subroutine keyword_parameters(line, keyword, names, values, repeated, ambiguous)
       character(len=*), intent(in) :: line
+      character(len=*), intent(in) :: keyword          !! the keyword, resolved
       character(len=80), allocatable, intent(out) :: names(:)
       character(len=len(line)), allocatable, intent(out) :: values(:)
       character(len=80), intent(out) :: repeated
+      character(len=:), allocatable, intent(out) :: ambiguous
       character(len=len(line)) :: rest, item
+      character(len=80) :: name
+      character(len=:), allocatable :: readings
       integer :: i, eq
       allocate (names(0), values(0))
       repeated = ''
+      ambiguous = ''
       rest = line
       i = index(rest, ',')
       do while (i > 0)
@@ -595,23 +647,89 @@ contains
          eq = index(item, '=')
          if (eq == 0) eq = len_trim(item) + 1
          if (len_trim(item(1:eq - 1)) == 0) cycle
-         if (len_trim(repeated) == 0 .and. any(names == upper_compact(item(1:eq - 1)))) &
-            repeated = upper_compact(item(1:eq - 1))
-         names = [character(len=80) :: names, upper_compact(item(1:eq - 1))]
+         name = resolve_name(upper_compact(item(1:eq - 1)), parameters_of(keyword), readings)
+         if (len(readings) > 0 .and. len(ambiguous) == 0) &
+            ambiguous = trim(upper_compact(item(1:eq - 1)))//' could be '//readings
+         if (len_trim(repeated) == 0 .and. any(names == name)) repeated = name
+         names = [character(len=80) :: names, name]
          values = [character(len=len(line)) :: values, adjustl(item(min(eq + 1, len(item) + 1):))]
       end do
    end subroutine keyword_parameters
 
-   !> The value of parameter `name` on a keyword line ('' when absent; the first when repeated).
-   function parameter_value(line, name) result(value)
-      character(len=*), intent(in) :: line, name
+   !> The parameters of a keyword of KEYWORDS_READ that this check reads, with the others of the
+   !> keyword that begin as they do (Abaqus Keywords Guide), against which an abbreviation is read.
+   pure function parameters_of(keyword) result(names)
+      character(len=*), intent(in) :: keyword          !! resolved
+      character(len=NAME_LEN), allocatable :: names(:)
+      select case (trim(keyword))
+      case ('MATERIAL')
+         names = [character(len=NAME_LEN) :: 'NAME', 'RTEMP', 'SRATE']
+      case ('USERMATERIAL')
+         names = [character(len=NAME_LEN) :: 'CONSTANTS', 'HYBRIDFORMULATION', 'TYPE', 'UNSYMM']
+      case ('COHESIVESECTION')
+         names = [character(len=NAME_LEN) :: 'CONTROLS', 'ELSET', 'MATERIAL', 'ORIENTATION', 'RESPONSE', &
+            'STACKDIRECTION', 'THICKNESS']
+      case ('DYNAMIC', 'DYNAMICTEMPERATURE-DISPLACEMENT')
+         names = [character(len=NAME_LEN) :: 'ALLSDTOL', 'ALPHA', 'APPLICATION', 'DIRECT', 'ELEMENTBYELEMENT', &
+            'EXPLICIT', 'FIXEDTIMEINCREMENTATION', 'HAFTOL', 'HALFINC', 'IMPROVEDDTMETHOD', 'INITIAL', 'NOHAF', &
+            'SCALEFACTOR']
+      case ('INCLUDE')
+         names = [character(len=NAME_LEN) :: 'INPUT', 'PASSWORD']
+      case default
+         allocate (names(0))
+      end select
+   end function parameters_of
+
+   !> The name of `known` that `word` (upper case, blanks removed) is, or abbreviates: `word`
+   !> itself when it is one of them, else the only one it is the start of (Abaqus' abbreviation
+   !> rule); `word` unchanged when it starts none. When it starts several, `ambiguous` lists them
+   !> ('A, B or C', each name after `mark` when given) and `word` is returned unchanged; ''
+   !> otherwise.
+   function resolve_name(word, known, ambiguous, mark) result(name)
+      character(len=*), intent(in) :: word
+      character(len=*), intent(in) :: known(:)
+      character(len=:), allocatable, intent(out) :: ambiguous
+      character(len=*), intent(in), optional :: mark   !! written before each name listed ('*')
+      character(len=80) :: name
+      character(len=:), allocatable :: before
+      integer :: k, n, found, m
+      before = ''
+      if (present(mark)) before = mark
+      name = word
+      ambiguous = ''
+      n = len_trim(word)
+      if (n == 0) return
+      if (any(known == word)) return
+      found = 0
+      m = 0
+      do k = 1, size(known)
+         if (len_trim(known(k)) > n) then
+            if (known(k)(1:n) == word(1:n)) then
+               found = found + 1
+               m = k
+               if (found == 1) then
+                  ambiguous = before//trim(known(k))
+               else
+                  ambiguous = ambiguous//', '//before//trim(known(k))
+               end if
+            end if
+         end if
+      end do
+      if (found == 1) then
+         name = known(m)
+         ambiguous = ''
+      else if (found > 1) then
+         k = index(ambiguous, ', ', back=.true.)
+         ambiguous = ambiguous(:k - 1)//' or '//ambiguous(k + 2:)
+      end if
+   end function resolve_name
+
+   !> The value of parameter `name` as written ('' when absent; the first when repeated).
+   pure function parameter_value(names, values, name) result(value)
+      character(len=*), intent(in) :: names(:), values(:), name
       character(len=:), allocatable :: value
-      character(len=80), allocatable :: names(:)
-      character(len=len(line)), allocatable :: values(:)
-      character(len=80) :: repeated
       integer :: i
       value = ''
-      call keyword_parameters(line, names, values, repeated)
       do i = 1, size(names)
          if (trim(names(i)) == name) then
             value = trim(values(i))
@@ -620,14 +738,16 @@ contains
       end do
    end function parameter_value
 
-   !> The keyword line has the parameter `name` (with or without a value).
-   logical function has_parameter(line, name)
-      character(len=*), intent(in) :: line, name
-      character(len=len(line)) :: compact
-      compact = upper_compact(line)
-      has_parameter = index(compact, ','//name//',') > 0 .or. index(compact, ','//name//'=') > 0 &
-         .or. compact(max(1, len_trim(compact) - len(name)):len_trim(compact)) == ','//name
-   end function has_parameter
+   !> The value of parameter `name` among `choices` (upper case, blanks removed), an
+   !> abbreviation read as the choice it abbreviates; an unknown or ambiguous value as written
+   !> (upper case, blanks removed), '' when the parameter is absent.
+   function parameter_choice(names, values, name, choices) result(choice)
+      character(len=*), intent(in) :: names(:), values(:), name
+      character(len=*), intent(in) :: choices(:)
+      character(len=80) :: choice
+      character(len=:), allocatable :: ambiguous
+      choice = resolve_name(upper_compact(parameter_value(names, values, name)), choices, ambiguous)
+   end function parameter_choice
 
    !> The numbers of a comma-separated data line (empty fields skipped, text fields stop).
    subroutine parse_numbers(line, values, n, bad_field, bad_item, why)
