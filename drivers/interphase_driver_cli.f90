@@ -9,7 +9,8 @@ module interphase_driver_cli
    implicit none
    private
    public :: run_arguments_type, parse_run_arguments, get_argument, make_directory, gnuplot_available, &
-      run_gnuplot, exit_program, rename_file, remove_file, file_exists, print_version
+      run_gnuplot, exit_program, rename_file, remove_file, file_exists, print_version, is_special_file, &
+      refuse_special_output
 
    interface
       !> C's exit(): ends the program with a status and no "STOP" line or backtrace.
@@ -22,6 +23,11 @@ module interphase_driver_cli
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: from(*), to(*)
       end function c_rename
+      !> 1 when the path names a file that is not a regular one (interphase_driver_posix.c).
+      integer(c_int) function c_is_special_file(path) bind(c, name='interphase_driver_is_special_file')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+      end function c_is_special_file
       !> C's remove().
       integer(c_int) function c_remove(path) bind(c, name='remove')
          import :: c_int, c_char
@@ -181,15 +187,40 @@ contains
       call c_exit(int(status, c_int))
    end subroutine exit_program
 
-   !> Rename (move) a file, replacing `to` if it exists.
+   !> Rename (move) a file, replacing `to` if it is a regular file or does not exist; a `to` that
+   !> is not a regular file (a device such as /dev/null, a directory, a pipe) is not replaced.
    subroutine rename_file(from, to, ok, message)
       character(len=*), intent(in) :: from, to    !! paths
       logical, intent(out) :: ok
       character(len=:), allocatable, intent(out) :: message
-      ok = c_rename(from//c_null_char, to//c_null_char) == 0
       message = ''
+      ok = .not. is_special_file(to)
+      if (.not. ok) then
+         message = 'cannot rename '//from//' to '//to//': '//to//' is not a regular file'
+         return
+      end if
+      ok = c_rename(from//c_null_char, to//c_null_char) == 0
       if (.not. ok) message = 'cannot rename '//from//' to '//to
    end subroutine rename_file
+
+   !> Whether `path` names an existing file that is not a regular file: a device (/dev/null), a
+   !> directory, a named pipe or a socket (symbolic links followed).
+   logical function is_special_file(path)
+      character(len=*), intent(in) :: path
+      is_special_file = c_is_special_file(path//c_null_char) /= 0
+   end function is_special_file
+
+   !> The message (or '') that refuses an output file `path` that is not a regular file: the
+   !> drivers write CSV.part and rename it over the output, which would replace a device node
+   !> (as root, /dev/null itself) with a regular file. `what` names the output ('output = ...').
+   function refuse_special_output(path, what) result(message)
+      character(len=*), intent(in) :: path, what
+      character(len=:), allocatable :: message
+      message = ''
+      if (is_special_file(path)) message = what//' would write '//path//', which is not a regular file '// &
+         '(a device such as /dev/null, a directory or a pipe): the CSV is written to CSV.part and renamed '// &
+         'over it, which would replace it; name a file'
+   end function refuse_special_output
 
    !> Remove a file if it exists (nothing happens otherwise).
    subroutine remove_file(path)

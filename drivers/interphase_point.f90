@@ -16,7 +16,7 @@ program interphase_point
    use interphase_kinds, only: dp
    use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary, writes_an_input
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
-      gnuplot_available, run_gnuplot, exit_program, rename_file, print_version
+      gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output
    use interphase_driver_history, only: history_type, read_history
    use interphase_driver_output, only: csv_header, write_plot_script
    use interphase_driver_replay, only: replay_history, replay_report_type
@@ -171,12 +171,15 @@ contains
       call refuse(join_path(directory, stem//'.png'))
    end subroutine refuse_overwriting_inputs
 
-   !> Stop when `written` is one of the run's input files.
+   !> Stop when `written` is one of the run's input files, or not a regular file.
    subroutine refuse(written)
       character(len=*), intent(in) :: written
+      character(len=:), allocatable :: refusal
       if (writes_an_input(run, written)) &
          call fail(case_path//': &loading: output = '''//run%output//''' would write '//written// &
          ', which is an input of this run: name another file')
+      refusal = refuse_special_output(written, case_path//': &loading: output = '''//run%output//'''')
+      if (len(refusal) > 0) call fail(refusal)
    end subroutine refuse
 
    !> Write the gnuplot script next to the CSV and run it, or say why not.

@@ -163,7 +163,7 @@ contains
          call finish()
          return
       else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
-         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(90), '; the crack grows beyond it from D = ', &
             real_text(old%d, 6), ' at separation (mm) ', separation(1:n)
          call finish()
          return
@@ -296,7 +296,7 @@ contains
                   message = 'the material has viscous regularisation (its viscosity option): pass the times'
                end if
             else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
-               write (message, '(a,i0,a,a,a,g0.6,a,3es12.4)', iostat=ios) 'row ', row - 1, ': ', rcurve_coverage(), &
+               write (message, '(a,i0,a,a,a,g0.6,a,3es12.4)', iostat=ios) 'row ', row - 1, ': ', rcurve_coverage(64), &
                   '; the crack grows beyond it from D = ', old%d, ' at separation (mm) ', s(1:n)
             else
                write (message, '(a,i0,a,3es12.4)') 'row ', row - 1, ': update failed at separation (mm) ', s(1:n)
@@ -519,7 +519,7 @@ contains
          fatal = .true.
          return
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
-         write (law%detail, '(a,a,g0.6,a,3es12.4)', iostat=ios) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+         write (law%detail, '(a,a,g0.6,a,3es12.4)', iostat=ios) rcurve_coverage(90), '; the crack grows beyond it from D = ', &
             old%d, ' at separation (mm) ', s(1:n)
          fatal = .true.
          return

@@ -147,7 +147,9 @@ contains
          character(len=*), intent(in) :: what
          integer :: ios
          status = code
-         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(source), ':', file%line_number, ': ', what
+         ! (the path shortened so that the whole reason fits in the message)
+         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(source, MESSAGE_LEN - 16 - len(what)), ':', &
+            file%line_number, ': ', what
          call close_text_file(file)
       end subroutine fail
 
@@ -185,14 +187,17 @@ contains
       rcurve_covers = d >= rcurve_knots(1) .and. d <= rcurve_knots(size(rcurve_knots))
    end function rcurve_covers
 
-   !> For messages: 'R-curve <file> covers D from <lo> to <hi>' (the file as tried).
-   pure function rcurve_coverage() result(text)
+   !> For messages: 'R-curve <file> covers D from <lo> to <hi>' (the file as tried, shortened to
+   !> `room` characters when given, else to message_path's length: what the caller writes after
+   !> it must fit in its message too).
+   pure function rcurve_coverage(room) result(text)
+      integer, intent(in), optional :: room     !! characters the file name may take
       character(len=:), allocatable :: text
       if (.not. allocated(rcurve_knots)) then
          text = 'no R-curve loaded'
          return
       end if
-      text = 'R-curve '//message_path(loaded_tried)//' covers D from '//real_text(rcurve_knots(1), 6)// &
+      text = 'R-curve '//message_path(loaded_tried, room)//' covers D from '//real_text(rcurve_knots(1), 6)// &
          ' to '//real_text(rcurve_knots(size(rcurve_knots)), 6)
    end function rcurve_coverage
 

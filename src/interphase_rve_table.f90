@@ -394,7 +394,9 @@ contains
          character(len=*), intent(in) :: what
          integer :: ios
          status = code
-         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(table%source), ':', file%line_number, ': ', what
+         ! (the path shortened so that the whole reason fits in the message)
+         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(table%source, MESSAGE_LEN - 16 - len(what)), ':', &
+            file%line_number, ': ', what
          call close_text_file(file)
       end subroutine fail
 
@@ -404,7 +406,7 @@ contains
          character(len=*), intent(in) :: what
          integer :: ios
          status = code
-         write (message, '(a,a,a)', iostat=ios) message_path(table%source), ': ', what
+         write (message, '(a,a,a)', iostat=ios) message_path(table%source, MESSAGE_LEN - 4 - len(what)), ': ', what
          call close_text_file(file)
       end subroutine fail_file
 

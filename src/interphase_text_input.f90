@@ -65,8 +65,9 @@ contains
       type(text_file_type), intent(out) :: file
       logical, intent(out) :: ok
       character(len=*), intent(out) :: message        !! reason when not ok
-      integer :: ios
-      character(len=256) :: iomsg
+      integer :: ios, k
+      ! (room for a run-time library's message that repeats the path: the reason comes after it)
+      character(len=len(path) + 256) :: iomsg
       ok = .false.
       message = ''
       iomsg = ''
@@ -81,6 +82,13 @@ contains
          access='stream', iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
          file%unit = -1
+         ! the reason alone when the message names the file ("Cannot open file 'PATH': reason"):
+         ! the caller names it, and shortens it for its message; the reason must survive that
+         k = index(iomsg, "'"//trim(path)//"':", back=.true.)
+         if (k > 0) then
+            k = k + len_trim(path) + 3
+            if (len_trim(iomsg(k:)) > 0) iomsg = adjustl(iomsg(k:))
+         end if
          message = 'cannot open: '//trim(iomsg)
          return
       end if

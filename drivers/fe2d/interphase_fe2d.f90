@@ -18,7 +18,7 @@ program interphase_fe2d
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
    use interphase_driver_case, only: load_start_up_data, material_summary
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
-      gnuplot_available, run_gnuplot, exit_program, print_version, rename_file
+      gnuplot_available, run_gnuplot, exit_program, print_version, rename_file, refuse_special_output
    use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
    use interphase_fe2d_solver, only: fe2d_options_type, fe2d_result_type, run_analysis, &
       CSV_COLUMNS, COL_SHEAR, COL_NORMAL, COL_STEP
@@ -61,6 +61,11 @@ program interphase_fe2d
    write (output_unit, '(a)') run%name//': joint: '//material_summary(run%props)
 
    csv_path = join_path(output_dir, run%output)
+   ! (before the run: an output that is a device would be replaced by the rename at its end)
+   message = refuse_special_output(csv_path, case_path//': &loading: output = '''//run%output//'''')
+   if (len(message) == 0) message = refuse_special_output(csv_path//'.part', case_path//': &loading: output = '''// &
+      run%output//'''')
+   if (len(message) > 0) call fail(message)
    call make_directory(directory_of(csv_path), ok, message)
    if (.not. ok) call fail(message)
    log_path = join_path(directory_of(csv_path), stem_of(csv_path)//'.log')

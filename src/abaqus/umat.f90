@@ -151,7 +151,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          exit update
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
          ! the R-curve file does not reach the damage this point needs: a setup error
-         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(), '; the crack grows beyond it from D = ', &
+         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(90), '; the crack grows beyond it from D = ', &
             real_text(old%d, 6), ' at separation (mm) ', s(1:nsep)
          exit update
       else if (status /= STATUS_OK) then

@@ -1,0 +1,35 @@
+# An output that is not a regular file (a named pipe, a directory; a device such as /dev/null
+# alike) is refused before the run, and left as it was: the drivers write CSV.part and rename it
+# over the output, which would replace it (as root, /dev/null itself became a regular file).
+#   cmake -DPROGRAM=<interphase-point or -fe2d> -DCASE=<case> -DOUTPUT=<its output name> -DWORK=<dir>
+#         -P special_output.cmake
+foreach(kind IN ITEMS pipe directory)
+  file(REMOVE_RECURSE ${WORK})
+  file(MAKE_DIRECTORY ${WORK})
+  if(kind STREQUAL "pipe")
+    execute_process(COMMAND mkfifo ${WORK}/${OUTPUT} RESULT_VARIABLE status)
+    if(NOT status EQUAL 0)
+      message(FATAL_ERROR "mkfifo failed: ${status}")
+    endif()
+  else()
+    file(MAKE_DIRECTORY ${WORK}/${OUTPUT})
+  endif()
+  execute_process(COMMAND ${PROGRAM} ${CASE} --no-plot --output-dir ${WORK} RESULT_VARIABLE status
+    OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+  message(STATUS "${kind}: exit status ${status}\n${out}${err}")
+  if(NOT status EQUAL 1)
+    message(FATAL_ERROR "${kind}: expected exit status 1, got ${status}")
+  endif()
+  if(NOT "${err}" MATCHES "output = '${OUTPUT}' would write .*${OUTPUT}, which is not a regular file")
+    message(FATAL_ERROR "${kind}: the message does not name the output")
+  endif()
+  if(kind STREQUAL "pipe")
+    execute_process(COMMAND test -p ${WORK}/${OUTPUT} RESULT_VARIABLE status)
+  else()
+    execute_process(COMMAND test -d ${WORK}/${OUTPUT} RESULT_VARIABLE status)
+  endif()
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${kind}: ${WORK}/${OUTPUT} was replaced")
+  endif()
+endforeach()
+message(STATUS "ok: refused, the pipe and the directory left as they were")
