@@ -168,7 +168,18 @@ contains
                first = first + verify(line(first + 1:)//'x', ' '//achar(9))
                if (have_columns) then
                   ! comments after the header; a second "# columns:" line is refused (one of the two
-                  ! would be ignored)
+                  ! would be ignored), and so is a key this reader reads, or one spelt like it: the
+                  ! header ends at "# columns:", so it would be ignored
+                  eq = index(line(first:), ' = ')
+                  if (eq >= 2) then
+                     if (len(near_reader_key(line(first:first + eq - 2))) > 0) then
+                        write (text, '(a,i0,a)') 'key "'//clip_text(trim(line(first:first + eq - 2)))// &
+                           '" after the "# columns:" line (line ', columns_line, &
+                           '), where the header has ended and it would not be read: move it above that line'
+                        call fail(STATUS_TABLE_BAD_HEADER, trim(text))
+                        return
+                     end if
+                  end if
                   if (first + 7 <= len(line)) then
                      if (line(first:first + 7) == 'columns:') then
                         write (text, '(a,i0,a)') 'a second "# columns:" line (the first on line ', columns_line, &
@@ -316,6 +327,15 @@ contains
                         clip_text(trim(adjustl(line(eq + 3:))))//'"')
                      return
                   end select
+               case default
+                  ! a key this reader does not read is provenance; one spelt like a key it reads is a
+                  ! mistake that would drop the setting in silence
+                  if (len(near_reader_key(line(first:eq - 1))) > 0) then
+                     call fail(STATUS_TABLE_BAD_HEADER, 'unknown key "'//clip_text(trim(line(first:eq - 1)))// &
+                        '": is it "'//near_reader_key(line(first:eq - 1))//'"? (the keys are case-sensitive; '// &
+                        'tables/README.md)')
+                     return
+                  end if
                end select
                cycle read_lines
             end if
@@ -471,6 +491,79 @@ contains
       end subroutine header_real
 
    end subroutine read_rve_table
+
+   !> The header key this reader reads that `key` is or looks like a misspelling of ('' when none):
+   !> the same after case and the characters '_', '-' and blanks are ignored, or, for the keys of
+   !> six characters or more, at most two edits (Levenshtein distance) away; the provenance keys of
+   !> tables/README.md are never taken for one.
+   pure function near_reader_key(key) result(near)
+      character(len=*), intent(in) :: key
+      character(len=:), allocatable :: near
+      character(len=*), parameter :: READ_KEYS(13) = [character(len=22) :: 'b', 'h', 'a_Tf_limit', 'E_m', &
+         'nu_m', 'E_b', 'nu_b', 'h_m', 'h_b', 'Chat_TT', 'Chat_NN', 'format', 'interpolation_variable']
+      character(len=*), parameter :: PROVENANCE_KEYS(27) = [character(len=21) :: 'title', 'command', &
+         'params_file', 'script', 'script_sha256', 'freefem_version', 'date', 'units', 'model', 'crack_jump', &
+         'element', 'mesh', 'hmax', 'ftip', 'htipmax', 'grow', 'fseg', 'huni', 'refine', &
+         'smallest_tip_spacing', 'unknowns_min', 'unknowns_max', 'n_a', 'a0_row', 'crack_means', 'I_fNT', &
+         'wall_time_s']
+      integer :: k
+      near = ''
+      if (len_trim(key) == 0) return
+      if (any(PROVENANCE_KEYS == trim(key))) return
+      do k = 1, size(READ_KEYS)
+         if (trim(key) == trim(READ_KEYS(k)) .or. squeezed(key) == squeezed(READ_KEYS(k))) then
+            near = trim(READ_KEYS(k))
+            return
+         end if
+      end do
+      do k = 1, size(READ_KEYS)
+         if (len_trim(READ_KEYS(k)) >= 6) then
+            if (edit_distance(lower(trim(key)), lower(trim(READ_KEYS(k)))) <= 2) then
+               near = trim(READ_KEYS(k))
+               return
+            end if
+         end if
+      end do
+   contains
+      pure function lower(s) result(t)
+         character(len=*), intent(in) :: s
+         character(len=len(s)) :: t
+         integer :: i, c
+         t = s
+         do i = 1, len(s)
+            c = iachar(s(i:i))
+            if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
+         end do
+      end function lower
+      pure function squeezed(s) result(t)
+         character(len=*), intent(in) :: s
+         character(len=:), allocatable :: t
+         character(len=len(s)) :: low
+         integer :: i
+         low = lower(s)
+         t = ''
+         do i = 1, len_trim(low)
+            if (index('_- '//achar(9), low(i:i)) == 0) t = t//low(i:i)
+         end do
+      end function squeezed
+      pure integer function edit_distance(s, t) result(d)
+         character(len=*), intent(in) :: s, t
+         integer :: row(0:len(t)), diagonal, above, i, j
+         do j = 0, len(t)
+            row(j) = j
+         end do
+         do i = 1, len(s)
+            diagonal = row(0)
+            row(0) = i
+            do j = 1, len(t)
+               above = row(j)
+               row(j) = min(row(j) + 1, row(j - 1) + 1, diagonal + merge(0, 1, s(i:i) == t(j:j)))
+               diagonal = above
+            end do
+         end do
+         d = row(len(t))
+      end function edit_distance
+   end function near_reader_key
 
    !> Check a table against the exact identities of docs/rve.md, to IDENTITY_TOL relative
    !> (scales: C(0) for stiffnesses and crack stresses, h for jumps, C_TT(0)/h per unit slip):
