@@ -54,7 +54,8 @@ module interphase_driver_history
       'Sigma_T1', 'Sigma_T2', 'Sigma_N'], [3, 2])
 
    !> `columns_line_kind`'s answers.
-   integer, parameter :: PLAIN_COMMENT = 0, COLUMNS_LINE = 1, MISSPELLED_COLUMNS = 2, NAMES_WITHOUT_KEY = 3
+   integer, parameter :: PLAIN_COMMENT = 0, COLUMNS_LINE = 1, MISSPELLED_COLUMNS = 2, NAMES_WITHOUT_KEY = 3, &
+      NAMES_OUT_OF_ORDER = 4
 
 contains
 
@@ -111,6 +112,12 @@ contains
             case (MISSPELLED_COLUMNS)
                message = where//'"#'//trim(line(comment + 1:))//'" looks like a "# columns:" line, but is not '// &
                   'one: write the key "columns:" (one word, the colon right after it), e.g. "# columns: t s_T Sigma_N"'
+               call close_text_file(unit)
+               return
+            case (NAMES_OUT_OF_ORDER)
+               message = where//'"#'//trim(line(comment + 1:))//'" names the columns in another order than '// &
+                  'the rows are read (t, the shear component(s), then the normal one: t s_T s_N or t s_T1 s_T2 '// &
+                  's_N): reorder the columns and the comment'
                call close_text_file(unit)
                return
             case (NAMES_WITHOUT_KEY)
@@ -222,11 +229,8 @@ contains
       integer :: i
       ! (tabs read as blanks, as the data rows' words are split)
       text = to_lower(adjustl(tabs_as_blanks(comment)))
-      columns_line_kind = PLAIN_COMMENT
-      if (names_tractions(text)) then
-         columns_line_kind = NAMES_WITHOUT_KEY
-         return
-      end if
+      columns_line_kind = column_words_kind(text)
+      if (columns_line_kind /= PLAIN_COMMENT) return
       if (len(text) < len(STEM)) return
       if (text(:len(STEM)) /= STEM) return
       if (len(text) >= len(KEY)) then
@@ -247,19 +251,22 @@ contains
       if (text(i:i) == ':') columns_line_kind = MISSPELLED_COLUMNS
    end function columns_line_kind
 
-   !> True when the words of `text` (lower case, blanks for tabs) are column names, at least one
-   !> a traction's, after an optional first word `column` or `columns`; words in parentheses
-   !> are skipped (`columns_line_kind`).
-   pure logical function names_tractions(text)
+   !> What a comment is when its words (`text`: lower case, blanks for tabs) are two or more
+   !> column names, after an optional first word `column` or `columns`, words in parentheses
+   !> skipped: NAMES_WITHOUT_KEY when one of them is a traction's, NAMES_OUT_OF_ORDER when they
+   !> are not in the rows' order (t first, when named, then s_t s_n or s_t1 s_t2 s_n); else
+   !> PLAIN_COMMENT (`columns_line_kind`).
+   pure integer function column_words_kind(text) result(kind)
       character(len=*), intent(in) :: text
       character(len=*), parameter :: NAMES(9) = [character(len=8) :: 't', 's_t', 's_n', 's_t1', 's_t2', &
          'sigma_t', 'sigma_n', 'sigma_t1', 'sigma_t2']
       character(len=len(text)) :: kept
       integer, allocatable :: starts(:), ends(:)
-      integer :: i, depth, first
+      integer :: i, depth, first, nnames
       logical :: traction
+      character(len=8) :: order(4)
 
-      names_tractions = .false.
+      kind = PLAIN_COMMENT
       kept = text
       depth = 0
       do i = 1, len(kept)
@@ -275,14 +282,39 @@ contains
       if (kept(starts(1):ends(1)) == 'column' .or. kept(starts(1):ends(1)) == 'columns') first = 2
       if (size(starts) < first + 1) return
       traction = .false.
+      nnames = 0
+      order = ''
       do i = first, size(starts)
          if (ends(i) - starts(i) + 1 > len(NAMES)) return
          if (.not. any(kept(starts(i):ends(i)) == NAMES)) return
          traction = traction .or. kept(starts(i):ends(i)) == 'sigma_t' .or. kept(starts(i):ends(i)) == 'sigma_n' &
             .or. kept(starts(i):ends(i)) == 'sigma_t1' .or. kept(starts(i):ends(i)) == 'sigma_t2'
+         nnames = nnames + 1
+         if (nnames <= size(order)) order(nnames) = kept(starts(i):ends(i))
       end do
-      names_tractions = traction
-   end function names_tractions
+      if (traction) then
+         kind = NAMES_WITHOUT_KEY
+         return
+      end if
+      ! separations only: in the rows' order, t first when it is named
+      if (nnames > size(order)) then
+         kind = NAMES_OUT_OF_ORDER
+      else if (order(1) == 't') then
+         if (.not. in_order(order(2:nnames))) kind = NAMES_OUT_OF_ORDER
+      else
+         if (.not. in_order(order(1:nnames))) kind = NAMES_OUT_OF_ORDER
+      end if
+   contains
+      pure logical function in_order(names_given)
+         character(len=*), intent(in) :: names_given(:)
+         in_order = .false.
+         if (size(names_given) == 2) then
+            in_order = names_given(1) == 's_t' .and. names_given(2) == 's_n'
+         else if (size(names_given) == 3) then
+            in_order = names_given(1) == 's_t1' .and. names_given(2) == 's_t2' .and. names_given(3) == 's_n'
+         end if
+      end function in_order
+   end function column_words_kind
 
    !> `text` with every tab a blank.
    pure function tabs_as_blanks(text) result(blanked)
@@ -315,6 +347,10 @@ contains
       traction = .false.
       text = adjustl(comment)
       text(:len('columns:')) = ''
+      ! a unit in parentheses right after a name must be the one the driver reads (a history in m
+      ! or kPa would run as mm or MPa)
+      call check_units(text, message)
+      if (len(message) > 0) return
       ! drop the parenthesised words (units)
       depth = 0
       do i = 1, len(text)
@@ -362,6 +398,61 @@ contains
       ncolumns = n
       ok = .true.
    end subroutine read_column_names
+
+   !> '' when every unit in parentheses right after a column name of a `columns:` line (`text`,
+   !> the names after the key) is the driver's: (mm) after s_X, (MPa) after Sigma_X, (s) after t
+   !> (any case); else the message naming the first other one. Parentheses after anything else
+   !> are a comment and skipped.
+   subroutine check_units(text, message)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable, intent(out) :: message
+      character(len=:), allocatable :: name, unit, wanted
+      integer :: i, j, close, word_end, word_start
+      message = ''
+      i = 1
+      do while (i <= len(text))
+         if (text(i:i) /= '(') then
+            i = i + 1
+            cycle
+         end if
+         ! the group: to its ')' (nesting counted), or to the end
+         close = i
+         j = 0
+         do while (close <= len(text))
+            if (text(close:close) == '(') j = j + 1
+            if (text(close:close) == ')') j = j - 1
+            if (j == 0) exit
+            close = close + 1
+         end do
+         unit = trim(adjustl(text(i + 1:min(close, len(text) + 1) - 1)))
+         ! the word right before it (blanks between allowed)
+         word_end = len_trim(text(:i - 1))
+         word_start = word_end
+         do while (word_start > 1)
+            if (text(word_start - 1:word_start - 1) == ' ' .or. text(word_start - 1:word_start - 1) == char(9) &
+               .or. text(word_start - 1:word_start - 1) == ')') exit
+            word_start = word_start - 1
+         end do
+         name = ''
+         if (word_end >= 1) name = to_lower(text(word_start:word_end))
+         wanted = ''
+         if (name == 't') then
+            wanted = 's'
+         else if (name == 's_t' .or. name == 's_t1' .or. name == 's_t2' .or. name == 's_n') then
+            wanted = 'mm'
+         else if (name == 'sigma_t' .or. name == 'sigma_t1' .or. name == 'sigma_t2' .or. name == 'sigma_n') then
+            wanted = 'mpa'
+         end if
+         if (len(wanted) > 0 .and. to_lower(unit) /= wanted) then
+            if (wanted == 'mpa') wanted = 'MPa'
+            message = '"# columns:" gives '//text(word_start:word_end)//' the unit ('//unit//'), but the driver '// &
+               'reads '//text(word_start:word_end)//' in '//wanted//': convert the column, and write ('//wanted// &
+               ') or no unit'
+            return
+         end if
+         i = close + 1
+      end do
+   end subroutine check_units
 
    !> Append one row; `shear_then_normal` is the file's order (s_T[1], [s_T2,] s_N).
    subroutine append_row(history, line_number, time, shear_then_normal, traction_then_normal)

@@ -403,6 +403,13 @@ def test_read_mixed_history(source_dir, tmp_path):
                               ("#  Columns : t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, 'looks like a "# columns:" line'),
                               ("# columns t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, "names traction columns, but is not"),
                               ("0 0 0\n#\tt  s_T (mm)  SIGMA_N (MPa)\n1 0 1\n", 2, "names traction columns"),
+                              ("# t s_N s_T\n0 0 0\n1 0.01 0\n", 1, "names the columns in another order"),
+                              ("#  t  s_N (mm)  s_T (mm)\n0 0 0\n1 0.01 0\n", 1, "in another order"),
+                              ("# columns: t (ms) s_T (m) Sigma_N (kPa)\n0 0 0\n1 0 1\n", 1,
+                               "gives t the unit \\(ms\\), but the driver reads t in s"),
+                              ("# columns: t s_T (m) Sigma_N (kPa)\n0 0 0\n1 0 1\n", 1,
+                               "gives s_T the unit \\(m\\), but the driver reads s_T in mm"),
+                              ("# columns: t s_T Sigma_N(kPa)\n0 0 0\n1 0 1\n", 1, "gives Sigma_N the unit"),
                               ("0 0 0 # columns: t s_T Sigma_N\n1 0 1\n2 0 2\n", 1,
                                "holds nothing before the '#' \\(here '0 0 0'\\)")]:
         bad.write_text(text)
@@ -415,6 +422,7 @@ def test_read_mixed_history(source_dir, tmp_path):
     # a plain comment that starts with the word stays a comment
     fine = tmp_path / "fine.txt"
     fine.write_text("# column 2 is the shear separation\n# t s_T s_N\n# columns t s_T s_N\n"
-                    "# Sigma_N held at t = 1\n0 0 0\n1 0.001 0\n")
+                    "# Sigma_N held at t = 1\n# t s_T s_N (2-D)\n# columns: t (s) s_T (MM) s_N (mm) (separations)\n"
+                    "0 0 0\n1 0.001 0\n")
     t, v, c = interphase.read_history(fine, control=True)
     assert t.tolist() == [0, 1] and not c.any()

@@ -64,6 +64,7 @@ def _without_parentheses(text):
 
 def _column_names(text, where):
     """The traction flags (file order: shear(s), normal) of a `# columns:` comment."""
+    _check_units(text.split(":", 1)[1], where)
     words = _without_parentheses(text.split(":", 1)[1]).split()
     if len(words) not in (3, 4):
         raise ValueError(f'{where}: "# columns:" names {len(words)} columns; expected t and 2 (2-D) or 3 '
@@ -83,16 +84,54 @@ def _column_names(text, where):
 _COLUMN_NAMES = ("t", "s_t", "s_n", "s_t1", "s_t2", "sigma_t", "sigma_n", "sigma_t1", "sigma_t2")
 
 
-def _names_tractions(comment):
-    """True when the words of a comment (lower case) are column names, at least one a traction's,
-    after an optional first word `column` or `columns`, words in parentheses skipped: meant to
-    name the columns (`# t s_T Sigma_N`), and read as a plain comment it would run the tractions
-    as separations (interphase_driver_history's columns_line_kind)."""
+def _column_words(comment):
+    """What a comment (lower case) is when its words are two or more column names, after an
+    optional first word `column` or `columns`, words in parentheses skipped: "tractions" when one
+    of them is a traction's (`# t s_T Sigma_N`: read as a plain comment it would run the tractions
+    as separations), "order" when they are not in the rows' order (`# t s_N s_T`), else None
+    (interphase_driver_history's column_words_kind)."""
     words = _without_parentheses(comment).split()
     if words and words[0] in ("column", "columns"):
         words = words[1:]
-    return (bool(words) and all(w in _COLUMN_NAMES for w in words)
-            and any(w.startswith("sigma_") for w in words))
+    if len(words) < 2 or not all(w in _COLUMN_NAMES for w in words):
+        return None
+    if any(w.startswith("sigma_") for w in words):
+        return "tractions"
+    if words[0] == "t":
+        words = words[1:]
+    return None if words in (["s_t", "s_n"], ["s_t1", "s_t2", "s_n"]) else "order"
+
+
+_UNITS = {"t": "s", "s_t": "mm", "s_t1": "mm", "s_t2": "mm", "s_n": "mm",
+          "sigma_t": "MPa", "sigma_t1": "MPa", "sigma_t2": "MPa", "sigma_n": "MPa"}
+
+
+def _check_units(text, where):
+    """Refuse a unit in parentheses right after a column name of a `columns:` line (`text`, after
+    the key) that is not the driver's: (mm) after s_X, (MPa) after Sigma_X, (s) after t (any
+    case); parentheses after anything else are skipped (interphase_driver_history's check_units)."""
+    i = 0
+    while i < len(text):
+        if text[i] != "(":
+            i += 1
+            continue
+        depth, close = 0, i
+        while close < len(text):
+            depth += (text[close] == "(") - (text[close] == ")")
+            if depth == 0:
+                break
+            close += 1
+        unit = text[i + 1:close].strip()
+        before = text[:i].rstrip()
+        start = len(before)
+        while start > 0 and before[start - 1] not in " \t)":
+            start -= 1
+        name = before[start:]
+        wanted = _UNITS.get(name.lower())
+        if wanted is not None and unit.lower() != wanted.lower():
+            raise ValueError(f'{where}: "# columns:" gives {name} the unit ({unit}), but the driver reads {name} '
+                             f'in {wanted}: convert the column, and write ({wanted}) or no unit')
+        i = close + 1
 
 
 def read_history(path, control=False):
@@ -115,7 +154,12 @@ def read_history(path, control=False):
             raise ValueError(f'{where}: "#{comment.rstrip()}" looks like a "# columns:" line, but is not one: '
                              'write the key "columns:" (one word, the colon right after it), e.g. '
                              '"# columns: t s_T Sigma_N"')
-        if hash_ and _names_tractions(key):
+        kind = _column_words(key) if hash_ else None
+        if kind == "order":
+            raise ValueError(f'{where}: "#{comment.rstrip()}" names the columns in another order than the rows '
+                             'are read (t, the shear component(s), then the normal one: t s_T s_N or t s_T1 s_T2 '
+                             's_N): reorder the columns and the comment')
+        if kind == "tractions":
             raise ValueError(f'{where}: "#{comment.rstrip()}" names traction columns, but is not a "# columns:" '
                              'line, so every column would be read as a separation: write the key "columns:" '
                              'first, e.g. "# columns: t s_T Sigma_N"')
