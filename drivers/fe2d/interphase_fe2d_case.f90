@@ -7,7 +7,7 @@ module interphase_fe2d_case
    use, intrinsic :: iso_fortran_env, only: iostat_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
-   use interphase_text_input, only: tried_path
+   use interphase_text_input, only: tried_path, parse_real
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
@@ -424,7 +424,10 @@ contains
 
    !> Read a shear history: two columns `t u_shear` (mm), `#` comments and blank lines allowed,
    !> time strictly increasing, at least two rows, first u_shear 0 (the precompression step
-   !> ends at u = 0). Errors name the file and line.
+   !> ends at u = 0). Each field is one real literal as a whole (interphase_text_input's
+   !> parse_real, as interphase-point reads its histories). A `# columns:` line (interphase-point's
+   !> mixed control, which this host does not have) is refused rather than read as a comment.
+   !> Errors name the file (as tried) and line.
    subroutine read_shear_history(path, t, u, ok, message)
       character(len=*), intent(in) :: path        !! history file
       real(dp), allocatable, intent(out) :: t(:)  !! times
@@ -436,11 +439,17 @@ contains
       integer :: ios, line_number, n, k
       type(text_file_type) :: unit
       character(len=512) :: iomsg
+      character(len=32) :: why
+      character(len=:), allocatable :: shown, comment
       real(dp) :: values(2)
       real(dp), allocatable :: grow(:)
+      integer :: first_line
+      logical :: parsed
 
       ok = .false.
       allocate (t(0), u(0))
+      shown = tried_path(path)
+      first_line = 0
       call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = tried_path(path)//': cannot open the shear history (&loading: history): '//trim(iomsg)
@@ -452,39 +461,58 @@ contains
          call read_line(unit, line, ios, iomsg)
          if (ios == iostat_end) exit
          if (ios /= 0) then
-            message = path//': read error: '//trim(iomsg)
+            message = shown//': read error: '//trim(iomsg)
             call close_text_file(unit)
             return
          end if
          line_number = line_number + 1
          k = index(line, '#')
-         if (k > 0) line = line(1:k - 1)
+         if (k > 0) then
+            ! a "# columns:" line (or one spelt like it) names interphase-point's mixed-control
+            ! columns: here every value is a displacement, so it is refused, not skipped
+            comment = to_lower(adjustl(line(k + 1:)))
+            do while (index(comment, char(9)) > 0)
+               comment(index(comment, char(9)):index(comment, char(9))) = ' '
+            end do
+            comment = adjustl(comment)
+            if (len(comment) >= 6) then
+               if (comment(1:6) == 'column' .and. index(comment, ':') > 0 .and. &
+                  verify(comment(7:index(comment, ':') - 1), 's ') == 0) then
+                  message = shown//':'//int_to_string(line_number)//': "#'//line(k + 1:)//'": interphase-fe2d''s '// &
+                     'history has the two columns t u_shear (mm, a displacement) and no "# columns:" line '// &
+                     '(imposed tractions are interphase-point''s mixed control)'
+                  call close_text_file(unit)
+                  return
+               end if
+            end if
+            line = line(1:k - 1)
+         end if
          call split_words(line, starts, ends)
          if (size(starts) == 0) cycle
          if (size(starts) /= 2) then
-            message = path//':'//int_to_string(line_number)//': found '// &
+            message = shown//':'//int_to_string(line_number)//': found '// &
                int_to_string(size(starts))//' columns; expected 2 (t u_shear)'
             call close_text_file(unit)
             return
          end if
          do k = 1, 2
-            read (line(starts(k):ends(k)), *, iostat=ios) values(k)
-            if (ios /= 0) then
-               message = path//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
-                  ": cannot parse '"//line(starts(k):ends(k))//"' as a number"
-               call close_text_file(unit)
-               return
-            end if
-            if (.not. ieee_is_finite(values(k))) then
-               message = path//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
-                  ": '"//line(starts(k):ends(k))//"' is not a finite number"
+            call parse_real(line(starts(k):ends(k)), values(k), parsed, why)
+            if (.not. parsed) then
+               if (index(why, 'finite') > 0) then
+                  message = shown//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
+                     ": '"//line(starts(k):ends(k))//"' is not a finite number"
+               else
+                  message = shown//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
+                     ": cannot parse '"//line(starts(k):ends(k))//"' as a number"
+               end if
                call close_text_file(unit)
                return
             end if
          end do
+         if (n == 0) first_line = line_number
          if (n > 0) then
             if (.not. (values(1) > t(n))) then
-               message = path//':'//int_to_string(line_number)//': time '// &
+               message = shown//':'//int_to_string(line_number)//': time '// &
                   real_to_string(values(1))//' is not greater than the previous time '// &
                   real_to_string(t(n))
                call close_text_file(unit)
@@ -499,11 +527,11 @@ contains
       end do
       call close_text_file(unit)
       if (n < 2) then
-         message = path//': needs at least 2 data rows, found '//int_to_string(n)
+         message = shown//': needs at least 2 data rows, found '//int_to_string(n)
          return
       end if
       if (abs(u(1)) > 0.0_dp) then
-         message = path//': the first row must have u_shear = 0 (the shear step starts '// &
+         message = shown//':'//int_to_string(first_line)//': the first row must have u_shear = 0 (the shear step starts '// &
             'from the precompressed state), got '//real_to_string(u(1))
          return
       end if
