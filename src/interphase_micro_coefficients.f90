@@ -458,8 +458,9 @@ contains
    !> first D, the coefficient's name and its value.
    pure subroutine check_interpolant(variable, knots, coef_table, status, bad_d, bad_name, bad_value)
       integer, intent(in) :: variable                        !! VARIABLE_* of the knots
-      real(dp), intent(in) :: knots(:)                       !! knots, ascending
-      real(dp), intent(in) :: coef_table(:, 0:, :)           !! cubic coefficients
+      ! (contiguous, as table_coefficients takes them: no copy at each of its calls)
+      real(dp), contiguous, intent(in) :: knots(:)           !! knots, ascending
+      real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)   !! cubic coefficients
       integer, intent(out) :: status
       real(dp), intent(out) :: bad_d                         !! where (-), when status /= STATUS_OK
       character(len=*), intent(out) :: bad_name              !! which coefficient
