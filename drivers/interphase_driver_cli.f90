@@ -4,7 +4,7 @@
 module interphase_driver_cli
    use, intrinsic :: iso_c_binding, only: c_int, c_char, c_null_char
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-   use interphase_driver_text, only: int_to_string, shell_quote
+   use interphase_driver_text, only: int_to_string, shell_quote, join_path
    use interphase_driver_version, only: INTERPHASE_VERSION
    implicit none
    private
@@ -171,7 +171,7 @@ contains
       if (cmdstat /= 0) then
          message = 'cannot run gnuplot: '//trim(cmdmsg)
       else if (exitstat /= 0) then
-         message = 'gnuplot failed on '//folder//'/'//script_name//' (exit status '// &
+         message = 'gnuplot failed on '//join_path(folder, script_name)//' (exit status '// &
             int_to_string(exitstat)//')'
       else
          ok = .true.

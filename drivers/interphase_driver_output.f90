@@ -11,7 +11,7 @@ module interphase_driver_output
    use interphase_kinds, only: dp
    use interphase_layout, only: SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, REGIME_INTACT, &
       REGIME_OPEN, REGIME_STICK, REGIME_SLIP
-   use interphase_driver_text, only: int_to_string, real_to_csv, real_to_string
+   use interphase_driver_text, only: int_to_string, real_to_csv, real_to_string, gnuplot_quote
    implicit none
    private
    public :: csv_header, write_csv_row, write_plot_script
@@ -147,7 +147,7 @@ contains
          '} else {', &
          '  set terminal png enhanced size width, 560', &
          '}', &
-         'set output "'//png_name//'"', &
+         'set output '//gnuplot_quote(png_name), &
          'set multiplot layout 1,'//achar(iachar('0') + npanels)//' title "'//escape(title)//': '// &
          lines_of(material)//'" noenhanced font ",12"', &
          'set grid', &
@@ -189,14 +189,18 @@ contains
             'set xlabel "'//x_name//' (mm)"', &
             'set ylabel "'//y_name//' (MPa)"', &
             'set autoscale xy', &
-            'stats "'//csv_name//'" using '//columns//' skip 1 nooutput', &
+            'stats '//gnuplot_quote(csv_name)//' using '//columns//' skip 1 nooutput', &
             'flat_x = (STATS_max_x - STATS_min_x <= 1e-9*(abs(STATS_max_x) + abs(STATS_min_x)))', &
             'flat_y = (STATS_max_y - STATS_min_y <= 1e-9*(abs(STATS_max_y) + abs(STATS_min_y)))', &
             'if (flat_x) { set xrange [STATS_min_x - 0.01 : STATS_max_x + 0.01] }', &
             'if (flat_y) { set yrange [STATS_min_y - 0.1 : STATS_max_y + 0.1] }', &
-            'style = (flat_x || flat_y) ? "linespoints pt 7 ps 0.6 lw 2" : "lines lw 2"', &
-            'plot "'//csv_name//'" using '//columns//' skip 1 with @style lc rgb "#1f4e9a" title "'// &
-            y_name//'('//x_name//')"'
+            'if (flat_x || flat_y) {', &
+            '  plot '//gnuplot_quote(csv_name)//' using '//columns//' skip 1 with linespoints pt 7 ps 0.6 lw 2 '// &
+            'lc rgb "#1f4e9a" title "'//y_name//'('//x_name//')"', &
+            '} else {', &
+            '  plot '//gnuplot_quote(csv_name)//' using '//columns//' skip 1 with lines lw 2 lc rgb "#1f4e9a" '// &
+            'title "'//y_name//'('//x_name//')"', &
+            '}'
       end subroutine panel
 
       !> The damage against time.
@@ -208,7 +212,7 @@ contains
             'set ylabel "D (-)"', &
             'set autoscale x', &
             'set yrange [-0.05:1.05]', &
-            'plot "'//csv_name//'" using 1:'//achar(iachar('0') + d_column)// &
+            'plot '//gnuplot_quote(csv_name)//' using 1:'//achar(iachar('0') + d_column)// &
             ' skip 1 with lines lw 2 lc rgb "#b03a2e" title "D(t)"'
       end subroutine damage_panel
 

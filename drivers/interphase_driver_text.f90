@@ -11,7 +11,7 @@ module interphase_driver_text
    private
    public :: int_to_string, real_to_string, real_to_csv, to_lower
    public :: text_file_type, open_line_file, read_line, close_text_file
-   public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote, same_path, same_file
+   public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote, gnuplot_quote, same_path, same_file
 
 contains
 
@@ -299,5 +299,23 @@ contains
       end do
       quoted = quoted//"'"
    end function shell_quote
+
+   !> `text` as a gnuplot string in single quotes (where nothing is special but the quote,
+   !> written twice): a file name with '"', '\' or '@' cannot end the string or run a command.
+   pure function gnuplot_quote(text) result(quoted)
+      character(len=*), intent(in) :: text        !! any text
+      character(len=:), allocatable :: quoted
+      integer :: i
+
+      quoted = "'"
+      do i = 1, len(text)
+         if (text(i:i) == "'") then
+            quoted = quoted//"''"
+         else
+            quoted = quoted//text(i:i)
+         end if
+      end do
+      quoted = quoted//"'"
+   end function gnuplot_quote
 
 end module interphase_driver_text

@@ -1,7 +1,7 @@
 !> Output of `interphase-fe2d`: the load-displacement CSV and its gnuplot script.
 module interphase_fe2d_output
    use interphase_kinds, only: dp
-   use interphase_driver_text, only: real_to_csv, int_to_string
+   use interphase_driver_text, only: real_to_csv, int_to_string, gnuplot_quote
    implicit none
    private
    public :: write_curve_csv, write_curve_plot_script
@@ -68,22 +68,23 @@ contains
          '} else {', &
          '  set terminal png enhanced size 1200, 520', &
          '}', &
-         'set output "'//png_name//'"', &
-         'set multiplot layout 1,2 title "'//title//'" noenhanced font ",14"', &
+         'set output '//gnuplot_quote(png_name), &
+         'set multiplot layout 1,2 title '//gnuplot_quote(title)//' noenhanced font ",14"', &
          'set grid', &
          'set zeroaxis', &
          'set key top left', &
          'set title "shear force (step 2: shear)"', &
          'set xlabel "u (mm)"', &
          'set ylabel "force (N)"', &
-         'plot "'//csv_name//'" using ($1 > 1 ? $3 : NaN):4 skip 1 with lines lw 2 lc rgb "#1f4e9a" title "shear force", \', &
+         'plot '//gnuplot_quote(csv_name)//' using ($1 > 1 ? $3 : NaN):4 skip 1 with lines lw 2 lc rgb "#1f4e9a" '// &
+         'title "shear force", \', &
          '     "" using ($1 > 1 ? $3 : NaN):($5*MU) skip 1 with lines dt 2 lc rgb "#a01c1c" title "mu x normal force", \', &
          '     "" using ($1 > 1 ? $3 : NaN):(-$5*MU) skip 1 with lines dt 2 lc rgb "#a01c1c" notitle', &
          'set title "damage"', &
          'set ylabel "mean D (-)"', &
          'set key off', &
          'set yrange [0:1.05]', &
-         'plot "'//csv_name//'" using ($1 > 1 ? $3 : NaN):8 skip 1 with lines lw 2 lc rgb "#1f4e9a"', &
+         'plot '//gnuplot_quote(csv_name)//' using ($1 > 1 ? $3 : NaN):8 skip 1 with lines lw 2 lc rgb "#1f4e9a"', &
          'unset multiplot'
       close (unit)
       ok = .true.
