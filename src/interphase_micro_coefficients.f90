@@ -13,7 +13,7 @@ module interphase_micro_coefficients
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
       STATUS_TABLE_INTERPOLANT, status_message, message_path, STATUS_SPLINE_OUT_OF_RANGE, &
-      STATUS_SPLINE_NONFINITE_ARGUMENT
+      STATUS_SPLINE_NONFINITE_ARGUMENT, STATUS_SPLINE_TOO_FEW_POINTS
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
    use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
    use interphase_spline, only: spline_type, spline_build, spline_export, &
@@ -537,7 +537,11 @@ contains
       allocate (x(n), y(n, N_COEFFICIENTS))
       call interpolation_data(table, x, y)
       call spline_build(x, y, TABLE_SPLINE_METHOD, spline, status)
-      if (status /= STATUS_OK) then
+      if (status == STATUS_SPLINE_TOO_FEW_POINTS) then
+         write (message, '(a,a,i0,a)') message_path(path), ': ', n, ' rows, but the interpolant '// &
+            '(a not-a-knot cubic spline) needs at least 4: add rows between a = 0 and a = b'
+         return
+      else if (status /= STATUS_OK) then
          message = message_path(path)//': '//status_message(status)
          return
       end if
