@@ -73,8 +73,17 @@ contains
             ok = .true.
             return
          case ('--no-plot')
+            if (args%no_plot) then
+               message = '--no-plot given twice'
+               return
+            end if
             args%no_plot = .true.
          case ('--output-dir')
+            ! (given twice: which one counts is not for us to guess, as for a case file's entries)
+            if (len(args%output_dir) > 0) then
+               message = '--output-dir given twice'
+               return
+            end if
             if (i == nargs) then
                message = '--output-dir needs a directory'
                return

@@ -370,7 +370,7 @@ contains
       do i = 1, n
          words(i) = text(starts(i):min(ends(i), starts(i) + len(words(i)) - 1))
       end do
-      if (trim(words(1)) /= 't') then
+      if (to_lower(trim(words(1))) /= 't') then   ! (any case, as the other names)
          message = '"# columns:" must start with t, got '''//trim(words(1))//''''
          return
       end if
