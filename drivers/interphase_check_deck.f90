@@ -170,6 +170,9 @@ contains
       real(dp) :: values(16)
       integer :: ios, lineno, nvalues, k, current, data_lines, i, bad_field
       logical :: explicit, opened
+      !> the first step procedure of each solver (line and keyword): one analysis runs one solver
+      integer :: explicit_line, standard_line
+      character(len=80) :: standard_keyword
 
       allocate (materials(0), sections(0))
       ! the readers' bounded line reader (interphase_text_input): lines and file size are limited,
@@ -182,6 +185,9 @@ contains
       end if
       status = 0
       explicit = .false.
+      explicit_line = 0
+      standard_line = 0
+      standard_keyword = ''
       keyword = ''
       current = 0
       data_lines = 0
@@ -298,7 +304,20 @@ contains
                      [character(len=NAME_LEN) :: 'GEOMETRY', 'SPECIFIED']))]
             case ('DYNAMIC', 'DYNAMICTEMPERATURE-DISPLACEMENT')
                ! (an explicit dynamic step, with or without the temperatures: Abaqus/Explicit)
-               if (any(parameter_names == 'EXPLICIT')) explicit = .true.
+               if (any(parameter_names == 'EXPLICIT')) then
+                  explicit = .true.
+                  if (explicit_line == 0) explicit_line = lineno
+               else if (standard_line == 0) then
+                  standard_line = lineno
+                  standard_keyword = keyword_text
+               end if
+            case ('STATIC', 'VISCO', 'FREQUENCY', 'BUCKLE', 'GEOSTATIC', 'SOILS', 'HEATTRANSFER', &
+               'COUPLEDTEMPERATURE-DISPLACEMENT', 'STEADYSTATEDYNAMICS', 'MODALDYNAMIC', 'RIKS')
+               ! an Abaqus/Standard procedure
+               if (standard_line == 0) then
+                  standard_line = lineno
+                  standard_keyword = keyword_text
+               end if
             case ('STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION')
                current = 0
             end select
@@ -358,6 +377,12 @@ contains
       end do
       call close_text_file(file)
 
+      if (explicit_line > 0 .and. standard_line > 0) then
+         call record_failure(path//': the deck has an Abaqus/Explicit step (*DYNAMIC, EXPLICIT at line '// &
+            int_to_string(explicit_line)//') and an Abaqus/Standard one (*'//trim(standard_keyword)//' at line '// &
+            int_to_string(standard_line)//'): one analysis runs one solver (a Standard result goes to Explicit, '// &
+            'or back, by an import between two decks)', nfail)
+      end if
       if (size(sections) == 0) then
          write (output_unit, '(a)') path//': no *COHESIVE SECTION: nothing for interphase to check'
          return
