@@ -163,8 +163,8 @@ contains
          call finish()
          return
       else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
-         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(90), '; the crack grows beyond it from D = ', &
-            real_text(old%d, 6), ' at separation (mm) ', separation(1:n)
+         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(76), '; the crack grows beyond it from D = ', &
+            real_text(old%d, 6), ' at separation '//separation_names(n)//' (mm) ', separation(1:n)
          call finish()
          return
       else if (code /= STATUS_OK) then
@@ -296,10 +296,11 @@ contains
                   message = 'the material has viscous regularisation (its viscosity option): pass the times'
                end if
             else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
-               write (message, '(a,i0,a,a,a,g0.6,a,3es12.4)', iostat=ios) 'row ', row - 1, ': ', rcurve_coverage(64), &
-                  '; the crack grows beyond it from D = ', old%d, ' at separation (mm) ', s(1:n)
+               write (message, '(a,i0,a,a,a,g0.6,a,3es12.4)', iostat=ios) 'row ', row - 1, ': ', rcurve_coverage(50), &
+                  '; the crack grows beyond it from D = ', old%d, ' at separation '//separation_names(n)//' (mm) ', s(1:n)
             else
-               write (message, '(a,i0,a,3es12.4)') 'row ', row - 1, ': update failed at separation (mm) ', s(1:n)
+               write (message, '(a,i0,a,3es12.4)') 'row ', row - 1, ': update failed at separation '// &
+                  separation_names(n)//' (mm) ', s(1:n)
             end if
             call finish()
             return
@@ -519,12 +520,12 @@ contains
          fatal = .true.
          return
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
-         write (law%detail, '(a,a,g0.6,a,3es12.4)', iostat=ios) rcurve_coverage(90), '; the crack grows beyond it from D = ', &
-            old%d, ' at separation (mm) ', s(1:n)
+         write (law%detail, '(a,a,g0.6,a,3es12.4)', iostat=ios) rcurve_coverage(76), '; the crack grows beyond it from D = ', &
+            old%d, ' at separation '//separation_names(n)//' (mm) ', s(1:n)
          fatal = .true.
          return
       else if (status /= STATUS_OK) then
-         write (law%detail, '(a,3es12.4)', iostat=ios) 'update failed at separation (mm) ', s(1:n)
+         write (law%detail, '(a,3es12.4)', iostat=ios) 'update failed at separation '//separation_names(n)//' (mm) ', s(1:n)
          return
       end if
       ! the UMAT's SPD and SSE
@@ -734,5 +735,14 @@ contains
             'interphase_load_rcurve(path, ...) before any update'
       end if
    end subroutine decode_material
+
+   !> The names of the separation's components, the C interface's order (normal first), for
+   !> messages.
+   pure function separation_names(n) result(names)
+      integer, intent(in) :: n          !! 2 or 3
+      character(len=:), allocatable :: names
+      names = 's_N, s_T'
+      if (n == 3) names = 's_N, s_T1, s_T2'
+   end function separation_names
 
 end module interphase_capi

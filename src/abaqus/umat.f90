@@ -151,11 +151,11 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          exit update
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
          ! the R-curve file does not reach the damage this point needs: a setup error
-         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(90), '; the crack grows beyond it from D = ', &
-            real_text(old%d, 6), ' at separation (mm) ', s(1:nsep)
+         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(76), '; the crack grows beyond it from D = ', &
+            real_text(old%d, 6), ' at separation '//separation_names(nsep)//' (mm) ', s(1:nsep)
          exit update
       else if (status /= STATUS_OK) then
-         write (message, '(a,3es12.4)') 'update failed at separation (mm) ', s(1:nsep)
+         write (message, '(a,3es12.4)') 'update failed at separation '//separation_names(nsep)//' (mm) ', s(1:nsep)
          severity = SEVERITY_WARNING
          exit update
       end if
@@ -225,5 +225,13 @@ contains
    include 'interphase_run_time_data.inc'
    include 'interphase_statev.inc'
    include 'interphase_decode_props.inc'
+
+   !> The names of the separation's components, UMAT order, for messages.
+   pure function separation_names(n) result(names)
+      integer, intent(in) :: n          !! 2 or 3
+      character(len=:), allocatable :: names
+      names = 's_N, s_T'
+      if (n == 3) names = 's_N, s_T1, s_T2'
+   end function separation_names
 
 end subroutine umat
