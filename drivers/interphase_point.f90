@@ -16,7 +16,7 @@ program interphase_point
    use interphase_kinds, only: dp
    use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary, writes_an_input
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
-      gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output
+      gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output, remove_file
    use interphase_driver_history, only: history_type, read_history
    use interphase_driver_output, only: csv_header, write_plot_script
    use interphase_driver_replay, only: replay_history, replay_report_type
@@ -77,8 +77,14 @@ program interphase_point
    call replay_history(run, history, unit, nrows, ok, message, report, &
       replay_path=join_path(directory_of(csv_path), stem_of(csv_path)//'.replay.nml'))
    close (unit)
-   if (.not. ok) call fail(message//' (the rows up to the failure are in '//part_path// &
-      '; '//csv_path//' was not written)')
+   if (.not. ok) then
+      if (nrows == 0) then
+         ! (the probe before the first step, or the first step, failed: nothing to look at)
+         call remove_file(part_path)
+         call fail(message//' (no row was written; '//csv_path//' was not written)')
+      end if
+      call fail(message//' (the rows up to the failure are in '//part_path//'; '//csv_path//' was not written)')
+   end if
    call rename_file(part_path, csv_path, ok, message)
    if (.not. ok) call fail(message)
    write (output_unit, '(a)') run%name//': '//int_to_string(nrows)//' rows ('// &
