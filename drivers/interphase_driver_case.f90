@@ -396,8 +396,9 @@ contains
          p%damage_law = DAMAGE_DISPLACEMENT
          if (.not. (is_unset(e%d0) .and. is_unset(e%g_ci) .and. is_unset(e%g_cii)) .or. &
             len(rcurve) > 0 .or. len_trim(e%rcurve_file) > 0) then
-            message = where//"d0, rcurve, rcurve_file, g_ci and g_cii are entries of "// &
-               "damage_law = 'fracture' only"
+            ! (the first of them given named first: the message then gets its line)
+            message = where//first_given()//" is an entry of damage_law = 'fracture' only (as are d0, rcurve, "// &
+               "rcurve_file, g_ci and g_cii)"
             return
          end if
       case ('fracture')
@@ -509,6 +510,22 @@ contains
          end do
          message = where//name//" must be "//choices//", got '"//trim(adjustl(value))//"'"
       end function keyword_entry
+
+      !> The first of the fracture law's entries that is given (for the message that refuses them).
+      function first_given() result(name)
+         character(len=:), allocatable :: name
+         if (.not. is_unset(e%d0)) then
+            name = 'd0'
+         else if (len(rcurve) > 0) then
+            name = 'rcurve'
+         else if (len_trim(e%rcurve_file) > 0) then
+            name = 'rcurve_file'
+         else if (.not. is_unset(e%g_ci)) then
+            name = 'g_ci'
+         else
+            name = 'g_cii'
+         end if
+      end function first_given
 
       !> False (and the message set) when the entry is NaN or infinite.
       logical function finite_entry(name, value)

@@ -155,7 +155,8 @@ contains
       case ('periodic')
          run%sides = SIDES_PERIODIC
       case default
-         message = where//"unknown sides '"//trim(adjustl(sides))//"' (available: 'free', 'periodic')"
+         ! (the entry's name first: the message then gets its line)
+         message = where//"sides must be 'free' or 'periodic', got '"//trim(adjustl(sides))//"'"
          return
       end select
       run%bricks = bricks
@@ -218,8 +219,7 @@ contains
       case ('gauss')
          run%integration = INTEGRATION_GAUSS
       case default
-         message = where//"unknown integration '"//trim(adjustl(integration))// &
-            "' (available: 'lobatto', 'gauss')"
+         message = where//"integration must be 'lobatto' or 'gauss', got '"//trim(adjustl(integration))//"'"
          return
       end select
       run%nx = nx
