@@ -3,6 +3,9 @@
 table and R-curve loading, and concurrent use from threads."""
 
 import ctypes
+import os
+import re
+import subprocess
 import threading
 
 import numpy as np
@@ -37,12 +40,13 @@ def test_props_are_the_umat_layout():
     (dict(s0_t=0.0), interphase.STATUS_BAD_S0_T, "PROPS(6)"),
     (dict(model="spring"), interphase.STATUS_BAD_MODEL, "unknown model 'spring'"),
     (dict(damage_law="plastic"), interphase.STATUS_BAD_DAMAGE_LAW, "unknown damage_law 'plastic'"),
-    (dict(stiffness="secant"), interphase.STATUS_BAD_OPTION, "stiffness must be one of"),
-    (dict(growth_slip="free"), interphase.STATUS_BAD_OPTION, "growth_slip must be one of"),
+    (dict(stiffness="secant"), interphase.STATUS_BAD_OPTION,
+     "stiffness must be 'consistent' (the default), 'symmetric' or 'fixed-damage', got 'secant'"),
+    (dict(growth_slip="free"), interphase.STATUS_BAD_OPTION, "growth_slip must be 'fixed-pi' (the default) or"),
     (dict(contact_band=0.01), interphase.STATUS_BAD_OPTION, "PROPS(11) contact band chi"),
     (dict(viscosity=-1.0), interphase.STATUS_BAD_OPTION, "PROPS(12) viscosity eta"),
     (dict(table="x.dat"), interphase.STATUS_BAD_TABLE_SELECTOR, "table is an entry of model = 'micromechanical'"),
-    (dict(d0=0.1), interphase.STATUS_BAD_NPROPS, "entries of damage_law = 'fracture' only"),
+    (dict(d0=0.1), interphase.STATUS_BAD_NPROPS, "d0 is an entry of damage_law = 'fracture' only"),
     (dict(damage_law="fracture"), interphase.STATUS_BAD_D0, "missing entry d0"),
     (dict(damage_law="fracture", d0=1.5, rcurve="equivalent"), interphase.STATUS_BAD_D0, "PROPS(10) D0"),
     (dict(damage_law="fracture", d0=0.1, rcurve="constant", g_ci=0.01), interphase.STATUS_BAD_GC_II, "g_cii"),
@@ -226,7 +230,7 @@ def test_read_history(source_dir, tmp_path):
     assert s3.shape[1] == 3
     bad = tmp_path / "bad.txt"
     bad.write_text("0 0 0\n1 0 1-2\n")
-    with pytest.raises(ValueError, match="bad.txt:2: cannot parse '1-2'"):
+    with pytest.raises(ValueError, match="bad.txt:2: column 3: cannot parse '1-2' as a number"):
         interphase.read_history(bad)
 
 
@@ -417,7 +421,7 @@ def test_read_mixed_history(source_dir, tmp_path):
             interphase.read_history(bad, control=True)
     # a UTF-8 byte-order mark is named, as by the driver
     bad.write_bytes(b"\xef\xbb\xbf# columns: t s_T s_N\n0 0 0\n1 0 1\n")
-    with pytest.raises(ValueError, match="bad.txt:1: the file starts with a UTF-8 byte-order mark"):
+    with pytest.raises(ValueError, match="bad.txt:1: cannot read the line: the file starts with a UTF-8 byte-order"):
         interphase.read_history(bad, control=True)
     # a plain comment that starts with the word stays a comment
     fine = tmp_path / "fine.txt"
@@ -426,3 +430,268 @@ def test_read_mixed_history(source_dir, tmp_path):
                     "0 0 0\n1 0.001 0\n")
     t, v, c = interphase.read_history(fine, control=True)
     assert t.tolist() == [0, 1] and not c.any()
+
+
+# A small case file (its &loading from line 6 on) and its history, for the checks below.
+CASE = """&material
+  model = 'simplified', damage_law = 'displacement',
+  mu = 0.75, s0_n = 0.00044, sf_n = 0.04, s0_t = 0.00072, sf_t = 0.06,
+  k_n = 482.69742679680568, k_t = 198.75776397515528
+/
+&loading
+  history = 'h.txt'
+  increments = 20
+  output = 'h.csv'
+/
+"""
+HISTORY = "# t s_T s_N\n0 0 0\n1 0 0.01\n"
+
+
+def write_case(tmp_path, case=CASE, history=HISTORY, name="case.nml"):
+    """The case file `name` in tmp_path, its history h.txt beside it; the case's path."""
+    (tmp_path / "h.txt").write_text(history)
+    path = tmp_path / name
+    path.write_text(case)
+    return path
+
+
+def test_paths_are_read_without_the_blanks_around_them(source_dir, tmp_path):
+    """history, table and rcurve_file = ' file ' name the file, and output = ' x.csv ' the CSV
+    x.csv, as interphase-point trims them; Material's table and rcurve_file too."""
+    for history in ("'h.txt '", "' h.txt'", "'  h.txt  '"):
+        case = interphase.read_case(write_case(tmp_path, CASE.replace("'h.txt'", history)))
+        assert case.time.tolist() == [0.0, 1.0]
+    assert interphase.read_case(write_case(tmp_path, CASE.replace("'h.csv'", "' h.csv '"))).output == "h.csv"
+    table = tmp_path / "paper-resolution.dat"
+    table.write_bytes((source_dir / "tables" / "paper-resolution.dat").read_bytes())
+    rcurve = tmp_path / "rcurve.txt"
+    rcurve.write_text("# D G_cI G_cII\n0.0 0.005 0.0085\n1.0 0.005 0.0085\n")
+    micro = CASE.replace("'simplified'", "'micromechanical', table = ' paper-resolution.dat '").replace(
+        "  k_n = 482.69742679680568, k_t = 198.75776397515528\n", "")
+    assert interphase.read_case(write_case(tmp_path, micro)).material.table_path == str(table)
+    fracture = CASE.replace("'displacement'", "'fracture', d0 = 0.1, rcurve = 'tabulated', "
+                                              "rcurve_file = 'rcurve.txt  '")
+    assert interphase.read_case(write_case(tmp_path, fracture)).material.rcurve_path == str(rcurve)
+    assert interphase.Material(**dict(MICRO, table=f" {table} ")).table_path == str(table)
+    assert interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
+                                      rcurve_file=f"{rcurve} ")).rcurve_path == str(rcurve)
+
+
+def test_a_table_named_in_another_encoding_is_opened(source_dir, tmp_path):
+    """A table whose name is not UTF-8 (Latin-1 'é', byte E9) is the file of those bytes, as for
+    the driver: not a UnicodeEncodeError."""
+    name = b"t\xe9.dat"
+    (tmp_path / os.fsdecode(name)).write_bytes((source_dir / "tables" / "paper-resolution.dat").read_bytes())
+    micro = CASE.replace("'simplified'", "'micromechanical', table = 'TABLE'").replace(
+        "  k_n = 482.69742679680568, k_t = 198.75776397515528\n", "")
+    path = tmp_path / "case.nml"
+    (tmp_path / "h.txt").write_text(HISTORY)
+    path.write_bytes(micro.encode().replace(b"TABLE", name))
+    assert interphase.read_case(path).material.table_path == os.fsdecode(bytes(tmp_path) + b"/" + name)
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ("'h.txt'", "''", "missing entry history"),
+    ("'h.txt'", "'   '", "missing entry history"),
+    ("'h.csv'", "''", "missing entry output"),
+    ("'h.csv'", "' '", "missing entry output"),
+    ("increments = 20\n  output = 'h.csv'", "output = ''", "missing entries increments, output"),
+])
+def test_an_empty_history_or_output_is_a_missing_entry(tmp_path, old, new, message):
+    """history = '' (or blanks) and output = '' are entries left out, as interphase-point reads
+    them: its message, not a directory opened as the history or an empty CSV name."""
+    path = write_case(tmp_path, CASE.replace(old, new))
+    with pytest.raises(ValueError) as caught:
+        interphase.read_case(path)
+    assert str(caught.value) == f"{path}: &loading: {message}"
+
+
+def test_lines_longer_than_the_drivers_limit_are_refused(tmp_path):
+    """A line of more than 65536 bytes (its carriage return counted, a comment too) in a case
+    file or a history file is refused as the driver refuses it, naming the file and the line; a
+    line of 65536 is read."""
+    limit = interphase._files.MAX_LINE_LEN
+    assert limit == 65536
+    for tail in ("!" + "x" * (limit - 1) + "\n", "!" + "x" * (limit - 2) + "\r\n"):
+        interphase.read_case(write_case(tmp_path, CASE.replace("/\n&loading", "/\n" + tail + "&loading")))
+    for tail in ("!" + "x" * limit + "\n", "!" + "x" * (limit - 1) + "\r\n"):
+        path = write_case(tmp_path, CASE.replace("/\n&loading", "/\n" + tail + "&loading"))
+        for read in (interphase.read_case, interphase.read_namelist):
+            with pytest.raises(ValueError) as caught:
+                read(path)
+            assert str(caught.value) == f"{path}:6: cannot read the line: line longer than 65536 characters"
+    history = tmp_path / "h.txt"
+    history.write_text("# " + "x" * (limit - 2) + "\n" + HISTORY)
+    assert interphase.read_history(history)[0].tolist() == [0.0, 1.0]
+    history.write_text("0 0 0\n# " + "x" * (limit - 1) + "\n1 0 0.01\n")
+    with pytest.raises(ValueError) as caught:
+        interphase.read_history(history)
+    assert str(caught.value) == f"{history}:2: cannot read the line: line longer than 65536 characters"
+    path = write_case(tmp_path, history=history.read_text())
+    with pytest.raises(ValueError, match=r"h\.txt:2: cannot read the line: line longer than 65536 characters$"):
+        interphase.read_case(path)
+
+
+def test_words_are_split_at_blanks_and_tabs_only(tmp_path):
+    """A no-break space (U+00A0) or another white-space character is part of a word, as for the
+    driver: '0.01<NBSP>' is no number, 'simplified<NBSP>' no model; blanks, tabs and carriage
+    returns separate words."""
+    history = tmp_path / "h.txt"
+    history.write_text("0 0 0\n1 0 0.01\u00a0\n", encoding="utf-8")
+    with pytest.raises(ValueError) as caught:
+        interphase.read_history(history)
+    assert str(caught.value) == f"{history}:2: column 3: cannot parse '0.01\u00a0' as a number"
+    for text, message in [("0 0 0\n1 0\x0b0.01\n", "2: found 2 columns, but line 1 has 3"),
+                          ("0\u20030 0\n1 0 0.01\n", "1: found 2 columns; expected 3"),
+                          ("# columns: t s_T\u00a0Sigma_N\n0 0 0\n1 0 0.01\n", '1: "# columns:" names 2 columns')]:
+        history.write_text(text, encoding="utf-8")
+        with pytest.raises(ValueError) as caught:
+            interphase.read_history(history, control=True)
+        assert str(caught.value).startswith(f"{history}:{message}")
+    # a '#<NBSP>columns:' comment is a plain comment (every column a separation), as for the driver
+    history.write_text("#\u00a0columns: t s_T Sigma_N\n0 0 0\n1 0 0.01\n", encoding="utf-8")
+    assert not interphase.read_history(history, control=True)[2].any()
+    history.write_text("0\t0 0\r\n1 0\t0.01\r\n")
+    assert interphase.read_history(history)[1].tolist() == [[0.0, 0.0], [0.01, 0.0]]
+    path = write_case(tmp_path, CASE.replace("'simplified'", "'simplified\u00a0'"))
+    with pytest.raises(interphase.InterphaseError) as caught:
+        interphase.read_case(path)
+    assert caught.value.detail == (f"{path}: &material: unknown model 'simplified\u00a0' (available: 'simplified', "
+                                   "'micromechanical')")
+    with pytest.raises(interphase.InterphaseError, match="unknown model 'simplified\t'"):
+        interphase.Material(**dict(SIMPLIFIED, model="simplified\t"))
+    with pytest.raises(interphase.InterphaseError, match="stiffness must be"):
+        interphase.Material(**dict(SIMPLIFIED, stiffness="symmetric\u00a0"))
+
+
+@pytest.mark.parametrize("entries, message", [
+    ("tangent_check = -1", "7: &loading: tangent_check must be a finite number >= 0 (0: no check), got -1.0"),
+    ("tangent_check = 1e-5\n  tangent_step = 0",
+     "8: &loading: tangent_step must be a finite number > 0 (mm), got 0.0"),
+    ("tangent_check = 1e-5\n  tangent_step = -1e-8",
+     "8: &loading: tangent_step must be a finite number > 0 (mm), got -0.1E-7"),
+    ("tangent_step = 1e-7", "7: &loading: tangent_step is an entry of the tangent check only: set tangent_check > 0 "
+                            "too, or drop tangent_step"),
+    ("traction_tolerance = 0", "7: &loading: traction_tolerance must be a finite number > 0 (MPa), got 0.0"),
+    ("traction_tolerance = -2.5e-300",
+     "7: &loading: traction_tolerance must be a finite number > 0 (MPa), got -0.25E-299"),
+    ("output_every = 0", "7: &loading: output_every must be at least 1, got 0"),
+    ("output_every = -3", "7: &loading: output_every must be at least 1, got -3"),
+    ("increments = -2", "7: &loading: increments must be at least 1, got -2"),
+])
+def test_read_case_makes_the_drivers_loading_checks(tmp_path, entries, message):
+    """Every check interphase-point's read_loading makes, with its message and the entry's line;
+    made before the constants' ranges are checked, as by the driver."""
+    text = CASE
+    for entry in re.findall(r"(\w+) =", entries):      # (given once: the case's own line dropped)
+        text = re.sub(rf"  {entry} = .*\n", "", text)
+    text = text.replace("  history = 'h.txt'\n", "  " + entries + "\n  history = 'h.txt'\n")
+    for case in (text, text.replace("mu = 0.75", "mu = -0.75")):
+        path = write_case(tmp_path, case)
+        with pytest.raises(ValueError) as caught:
+            interphase.read_case(path)
+        assert str(caught.value) == f"{path}:{message}"
+    given = "  tangent_check = 1e-5, tangent_step = 1e-7, output_every = 3\n"
+    case = interphase.read_case(write_case(tmp_path, CASE.replace("  history", given + "  history")))
+    assert (case.tangent_check, case.tangent_step, case.output_every) == (1e-5, 1e-7, 3)
+    assert interphase.read_case(write_case(tmp_path)).tangent_step == 1e-8
+
+
+def test_reals_in_messages_are_written_as_the_driver_writes_them():
+    """_real_text: Fortran's g0.d with the fewest digits that read back as the same double."""
+    real_text = interphase._files._real_text
+    assert [real_text(x) for x in (-1.0, 0.0, 0.75, -1e-8, 1e300, -1.5e-300, 0.099999, 12.5, 100.0, 0.05625,
+                                   1.7976931348623157e308, 5e-324)] == \
+        ["-1.0", "0.0", "0.75", "-0.1E-7", "0.1E+301", "-0.15E-299", "0.99999E-1", "12.5", "0.1E+3", "0.5625E-1",
+         "0.17976931348623157E+309", "0.5E-323"]
+
+
+@pytest.mark.parametrize("arguments, error, message", [
+    (dict(increments=2.5), TypeError, "increments must be an integer, got 2.5"),
+    (dict(increments="3"), TypeError, "increments must be an integer, got '3'"),
+    (dict(increments=True), TypeError, "increments must be an integer, got True"),
+    (dict(increments=3.0), TypeError, "increments must be an integer, got 3.0"),
+    (dict(increments=0), ValueError, "increments must be at least 1, got 0"),
+    (dict(increments=2**31), ValueError, "increments = 2147483648 is too large"),
+    (dict(output_every=1.9), TypeError, "output_every must be an integer, got 1.9"),
+    (dict(output_every=np.True_), TypeError, "output_every must be an integer"),
+    (dict(output_every=2**32), ValueError, "output_every = 4294967296 is too large"),
+    (dict(traction_tolerance="1e-12"), TypeError, "traction_tolerance must be a number"),
+    (dict(history=[[0.0, 0.0]]), ValueError, "history must have at least 2 rows .*, got 1"),
+    (dict(history=[["0", "0"], ["0.01", "0"]]), TypeError, "history must hold numbers"),
+    (dict(time=["0", "1"]), TypeError, "time must hold numbers"),
+])
+def test_run_refuses_what_it_would_convert(arguments, error, message):
+    """Counts are integers (a numpy integer too), at least 1, a C int; no bool, float or string is
+    rounded or parsed; a history has 2 rows at least, as the driver's."""
+    m = interphase.Material(**SIMPLIFIED)
+    arguments = dict(dict(history=[[0.0, 0.0], [0.01, 0.0]]), **arguments)
+    with pytest.raises(error, match=message):
+        m.run(**arguments)
+    if "increments" in arguments or "output_every" in arguments:
+        with pytest.raises(error, match=message):
+            interphase.Case(m, np.array([0.0, 1.0]), np.array([[0.0, 0.0], [0.01, 0.0]]), output="x.csv",
+                            **dict(dict(increments=1), **{k: v for k, v in arguments.items()
+                                                          if k in ("increments", "output_every")}))
+
+
+def test_run_takes_numpy_integers():
+    m = interphase.Material(**SIMPLIFIED)
+    history = [[0.0, 0.0], [0.01, 0.0]]
+    plain = m.run(history, increments=6, output_every=2)
+    numpy = m.run(history, increments=np.int32(6), output_every=np.uint8(2))
+    assert len(plain) == 4 and np.array_equal(plain.traction, numpy.traction)
+    with pytest.raises(TypeError, match="dt must be a number"):
+        m.update([0.001, 0.0], dt="0.1")
+
+
+# case files that interphase-point and read_case must refuse (or take) alike, each a change of CASE
+# (old, new) and, where given, another history
+DRIVER_CASES = {
+    "history_blank_after": ("'h.txt'", "'h.txt '", None),
+    "history_blank_before": ("'h.txt'", "' h.txt'", None),
+    "history_empty": ("'h.txt'", "''", None),
+    "output_empty": ("'h.csv'", "''", None),
+    "long_comment": ("/\n&loading", "/\n!" + "x" * 65536 + "\n&loading", None),
+    "long_history_comment": ("'h.txt'", "'h.txt'", "# " + "x" * 65535 + "\n" + HISTORY),
+    "nbsp_in_history": ("'h.txt'", "'h.txt'", "0 0 0\n1 0 0.01\u00a0\n"),
+    "one_row": ("'h.txt'", "'h.txt'", "0 0 0\n"),
+    "tangent_check": ("increments = 20", "increments = 20, tangent_check = -1", None),
+    "tangent_step_zero": ("increments = 20", "increments = 20, tangent_check = 1e-5, tangent_step = 0", None),
+    "tangent_step_negative": ("increments = 20", "increments = 20\n  tangent_check = 1e-5, tangent_step = -1e-8",
+                              None),
+    "traction_tolerance": ("increments = 20", "increments = 20, traction_tolerance = -1e-3", None),
+    "output_every": ("increments = 20", "increments = 20, output_every = 0", None),
+    "mu_and_one_row": ("mu = 0.75", "mu = -0.75", "0 0 0\n"),
+    "model_nbsp": ("'simplified'", "'simplified\u00a0'", None),
+    "unclosed_group": ("/\n&loading", "&loading", None),
+    "fracture_entry": ("mu = 0.75", "mu = 0.75, g_cii = 0.1", None),
+    "time": ("'h.txt'", "'h.txt'", "0 0 0\n1 0 0\n0.5 0 0\n"),
+    "vertical_tab_in_row": ("'h.txt'", "'h.txt'", "0 0 0\n1 0\x0b0.01\n"),
+    "carriage_return_in_row": ("'h.txt'", "'h.txt'", "0 0\r0\n1\t0 0.01\r\n"),
+    "columns_upper_t": ("'h.txt'", "'h.txt'", "# columns: T s_T Sigma_N\n0 0 0\n1 0 0.01\n"),
+    "table_simplified": ("'simplified'", "'simplified', table = 'x.dat'", None),
+    "increments_word": ("increments = 20", "increments = abc", None),
+    "entry_unknown": ("increments = 20", "increments = 20, tangent = 1", None),
+}
+
+
+@pytest.mark.parametrize("name", sorted(DRIVER_CASES))
+def test_read_case_refuses_what_the_driver_refuses(point_driver, tmp_path, monkeypatch, name):
+    """interphase-point itself on the case: what it refuses read_case refuses, with its message
+    (an InterphaseError's detail); what it runs read_case reads."""
+    old, new, history = DRIVER_CASES[name]
+    assert old in CASE
+    write_case(tmp_path, CASE.replace(old, new), HISTORY if history is None else history)
+    monkeypatch.chdir(tmp_path)
+    done = subprocess.run([point_driver, "case.nml", "--no-plot", "--output-dir", "out"], capture_output=True)
+    lines = done.stderr.decode("utf-8", errors="surrogateescape").split("\n")
+    if done.returncode == 0:
+        interphase.read_case("case.nml")
+        return
+    expected = next(line for line in lines if line.startswith("interphase-point: error: "))
+    with pytest.raises((ValueError, TypeError)) as caught:
+        interphase.read_case("case.nml")
+    error = caught.value
+    got = error.detail if isinstance(error, interphase.InterphaseError) else str(error)
+    assert got == expected[len("interphase-point: error: "):]

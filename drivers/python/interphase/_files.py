@@ -2,44 +2,167 @@
 
 import os
 import re
+import struct
 
 import numpy as np
 
 from . import _status
 from ._library import InterphaseError
-from ._material import Material, DEFAULT_TRACTION_TOLERANCE, _ENTRIES
+from ._material import Material, DEFAULT_TRACTION_TOLERANCE, _count
 
-_NUMBER = re.compile(r"^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?$")
+_NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?")
 #: the largest file the readers take (bytes), as the driver's (interphase_text_input's MAX_FILE_BYTES)
 MAX_FILE_BYTES = 64 * 1024 * 1024
+#: the longest line the readers take (bytes, without its newline), as the driver's (MAX_LINE_LEN)
+MAX_LINE_LEN = 65536
+# the driver reads a regular file in chunks of this many bytes (interphase_text_input's CHUNK_LEN):
+# which of the two limits a line passes first is told chunk by chunk
+_CHUNK = 4096
+_BLANKS = re.compile(r"[ \t\r]+")
+
+
+def _words(text):
+    """The blank-separated words of `text`, blanks being space, tab and carriage return only, as
+    the driver splits a line (interphase_driver_text's split_words): a no-break space (U+00A0) or
+    any other character is part of a word."""
+    return [w for w in _BLANKS.split(text) if w]
+
+
+def _lower(text):
+    """`text` with A-Z in lower case, nothing else changed (the driver's to_lower)."""
+    return text.translate(_ASCII_LOWER)
+
+
+_ASCII_LOWER = str.maketrans("ABCDEFGHIJKLMNOPQRSTUVWXYZ", "abcdefghijklmnopqrstuvwxyz")
+
+
+def _clip(text):
+    """At most the first 60 bytes of `text`, with '...' when cut, and a control character other
+    than a tab as '?' (the driver's clip_text, for messages)."""
+    raw = text.encode("utf-8", errors="surrogateescape")
+    if len(raw) > 60:
+        raw = raw[:57] + b"..."
+    raw = bytes(63 if (b < 32 and b != 9) or b == 127 else b for b in raw)
+    return raw.decode("utf-8", errors="surrogateescape")
 
 
 def _text_lines(path):
-    """The lines of a text file, read as the driver reads it: bytes as they are (UTF-8, with any
-    other byte kept as a surrogate, so a comment in another encoding is read and a path named in
-    the file opens the file of those bytes), at most MAX_FILE_BYTES (a larger file, /dev/zero
-    included, is refused: ValueError naming the file), and without a UTF-8 byte-order mark (refused,
-    as the driver refuses it)."""
+    """The lines of a text file, read as the driver reads it (interphase_text_input): bytes as
+    they are (UTF-8, with any other byte kept as a surrogate, so a comment in another encoding is
+    read and a path named in the file opens the file of those bytes), one trailing carriage return
+    dropped; a line longer than MAX_LINE_LEN bytes (a trailing carriage return counted, a comment
+    too), a file larger than MAX_FILE_BYTES (/dev/zero included) and a UTF-8 byte-order mark are
+    refused: ValueError 'path:line: cannot read the line: why', the driver's message."""
     with open(path, "rb") as f:
-        data = f.read(MAX_FILE_BYTES + 1)
-    if len(data) > MAX_FILE_BYTES:
-        raise ValueError(f"{path}: the file is larger than {MAX_FILE_BYTES} bytes")
-    if data.startswith(b"\xef\xbb\xbf"):
-        raise ValueError(f"{path}:1: the file starts with a UTF-8 byte-order mark (bytes EF BB BF): save it "
-                         "without one")
-    lines = data.decode("utf-8", errors="surrogateescape").split("\n")
-    if lines and lines[-1] == "":
-        lines.pop()
-    return [line[:-1] if line.endswith("\r") else line for line in lines]
+        data = f.read(MAX_FILE_BYTES + _CHUNK)
+    lines, start, number = [], 0, 0
+    while start < len(data):
+        number += 1
+        end = data.find(b"\n", start)
+        stop = len(data) if end < 0 else end            # the line: data[start:stop], its newline at end
+        line = data[start:stop]
+        line = line[:-1] if line.endswith(b"\r") else line
+        why = None
+        too_long = stop - start > MAX_LINE_LEN
+        # (the byte past the limit in this line, its newline included; both limits passed in one
+        # chunk: the line's is told first)
+        too_large = len(data) > MAX_FILE_BYTES and start <= MAX_FILE_BYTES <= (stop if end >= 0 else stop - 1)
+        if too_long and not (too_large and (start + MAX_LINE_LEN) // _CHUNK > MAX_FILE_BYTES // _CHUNK):
+            why = f"line longer than {MAX_LINE_LEN} characters"
+        elif too_large:
+            why = f"file larger than {MAX_FILE_BYTES} bytes"
+        elif number == 1 and line.startswith(b"\xef\xbb\xbf"):
+            why = "the file starts with a UTF-8 byte-order mark (bytes EF BB BF): save it without one"
+        if why is not None:
+            raise ValueError(f"{path}:{number}: cannot read the line: {why}")
+        lines.append(line.decode("utf-8", errors="surrogateescape"))
+        if end < 0:
+            break
+        start = end + 1
+    return lines
+
+
+def _real_text(value):
+    """A real as the driver's messages write it (interphase_real_text's real_text: Fortran g0.d
+    editing with the fewest digits that read back as the same double, a leading zero, a digit after
+    a final point): -1.0, 0.0, 0.75, -0.1E-7, 0.1E+301."""
+    value = float(value)
+    if value != value:
+        return "NaN"
+    if value in (float("inf"), float("-inf")):
+        return "Infinity" if value > 0 else "-Infinity"
+    sign = "-" if np.signbit(value) else ""
+    for digits in range(1, 18):
+        mantissa, exponent = f"{abs(value):.{digits - 1}e}".split("e")
+        figures = mantissa.replace(".", "")
+        k = int(exponent) + 1                      # value = 0.figures * 10**k
+        if value == 0.0:
+            text = sign + "0." + "0" * (digits - 1)
+        elif 0 <= k <= digits:                     # F editing, digits - k decimals
+            text = sign + figures[:k] + "." + figures[k:]
+        else:                                      # E editing: 0.figuresE+k
+            text = f"{sign}.{figures}E{'-' if k < 0 else '+'}{abs(k)}"
+        if struct.pack("<d", float(text)) == struct.pack("<d", value):
+            break
+    if text.endswith("."):
+        text += "0"
+    if text.startswith("."):
+        text = "0" + text
+    elif text.startswith("-."):
+        text = "-0" + text[1:]
+    return text
+
+
+def _overflows(literal):
+    """Whether a real literal lies beyond the largest double, decided from its digits and exponent
+    as the driver decides it (interphase_text_input's overflows: 1.7976931348623158e308 does)."""
+    mark = re.search(r"[eEdD]", literal)
+    exponent = 0
+    mantissa = literal
+    if mark:
+        tail = literal[mark.start() + 1:]
+        # (the exponent's characters from the first that is not a sign or a 0; all: one more)
+        first = next((i for i, c in enumerate(tail) if c not in "+-0"), None)
+        if (len(tail) + 1 if first is None else len(tail) - first) > 6:
+            return tail[:1] != "-" and any(c not in "+-0." for c in literal[:mark.start()])
+        exponent = int(tail)
+        mantissa = literal[:mark.start()]
+    whole, _, fraction = mantissa.lstrip("+-").partition(".")
+    digits = (whole + fraction).lstrip("0")
+    if not digits:
+        return False
+    magnitude = len(whole.lstrip("0")) if whole.strip("0") else -(len(fraction) - len(fraction.lstrip("0")))
+    magnitude += exponent
+    leading = digits[:17].ljust(17, "0")
+    return magnitude > 309 or (magnitude == 309 and leading > "17976931348623157")
+
+
+def _parse_real(text):
+    """(value, None) when `text` (blanks around it aside) is one finite real literal, else (None,
+    why): 'not a number', 'not finite (NaN or Inf)' or 'not finite (out of range)' (the driver's
+    parse_real)."""
+    field = text.strip(" \t")
+    if not _NUMBER.fullmatch(field):
+        word = _lower(field[1:] if field[:1] in ("+", "-") else field)
+        if word in ("inf", "infinity", "nan") or word.startswith("nan("):
+            return None, "not finite (NaN or Inf)"
+        return None, "not a number"
+    if _overflows(field):
+        return None, "not finite (out of range)"
+    value = float(field.replace("d", "e").replace("D", "e"))
+    if not np.isfinite(value):
+        return None, "not finite (out of range)"
+    return value, None
 
 
 def _number(text, where):
-    if not _NUMBER.match(text):
-        raise ValueError(f"{where}: cannot parse {text!r} as a number")
-    value = float(text.replace("d", "e").replace("D", "e"))
-    if not np.isfinite(value):
-        raise ValueError(f"{where}: {text!r} is not a finite number")
-    return value
+    """The number of a history's field, or ValueError with the driver's message (parse_number)."""
+    value, why = _parse_real(text)
+    if why is None:
+        return value
+    if "finite" in why:
+        raise ValueError(f"{where}: '{_clip(text)}' is not a finite number {why[len('not finite '):]}")
+    raise ValueError(f"{where}: cannot parse '{_clip(text)}' as a number")
 
 
 # the names of a `# columns:` line after t (file order): separation, traction
@@ -63,21 +186,25 @@ def _without_parentheses(text):
 
 
 def _column_names(text, where):
-    """The traction flags (file order: shear(s), normal) of a `# columns:` comment."""
-    _check_units(text.split(":", 1)[1], where)
-    words = _without_parentheses(text.split(":", 1)[1]).split()
+    """The traction flags (file order: shear(s), normal) of a `# columns:` comment (`text`: tabs
+    as blanks, from the key on; interphase_driver_history's read_column_names)."""
+    _check_units(text[len("columns:"):], where)
+    words = _words(_without_parentheses(text[len("columns:"):]))
     if len(words) not in (3, 4):
         raise ValueError(f'{where}: "# columns:" names {len(words)} columns; expected t and 2 (2-D) or 3 '
                          '(3-D) components, e.g. "# columns: t s_T Sigma_N"')
-    if words[0] != "t":
-        raise ValueError(f'{where}: "# columns:" must start with t, got {words[0]!r}')
+    # (the driver keeps the first 16 bytes of a word)
+    words = [w.encode("utf-8", errors="surrogateescape")[:16].decode("utf-8", errors="surrogateescape")
+             for w in words]
+    if _lower(words[0]) != "t":
+        raise ValueError(f"{where}: \"# columns:\" must start with t, got '{words[0]}'")
     flags = []
     for i, word in enumerate(words[1:]):
         names = _NAMES[len(words)][i]
-        if word.lower() not in (names[0].lower(), names[1].lower()):
-            raise ValueError(f'{where}: "# columns:" column {i + 2} is {word!r}; expected {names[0]} or '
-                             f'{names[1]} (t, the shear component(s), then the normal one)')
-        flags.append(word.lower() == names[1].lower())
+        if _lower(word) not in (_lower(names[0]), _lower(names[1])):
+            raise ValueError(f"{where}: \"# columns:\" column {i + 2} is '{word}'; expected {names[0]} or "
+                             f"{names[1]} (t, the shear component(s), then the normal one)")
+        flags.append(_lower(word) == _lower(names[1]))
     return len(words), flags
 
 
@@ -90,7 +217,7 @@ def _column_words(comment):
     of them is a traction's (`# t s_T Sigma_N`: read as a plain comment it would run the tractions
     as separations), "order" when they are not in the rows' order (`# t s_N s_T`), else None
     (interphase_driver_history's column_words_kind)."""
-    words = _without_parentheses(comment).split()
+    words = _words(_without_parentheses(comment))
     if words and words[0] in ("column", "columns"):
         words = words[1:]
     if len(words) < 2 or not all(w in _COLUMN_NAMES for w in words):
@@ -108,8 +235,9 @@ _UNITS = {"t": "s", "s_t": "mm", "s_t1": "mm", "s_t2": "mm", "s_n": "mm",
 
 def _check_units(text, where):
     """Refuse a unit in parentheses right after a column name of a `columns:` line (`text`, after
-    the key) that is not the driver's: (mm) after s_X, (MPa) after Sigma_X, (s) after t (any
-    case); parentheses after anything else are skipped (interphase_driver_history's check_units)."""
+    the key, tabs as blanks) that is not the driver's: (mm) after s_X, (MPa) after Sigma_X, (s)
+    after t (any case); parentheses after anything else are skipped (interphase_driver_history's
+    check_units)."""
     i = 0
     while i < len(text):
         if text[i] != "(":
@@ -121,14 +249,14 @@ def _check_units(text, where):
             if depth == 0:
                 break
             close += 1
-        unit = text[i + 1:close].strip()
-        before = text[:i].rstrip()
+        unit = text[i + 1:close].strip(" ")
+        before = text[:i].rstrip(" ")
         start = len(before)
         while start > 0 and before[start - 1] not in " \t)":
             start -= 1
         name = before[start:]
-        wanted = _UNITS.get(name.lower())
-        if wanted is not None and unit.lower() != wanted.lower():
+        wanted = _UNITS.get(_lower(name))
+        if wanted is not None and _lower(unit) != _lower(wanted):
             raise ValueError(f'{where}: "# columns:" gives {name} the unit ({unit}), but the driver reads {name} '
                              f'in {wanted}: convert the column, and write ({wanted}) or no unit')
         i = close + 1
@@ -143,58 +271,70 @@ def read_history(path, control=False):
     or (time, value, control) (control=True; control (nrows, ntens) booleans, true where the
     value is a traction). Values and controls are in the C interface's order, normal first
     ((s_N, s_T) or (s_N, s_T1, s_T2)), ready for Material.run.
+
+    The file is read as the driver reads it (interphase_driver_history): words separated by
+    blanks, tabs and carriage returns only (a no-break space is part of the word, which is then
+    no number), lines of at most MAX_LINE_LEN bytes; what it refuses raises ValueError with the
+    driver's message, naming the file and the line.
     """
     rows, flags, lines = [], [], []
-    named, names_line = None, 0
+    named, names_line, first_line = None, 0, 0
     for number, line in enumerate(_text_lines(path), 1):
         where = f"{path}:{number}"
         head, hash_, comment = line.partition("#")
-        key = comment.lstrip().lower()
-        if hash_ and not key.startswith("columns:") and re.match(r"columns?[ \t]*:", key):
-            raise ValueError(f'{where}: "#{comment.rstrip()}" looks like a "# columns:" line, but is not one: '
+        # (the driver's columns_line_kind: tabs read as blanks, leading blanks dropped, A-Z lowered)
+        text = comment.replace("\t", " ").lstrip(" ")
+        key = _lower(text)
+        shown = comment.rstrip(" ")
+        if hash_ and not key.startswith("columns:") and re.match(r"columns?[ ]*:", key):
+            raise ValueError(f'{where}: "#{shown}" looks like a "# columns:" line, but is not one: '
                              'write the key "columns:" (one word, the colon right after it), e.g. '
                              '"# columns: t s_T Sigma_N"')
         kind = _column_words(key) if hash_ else None
         if kind == "order":
-            raise ValueError(f'{where}: "#{comment.rstrip()}" names the columns in another order than the rows '
+            raise ValueError(f'{where}: "#{shown}" names the columns in another order than the rows '
                              'are read (t, the shear component(s), then the normal one: t s_T s_N or t s_T1 s_T2 '
                              's_N): reorder the columns and the comment')
         if kind == "tractions":
-            raise ValueError(f'{where}: "#{comment.rstrip()}" names traction columns, but is not a "# columns:" '
+            raise ValueError(f'{where}: "#{shown}" names traction columns, but is not a "# columns:" '
                              'line, so every column would be read as a separation: write the key "columns:" '
                              'first, e.g. "# columns: t s_T Sigma_N"')
         if hash_ and key.startswith("columns:"):
-            if head.strip():
+            if head.strip(" \t"):
                 raise ValueError(f'{where}: a "# columns:" line holds nothing before the \'#\' (here '
-                                 f"'{head.strip()}'): put the data row on a line of its own")
-            ncolumns, named = _column_names(comment.lstrip(), where)
-            names_line = number
+                                 f"'{head.strip(' ')}'): put the data row on a line of its own")
+            ncolumns, named = _column_names(text, where)
             if rows and ncolumns != len(rows[0]):
                 raise ValueError(f'{where}: the "# columns:" line names {ncolumns} columns, but the data '
                                  f'lines have {len(rows[0])}')
+            names_line = number
             named = (ncolumns, named)
             continue
-        words = head.split()
+        words = _words(head)
         if not words:
             continue
-        if len(words) not in (3, 4):
-            raise ValueError(f"{where}: {len(words)} columns; a history row is 't s_T s_N' or 't s_T1 s_T2 s_N'")
-        if rows and len(words) != len(rows[0]):
-            raise ValueError(f"{where}: {len(words)} columns, the first row has {len(rows[0])}")
-        if named is not None and named[0] != len(words):
-            raise ValueError(f'{where}: {len(words)} columns, but the "# columns:" line (line {names_line}) '
-                             f'names {named[0]}')
-        rows.append([_number(w, where) for w in words])
+        if not rows:
+            if len(words) not in (3, 4):
+                raise ValueError(f"{where}: found {len(words)} columns; expected 3 (t s_T s_N, 2-D) or 4 "
+                                 "(t s_T1 s_T2 s_N, 3-D)")
+            first_line = number
+            if named is not None and named[0] != len(words):
+                raise ValueError(f'{where}: found {len(words)} columns, but the "# columns:" line (line '
+                                 f'{names_line}) names {named[0]}')
+        elif len(words) != len(rows[0]):
+            raise ValueError(f"{where}: found {len(words)} columns, but line {first_line} has {len(rows[0])}; "
+                             "every data line must have the same number of columns")
+        row = [_number(w, f"{where}: column {i}") for i, w in enumerate(words, 1)]
+        if rows and not row[0] > rows[-1][0]:
+            raise ValueError(f"{where}: time {_real_text(row[0])} is not greater than the previous time "
+                             f"{_real_text(rows[-1][0])} (line {lines[-1]}); times must increase strictly")
+        rows.append(row)
         flags.append(named[1] if named is not None else [False] * (len(words) - 1))
         lines.append(number)
     if len(rows) < 2:
         raise ValueError(f"{path}: needs at least 2 data rows, found {len(rows)}")
     table = np.array(rows)
     time = table[:, 0]
-    if not np.all(np.diff(time) > 0.0):
-        bad = int(np.argmin(np.diff(time) > 0.0)) + 1
-        raise ValueError(f"{path}:{lines[bad]}: time {time[bad]!r} is not greater than the previous time "
-                         f"{time[bad - 1]!r}; times must increase strictly")
     value = np.concatenate([table[:, -1:], table[:, 1:-1]], axis=1)
     f = np.array(flags, dtype=bool)
     traction = np.concatenate([f[:, -1:], f[:, :-1]], axis=1)
@@ -206,41 +346,86 @@ def read_history(path, control=False):
     return time, value
 
 
-_INTEGER = re.compile(r"^[+-]?[0-9]+$")
+_INTEGER = re.compile(r"[+-]?[0-9]+")
 
 
-def _namelist_entries(path):
-    """{group: {entry: (value, line)}} of a namelist file, read as strictly as the driver's
-    pre-check reads it (drivers/interphase_driver_namelist.f90): one group of each name, each
-    entry once and with one value (a quoted string, a number, .true./.false.), nothing outside a
-    group. Numbers are int when written as integers, else float."""
-    groups, group, name, values, entry_line = {}, None, None, [], 0
-    group_lines = {}
+def _unquoted(text):
+    """The text of a quoted string as written (its quotes around it, a doubled quote for one)."""
+    return text[1:-1].replace(text[0] * 2, text[0])
 
-    def fail(line, text):
-        raise ValueError(f"{path}:{line}: {text}")
+
+def _untyped(quoted, text, where):
+    """A value of read_namelist: a string, a logical, an int when written as an integer, else a
+    float."""
+    if quoted:
+        return _unquoted(text)
+    if _lower(text) in (".true.", "t", ".t."):
+        return True
+    if _lower(text) in (".false.", "f", ".f."):
+        return False
+    if _INTEGER.fullmatch(text):
+        return int(text)
+    return _number(text, where)
+
+
+def _typed(kind, quoted, text, where):
+    """The value of an entry of `kind`, checked as the driver's pre-check checks it (its
+    finish_entry): ValueError with its message ('file:line: &group: entry = text is not ...')."""
+    if kind == "real":
+        value, why = (None, "not a number") if quoted else _parse_real(text)
+        if why is not None:
+            raise ValueError(f"{where} = {_clip(text)} is {why}")
+        return value
+    if kind == "integer":
+        if quoted or not _INTEGER.fullmatch(text):
+            raise ValueError(f"{where} = {_clip(text)} is not an integer")
+        if len(text.lstrip("+-0")) > 9:
+            raise ValueError(f"{where} = {_clip(text)} is too large: an integer of at most 9 digits")
+        return int(text)
+    if kind == "logical":
+        if quoted or _lower(text) not in (".true.", ".false.", "t", "f", ".t.", ".f."):
+            raise ValueError(f"{where} = {_clip(text)} is not .true. or .false.")
+        return _lower(text) in (".true.", "t", ".t.")
+    if not quoted:
+        raise ValueError(f"{where} = {_clip(text)} is not a quoted string")
+    return _unquoted(text)
+
+
+def _namelist_entries(path, known=None):
+    """{group: {entry: (value, line)}} of a namelist file, read as strictly as the
+    driver's pre-check reads it (drivers/interphase_driver_namelist.f90): one group of each name,
+    each entry once and with one value (a quoted string, a number, .true./.false.), nothing outside
+    a group, a group closed by "/" (or &end) before the next one. With `known` ({group: {entry:
+    kind}}, the kinds "string", "real", "integer", "logical"), a group or an entry not in it and a
+    value not of its entry's kind are refused as well, where and as the driver refuses them, and the
+    values are of their kinds; without, numbers are int when written as integers, else float."""
+    groups = {}
+    group, name, values, entry_line, number = None, None, [], 0, 0
+
+    def fail(text):
+        raise ValueError(f"{path}:{number}: {text}")
 
     def finish():
+        """Check the entry just ended (its name, its values) and keep it."""
         if name is None:
             return
-        if len(values) != 1:
-            fail(entry_line, f"&{group}: {name} needs one value, got {len(values)}")
-        kind, text = values[0]
+        kinds = None if known is None else known[group]
+        if kinds is not None and name not in kinds:
+            raise ValueError(f"{path}:{entry_line}: &{group}: {_clip(name)} is not an entry of &{group}; its "
+                             "entries: " + ", ".join(kinds))
         where = f"{path}:{entry_line}: &{group}: {name}"
-        if kind == "string":
-            value = text
-        elif text.lower() in (".true.", "t", ".t."):
-            value = True
-        elif text.lower() in (".false.", "f", ".f."):
-            value = False
-        elif _INTEGER.match(text):
-            value = int(text)
-        else:
-            value = _number(text, where)
+        if len(values) != 1:
+            raise ValueError(f"{where} needs one value, got {len(values)}")
+        quoted, text = values[0]
+        value = _untyped(quoted, text, where) if kinds is None else _typed(kinds[name], quoted, text, where)
         groups[group][name] = (value, entry_line)
 
-    lines = _text_lines(path)
-    for number, line in enumerate(lines, 1):
+    def add(quoted, text):
+        if name is None:
+            fail(f"&{group}: a value without an entry name: {_clip(text)}")
+        values.append((quoted, text))
+
+    for number, line in enumerate(_text_lines(path), 1):
         i, n = 0, len(line)
         while i < n:
             c = line[i]
@@ -250,64 +435,61 @@ def _namelist_entries(path):
                 break
             elif group is None:
                 if c != "&":
-                    fail(number, f'text outside a group: "{line[i:].strip()}"')
+                    fail(f'text outside a group: "{_clip(line[i:])}"')
                 j = i + 1
                 while j < n and line[j] not in " \t,/=!":
                     j += 1
-                group = line[i + 1:j].lower()
+                group = _lower(line[i + 1:j])
+                if known is not None and group not in known:
+                    fail(f"&{_clip(group)} is not a group of this case file; its groups: "
+                         + ", ".join("&" + g for g in known))
                 if group in groups:
-                    fail(number, f"&{group} given twice: a case file has one group of each name")
+                    fail(f"&{group} given twice: a case file has one group of each name")
                 groups[group] = {}
-                group_lines[group] = number
                 name, values = None, []
                 i = j
-            elif c == "/" or line[i:i + 4].lower() == "&end":
+            elif c in "/&":
+                if c == "&" and _lower(line[i:i + 4]) != "&end":
+                    fail(f'&{group} is not closed by "/" before "{_clip(line[i:])}"')
                 finish()
                 group, name, values = None, None, []
                 i += 1 if c == "/" else 4
             elif c == ",":
                 i += 1
             elif c == "=":
-                fail(number, f'&{group}: "=" without an entry name')
+                fail(f'&{group}: "=" without an entry name')
             elif c in "'\"":
-                j, text = i + 1, ""
+                j = i + 1
                 while j < n:
                     if line[j] == c:
                         if j + 1 < n and line[j + 1] == c:
-                            text += c
                             j += 2
                             continue
                         break
-                    text += line[j]
                     j += 1
                 if j >= n:
-                    fail(number, f"&{group}: a string that does not end on its line: {line[i:]}")
-                if name is None:
-                    fail(number, f"&{group}: a value without an entry name: {line[i:j + 1]}")
-                values.append(("string", text))
+                    fail(f"&{group}: a string that does not end on its line: {_clip(line[i:])}")
+                add(True, line[i:j + 1])
                 i = j + 1
             else:
                 j = i
                 while j < n and line[j] not in " \t,=/!":
                     j += 1
-                word = line[i:j]
                 k = j
                 while k < n and line[k] in " \t":
                     k += 1
                 if k < n and line[k] == "=":
                     finish()
-                    name, values, entry_line = word.lower(), [], number
+                    name, values, entry_line = _lower(line[i:j]), [], number
                     if name in groups[group]:
-                        fail(number, f"&{group}: entry {name} given twice")
+                        fail(f"&{group}: entry {name} given twice")
                     i = k + 1
                     continue
-                if name is None:
-                    fail(number, f"&{group}: a value without an entry name: {word}")
-                values.append(("word", word))
+                add(False, line[i:j])
                 i = j
     if group is not None:
         raise ValueError(f'{path}: &{group} is not closed by "/"')
-    return groups, group_lines
+    return groups
 
 
 def read_namelist(path):
@@ -315,60 +497,32 @@ def read_namelist(path):
     as integers, else float) and logicals (bool), one value each; the file is read as strictly as
     the driver's pre-check reads it (a group or an entry given twice, an entry with no value or
     with several, text outside a group: ValueError naming the file and the line)."""
-    return {g: {k: v for k, (v, _) in entries.items()} for g, entries in _namelist_entries(path)[0].items()}
+    return {g: {k: v for k, (v, _) in entries.items()} for g, entries in _namelist_entries(path).items()}
 
 
-# the entries of interphase-point's groups and their kinds (drivers/interphase_driver_case.f90)
-# (&material's entries are Material's, _ENTRIES; the words among them are strings, the rest numbers)
+# the entries of interphase-point's groups and their kinds, in the driver's order (its messages
+# list them so: drivers/interphase_driver_case.f90, material_entry_kinds and LOADING_ENTRIES)
 _MATERIAL_WORDS = ("model", "damage_law", "table", "rcurve", "rcurve_file", "growth_slip", "stiffness")
+_MATERIAL_REALS = ("mu", "s0_n", "sf_n", "s0_t", "sf_t", "k_n", "k_t", "d0", "g_ci", "g_cii", "contact_band",
+                   "viscosity")
 _KINDS = {
-    "material": {k: "string" if k in _MATERIAL_WORDS else "real" for k in _ENTRIES},
+    "material": dict([(k, "string") for k in _MATERIAL_WORDS] + [(k, "real") for k in _MATERIAL_REALS]),
     "loading": {"history": "string", "output": "string", "increments": "integer", "plot": "logical",
                 "traction_tolerance": "real", "output_every": "integer", "tangent_check": "real",
                 "tangent_step": "real"},
 }
-_KIND_WORDS = {"string": "a quoted string", "real": "a number", "integer": "an integer",
-               "logical": ".true. or .false."}
+#: interphase-point's default tangent_step (mm)
+DEFAULT_TANGENT_STEP = 1.0e-8
 
 
-def _checked_case_entries(path):
-    """The case file's groups, each entry checked against its kind (as interphase-point checks
-    them): ValueError naming the file, the line, the group and the entry."""
-    groups, group_lines = _namelist_entries(path)
-    known = ", ".join("&" + g for g in _KINDS)
-    for group, entries in groups.items():
-        if group not in _KINDS:
-            raise ValueError(f"{path}:{group_lines[group]}: &{group} is not a group of this case file; "
-                             f"its groups: {known}")
-        for name, (value, line) in entries.items():
-            where = f"{path}:{line}: &{group}: {name}"
-            kind = _KINDS[group].get(name)
-            if kind is None:
-                raise ValueError(f"{where} is not an entry of &{group}; its entries: "
-                                 + ", ".join(_KINDS[group]))
-            good = {"string": isinstance(value, str),
-                    "real": isinstance(value, (int, float)) and not isinstance(value, bool),
-                    "integer": isinstance(value, int) and not isinstance(value, bool),
-                    "logical": isinstance(value, bool)}[kind]
-            if not good:
-                raise ValueError(f"{where} = {value!r} is not {_KIND_WORDS[kind]}")
-            if kind == "integer" and abs(value) > 999_999_999:   # (the driver's limit: 9 digits)
-                raise ValueError(f"{where} = {value!r} is too large: an integer of at most 9 digits")
-    for group in _KINDS:
-        if group not in groups:
-            raise ValueError(f'{path}: &{group}: group not found (expected "&{group} ... /")')
-    missing = [k for k in ("history", "increments", "output") if k not in groups["loading"]]
-    if missing:
-        raise ValueError(f"{path}: &loading: missing entr{'ies' if len(missing) > 1 else 'y'} "
-                         + ", ".join(missing))
-    increments, line = groups["loading"]["increments"]
-    if increments < 1:
-        raise ValueError(f"{path}:{line}: &loading: increments must be at least 1, got {increments}")
-    if "tangent_step" in groups["loading"] and not groups["loading"].get("tangent_check", (0.0, 0))[0] > 0.0:
-        raise ValueError(f"{path}:{groups['loading']['tangent_step'][1]}: &loading: tangent_step is an entry of "
-                         "the tangent check only: set tangent_check > 0 too, or drop tangent_step")
-    return ({g: {k: v for k, (v, _) in entries.items()} for g, entries in groups.items()},
-            {g: {k: line for k, (_, line) in entries.items()} for g, entries in groups.items()})
+def _at_entry(path, group, text, lines):
+    """The message 'path: &group: text' of a check after the namelist read, with the line of the
+    entry whose name `text` starts with when the file gives it: 'path:line: &group: text' (the
+    driver's with_entry_line)."""
+    word = re.match(r"[a-z0-9_]+", text)
+    if word and word.group() in lines.get(group, {}):
+        return f"{path}:{lines[group][word.group()]}: &{group}: {text}"
+    return f"{path}: &{group}: {text}"
 
 
 # The &material entry that holds the constant a PROPS status refuses (as interphase-point names it:
@@ -390,15 +544,20 @@ def _props_entry(error):
 class Case:
     """A case file of interphase-point: `material` (Material), `time`, `value` and `control` (the
     history, normal first: separations, or tractions where `control` is true), `increments`,
-    `traction_tolerance`, `output_every` and `output` (the CSV name the driver writes).
-    `separation` is `value` (a history without traction control holds separations only)."""
+    `traction_tolerance`, `output_every` and `output` (the CSV name the driver writes), and the
+    driver's tangent check `tangent_check` and `tangent_step` (read and checked; `run` does not
+    make the check). `separation` is `value` (a history without traction control holds
+    separations only)."""
 
     def __init__(self, material, time, value, increments, output, control=None,
-                 traction_tolerance=DEFAULT_TRACTION_TOLERANCE, output_every=1):
+                 traction_tolerance=DEFAULT_TRACTION_TOLERANCE, output_every=1, tangent_check=0.0,
+                 tangent_step=DEFAULT_TANGENT_STEP):
         self.material, self.time, self.value = material, time, value
         self.control = np.zeros(value.shape, dtype=bool) if control is None else control
-        self.increments, self.output = increments, output
-        self.traction_tolerance, self.output_every = traction_tolerance, output_every
+        self.increments, self.output = _count("increments", increments, "Case"), output
+        self.traction_tolerance = traction_tolerance
+        self.output_every = _count("output_every", output_every, "Case")
+        self.tangent_check, self.tangent_step = tangent_check, tangent_step
 
     @property
     def separation(self):
@@ -414,27 +573,79 @@ class Case:
 def read_case(path):
     """Read an interphase-point case file (drivers/README.md): its &material and &loading.
 
-    The paths it names (history, table, rcurve_file) are taken relative to its folder, as the
-    driver takes them. The history may impose tractions (`# columns:` lines).
+    The file is checked as the driver checks it, in its order, with its messages (naming the file,
+    and the line and the entry where there is one): the pre-check (bounded lines, one group of each
+    name, each entry once, known and with one value of its kind: ValueError), &material's entries
+    (a missing one: TypeError; a word or an entry the model or the law does not take:
+    InterphaseError), &loading's (missing, or out of range: ValueError), the constants' ranges
+    (the library's check: InterphaseError), the history (read_history), then the table and the
+    R-curve (InterphaseError). Paths are read without the blanks around them, and the paths it
+    names (history, table, rcurve_file) are taken relative to its folder, as the driver takes them.
+    The history may impose tractions (`# columns:` lines).
     """
-    groups, lines = _checked_case_entries(path)
+    groups = _namelist_entries(path, _KINDS)
+    values = {g: {k: v for k, (v, _) in entries.items()} for g, entries in groups.items()}
+    lines = {g: {k: line for k, (_, line) in entries.items()} for g, entries in groups.items()}
     base = os.path.dirname(os.path.abspath(path))
-    entries = dict(groups["material"])
-    for key in ("table", "rcurve_file"):
-        if key in entries and entries[key].strip():     # ('': left out, as the driver reads it)
-            entries[key] = os.path.join(base, entries[key])
+
+    def found(group):
+        if group not in groups:
+            raise ValueError(f'{path}: &{group}: group not found (expected "&{group} ... /")')
+        return values[group]
+
+    # &material: which entries are given, and their words (the driver's material_props)
     try:
-        material = Material(**entries)
-    except TypeError as error:          # a missing entry: name the file
-        raise TypeError(f"{path}: &material: {error}") from None
-    except InterphaseError as error:    # a constant out of range: name the file, its line and entry
+        material = Material._unchecked(found("material"), base)
+    except TypeError as error:          # a missing entry
+        text = str(error)
+        raise TypeError(_at_entry(path, "material", text[len("Material: "):] if text.startswith("Material: ")
+                                  else text, lines)) from None
+    except InterphaseError as error:
+        raise InterphaseError(error.status, _at_entry(path, "material", error.detail, lines)) from None
+
+    # &loading (the driver's read_loading)
+    loading = found("loading")
+
+    def refuse(text):
+        raise ValueError(_at_entry(path, "loading", text, lines))
+
+    history = loading.get("history", "").strip(" ")
+    output = loading.get("output", "").strip(" ")
+    missing = [k for k, given in (("history", history != ""), ("increments", "increments" in loading),
+                                  ("output", output != "")) if not given]
+    if missing:
+        refuse(f"missing entr{'ies' if len(missing) > 1 else 'y'} " + ", ".join(missing))
+    increments = loading["increments"]
+    if increments < 1:
+        refuse(f"increments must be at least 1, got {increments}")
+    tolerance = loading.get("traction_tolerance", DEFAULT_TRACTION_TOLERANCE)
+    if not (tolerance > 0.0 and np.isfinite(tolerance)):
+        refuse(f"traction_tolerance must be a finite number > 0 (MPa), got {_real_text(tolerance)}")
+    output_every = loading.get("output_every", 1)
+    if output_every < 1:
+        refuse(f"output_every must be at least 1, got {output_every}")
+    tangent_check = loading.get("tangent_check", 0.0)
+    if not (tangent_check >= 0.0 and np.isfinite(tangent_check)):
+        refuse(f"tangent_check must be a finite number >= 0 (0: no check), got {_real_text(tangent_check)}")
+    tangent_step = loading.get("tangent_step", DEFAULT_TANGENT_STEP)
+    if "tangent_step" in loading and not tangent_check > 0.0:
+        # (the step of a check that is not made: refused, not ignored)
+        refuse("tangent_step is an entry of the tangent check only: set tangent_check > 0 too, or drop "
+               "tangent_step")
+    if not (tangent_step > 0.0 and np.isfinite(tangent_step)):
+        refuse(f"tangent_step must be a finite number > 0 (mm), got {_real_text(tangent_step)}")
+
+    # the constants' ranges (the library's decoder), named with their entry and its line
+    try:
+        material._check_props()
+    except InterphaseError as error:
         entry = _props_entry(error)
-        if entry is None or entry not in lines["material"]:
+        if entry is None:
             raise InterphaseError(error.status, f"{path}: &material: {error.detail}") from None
-        raise InterphaseError(error.status, f"{path}:{lines['material'][entry]}: &material: {entry}: "
-                              f"{error.detail}") from None
-    loading = groups["loading"]
-    time, value, control = read_history(os.path.join(base, loading["history"]), control=True)
-    return Case(material, time, value, loading["increments"], loading["output"], control=control,
-                traction_tolerance=float(loading.get("traction_tolerance", DEFAULT_TRACTION_TOLERANCE)),
-                output_every=loading.get("output_every", 1))
+        raise InterphaseError(error.status, _at_entry(path, "material", f"{entry}: {error.detail}", lines)) from None
+
+    time, value, control = read_history(os.path.join(base, history), control=True)
+    # the table and the R-curve, loaded and checked (as the driver does before the replay)
+    material.update(np.zeros(2), dt=0.0)
+    return Case(material, time, value, increments, output, control=control, traction_tolerance=float(tolerance),
+                output_every=output_every, tangent_check=float(tangent_check), tangent_step=float(tangent_step))

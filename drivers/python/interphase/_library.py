@@ -129,7 +129,7 @@ def load_rcurve(path):
 def _load_file(kind, loader, path):
     path = os.fspath(path)
     detail = detail_buffer()
-    status = loader(path.encode(), detail, DETAIL_LEN)
+    status = loader(os.fsencode(path), detail, DETAIL_LEN)      # (the bytes of the name, any encoding)
     if status != _status.STATUS_OK:
         raise InterphaseError(status, text_of(detail))
     _loaded[kind] = os.path.abspath(path)

@@ -45,23 +45,76 @@ def _same_bits(a, b):
     return struct.pack("<d", a) == struct.pack("<d", b)
 
 
-def _real(name, value):
+def _real(name, value, who="Material"):
     """The float of a numeric entry: a real number (int, float, a numpy scalar), not a string or a
     bool (interphase-point refuses a quoted number as well)."""
     if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "fiu":
         return float(value)
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
-        raise TypeError(f"Material: {name} must be a number, got {value!r} ({type(value).__name__})")
+        raise TypeError(f"{who}: {name} must be a number, got {value!r} ({type(value).__name__})")
     return float(value)
 
 
-def _keyword(name, value, choices, status):
-    """The code of an option entry given as one of `choices` (name -> code; None: the first)."""
+#: the largest count the C interface takes (a C int)
+_INT_MAX = 2**31 - 1
+
+
+def _count(name, value, who, minimum=1):
+    """The int of a count (increments, output_every): an integer (int, a numpy integer), not a bool,
+    a float or a string (2.5 is not 2), at least `minimum` (None: the library checks it) and at
+    most a C int."""
+    if isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iu":
+        value = value[()]
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Integral, np.integer)):
+        raise TypeError(f"{who}: {name} must be an integer, got {value!r} ({type(value).__name__})")
+    value = int(value)
+    if minimum is not None and value < minimum:
+        raise ValueError(f"{who}: {name} must be at least {minimum}, got {value}")
+    if value > _INT_MAX:
+        raise ValueError(f"{who}: {name} = {value} is too large: at most {_INT_MAX} (a C int)")
+    return value
+
+
+def _numbers(name, value, who):
+    """A float64 array of `value`, refusing strings and booleans (numpy would read '0.5' as 0.5 and
+    True as 1.0 in silence)."""
+    a = np.asarray(value)
+    if a.dtype.kind in "USb" or (a.dtype.kind == "O" and any(
+            isinstance(v, (str, bytes, bool, np.bool_)) for v in a.ravel())):
+        raise TypeError(f"{who}: {name} must hold numbers, got {value!r}")
+    return np.asarray(a, dtype=np.float64)
+
+
+def _ascii_lower(text):
+    """`text` with A-Z in lower case, nothing else changed (the drivers' to_lower)."""
+    return text.translate(_LOWER)
+
+
+_LOWER = str.maketrans("ABCDEFGHIJKLMNOPQRSTUVWXYZ", "abcdefghijklmnopqrstuvwxyz")
+
+
+def _word(value):
+    """A word entry as the driver reads it: blanks (spaces, not tabs or other white space) around
+    it dropped, A-Z in lower case."""
+    return _ascii_lower(str(value).strip(" "))
+
+
+def _path(value, base=None):
+    """A path entry as the driver reads it: blanks around it dropped (`table = 'x.dat '`), taken in
+    the folder `base` when relative (None: the current folder)."""
+    path = os.fspath(value)
+    if isinstance(path, str):
+        path = path.strip(" ")
+    return os.path.abspath(path if base is None else os.path.join(os.fspath(base), path))
+
+
+def _keyword(name, value, choices, status, listed):
+    """The code of an option entry given as one of `choices` (name -> code; None or blank: the
+    first); another word raises with the driver's message (`listed`: the words it takes)."""
     words = list(choices)
-    word = words[0] if value is None or str(value).strip() == "" else str(value).strip().lower()
+    word = words[0] if value is None or _word(value) == "" else _word(value)
     if word not in choices:
-        listed = ", ".join(f"'{w}'" for w in words)
-        raise InterphaseError(status, f"{name} must be one of {listed}, got {value!r}")
+        raise InterphaseError(status, f"{name} must be {listed}, got '{str(value).strip(' ')}'")
     return choices[word]
 
 
@@ -89,16 +142,36 @@ class Material:
     """
 
     def __init__(self, **entries):
+        self._pack(entries)
+        # the library checks every value (from_props), as interphase-point does before it reads the
+        # table and the R-curve, then the data files: a zero increment on a virgin point
+        self._check_props()
+        self.update(np.zeros(2), dt=0.0)
+
+    @classmethod
+    def _unchecked(cls, entries, base):
+        """A material whose entries are packed into PROPS, but whose values the library has not
+        checked yet and whose files are not loaded (read_case checks them in the driver's order:
+        _check_props, then the files at the first update); relative paths are taken in `base`."""
+        self = cls.__new__(cls)
+        self._pack(entries, base)
+        return self
+
+    def _pack(self, entries, base=None):
+        """Check the entries as interphase-point's material_props does (which are given, which
+        words) and pack PROPS; the values are left to the library (_check_props). Relative paths
+        are taken in the folder `base` (None: the current one)."""
         unknown = sorted(set(entries) - set(_ENTRIES))
         if unknown:
             raise TypeError("Material: unknown entries " + ", ".join(unknown) + " (the entries of "
                             "&material are " + ", ".join(_ENTRIES) + ")")
         # (None, or a text entry that is empty or blank, is an entry left out: a namelist cannot
-        # tell `table = ''` from no table, and interphase-point reads both alike)
+        # tell `table = ''` from no table, and interphase-point reads both alike; blanks are spaces,
+        # as for the driver: a tab is text)
         e = {k: v for k, v in entries.items()
-             if v is not None and not (isinstance(v, str) and v.strip() == "")}
-        model = str(e.get("model", "")).strip().lower()
-        law = str(e.get("damage_law", "")).strip().lower()
+             if v is not None and not (isinstance(v, str) and v.strip(" ") == "")}
+        model = _word(e.get("model", ""))
+        law = _word(e.get("damage_law", ""))
         missing = [k for k in _REQUIRED if k not in e]
         if model == "simplified":
             missing += [k for k in ("k_n", "k_t") if k not in e]
@@ -120,17 +193,18 @@ class Material:
                                       "'simplified' only (the micromechanical model takes its "
                                       "stiffness from the RVE table)")
             if "table" in e:
-                self.table_path = os.path.abspath(os.fspath(e["table"]))
+                self.table_path = _path(e["table"], base)
             props = [MODEL_MICROMECHANICAL, 0.0] + values + [TABLE_CUSTOM if self.table_path else TABLE_DEFAULT]
         else:
-            raise InterphaseError(st.STATUS_BAD_MODEL, f"unknown model {e['model']!r} (available: "
-                                  "'simplified', 'micromechanical')")
+            raise InterphaseError(st.STATUS_BAD_MODEL, f"unknown model '{str(e['model']).strip(' ')}' "
+                                  "(available: 'simplified', 'micromechanical')")
         fracture_only = ("d0", "rcurve", "rcurve_file", "g_ci", "g_cii")
         if law == "displacement":
             props[1] = DAMAGE_DISPLACEMENT
-            if any(k in e for k in fracture_only):
-                raise InterphaseError(st.STATUS_BAD_NPROPS, "d0, rcurve, rcurve_file, g_ci and g_cii "
-                                      "are entries of damage_law = 'fracture' only")
+            given = [k for k in fracture_only if k in e]
+            if given:       # (the first given named first, as the driver names it)
+                raise InterphaseError(st.STATUS_BAD_NPROPS, f"{given[0]} is an entry of damage_law = 'fracture' "
+                                      "only (as are d0, rcurve, rcurve_file, g_ci and g_cii)")
         elif law == "fracture":
             props[1] = DAMAGE_FRACTURE
             if "d0" not in e:
@@ -139,46 +213,65 @@ class Material:
             if "rcurve" not in e:
                 raise InterphaseError(st.STATUS_BAD_RCURVE, "missing entry rcurve ('constant', 'equivalent' or "
                                       "'tabulated', needed by damage_law = 'fracture')")
+            # (the driver's order: the selected R-curve's own entries, then the other R-curves')
             rcurve = _keyword("rcurve", e["rcurve"],
                               {"constant": RCURVE_CONSTANT, "equivalent": RCURVE_EQUIVALENT,
-                               "tabulated": RCURVE_TABULATED}, st.STATUS_BAD_RCURVE)
+                               "tabulated": RCURVE_TABULATED}, st.STATUS_BAD_RCURVE,
+                              "'constant', 'equivalent' or 'tabulated'")
             gc = [0.0, 0.0]
             if rcurve == RCURVE_CONSTANT:
                 if "g_ci" not in e or "g_cii" not in e:
                     raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" not in e else st.STATUS_BAD_GC_II,
                                           "rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)")
                 gc = [_real("g_ci", e["g_ci"]), _real("g_cii", e["g_cii"])]
-            elif "g_ci" in e or "g_cii" in e:
-                raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" in e else st.STATUS_BAD_GC_II,
-                                      "g_ci and g_cii are entries of rcurve = 'constant' only")
             if rcurve == RCURVE_TABULATED:
                 if "rcurve_file" not in e:
                     raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve = 'tabulated' needs the entry rcurve_file")
-                self.rcurve_path = os.path.abspath(os.fspath(e["rcurve_file"]))
-            elif "rcurve_file" in e:
-                raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve_file is an entry of rcurve = 'tabulated' only")
+                self.rcurve_path = _path(e["rcurve_file"], base)
+            if rcurve != RCURVE_CONSTANT and ("g_ci" in e or "g_cii" in e):
+                raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" in e else st.STATUS_BAD_GC_II,
+                                      "g_ci and g_cii are entries of rcurve = 'constant' only")
+            if rcurve != RCURVE_TABULATED and "rcurve_file" in e:
+                raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve_file is an entry of rcurve = 'tabulated' only "
+                                      f"(rcurve = '{_word(e['rcurve'])}' would not read "
+                                      f"'{str(os.fspath(e['rcurve_file'])).strip(' ')}')")
             props += [_real("d0", e["d0"]), float(rcurve)] + gc
         else:
-            raise InterphaseError(st.STATUS_BAD_DAMAGE_LAW, f"unknown damage_law {e['damage_law']!r} "
+            raise InterphaseError(st.STATUS_BAD_DAMAGE_LAW, f"unknown damage_law '{str(e['damage_law']).strip(' ')}' "
                                   "(available: 'displacement', 'fracture')")
         # the option constants, written up to the last one not at its default (to_props)
         options = [
             float(_keyword("growth_slip", e.get("growth_slip"), {"fixed-pi": GROWTH_FIXED_PI,
-                           "fixed-lambda": GROWTH_FIXED_LAMBDA}, st.STATUS_BAD_OPTION)),
+                           "fixed-lambda": GROWTH_FIXED_LAMBDA}, st.STATUS_BAD_OPTION,
+                           "'fixed-pi' (the default) or 'fixed-lambda' (the paper's form)")),
             _real("contact_band", e.get("contact_band", 0.0)),
             _real("viscosity", e.get("viscosity", 0.0)),
             float(_keyword("stiffness", e.get("stiffness"), {"consistent": STIFFNESS_CONSISTENT,
                            "symmetric": STIFFNESS_SYMMETRIC, "fixed-damage": STIFFNESS_FIXED_DAMAGE},
-                           st.STATUS_BAD_OPTION))]
+                           st.STATUS_BAD_OPTION, "'consistent' (the default), 'symmetric' or 'fixed-damage'"))]
         nlast = max((k + 1 for k, v in enumerate(options) if not _same_bits(v, 0.0)), default=0)
         self.props = np.array([float(p) for p in props] + options[:nlast], dtype=np.float64)
         self.props.flags.writeable = False
         self.viscous = options[2] > 0.0
         self.nstate = NSTATE_VISCOUS if self.viscous else NSTATE
         self.model, self.damage_law = model, law
-        # the library checks every value (from_props) and the data files: a zero increment on a
-        # virgin point, as interphase-point does first
-        self.update(np.zeros(2), dt=0.0)
+
+    def _check_props(self):
+        """The library's check of the values (its decoder, from_props), before any file is loaded:
+        an update of a virgin point without loading the table or the R-curve. What only the loaded
+        data can tell (none loaded, an R-curve that does not cover D0) is left to the first update."""
+        props, props_p = _as_c(self.props)
+        s, s_p = _as_c(np.zeros(2))
+        old, old_p = _as_c(self.initial_state())
+        traction, tangent, new = np.empty(2), np.empty((2, 2)), np.empty(self.nstate)
+        psi = ctypes.c_double()
+        detail = detail_buffer()
+        status = lib.interphase_update_dt(props_p, props.size, 2, old_p, s_p, 0.0, traction.ctypes.data,
+                                          tangent.ctypes.data, new.ctypes.data, ctypes.byref(psi), detail,
+                                          DETAIL_LEN)
+        if status not in (st.STATUS_OK, st.STATUS_TABLE_NOT_LOADED, st.STATUS_RCURVE_NOT_LOADED,
+                          st.STATUS_RCURVE_OUT_OF_RANGE):
+            raise InterphaseError(status, text_of(detail))
 
     @classmethod
     def from_props(cls, props):
@@ -219,11 +312,11 @@ class Material:
         regularisation needs. Raises InterphaseError on a failed update.
         """
         self._prepare()
-        s, s_p = _as_c(separation)
+        s, s_p = _as_c(_numbers("separation", separation, "Material.update"))
         if s.ndim != 1 or s.size not in (2, 3):
             raise ValueError(f"separation must hold 2 (2-D) or 3 (3-D) components, got shape {s.shape}")
         n = s.size
-        old, old_p = _as_c(self.initial_state() if state is None else state)
+        old, old_p = _as_c(self.initial_state() if state is None else _numbers("state", state, "Material.update"))
         if old.shape != (self.nstate,):
             raise ValueError(f"state must hold {self.nstate} values, got shape {old.shape}")
         props, props_p = _as_c(self.props)
@@ -237,7 +330,7 @@ class Material:
                                            tangent.ctypes.data, new.ctypes.data, ctypes.byref(psi),
                                            detail, DETAIL_LEN)
         else:
-            status = lib.interphase_update_dt(props_p, props.size, n, old_p, s_p, float(dt),
+            status = lib.interphase_update_dt(props_p, props.size, n, old_p, s_p, _real("dt", dt, "Material.update"),
                                               traction.ctypes.data, tangent.ctypes.data, new.ctypes.data,
                                               ctypes.byref(psi), detail, DETAIL_LEN)
         if status != st.STATUS_OK:
@@ -257,7 +350,11 @@ class Material:
         found by Newton's method on the tangent, to within traction_tolerance (MPa), in at most 25
         updates per step). time: nrows strictly increasing times (default 0, 1, 2, ...);
         increments: equal sub-increments per segment; output_every: a row every k-th converged step
-        (and at the end of every segment).
+        (and at the end of every segment). The history has at least 2 rows (ValueError), as the
+        driver's; the counts are integers (an int or a numpy integer: a bool, a float or a string
+        raises TypeError, not rounded), increments at least 1 (ValueError), output_every at least 1
+        (InterphaseError, STATUS_BAD_HISTORY); the arrays and traction_tolerance hold numbers, not
+        strings or booleans (TypeError).
 
         The point starts virgin at zero separation; a first row away from zero is reached first in
         `increments` steps at time[0] (not returned). A step that fails is halved and retried, up to
@@ -271,20 +368,24 @@ class Material:
         them.
         """
         self._prepare()
-        value = np.array(history, dtype=np.float64)
-        if value.ndim != 2 or value.shape[1] not in (2, 3) or value.shape[0] < 1:
+        value = _numbers("history", history, "Material.run")
+        if value.ndim != 2 or value.shape[1] not in (2, 3):
             raise ValueError(f"history must be an (nrows, 2) or (nrows, 3) array, got shape {value.shape}")
         nrows, n = value.shape
-        t = np.arange(nrows, dtype=np.float64) if time is None else np.array(time, dtype=np.float64)
+        if nrows < 2:
+            raise ValueError(f"Material.run: history must have at least 2 rows (one segment; interphase-point "
+                             f"needs 2 data rows too), got {nrows}")
+        t = np.arange(nrows, dtype=np.float64) if time is None else _numbers("time", time, "Material.run")
         if t.shape != (nrows,):
             raise ValueError(f"time must hold {nrows} values, got shape {t.shape}")
-        if nrows > 1 and not np.all(np.diff(t) > 0.0):
+        if not np.all(np.diff(t) > 0.0):
             raise ValueError("time must increase strictly")
         if not np.all(np.isfinite(t)):
             raise ValueError("time must be finite")
-        increments = int(increments)
-        if increments < 1:
-            raise ValueError(f"increments must be at least 1, got {increments}")
+        increments = _count("increments", increments, "Material.run")
+        # (output_every < 1 and traction_tolerance are checked by the library: STATUS_BAD_HISTORY)
+        output_every = _count("output_every", output_every, "Material.run", minimum=None)
+        traction_tolerance = _real("traction_tolerance", traction_tolerance, "Material.run")
         if control is None:
             ctrl = None
         else:
@@ -312,8 +413,8 @@ class Material:
             detail = detail_buffer()
             status = lib.interphase_run_history(
                 props_p, props.size, n, nrows, t.ctypes.data, value.ctypes.data,
-                None if ctrl is None else ctrl.ctypes.data, increments, float(traction_tolerance),
-                int(output_every), capacity, out_t.ctypes.data, out_s.ctypes.data, out_tr.ctypes.data,
+                None if ctrl is None else ctrl.ctypes.data, increments, traction_tolerance,
+                output_every, capacity, out_t.ctypes.data, out_s.ctypes.data, out_tr.ctypes.data,
                 out_state.ctypes.data, out_psi.ctypes.data, out_w.ctypes.data,
                 None if out_k is None else out_k.ctypes.data, ctypes.byref(done), detail, DETAIL_LEN)
             if status != st.STATUS_OUTPUT_FULL:
