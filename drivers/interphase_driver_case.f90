@@ -30,7 +30,7 @@ module interphase_driver_case
    use interphase_layout, only: OPTION_SPECS, OPT_CONTACT_BAND, OPT_VISCOSITY
    use interphase_text_input, only: tried_path
    use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, &
-      KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING
+      KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING, open_namelist_file
    implicit none
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, writes_an_input, &
@@ -175,8 +175,7 @@ contains
       call precheck_case_file(path, [material_entry_kinds('material'), LOADING_ENTRIES], ok, message, lines)
       if (.not. ok) return
       ok = .false.
-      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
-         iostat=ios, iomsg=iomsg)
+      call open_namelist_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = tried_path(path)//': cannot open the case file: '//trim(iomsg)
          return

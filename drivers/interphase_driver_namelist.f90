@@ -14,7 +14,7 @@ module interphase_driver_namelist
    implicit none
    private
    public :: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
-      KIND_LOGICAL, KIND_STRING
+      KIND_LOGICAL, KIND_STRING, open_namelist_file
 
    !> Kinds of entry values.
    integer, parameter :: KIND_REAL = 1, KIND_INTEGER = 2, KIND_LOGICAL = 3, KIND_STRING = 4
@@ -36,6 +36,49 @@ module interphase_driver_namelist
       TOKEN_SLASH = 5, TOKEN_GROUP = 6
 
 contains
+
+   !> Open a case file for Fortran's namelist reads: a scratch copy of its lines, each ended by a
+   !> newline (a carriage return before it dropped), positioned at its start. gfortran's namelist
+   !> read meets the end of a file whose last line ('/') has no newline as the end of the file, and
+   !> the group is then 'not found', though its entries were read; the copy has the newline. The
+   !> lines are read as the pre-check reads them (bounded). `iostat` 0 when open; the caller
+   !> closes `unit` (a scratch file is deleted then).
+   subroutine open_namelist_file(path, unit, iostat, iomsg)
+      character(len=*), intent(in) :: path        !! the case file
+      integer, intent(out) :: unit
+      integer, intent(out) :: iostat
+      character(len=*), intent(inout) :: iomsg
+      type(text_file_type) :: file
+      character(len=:), allocatable :: line
+      integer :: ios
+      unit = -1
+      call open_line_file(path, file, iostat, iomsg)
+      if (iostat /= 0) return
+      open (newunit=unit, status='scratch', action='readwrite', form='formatted', recl=2**20, iostat=iostat, &
+         iomsg=iomsg)
+      if (iostat /= 0) then
+         call close_text_file(file)
+         unit = -1
+         return
+      end if
+      do
+         call read_line(file, line, ios, iomsg)
+         if (ios == iostat_end) exit
+         if (ios /= 0) then
+            iostat = ios
+            exit
+         end if
+         write (unit, '(a)', iostat=iostat, iomsg=iomsg) line
+         if (iostat /= 0) exit
+      end do
+      call close_text_file(file)
+      if (iostat /= 0) then
+         close (unit)
+         unit = -1
+         return
+      end if
+      rewind (unit)
+   end subroutine open_namelist_file
 
    !> Check `path` against `known` (entries of every group the program reads). ok = .false. with
    !> `message` ('path:line: &group: ...') on the first problem.

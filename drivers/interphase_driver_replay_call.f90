@@ -10,6 +10,7 @@ module interphase_driver_replay_call
    use interphase_driver_text, only: int_to_string, real_to_string, read_line, to_lower, text_file_type, &
       open_line_file, close_text_file
    use interphase_text_input, only: tried_path
+   use interphase_driver_namelist, only: open_namelist_file
    implicit none
    private
    public :: replay_call_type, is_replay_file, read_replay_call, repeat_replay_call
@@ -81,7 +82,8 @@ contains
       props = UNSET; statev = UNSET; stress = UNSET; sse = 0.0_dp; spd = 0.0_dp
       stran = UNSET; dstran = UNSET; time = UNSET; dtime = 0.0_dp
       table = ''; rcurve = ''
-      open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=iomsg)
+      ! (a scratch copy with a newline after every line: open_namelist_file)
+      call open_namelist_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = tried_path(path)//': cannot open the replay file: '//trim(iomsg)
          return

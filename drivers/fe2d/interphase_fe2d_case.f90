@@ -11,7 +11,7 @@ module interphase_fe2d_case
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
-      KIND_LOGICAL, KIND_STRING
+      KIND_LOGICAL, KIND_STRING, open_namelist_file
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words, text_file_type, open_line_file, close_text_file
    implicit none
@@ -104,8 +104,7 @@ contains
       call precheck_case_file(path, [FE2D_ENTRIES, material_entry_kinds('joint')], ok, message, lines)
       if (.not. ok) return
       ok = .false.
-      open (newunit=unit, file=path, status='old', action='read', form='formatted', &
-         iostat=ios, iomsg=iomsg)
+      call open_namelist_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = path//': cannot open the case file: '//trim(iomsg)
          return
