@@ -96,6 +96,9 @@ contains
       integer(int64) :: bytes
       character(len=1) :: quote
       logical :: in_group, in_entry
+      !> the last token was a comma (a comma after '=' or after another comma is an empty value,
+      !> which the namelist read takes as 'unchanged' or misreads)
+      logical :: after_comma
 
       ok = .false.
       if (present(lines)) allocate (lines(0))
@@ -106,6 +109,7 @@ contains
       end if
       in_group = .false.
       in_entry = .false.
+      after_comma = .false.
       group = ''
       seen_groups = ' '
       seen_entries = ' '
@@ -133,6 +137,7 @@ contains
          i = 1
          do while (i <= n)
             associate (c => line(i:i))
+               if (c /= ',' .and. c /= ' ' .and. c /= achar(9) .and. c /= '!') after_comma = .false.
                if (c == ' ' .or. c == achar(9)) then
                   i = i + 1
                else if (c == '!') then
@@ -169,6 +174,12 @@ contains
                   in_group = .false.
                   i = i + 1
                else if (c == ',') then
+                  if (in_entry .and. (nvalues == 0 .or. after_comma)) then
+                     call fail('&'//group//': '//name//' has an empty value (a comma '// &
+                        trim(merge('right after "="', 'after a comma  ', nvalues == 0))//'): give one value')
+                     return
+                  end if
+                  after_comma = .true.
                   i = i + 1
                else if (c == '=') then
                   call fail('&'//group//': "=" without an entry name')

@@ -246,6 +246,9 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
         "group": (good.replace("&loading", "&load"), r"group.nml:\d+: &load is not a group of this case file"),
         "integer": (good.replace("increments = ", "increments = 2.5 !"), r"increments = 2.5 is not an integer"),
         "string": (good.replace("mu = 0.75", "mu = '0.75'"), r"mu = '0.75' is not a number"),
+        # an empty value (the namelist read misreads it or keeps the default)
+        "empty": (good.replace("mu = 0.75", "mu = ,0.75"), r"empty.nml:\d+: &material: mu has an empty value"),
+        "empty2": (good.replace("mu = 0.75", "mu = 0.75,,"), r"&material: mu has an empty value \(a comma after"),
         # a constant the PROPS check refuses: named with its entry's line, as by interphase-point
         "range": (good.replace("mu = 0.75", "mu = -0.75"),
                   rf"range.nml:{mu_line}: &material: mu: PROPS\(3\) mu = -7.50000E-001 is out of range"),

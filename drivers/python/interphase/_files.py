@@ -401,6 +401,7 @@ def _namelist_entries(path, known=None):
     values are of their kinds; without, numbers are int when written as integers, else float."""
     groups = {}
     group, name, values, entry_line, number = None, None, [], 0, 0
+    after_comma = False     # the last token was a comma (an empty value follows a second one)
 
     def fail(text):
         raise ValueError(f"{path}:{number}: {text}")
@@ -429,6 +430,8 @@ def _namelist_entries(path, known=None):
         i, n = 0, len(line)
         while i < n:
             c = line[i]
+            if c not in ", \t!":
+                after_comma = False
             if c in " \t":
                 i += 1
             elif c == "!":
@@ -455,6 +458,10 @@ def _namelist_entries(path, known=None):
                 group, name, values = None, None, []
                 i += 1 if c == "/" else 4
             elif c == ",":
+                if name is not None and (not values or after_comma):
+                    where = 'right after "="' if not values else "after a comma"
+                    fail(f"&{group}: {name} has an empty value (a comma {where}): give one value")
+                after_comma = True
                 i += 1
             elif c == "=":
                 fail(f'&{group}: "=" without an entry name')
