@@ -248,6 +248,8 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
         "string": (good.replace("mu = 0.75", "mu = '0.75'"), r"mu = '0.75' is not a number"),
         # an empty value (the namelist read misreads it or keeps the default)
         "empty": (good.replace("mu = 0.75", "mu = ,0.75"), r"empty.nml:\d+: &material: mu has an empty value"),
+        "control": (good.replace("mu = 0.75", "mu = 0.75\r  s0_n = 0.00044"),
+                    r"control.nml:\d+: a control character \(code 13\) in column 12"),
         "empty2": (good.replace("mu = 0.75", "mu = 0.75,,"), r"&material: mu has an empty value \(a comma after"),
         # a constant the PROPS check refuses: named with its entry's line, as by interphase-point
         "range": (good.replace("mu = 0.75", "mu = -0.75"),

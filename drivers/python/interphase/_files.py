@@ -428,6 +428,11 @@ def _namelist_entries(path, known=None):
 
     for number, line in enumerate(_text_lines(path), 1):
         i, n = 0, len(line)
+        bad = next((k for k, ch in enumerate(line) if ord(ch) < 32 and ch != "\t"), None)
+        if bad is not None:
+            fail(f"a control character (code {ord(line[bad])}) in column {bad + 1}: only blanks and tabs may "
+                 "separate the text (a carriage return alone ends lines on old Macs: save the file with Unix "
+                 "or Windows line ends)")
         while i < n:
             c = line[i]
             if c not in ", \t!":
