@@ -7,7 +7,11 @@
 # Checks (each prints its largest residual; any failure gives exit code 1):
 #   format     every header line '# key = value', required keys, one '# columns:' line (the 23
 #              columns of format 1, or those and I_fNT, format 2), that many finite numbers per
-#              row, a ascending from 0 to b
+#              row, at least 4 rows (the loader's not-a-knot spline), a ascending from 0 to b.
+#              Read as the loader (src/interphase_text_input.f90) reads them: a carriage return
+#              ending a line is dropped (CRLF files), a number is [sign](digits[.[digits]] |
+#              .digits)[(e|E|d|D)[sign]digits] (a Fortran d exponent too) within the range of
+#              a double (1e400 is refused)
 #   closed     a = 0: C_TT, C_NN = closed forms (Chat), cross terms 0            tol TOL_CLOSED
 #   eq52       C(a) + C^c(a) = C(0) for every a (all four components)          tol TOL_EQ52
 #   crack      T^c_T = Chat_TT, S^c_N = Chat_NN at every a (crack means)      tol TOL_EXACT
@@ -51,11 +55,16 @@ function report(name, res, tol, what) {
   printf "%-10s %-4s max residual %.3e (tol %.0e)  %s\n", name, ok ? "ok" : "FAIL", res, tol, what
   if (!ok) fail = 1
 }
-function isnumber(s) { return s ~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/ }
+# the loader'"'"'s is_real_literal: [sign] (digits [. [digits]] | . digits) [(e|E|d|D) [sign] digits]
+function isnumber(s) { return s ~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?$/ }
+# its value (a d/D exponent read as e); finite() is false beyond the range of a double
+function numval(s) { sub(/[dD]/, "e", s); return s + 0 }
+function finite(x) { return sprintf("%g", x) !~ /inf|nan/ }
 BEGIN {
   cols = "a D C_TT C_TN C_NT C_NN Dbar_TT Dbar_TN Dbar_NT Dbar_NN Cc_TT Cc_TN Cc_NT Cc_NN Tc_T Tc_N Sc_T Sc_N Cf_T Cf_N Tf Sf ufbar"
   nreq = split("h_m h_b b E_m nu_m E_b nu_b script freefem_version date element refine unknowns_min unknowns_max", req, " ")
 }
+{ sub(/\r$/, "") }
 /^#/ {
   line = $0
   if (line ~ /^# columns: /) {
@@ -71,7 +80,11 @@ NF == 0 { next }
 {
   n++
   if (NF != ncol) { badrow = 1; printf "row %d has %d fields, the columns line names %d\n", n, NF, ncol }
-  for (i = 1; i <= NF; i++) { if (!isnumber($i)) { badnum = 1; printf "row %d field %d not a finite number: %s\n", n, i, $i } ; v[n, i] = $i + 0 }
+  for (i = 1; i <= NF; i++) {
+    x = isnumber($i) ? numval($i) : 0
+    if (!isnumber($i) || !finite(x)) { badnum = 1; printf "row %d field %d not a finite number: %s\n", n, i, $i }
+    v[n, i] = x
+  }
   if (n > 1 && !(v[n, 1] > v[n - 1, 1])) badorder = 1
 }
 END {
@@ -80,7 +93,8 @@ END {
   for (i = 1; i <= nreq; i++) if (!(req[i] in hdr)) { printf "missing header key %s\n", req[i]; fmt = 1 }
   if (badhdr) fmt = 1
   if (ncolsline != 1 || badcols) { print "the # columns: line is missing, repeated or different"; fmt = 1 }
-  if (badrow || badnum || badorder || n < 2) fmt = 1
+  if (badrow || badnum || badorder) fmt = 1
+  if (n < 4) { printf "%d rows: a table needs at least 4 (a = 0, a = b and 2 between; the loader'"'"'s not-a-knot cubic spline)\n", n; fmt = 1 }
   hm = hdr["h_m"]; hb = hdr["h_b"]; b = hdr["b"]; Em = hdr["E_m"]; nm = hdr["nu_m"]; Eb = hdr["E_b"]; nb = hdr["nu_b"]
   if (!fmt && (v[1, 1] != 0 || abs(v[n, 1] - b) > 1e-12 * b)) { print "rows must run from a = 0 to a = b"; fmt = 1 }
   report("format", fmt, 0, "header, columns line, " n " rows of " ncol " numbers, a = 0 .. b ascending")

@@ -2,14 +2,19 @@
 # make-table.sh -- RVE coefficient table (paper section 3.3) from a parameter file.
 #
 #   bash rve_freefem/make-table.sh [options] PARAMS OUT.dat
+#   bash rve_freefem/make-table.sh --check [--refine R] [--a-over-b LIST] PARAMS [OUT.dat]
 #
 # Writes OUT.dat (format: tables/README.md), OUT-fields.dat (D(x), u^f(x), sigma^f(x) for the a
 # values in fields_a_over_b) and OUT-diag.txt (per-a mesh size, unknowns, time and identity residuals).
 # Options:
 #   --refine R      multiply the mesh refinement level of PARAMS by R (convergence studies)
 #   --jobs N        FreeFEM processes run in parallel (default 2)
-#   --a-over-b "v1 v2 ..."   compute only these a/b values (a = 0 and a = b are NOT added)
+#   --a-over-b "v1 v2 ..."   compute only these a/b values (and a = 0 and a = b, which every table
+#                   has); the fields_a_over_b/fields_a_mm values are not added: the side file holds
+#                   those that are in the list (the others are named in a note)
 #   --no-fields     do not write the side file (its a values stay in the table)
+#   --check         check the parameters (and, with --refine, the mesh at that level), run nothing
+# A table has at least 4 rows (a = 0 and a = b included): the loader's spline needs them.
 # Needs bash, awk and FreeFem++ (Debian package freefem++).  Exit code 0 on success, 2 for bad
 # parameters or usage, 3 for a missing program or unreadable file, 4 if a FreeFEM run failed.
 set -u
@@ -18,37 +23,50 @@ export LC_ALL=C
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 prog="make-table.sh"
 die() { local code=$1; shift; echo "$prog: error: $*" >&2; exit "$code"; }
+note() { echo "$prog: note: $*" >&2; }
 
 refine_mult=1
 jobs=2
 a_override=""
+a_override_given=0
 want_fields=1
+check_only=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --refine) [ $# -ge 2 ] || die 2 "--refine needs a value"; refine_mult=$2; shift 2 ;;
     --jobs) [ $# -ge 2 ] || die 2 "--jobs needs a value"; jobs=$2; shift 2 ;;
-    --a-over-b) [ $# -ge 2 ] || die 2 "--a-over-b needs a list"; a_override=$2; shift 2 ;;
+    --a-over-b) [ $# -ge 2 ] || die 2 "--a-over-b needs a list"; a_override=$2; a_override_given=1; shift 2 ;;
     --no-fields) want_fields=0; shift ;;
-    -h|--help) sed -n '2,16p' "$0"; exit 0 ;;
+    --check) check_only=1; shift ;;
+    # the help is the comment block at the top of this file
+    -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
     --) shift; break ;;
     -*) die 2 "unknown option $1" ;;
     *) break ;;
   esac
 done
-[ $# -eq 2 ] || die 2 "usage: $prog [--refine R] [--jobs N] [--a-over-b LIST] [--no-fields] PARAMS OUT.dat"
+usage="usage: $prog [--refine R] [--jobs N] [--a-over-b LIST] [--no-fields] PARAMS OUT.dat (or --check [--refine R] PARAMS)"
+if [ "$check_only" = 1 ]; then
+  [ $# -eq 1 ] || [ $# -eq 2 ] || die 2 "$usage"
+else
+  [ $# -eq 2 ] || die 2 "$usage"
+fi
 params=$1
-out=$2
+out=${2:-}
 [ -f "$params" ] && [ -r "$params" ] || die 3 "cannot read parameter file '$params'"
-command -v FreeFem++ >/dev/null 2>&1 || die 3 "FreeFem++ not found: install the Debian package freefem++"
+if [ "$check_only" = 0 ]; then
+  command -v FreeFem++ >/dev/null 2>&1 || die 3 "FreeFem++ not found: install the Debian package freefem++"
+fi
 case "$jobs" in ''|*[!0-9]*) die 2 "--jobs must be a positive integer" ;; esac
 [ "$jobs" -ge 1 ] || die 2 "--jobs must be >= 1"
 
 # ---------------------------------------------------------------- read and check the parameters
-# prints "key<TAB>value" lines; fails on syntax errors and unknown keys
+# prints "key<TAB>value" lines; fails on syntax errors and unknown keys.  A carriage return at
+# the end of a line (a file saved with Windows line endings) is dropped.
 parsed=$(awk '
   BEGIN { n = split("h_m h_b b E_m nu_m E_b nu_b order hmax ftip htipmax grow fseg refine huni a_over_b_list a_over_b_uniform ligament_over_b a_list_mm fields_a_over_b fields_a_mm", k, " ")
           for (i = 1; i <= n; i++) known[k[i]] = 1 }
-  { sub(/#.*/, "") }
+  { sub(/\r$/, ""); sub(/#.*/, "") }
   /^[ \t]*$/ { next }
   {
     eq = index($0, "=")
@@ -63,15 +81,43 @@ parsed=$(awk '
   END { exit bad }' "$params") || die 2 "bad parameter file '$params' (see above)"
 
 get() { printf '%s\n' "$parsed" | awk -F'\t' -v k="$1" '$1 == k { print $2; f = 1 } END { exit !f }'; }
-isnum() { printf '%s\n' "$1" | awk '{ exit !($0 ~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/) }'; }
-numlist() { local v; for v in $1; do isnum "$v" || return 1; done; return 0; }
+# numbers: a decimal literal (no d exponent, no inf/nan) that is a finite double whose magnitude,
+# when not 0, lies in [1e-100, 1e100] (so that products and quotients of two stay finite);
+# numcode prints nothing and returns 0, 1 (not a number), 2 (not finite) or 3 (out of range)
+numcode() {
+  printf '%s\n' "$1" | awk '{
+    if ($0 !~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/) exit 1
+    v = $0 + 0; if (sprintf("%g", v) ~ /inf|nan/) exit 2
+    if (v < 0) v = -v
+    if (v != 0 && (v > 1e100 || v < 1e-100)) exit 3
+    exit 0 }'
+}
+# checknum WHAT VALUE: die with a message unless VALUE is such a number
+checknum() {
+  numcode "$2"
+  case $? in
+    0) ;;
+    2) die 2 "$1 = '$2' is not a finite number (beyond the range of a double)" ;;
+    3) die 2 "$1 = '$2' is out of range: a non-zero value must lie between 1e-100 and 1e100 in magnitude" ;;
+    *) die 2 "$1 = '$2' is not a number" ;;
+  esac
+}
+# checklist WHAT LIST: every word a number (checknum); an empty list is refused
+checklist() {
+  local v
+  [ -n "$2" ] || die 2 "$1 is empty: give at least one value (or remove the line)"
+  for v in $2; do checknum "$1: value" "$v"; done
+}
+# the largest mesh make-table.sh runs: elements along the interface and the sides of the meshed
+# quarter for one a (see 'the mesh, before FreeFEM runs' below)
+NMAX_EDGES=3000
 # awk comparison helper: test EXPR on x
 chk() { awk -v x="$1" "BEGIN { exit !($2) }"; }
 
 declare -A P
 for key in h_m h_b b E_m nu_m E_b nu_b; do
   P[$key]=$(get "$key") || die 2 "parameter '$key' missing in '$params'"
-  isnum "${P[$key]}" || die 2 "parameter '$key' = '${P[$key]}' is not a number"
+  checknum "parameter '$key'" "${P[$key]}"
 done
 for key in h_m h_b b E_m E_b; do
   chk "${P[$key]}" "x > 0" || die 2 "parameter '$key' = ${P[$key]} must be positive"
@@ -87,7 +133,7 @@ for key in order hmax ftip htipmax grow fseg refine huni; do
 done
 case "${P[order]}" in P1|P2) ;; *) die 2 "parameter 'order' = '${P[order]}' must be P1 or P2" ;; esac
 for key in hmax ftip htipmax grow fseg refine huni; do
-  isnum "${P[$key]}" || die 2 "parameter '$key' = '${P[$key]}' is not a number"
+  checknum "parameter '$key'" "${P[$key]}"
 done
 for key in hmax ftip htipmax; do chk "${P[$key]}" "x > 0" || die 2 "parameter '$key' = ${P[$key]} must be positive"; done
 chk "${P[ftip]}" "x < 1" || die 2 "parameter 'ftip' must be < 1"
@@ -95,74 +141,164 @@ chk "${P[grow]}" "x >= 1 && x < 3" || die 2 "parameter 'grow' = ${P[grow]} must 
 chk "${P[fseg]}" "x > 0 && x <= 1" || die 2 "parameter 'fseg' = ${P[fseg]} must be in (0, 1]"
 chk "${P[refine]}" "x >= 1" || die 2 "parameter 'refine' = ${P[refine]} must be >= 1"
 chk "${P[huni]}" "x >= 0" || die 2 "parameter 'huni' = ${P[huni]} must be >= 0"
-isnum "$refine_mult" && chk "$refine_mult" "x >= 1" || die 2 "--refine must be a number >= 1"
+checknum "--refine" "$refine_mult"
+chk "$refine_mult" "x >= 1" || die 2 "--refine must be a number >= 1"
 refine=$(awk -v a="${P[refine]}" -v m="$refine_mult" 'BEGIN { printf "%.17g", a * m }')
-
+uniform=0
+chk "${P[huni]}" "x > 0" && uniform=1
 bval=${P[b]}
-# ---------------------------------------------------------------- crack half-lengths (mm)
-alist_raw=""
-if [ -n "$a_override" ]; then
-  numlist "$a_override" || die 2 "--a-over-b: not a list of numbers: $a_override"
-  for f in $a_override; do
-    chk "$f" "x >= 0" || die 2 "a/b = $f < 0"
-    chk "$f" "x <= 1" || die 2 "crack half-length a/b = $f > 1: a must not exceed b"
+# uniform mesh: the layers and the RVE must be whole numbers of squares (rve.edp's test)
+if [ "$uniform" = 1 ]; then
+  for key in b h_m h_b; do
+    awk -v x="${P[$key]}" -v u="${P[huni]}" 'BEGIN { q = x / u; r = int(q + 0.5); d = q - r; if (d < 0) d = -d; exit !(d <= 1e-9 * q) }' \
+      || die 2 "parameter 'huni' = ${P[huni]}: the uniform mesh needs $key = ${P[$key]} to be a whole multiple of huni"
   done
-  alist_raw=$(for f in $a_override; do awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g\n", (f == 1) ? b : f * b }'; done)
+fi
+
+# ---------------------------------------------------------------- crack half-lengths (mm)
+# every table has a = 0 and a = b; the keys (or --a-over-b) add the values in between
+alist_raw=$(printf '0\n%s\n' "$bval")
+given=""     # the keys (or option) that gave a values, for the messages
+if [ "$a_override_given" = 1 ]; then
+  checklist "--a-over-b" "$a_override"
+  for f in $a_override; do
+    chk "$f" "x >= 0" || die 2 "--a-over-b: a/b = $f < 0"
+    chk "$f" "x <= 1" || die 2 "--a-over-b: crack half-length a/b = $f > 1: a must not exceed b"
+  done
+  alist_raw+=$'\n'$(for f in $a_override; do awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g\n", (f == 1) ? b : f * b }'; done)
+  given="--a-over-b \"$a_override\""
 else
-  alist_raw=$(printf '0\n%s\n' "$bval")
   if v=$(get a_over_b_list); then
-    numlist "$v" || die 2 "a_over_b_list: not a list of numbers: $v"
+    checklist "a_over_b_list" "$v"
     for f in $v; do
       chk "$f" "x >= 0" || die 2 "a_over_b_list: a/b = $f < 0"
       chk "$f" "x <= 1" || die 2 "a_over_b_list: crack half-length a/b = $f > 1: a must not exceed b"
       alist_raw+=$'\n'$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", f * b }')
     done
+    given+=" a_over_b_list = $v;"
   fi
   if v=$(get a_list_mm); then
-    numlist "$v" || die 2 "a_list_mm: not a list of numbers: $v"
+    checklist "a_list_mm" "$v"
     for f in $v; do
       chk "$f" "x >= 0" || die 2 "a_list_mm: a = $f < 0"
       awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x <= b) }' || die 2 "a_list_mm: crack half-length a = $f > b = $bval"
       alist_raw+=$'\n'$f
     done
+    given+=" a_list_mm = $v;"
   fi
   if v=$(get a_over_b_uniform); then
     set -- $v
-    [ $# -eq 3 ] && numlist "$v" || die 2 "a_over_b_uniform needs 'start stop step', got '$v'"
+    [ $# -eq 3 ] || die 2 "a_over_b_uniform needs 'start stop step', got '$v'"
+    checklist "a_over_b_uniform" "$v"
     chk "$3" "x > 0" || die 2 "a_over_b_uniform: step must be > 0"
     awk -v s="$1" -v e="$2" 'BEGIN { exit !(s >= 0 && e <= 1 && s <= e) }' || die 2 "a_over_b_uniform: need 0 <= start <= stop <= 1 (a must not exceed b)"
     alist_raw+=$'\n'$(awk -v s="$1" -v e="$2" -v d="$3" -v b="$bval" 'BEGIN { n = int((e - s) / d + 1e-9); for (i = 0; i <= n; i++) printf "%.15g\n", (s + i * d) * b }')
+    given+=" a_over_b_uniform = $v;"
   fi
   if v=$(get ligament_over_b); then
     set -- $v
-    [ $# -eq 3 ] && numlist "$v" || die 2 "ligament_over_b needs 'from to per-decade', got '$v'"
+    [ $# -eq 3 ] || die 2 "ligament_over_b needs 'from to per-decade', got '$v'"
+    checklist "ligament_over_b" "$v"
     awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { exit !(f > 0 && f <= 1 && t > 0 && t <= f && n >= 1) }' || die 2 "ligament_over_b: need 0 < to <= from <= 1 and per-decade >= 1"
     alist_raw+=$'\n'$(awk -v f="$1" -v t="$2" -v n="$3" -v b="$bval" 'BEGIN { m = int(n * log(f / t) / log(10) + 1e-9); for (j = 0; j <= m; j++) { l = f * 10 ^ (-j / n); printf "%.15g\n", b - l * b } }')
+    given+=" ligament_over_b = $v;"
   fi
 fi
-# the a values of the side file are always part of the table (so --no-fields keeps the rows)
+# the a values of the side file: part of the table (so --no-fields keeps the rows), except with
+# --a-over-b, where the side file holds those of them that are in the list
 fields_raw=""
-if true; then
-  if v=$(get fields_a_over_b); then
-    numlist "$v" || die 2 "fields_a_over_b: not a list of numbers"
-    for f in $v; do
-      chk "$f" "x >= 0 && x <= 1" || die 2 "fields_a_over_b: a/b = $f outside [0, 1]"
-      fields_raw+=$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", (f == 1) ? b : f * b }')$'\n'
-    done
-  fi
-  if v=$(get fields_a_mm); then
-    numlist "$v" || die 2 "fields_a_mm: not a list of numbers"
-    for f in $v; do
-      awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x >= 0 && x <= b) }' || die 2 "fields_a_mm: a = $f outside [0, b]"
-      fields_raw+=$f$'\n'
-    done
-  fi
-  [ -z "$a_override" ] && alist_raw+=$'\n'$fields_raw
+if v=$(get fields_a_over_b); then
+  checklist "fields_a_over_b" "$v"
+  for f in $v; do
+    chk "$f" "x >= 0 && x <= 1" || die 2 "fields_a_over_b: a/b = $f outside [0, 1]"
+    fields_raw+=$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", (f == 1) ? b : f * b }')$'\n'
+  done
+  [ "$a_override_given" = 1 ] || given+=" fields_a_over_b = $v;"
 fi
+if v=$(get fields_a_mm); then
+  checklist "fields_a_mm" "$v"
+  for f in $v; do
+    awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x >= 0 && x <= b) }' || die 2 "fields_a_mm: a = $f outside [0, b]"
+    fields_raw+=$f$'\n'
+  done
+  [ "$a_override_given" = 1 ] || given+=" fields_a_mm = $v;"
+fi
+[ "$a_override_given" = 1 ] || alist_raw+=$'\n'$fields_raw
 # sorted, duplicates (to 1e-12 b) removed
 alist=$(printf '%s\n' "$alist_raw" | awk 'NF' | sort -g | awk -v b="$bval" 'NR == 1 || $1 - last > 1e-12 * b { print; last = $1 }')
 na=$(printf '%s\n' "$alist" | wc -l)
+# the loader interpolates the rows with a not-a-knot cubic spline, which needs 4 of them
+if [ "$na" -lt 4 ]; then
+  given=${given%;}
+  die 2 "${given:+${given# }: }$((na - 2)) distinct crack half-length(s) strictly between 0 and b; with a = 0 and a = b the table would have $na rows, but it needs at least 4 (the loader's not-a-knot cubic spline): give at least 2 values of a/b in (0, 1)"
+fi
+# side-file a values: with --a-over-b only those in the list (rve.edp matches them to 1e-9 b)
+fields_sel=$(printf '%s' "$fields_raw" | awk 'NF')
+if [ "$a_override_given" = 1 ] && [ -n "$fields_sel" ]; then
+  inlist=$(printf '%s\n' "$fields_sel" | awk -v b="$bval" -v list="$alist" 'BEGIN { n = split(list, A, "\n") }
+    { for (i = 1; i <= n; i++) { d = $1 - A[i]; if (d < 0) d = -d; if (d < 1e-9 * b) { print; next } } }')
+  dropped=$(printf '%s\n' "$fields_sel" | awk -v b="$bval" -v list="$inlist" 'BEGIN { n = split(list, A, "\n") }
+    { for (i = 1; i <= n; i++) { d = $1 - A[i]; if (d < 0) d = -d; if (d < 1e-9 * b) next } printf "%s%s", sep, $1; sep = " " }')
+  [ "$want_fields" = 0 ] || [ -z "$dropped" ] || \
+    note "--a-over-b: the side-file crack half-lengths a = $dropped mm (fields_a_over_b, fields_a_mm) are not in the list: no distributions for them"
+  fields_sel=$inlist
+fi
 
+# ---------------------------------------------------------------- the mesh, before FreeFEM runs
+if [ "$uniform" = 1 ]; then
+  # every a must fall on a node of the squares (rve.edp's test)
+  bad=$(printf '%s\n' "$alist" | awk -v u="${P[huni]}" -v b="$bval" '{ q = $1 / u; d = q - int(q + 0.5); if (d < 0) d = -d; if (d > 1e-9 * b / u) { printf "%s%s", sep, $1; sep = " " } }')
+  [ -z "$bad" ] || die 2 "parameter 'huni' = ${P[huni]}: the crack half-lengths a = $bad mm are not multiples of huni (the crack tips must be nodes of the uniform mesh)"
+else
+  # rve.edp's graded point sets (its grade()), counted before any run: the shortest tip spacing
+  # FreeFEM accepts, and the size of the mesh of one a.  The unknowns of one a are ~100-250 times
+  # the elements along the interface and the four sides of the meshed quarter (measured); the
+  # paper's table needs at most 173 of them at refine 1, 654 at refine 4 (~200 000 unknowns).
+  # Above NMAX_EDGES the mesh of one a takes gigabytes: grow = 1, or a grow
+  # close to 1, keeps the spacing at the tip size along the whole line (grow = 1 with ftip = 0.05
+  # and a = 0.05 mm: 14 000 elements, > 12 GB per FreeFEM process).
+  printf '%s\n' "$alist" | awk -v b="$bval" -v hm="${P[h_m]}" -v hb="${P[h_b]}" -v hmax="${P[hmax]}" -v ftip="${P[ftip]}" \
+      -v htipmax="${P[htipmax]}" -v grow="${P[grow]}" -v fseg="${P[fseg]}" -v refine="$refine" -v rm="$refine_mult" \
+      -v nmax="$NMAX_EDGES" -v ncap=10000000 '
+    function min(x, y) { return x < y ? x : y }
+    function max(x, y) { return x > y ? x : y }
+    # the number of intervals of rve.edp grade(p, L, s0, g, smax) (counting stops at ncap);
+    # first, last = its first and last spacing
+    function grade(L, s0, g, smax,   n, pos, s) {
+      n = 0; pos = 0; s = min(s0, smax); first = s
+      while (L - pos > 1.5 * s) { pos += s; n++; s = min(s * g, smax); if (n >= ncap) break }
+      if (n == 0) first = L
+      last = L - pos; return n + 1
+    }
+    BEGIN { hfar = hmax / refine; gr = grow ^ (1 / refine); diam = sqrt(b * b + max(hm, hb) ^ 2); hlim = 1.1e-7 * diam }
+    {
+      a = $1 + 0; if (a > b) a = b
+      if (a > 0 && a < b) {
+        L1 = b - a; htip = min(htipmax, ftip * min(L1, a)) / refine
+        if (htip < hlim) {
+          printf "make-table.sh: error: a = %s mm (b - a = %.6g mm): crack or ligament too short for this mesh (tip spacing %.3g mm < %.3g mm, FreeFEM'"'"'s limit) at refine %s; need min(a, b - a) >= %.3g mm, or a larger ftip%s\n", \
+            $1, L1, htip, hlim, refine, hlim * refine / ftip, (rm != 1 ? " or a lower --refine" : "") > "/dev/stderr"
+          exit 1
+        }
+        ni = grade(L1, htip, gr, min(hfar, fseg * L1 / refine)); sL = last
+        ni += grade(a, htip, gr, min(hfar, fseg * a / refine)); sR = last
+        how = sprintf("the interface spacing starts at the tip spacing min(htipmax, ftip*min(a, b - a))/refine = %.3g mm and grows by grow^(1/refine) = %.6g per element", htip, gr)
+      } else {
+        ni = grade(b, hfar, 1, hfar); sL = first; sR = last
+        how = sprintf("the interface spacing is hmax/refine = %.3g mm", hfar)
+      }
+      ns = grade(hm, sL, gr, hfar) + grade(hm, sR, gr, hfar) + grade(hb, sL, gr, hfar) + grade(hb, sR, gr, hfar)
+      if (ni + ns > nmax) {
+        printf "make-table.sh: error: grow = %s, ftip = %s, htipmax = %s, hmax = %s, refine %s: at a = %s mm the mesh would need %s%d elements along the interface and %d along the sides (of the meshed quarter), more than the %d allowed (the mesh of one a would take gigabytes): %s; use grow > 1 (1.1 to 1.6 are usual), a larger ftip, htipmax or hmax, or a lower refinement\n", \
+          grow, ftip, htipmax, hmax, refine, $1, (ni >= ncap ? "more than " : ""), ni, ns, nmax, how > "/dev/stderr"
+        exit 1
+      }
+    }' || exit 2
+fi
+if [ "$check_only" = 1 ]; then
+  echo "$prog: $params: parameters ok ($na crack half-lengths, refine $refine)"
+  exit 0
+fi
 # ---------------------------------------------------------------- run FreeFEM
 outdir=$(dirname "$out")
 [ -d "$outdir" ] || die 3 "output directory '$outdir' does not exist"
@@ -177,7 +313,7 @@ if [ "${P[order]}" = P1 ]; then
 else
   cp "$script" "$work/rve.edp"
 fi
-if [ "$want_fields" = 1 ]; then printf '%s' "$fields_raw" | awk 'NF' > "$work/fields.list"; else : > "$work/fields.list"; fi
+if [ "$want_fields" = 1 ] && [ -n "$fields_sel" ]; then printf '%s\n' "$fields_sel" > "$work/fields.list"; else : > "$work/fields.list"; fi
 { wc -l < "$work/fields.list"; cat "$work/fields.list"; } > "$work/fields.count"
 
 # deal the a values to the jobs round robin from the largest a down (similar cost per job)
@@ -187,6 +323,12 @@ for ((j = 0; j < njobs; j++)); do
   { wc -l < "$work/a$j.list"; cat "$work/a$j.list"; } > "$work/a$j.count"
 done
 
+# the uniform mesh (huni > 0) does not use the graded mesh's controls; rve.edp computes the graded
+# point sets all the same, so it gets the defaults (checked cheap) instead of the user's values
+declare -A G
+for key in hmax ftip htipmax grow fseg; do
+  if [ "$uniform" = 1 ]; then G[$key]=${D[$key]}; else G[$key]=${P[$key]}; fi
+done
 echo "$prog: $na crack half-lengths, element ${P[order]}, refine $refine, $njobs parallel FreeFEM job(s)"
 t_start=$(date +%s.%N)
 pids=()
@@ -195,7 +337,7 @@ for ((j = 0; j < njobs; j++)); do
     set -o pipefail
     FreeFem++ -nw -v 0 "$work/rve.edp" \
       -hm "${P[h_m]}" -hb "${P[h_b]}" -b "${P[b]}" -Em "${P[E_m]}" -num "${P[nu_m]}" -Eb "${P[E_b]}" -nub "${P[nu_b]}" \
-      -hmax "${P[hmax]}" -ftip "${P[ftip]}" -htipmax "${P[htipmax]}" -grow "${P[grow]}" -fseg "${P[fseg]}" \
+      -hmax "${G[hmax]}" -ftip "${G[ftip]}" -htipmax "${G[htipmax]}" -grow "${G[grow]}" -fseg "${G[fseg]}" \
       -refine "$refine" -huni "${P[huni]}" \
       -alist "$work/a$j.count" -out "$work/rows$j" -diag "$work/diag$j" \
       -fields "$work/fields$j" -fieldsa "$work/fields.count" 2> "$work/err$j" \
@@ -203,15 +345,18 @@ for ((j = 0; j < njobs; j++)); do
   ) &
   pids+=($!)
 done
-fail=0
+failed=""
 for ((j = 0; j < njobs; j++)); do
-  if ! wait "${pids[$j]}"; then
-    fail=1
-    echo "$prog: FreeFEM job $j failed:" >&2
-    grep -v -e '^ *$' -e 'current line' -e 'call die' -e '^exit(' -e 'err code' "$work/err$j" | head -20 | sed 's/^/  /' >&2
-  fi
+  wait "${pids[$j]}" || failed+=" $j"
 done
-[ "$fail" = 0 ] || exit 4
+if [ -n "$failed" ]; then
+  # the jobs' messages, each once (a check that fails for every a fails in every job)
+  echo "$prog: error: FreeFEM job(s)$failed failed:" >&2
+  for j in $failed; do
+    grep -v -e '^ *$' -e 'current line' -e 'call die' -e '^exit(' -e 'err code' "$work/err$j" | head -20
+  done | awk '!seen[$0]++' | sed 's/^/  /' >&2
+  exit 4
+fi
 t_end=$(date +%s.%N)
 wall=$(awk -v a="$t_start" -v b="$t_end" 'BEGIN { printf "%.1f", b - a }')
 
@@ -292,5 +437,8 @@ if [ "$want_fields" = 1 ] && [ -s "$work/fields.list" ]; then
       END { for (i = 2; i <= n; i++) { t = key[i]; u = txt[i]; for (j = i - 1; j >= 1 && key[j] > t; j--) { key[j + 1] = key[j]; txt[j + 1] = txt[j] } key[j + 1] = t; txt[j + 1] = u }
             for (i = 1; i <= n; i++) printf "%s\n%s", txt[i], (i < n ? "\n\n" : "") }'
   } > "$base-fields.dat"
+fi
+if ! { [ "$want_fields" = 1 ] && [ -s "$work/fields.list" ]; } && [ -e "$base-fields.dat" ]; then
+  note "no side file written by this run: $base-fields.dat is from an earlier one"
 fi
 echo "$prog: wrote $out ($na rows) in $wall s wall time"

@@ -16,7 +16,7 @@ hmax = 2
 ftip = 0.05
 htipmax = 0.05
 grow = 1.6
-a_over_b_list = 0.5"
+a_over_b_list = 0.4 0.5"
 fail=0
 # case NAME EXPECTED-MESSAGE-REGEX sed-expression-applied-to-good
 case_() {
@@ -30,7 +30,7 @@ case_() {
     echo "FAIL $name: exit $rc, output:"; cat "$work/$name.out"; fail=1
   fi
 }
-case_ a_gt_b          "a must not exceed b"            's/^a_over_b_list = .*/a_over_b_list = 0.5 1.2/'
+case_ a_gt_b          "a must not exceed b"            's/^a_over_b_list = .*/a_over_b_list = 0.4 0.5 1.2/'
 case_ a_mm_gt_b       "a = 30 > b"                     '$a a_list_mm = 30'
 case_ nu_half         "Poisson.s ratio must be < 0.5"  's/^nu_m = .*/nu_m = 0.5/'
 case_ nu_big          "Poisson.s ratio must be < 0.5"  's/^nu_b = .*/nu_b = 0.7/'
@@ -44,7 +44,29 @@ case_ not_a_number    "is not a number"                's/^E_m = .*/E_m = soft/'
 case_ missing_key     "'nu_b' missing"                 '/^nu_b/d'
 case_ unknown_key     "unknown key"                    '$a thickness = 3'
 case_ syntax          "expected key = value"           '$a h_m 2'
-case_ ligament_tiny   "too short for this mesh"        's/^a_over_b_list = .*/a_over_b_list = 0.999999/'
+case_ ligament_tiny   "too short for this mesh"        's/^a_over_b_list = .*/a_over_b_list = 0.5 0.999999/'
+case_ E_infinite      "'E_m' = '1e400' is not a finite number" 's/^E_m = .*/E_m = 1e400/'
+case_ E_huge          "'E_b' = '1e200' is out of range"  's/^E_b = .*/E_b = 1e200/'
+case_ list_empty      "a_over_b_list is empty"         's/^a_over_b_list = .*/a_over_b_list =/'
+case_ three_rows      "a_over_b_uniform = 0.1 0.2 5: 1 distinct .* 3 rows, but it needs at least 4" 's/^a_over_b_list = .*/a_over_b_uniform = 0.1 0.2 5/'
+case_ grow_one        "grow = 1, ftip = 0.05, .* at a = 0.05 mm the mesh would need 10000 elements along the interface" 's/^grow = .*/grow = 1/; $a a_list_mm = 0.05'
+case_ huni_b          "'huni' = 0.3: the uniform mesh needs b = 25 to be a whole multiple of huni" '$a huni = 0.3'
+case_ huni_a          "'huni' = 1: the crack half-lengths a = 12.5 mm are not multiples of huni" '$a huni = 1'
+# --a-over-b: a = 0 and a = b are added, and the table still needs 4 rows
+printf '%s\n' "$good" > "$work/good.params"
+bash "$here/make-table.sh" --a-over-b "0.3" "$work/good.params" "$work/x.dat" > "$work/aob.out" 2>&1
+rc=$?
+if [ $rc -eq 2 ] && grep -q -- '--a-over-b "0.3": 1 distinct .* 3 rows' "$work/aob.out" && [ ! -e "$work/x.dat" ]; then echo "ok   a_over_b_one_value: exit $rc"; else echo "FAIL a_over_b_one_value (exit $rc)"; cat "$work/aob.out"; fail=1; fi
+# Windows line ends: the same file is good (--check: the parameters only, no FreeFEM run)
+printf '%s\n' "$good" | sed 's/$/\r/' > "$work/crlf.params"
+bash "$here/make-table.sh" --check "$work/crlf.params" > "$work/crlf.out" 2>&1
+rc=$?
+if [ $rc -eq 0 ] && grep -q "parameters ok (4 crack half-lengths" "$work/crlf.out"; then echo "ok   crlf_line_ends: exit 0"; else echo "FAIL crlf_line_ends (exit $rc)"; cat "$work/crlf.out"; fail=1; fi
+# --help: the comment block at the top, no line of code
+bash "$here/make-table.sh" --help > "$work/help.out" 2>&1
+rc=$?
+if [ $rc -eq 0 ] && grep -q "^Options:" "$work/help.out" && grep -q "Exit code" "$work/help.out" \
+   && ! grep -q -e "set -u" -e "LC_ALL" -e '^#' "$work/help.out"; then echo "ok   help: exit 0, $(wc -l < "$work/help.out") lines"; else echo "FAIL help (exit $rc)"; cat "$work/help.out"; fail=1; fi
 # unreadable parameter file
 bash "$here/make-table.sh" "$work/does-not-exist.params" "$work/x.dat" > "$work/nofile.out" 2>&1
 rc=$?

@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# compare-columns.sh TABLE WORKDIR -- compare-tables.sh checks exactly the --cols columns (an
+# I_fNT change must not fail '--cols Tf'), and reads tables as the loader does (CRLF line ends,
+# a Fortran d exponent).  Awk only, no FreeFEM: TABLE is a committed format-2 table.
+set -u
+export LC_ALL=C
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+table=$1; work=$2
+mkdir -p "$work" || exit 3
+cmp_() { bash "$here/compare-tables.sh" "$@" > "$work/out.txt" 2>&1; }
+fail=0
+expect() {   # expect WHAT CODE [PATTERN]: the last comparison's exit code and output
+  local what=$1 want=$2 pat=${3:-}
+  if [ "$rc" -eq "$want" ] && { [ -z "$pat" ] || grep -Eq "$pat" "$work/out.txt"; }; then
+    echo "ok   $what (exit $rc)"
+  else
+    echo "FAIL $what: exit $rc, expected $want${pat:+ and /$pat/}; output:"; cat "$work/out.txt"; fail=1
+  fi
+}
+# column COL of data row ROW times (1 + F)
+perturb() { awk -v row="$1" -v col="$2" -v f="$3" '/^#/ || NF == 0 { print; next } { n++; if (n == row) $col = sprintf("%.17g", $col * (1 + f)); print }' "$table"; }
+perturb 5 24 0.02 > "$work/I2.dat"
+perturb 5 21 0.01 > "$work/Tf1.dat"
+
+cmp_ --tol 0.005 --cols "Tf" "$table" "$work/I2.dat"; rc=$?
+expect "I_fNT changed 2 %, --cols Tf: passes" 0 '^ok: all checked columns within 0.005'
+grep -Eq '^I_fNT +[0-9.e+-]+ +[0-9.e+-]+ *$' "$work/out.txt" \
+  && echo "ok   I_fNT printed, not checked" || { echo "FAIL the I_fNT line carries a check flag:"; grep '^I_fNT' "$work/out.txt"; fail=1; }
+cmp_ --tol 0.005 --cols "C_TT C_NN Dbar_TT Dbar_NN Cf_T Tf" "$table" "$work/I2.dat"; rc=$?
+expect "I_fNT changed 2 %, convergence.sh's columns: pass" 0
+cmp_ --tol 0.005 --cols "Tf I_fNT" "$table" "$work/I2.dat"; rc=$?
+expect "I_fNT changed 2 %, --cols 'Tf I_fNT': fails naming I_fNT" 1 '^FAIL: checked column\(s\) I_fNT exceed'
+cmp_ --tol 0.005 "$table" "$work/I2.dat"; rc=$?
+expect "I_fNT changed 2 %, all columns: fails" 1
+cmp_ --tol 0.005 --cols "Tf" "$table" "$work/Tf1.dat"; rc=$?
+expect "Tf changed 1 %, --cols Tf: fails" 1 '^Tf .* FAIL$'
+cmp_ --tol 0.005 --cols "Tf Xy" "$table" "$table"; rc=$?
+expect "unknown column refused" 2 'unknown column Xy'
+cmp_ --tol 1e-7 "$table" "$table"; rc=$?
+expect "a table against itself" 0
+# CRLF line ends and d exponents: the same numbers
+awk '/^#/ || NF == 0 { print; next } { gsub(/e/, "d"); print }' "$table" | sed 's/$/\r/' > "$work/crlf-d.dat"
+grep -q 'd-' "$work/crlf-d.dat" || { echo "FAIL no d exponent in the test table"; fail=1; }
+cmp_ --tol 0 "$table" "$work/crlf-d.dat"; rc=$?
+expect "CRLF and d exponents read as the same numbers (I_fNT compared too)" 0 '^I_fNT .* ok$'
+exit $fail

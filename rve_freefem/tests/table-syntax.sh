@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# table-syntax.sh TABLE DIAG WORKDIR -- check-table.sh reads a table as the loader does
+# (src/interphase_text_input.f90: a carriage return ending a line is dropped; a number is
+# [sign](digits[.[digits]] | .digits)[(e|E|d|D)[sign]digits], finite), and refuses what the
+# loader refuses (1e400, fewer than the 4 rows its spline needs).  Awk only, no FreeFEM.
+set -u
+export LC_ALL=C
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+table=$1; diag=$2; work=$3
+mkdir -p "$work" || exit 3
+fail=0
+check() {   # check WHAT WANT(pass|fail) FILE [PATTERN]
+  local what=$1 want=$2 file=$3 pat=${4:-} rc
+  bash "$here/check-table.sh" "$file" > "$work/out.txt" 2>&1; rc=$?
+  if { [ "$want" = pass ] && [ $rc -eq 0 ]; } || { [ "$want" = fail ] && [ $rc -eq 1 ]; } \
+     && { [ -z "$pat" ] || grep -Eq "$pat" "$work/out.txt"; }; then
+    echo "ok   $what (exit $rc)"
+  else
+    echo "FAIL $what: exit $rc, expected to $want${pat:+ with /$pat/}; output:"; head -20 "$work/out.txt"; fail=1
+  fi
+}
+data() { awk -v row="$1" -v col="$2" -v val="$3" '/^#/ || NF == 0 { print; next } { if (++n == row) $col = val; print }' "$table"; }
+check "the table as committed" pass "$table"
+sed 's/$/\r/' "$table" > "$work/crlf.dat"
+check "CRLF line ends" pass "$work/crlf.dat" '^format +ok'
+awk '/^#/ || NF == 0 { print; next } { gsub(/e/, "d"); print }' "$table" > "$work/d.dat"
+grep -q '^[^#].*d-' "$work/d.dat" || { echo "FAIL no d exponent in the test table"; fail=1; }
+check "Fortran d exponents (every e written d)" pass "$work/d.dat"
+awk '/^#/ || NF == 0 { print; next } { gsub(/e/, "D"); print }' "$table" | sed 's/$/\r/' > "$work/D-crlf.dat"
+check "D exponents and CRLF" pass "$work/D-crlf.dat"
+# a d exponent is read as one: C_TT(0) = 1d3 is 1000, not 1 (and not the closed form)
+data 1 3 1d3 > "$work/d3.dat"
+check "C_TT(0) = 1d3 read as 1000 (closed form fails)" fail "$work/d3.dat" '^closed +FAIL'
+data 3 20 1e400 > "$work/inf.dat"
+check "1e400 (beyond a double) refused" fail "$work/inf.dat" 'not a finite number: 1e400'
+data 3 20 1x-3 > "$work/x.dat"
+check "1x-3 refused" fail "$work/x.dat" 'not a finite number: 1x-3'
+data 3 20 1-3 > "$work/minus.dat"
+check "1-3 (no exponent letter) refused" fail "$work/minus.dat" 'not a finite number: 1-3'
+n=$(awk '!/^#/ && NF' "$table" | wc -l)
+awk -v n="$n" '/^#/ || NF == 0 { print; next } { k++; if (k == 1 || k == 2 || k == n) print }' "$table" > "$work/three.dat"
+check "3 rows (a = 0, one a, a = b) refused" fail "$work/three.dat" '^3 rows: a table needs at least 4'
+awk -v n="$n" '/^#/ || NF == 0 { print; next } { k++; if (k == 1 || k == 2 || k == 3 || k == n) print }' "$table" > "$work/four.dat"
+check "4 rows accepted" pass "$work/four.dat" '4 rows of'
+exit $fail
