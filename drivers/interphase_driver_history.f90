@@ -121,11 +121,14 @@ contains
                call close_text_file(unit)
                return
             case (NAMES_WITHOUT_KEY)
-               message = where//'"#'//trim(line(comment + 1:))//'" names traction columns, but is not a '// &
-                  '"# columns:" line, so every column would be read as a separation: write the key "columns:" '// &
-                  'first, e.g. "# columns: t s_T Sigma_N"'
-               call close_text_file(unit)
-               return
+               ! (a caption below a "# columns:" line is no mistake: the columns are named)
+               if (named_columns == 0) then
+                  message = where//'"#'//trim(line(comment + 1:))//'" names traction columns, but is not a '// &
+                     '"# columns:" line, so every column would be read as a separation: write the key "columns:" '// &
+                     'first, e.g. "# columns: t s_T Sigma_N"'
+                  call close_text_file(unit)
+                  return
+               end if
             case (COLUMNS_LINE)
                if (verify(line(:comment - 1), ' '//char(9)) > 0) then
                   message = where//'a "# columns:" line holds nothing before the ''#'' (here '''// &

@@ -137,6 +137,7 @@ contains
          ! a control character inside a line (a carriage return of old Mac line ends, inside a
          ! quoted name) is dropped or misread by the namelist read: refused
          do i = 1, n
+            if (line(i:i) == '!') exit                   ! (a comment's text is not read)
             if (iachar(line(i:i)) < 32 .and. line(i:i) /= achar(9)) then
                call fail('a control character (code '//int_to_string(iachar(line(i:i)))//') in column '// &
                   int_to_string(i)//': only blanks and tabs may separate the text (a carriage return '// &

@@ -266,6 +266,9 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
             interphase.read_case(path)
     (tmp_path / "ok.nml").write_text(good)
     assert interphase.read_case(tmp_path / "ok.nml").increments >= 1
+    # a control character in a comment is not read (review)
+    (tmp_path / "ff.nml").write_text(good.replace("mu = 0.75", "mu = 0.75 ! page\f"))
+    assert interphase.read_case(tmp_path / "ff.nml").increments >= 1
     # a history named with non-ASCII characters (UTF-8), and a comment in another encoding
     (tmp_path / "h\u00e9.txt").write_text((source_dir / "drivers" / "cases" / "h1I.txt").read_text())
     (tmp_path / "accent.nml").write_bytes(b"! s\xb5m\n" + good.replace("'h1I.txt'", "'h\u00e9.txt'").encode("utf-8"))
@@ -435,6 +438,10 @@ def test_read_mixed_history(source_dir, tmp_path):
                     "0 0 0\n1 0.001 0\n")
     t, v, c = interphase.read_history(fine, control=True)
     assert t.tolist() == [0, 1] and not c.any()
+    # a caption below a columns line is no mistake
+    fine.write_text("# columns: t s_T Sigma_N\n# t (s) s_T (mm) Sigma_N (MPa)\n0 0 0\n1 0 1\n")
+    t, v, c = interphase.read_history(fine, control=True)
+    assert c[1, 0] and not c[1, 1]
 
 
 # A small case file (its &loading from line 6 on) and its history, for the checks below.

@@ -295,7 +295,7 @@ def read_history(path, control=False):
             raise ValueError(f'{where}: "#{shown}" names the columns in another order than the rows '
                              'are read (t, the shear component(s), then the normal one: t s_T s_N or t s_T1 s_T2 '
                              's_N): reorder the columns and the comment')
-        if kind == "tractions":
+        if kind == "tractions" and named is None:   # (a caption below a columns line is no mistake)
             raise ValueError(f'{where}: "#{shown}" names traction columns, but is not a "# columns:" '
                              'line, so every column would be read as a separation: write the key "columns:" '
                              'first, e.g. "# columns: t s_T Sigma_N"')
@@ -428,7 +428,8 @@ def _namelist_entries(path, known=None):
 
     for number, line in enumerate(_text_lines(path), 1):
         i, n = 0, len(line)
-        bad = next((k for k, ch in enumerate(line) if ord(ch) < 32 and ch != "\t"), None)
+        text = line.split("!", 1)[0]     # (a comment's text is not read)
+        bad = next((k for k, ch in enumerate(text) if ord(ch) < 32 and ch != "\t"), None)
         if bad is not None:
             fail(f"a control character (code {ord(line[bad])}) in column {bad + 1}: only blanks and tabs may "
                  "separate the text (a carriage return alone ends lines on old Macs: save the file with Unix "
