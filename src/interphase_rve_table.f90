@@ -492,10 +492,13 @@ contains
 
    end subroutine read_rve_table
 
-   !> The header key this reader reads that `key` is or looks like a misspelling of ('' when none):
-   !> the same after case and the characters '_', '-' and blanks are ignored, or, for the keys of
-   !> six characters or more, at most two edits (Levenshtein distance) away; the provenance keys of
-   !> tables/README.md are never taken for one.
+   !> The header key this reader reads that `key` is or looks like a misspelling of ('' when none),
+   !> case ignored: the same after the characters '_', '-' and blanks are dropped; for the keys of
+   !> six characters or more, one character left out, one added or two neighbours swapped
+   !> (`fromat`, `Chat_T`); for the keys of sixteen or more (interpolation_variable), any two edits.
+   !> One character replaced in a short key is not taken for a misspelling: symbols differ that way
+   !> (a user's `Chat_NT` or `a_Tc_limit` is provenance). The provenance keys of tables/README.md are
+   !> never taken for one.
    pure function near_reader_key(key) result(near)
       character(len=*), intent(in) :: key
       character(len=:), allocatable :: near
@@ -517,14 +520,34 @@ contains
          end if
       end do
       do k = 1, size(READ_KEYS)
-         if (len_trim(READ_KEYS(k)) >= 6) then
-            if (edit_distance(lower(trim(key)), lower(trim(READ_KEYS(k)))) <= 2) then
-               near = trim(READ_KEYS(k))
-               return
-            end if
+         if (len_trim(READ_KEYS(k)) >= 16) then
+            if (edit_distance(lower(trim(key)), lower(trim(READ_KEYS(k)))) <= 2) near = trim(READ_KEYS(k))
+         else if (len_trim(READ_KEYS(k)) >= 6) then
+            if (one_slip(lower(trim(key)), lower(trim(READ_KEYS(k))))) near = trim(READ_KEYS(k))
          end if
+         if (len(near) > 0) return
       end do
    contains
+      !> s is t with one character left out or added, or with two different neighbours swapped.
+      pure logical function one_slip(s, t)
+         character(len=*), intent(in) :: s, t
+         integer :: i
+         one_slip = dropped_one(s, t) .or. dropped_one(t, s)
+         if (len(s) /= len(t)) return
+         do i = 1, len(t) - 1
+            if (t(i:i) /= t(i + 1:i + 1) .and. s == t(1:i - 1)//t(i + 1:i + 1)//t(i:i)//t(i + 2:)) one_slip = .true.
+         end do
+      end function one_slip
+      !> s is t with one character left out.
+      pure logical function dropped_one(s, t)
+         character(len=*), intent(in) :: s, t
+         integer :: i
+         dropped_one = .false.
+         if (len(s) /= len(t) - 1) return
+         do i = 1, len(t)
+            if (s == t(1:i - 1)//t(i + 1:)) dropped_one = .true.
+         end do
+      end function dropped_one
       pure function lower(s) result(t)
          character(len=*), intent(in) :: s
          character(len=len(s)) :: t
