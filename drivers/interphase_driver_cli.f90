@@ -220,15 +220,15 @@ contains
    end function is_special_file
 
    !> The message (or '') that refuses an output file `path` that is not a regular file: the
-   !> drivers write CSV.part and rename it over the output, which would replace a device node
-   !> (as root, /dev/null itself) with a regular file. `what` names the output ('output = ...').
+   !> drivers' outputs are regular files, and the CSV's rename from CSV.part would replace a device
+   !> node (as root, /dev/null itself) with one. `what` names the output ('output = ...').
    function refuse_special_output(path, what) result(message)
       character(len=*), intent(in) :: path, what
       character(len=:), allocatable :: message
       message = ''
       if (is_special_file(path)) message = what//' would write '//path//', which is not a regular file '// &
-         '(a device such as /dev/null, a directory or a pipe): the CSV is written to CSV.part and renamed '// &
-         'over it, which would replace it; name a file'
+         '(a device such as /dev/null, a directory or a pipe): each output is written as a regular file '// &
+         'in its place; name a file'
    end function refuse_special_output
 
    !> Remove a file if it exists (nothing happens otherwise).

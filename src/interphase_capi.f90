@@ -31,7 +31,7 @@ module interphase_capi
    use interphase_kernel, only: interface_update, update_point
    use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
       describe_failure, FAILURE_OUTPUT
-   use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL
+   use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL, separation_names
    implicit none
    private
    public :: interphase_update_c, interphase_update_dt_c, interphase_status_message_c, interphase_load_table_c, &
@@ -735,14 +735,5 @@ contains
             'interphase_load_rcurve(path, ...) before any update'
       end if
    end subroutine decode_material
-
-   !> The names of the separation's components, the C interface's order (normal first), for
-   !> messages.
-   pure function separation_names(n) result(names)
-      integer, intent(in) :: n          !! 2 or 3
-      character(len=:), allocatable :: names
-      names = 's_N, s_T'
-      if (n == 3) names = 's_N, s_T1, s_T2'
-   end function separation_names
 
 end module interphase_capi

@@ -3,7 +3,7 @@
 module interphase_status
    implicit none
    private
-   public :: status_message, severity_label, file_loader, message_path
+   public :: status_message, severity_label, file_loader, message_path, separation_names
 
    !> Length of the message strings that go with a status.
    integer, parameter, public :: MESSAGE_LEN = 256
@@ -196,5 +196,14 @@ contains
          shown = '...'//path(n - most + 4:n)
       end if
    end function message_path
+
+   !> The names of a separation's components for messages, normal first (the UMAT's and the C
+   !> interface's order): 's_N, s_T' in 2-D, 's_N, s_T1, s_T2' in 3-D.
+   pure function separation_names(n) result(names)
+      integer, intent(in) :: n          !! 2 or 3
+      character(len=:), allocatable :: names
+      names = 's_N, s_T'
+      if (n == 3) names = 's_N, s_T1, s_T2'
+   end function separation_names
 
 end module interphase_status

@@ -36,7 +36,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
       STATUS_BAD_TIME_INCREMENT, STATUS_BAD_NTENS, STATUS_BAD_OPTION, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
-      STATUS_BAD_STATE, STATUS_BAD_NSTATV
+      STATUS_BAD_STATE, STATUS_BAD_NSTATV, separation_names
    use interphase_params, only: law_params_type, HOST_VALUE_MAX, HOST_INCREMENT_MAX, SLIP_MAX, check_constants, &
       decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS
    use interphase_layer, only: layer_map_type
@@ -225,13 +225,5 @@ contains
    include 'interphase_run_time_data.inc'
    include 'interphase_statev.inc'
    include 'interphase_decode_props.inc'
-
-   !> The names of the separation's components, UMAT order, for messages.
-   pure function separation_names(n) result(names)
-      integer, intent(in) :: n          !! 2 or 3
-      character(len=:), allocatable :: names
-      names = 's_N, s_T'
-      if (n == 3) names = 's_N, s_T1, s_T2'
-   end function separation_names
 
 end subroutine umat
