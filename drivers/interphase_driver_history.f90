@@ -265,20 +265,12 @@ contains
          'sigma_t', 'sigma_n', 'sigma_t1', 'sigma_t2']
       character(len=len(text)) :: kept
       integer, allocatable :: starts(:), ends(:)
-      integer :: i, depth, first, nnames
+      integer :: i, first, nnames
       logical :: traction
       character(len=8) :: order(4)
 
       kind = PLAIN_COMMENT
-      kept = text
-      depth = 0
-      do i = 1, len(kept)
-         if (kept(i:i) == '(') depth = depth + 1
-         if (depth > 0) then
-            if (kept(i:i) == ')') depth = depth - 1
-            kept(i:i) = ' '
-         end if
-      end do
+      kept = without_parentheses(text)
       call split_words(kept, starts, ends)
       if (size(starts) == 0) return
       first = 1
@@ -319,6 +311,23 @@ contains
       end function in_order
    end function column_words_kind
 
+   !> `text` with every group in parentheses, nested ones included, blanked (an unclosed group runs
+   !> to the end).
+   pure function without_parentheses(text) result(kept)
+      character(len=*), intent(in) :: text
+      character(len=len(text)) :: kept
+      integer :: i, depth
+      kept = text
+      depth = 0
+      do i = 1, len(kept)
+         if (kept(i:i) == '(') depth = depth + 1
+         if (depth > 0) then
+            if (kept(i:i) == ')') depth = depth - 1
+            kept(i:i) = ' '
+         end if
+      end do
+   end function without_parentheses
+
    !> `text` with every tab a blank.
    pure function tabs_as_blanks(text) result(blanked)
       character(len=*), intent(in) :: text
@@ -343,7 +352,7 @@ contains
       character(len=:), allocatable :: expected
       character(len=16) :: words(4)
       integer, allocatable :: starts(:), ends(:)
-      integer :: i, n, depth, k
+      integer :: i, n, k
 
       ok = .false.
       ncolumns = 0
@@ -355,14 +364,7 @@ contains
       call check_units(text, message)
       if (len(message) > 0) return
       ! drop the parenthesised words (units)
-      depth = 0
-      do i = 1, len(text)
-         if (text(i:i) == '(') depth = depth + 1
-         if (depth > 0) then
-            if (text(i:i) == ')') depth = depth - 1
-            text(i:i) = ' '
-         end if
-      end do
+      text = without_parentheses(text)
       call split_words(text, starts, ends)
       n = size(starts)
       if (n /= 3 .and. n /= 4) then

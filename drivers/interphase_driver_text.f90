@@ -6,7 +6,7 @@ module interphase_driver_text
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      TEXT_LINE, TEXT_END
+      TEXT_LINE, TEXT_END, to_lower
    implicit none
    private
    public :: int_to_string, real_to_string, real_to_csv, to_lower
@@ -42,19 +42,6 @@ contains
       write (buffer, '(es24.16e3)') value
       text = trim(adjustl(buffer))
    end function real_to_csv
-
-   !> Lower-case copy of an ASCII string.
-   pure function to_lower(text) result(lower)
-      character(len=*), intent(in) :: text        !! any text
-      character(len=len(text)) :: lower
-      integer :: i, code
-
-      lower = text
-      do i = 1, len(text)
-         code = iachar(text(i:i))
-         if (code >= iachar('A') .and. code <= iachar('Z')) lower(i:i) = achar(code + 32)
-      end do
-   end function to_lower
 
    !> Open a text file for read_line (interphase_text_input's bounded reader). iostat is 0, or
    !> non-zero with the reason in `iomsg` (a directory is refused).
@@ -287,17 +274,7 @@ contains
    pure function shell_quote(text) result(quoted)
       character(len=*), intent(in) :: text        !! any text
       character(len=:), allocatable :: quoted
-      integer :: i
-
-      quoted = "'"
-      do i = 1, len(text)
-         if (text(i:i) == "'") then
-            quoted = quoted//"'\''"
-         else
-            quoted = quoted//text(i:i)
-         end if
-      end do
-      quoted = quoted//"'"
+      quoted = single_quoted(text, "'\''")
    end function shell_quote
 
    !> `text` as a gnuplot string in single quotes (where nothing is special but the quote,
@@ -305,17 +282,24 @@ contains
    pure function gnuplot_quote(text) result(quoted)
       character(len=*), intent(in) :: text        !! any text
       character(len=:), allocatable :: quoted
+      quoted = single_quoted(text, "''")
+   end function gnuplot_quote
+
+   !> `text` in single quotes, each quote inside it written as `escaped`.
+   pure function single_quoted(text, escaped) result(quoted)
+      character(len=*), intent(in) :: text, escaped
+      character(len=:), allocatable :: quoted
       integer :: i
 
       quoted = "'"
       do i = 1, len(text)
          if (text(i:i) == "'") then
-            quoted = quoted//"''"
+            quoted = quoted//escaped
          else
             quoted = quoted//text(i:i)
          end if
       end do
       quoted = quoted//"'"
-   end function gnuplot_quote
+   end function single_quoted
 
 end module interphase_driver_text

@@ -24,7 +24,7 @@ module interphase_rve_table
    use interphase_real_text, only: real_text
    use interphase_spline, only: SPLINE_NOT_A_KNOT
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END
+      parse_real, tried_path, clip_text, to_lower, TEXT_LINE, TEXT_END
    use interphase_status, only: message_path, STATUS_OK, STATUS_TABLE_UNREADABLE, STATUS_TABLE_BAD_HEADER, &
       STATUS_TABLE_MISSING_COLUMN, STATUS_TABLE_MISSING_KEY, STATUS_TABLE_BAD_ROW, &
       STATUS_TABLE_NONFINITE, STATUS_TABLE_NOT_INCREASING, STATUS_TABLE_BAD_RANGE, &
@@ -521,9 +521,9 @@ contains
       end do
       do k = 1, size(READ_KEYS)
          if (len_trim(READ_KEYS(k)) >= 16) then
-            if (edit_distance(lower(trim(key)), lower(trim(READ_KEYS(k)))) <= 2) near = trim(READ_KEYS(k))
+            if (edit_distance(to_lower(trim(key)), to_lower(trim(READ_KEYS(k)))) <= 2) near = trim(READ_KEYS(k))
          else if (len_trim(READ_KEYS(k)) >= 6) then
-            if (one_slip(lower(trim(key)), lower(trim(READ_KEYS(k))))) near = trim(READ_KEYS(k))
+            if (one_slip(to_lower(trim(key)), to_lower(trim(READ_KEYS(k))))) near = trim(READ_KEYS(k))
          end if
          if (len(near) > 0) return
       end do
@@ -548,22 +548,12 @@ contains
             if (s == t(1:i - 1)//t(i + 1:)) dropped_one = .true.
          end do
       end function dropped_one
-      pure function lower(s) result(t)
-         character(len=*), intent(in) :: s
-         character(len=len(s)) :: t
-         integer :: i, c
-         t = s
-         do i = 1, len(s)
-            c = iachar(s(i:i))
-            if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
-         end do
-      end function lower
       pure function squeezed(s) result(t)
          character(len=*), intent(in) :: s
          character(len=:), allocatable :: t
          character(len=len(s)) :: low
          integer :: i
-         low = lower(s)
+         low = to_lower(s)
          t = ''
          do i = 1, len_trim(low)
             if (index('_- '//achar(9), low(i:i)) == 0) t = t//low(i:i)

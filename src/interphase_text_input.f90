@@ -13,7 +13,7 @@ module interphase_text_input
    implicit none
    private
    public :: text_file_type, open_text_file, read_text_line, close_text_file, parse_real, &
-      is_real_literal, tried_path, clip_text
+      is_real_literal, tried_path, clip_text, to_lower
 
    !> Longest line a reader takes (characters, without the newline).
    integer, parameter, public :: MAX_LINE_LEN = 65536
@@ -57,6 +57,19 @@ module interphase_text_input
    end interface
 
 contains
+
+   !> Lower-case copy of an ASCII string (other characters as they are).
+   pure function to_lower(text) result(lower)
+      character(len=*), intent(in) :: text        !! any text
+      character(len=len(text)) :: lower
+      integer :: i, code
+
+      lower = text
+      do i = 1, len(text)
+         code = iachar(text(i:i))
+         if (code >= iachar('A') .and. code <= iachar('Z')) lower(i:i) = achar(code + 32)
+      end do
+   end function to_lower
 
    !> Open `path` for reading. ok = .false. with `message` (the processor's reason) when it
    !> cannot be opened; a directory is refused here too.
