@@ -5,18 +5,8 @@ set -u
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 work=$1
 mkdir -p "$work" || exit 3
-good="h_m = 2
-h_b = 3
-b = 25
-E_m = 1000
-nu_m = 0.15
-E_b = 16000
-nu_b = 0.15
-hmax = 2
-ftip = 0.05
-htipmax = 0.05
-grow = 1.6
-a_over_b_list = 0.4 0.5"
+# (a small valid RVE: the edits below make it bad; its comment lines dropped)
+good=$(grep -v '^#' "$here/tests/two-cracks.params")
 fail=0
 # case NAME EXPECTED-MESSAGE-REGEX sed-expression-applied-to-good
 case_() {

@@ -18,18 +18,8 @@ expect() {   # expect WHAT CODE PATTERN: the last run's exit code and a line of 
     echo "FAIL $what: exit $rc, expected $want and /$pat/; output:"; tail -30 "$work/out.txt"; fail=1
   fi
 }
-good="h_m = 2
-h_b = 3
-b = 25
-E_m = 1000
-nu_m = 0.15
-E_b = 16000
-nu_b = 0.15
-hmax = 2
-ftip = 0.05
-htipmax = 0.05
-grow = 1.6
-a_over_b_list = 0.4 0.5"
+# (a small valid RVE: the edits below make it bad; its comment lines dropped)
+good=$(grep -v '^#' "$here/tests/two-cracks.params")
 
 # a bad parameter file: exit 2 (make-table.sh's code), before any run
 printf '%s\nthickness = 3\n' "$good" > "$work/unknown.params"
