@@ -4,7 +4,7 @@
 !>
 !>     interphase-calibrate CASE.nml [--increments N] [--write FILE.nml]
 !>
-!> CASE.nml is a micromechanical case file (its &loading group is not used). The program runs
+!> CASE.nml is a micromechanical case file (its &loading group is not used and may be left out). The program runs
 !> the monotonic mode-I and mode-II tests (h1I, h1II) to full damage through `umat`, takes the
 !> fracture energies G_I, G_II as the dissipated energy at the end (SPD) and the undamaged
 !> stiffnesses K_N, K_T from the tangent at the origin (the UMAT's DDSDDE at zero separation of the
@@ -76,7 +76,8 @@ program interphase_calibrate
       call exit_program(1)
    end if
 
-   call read_case(case_path, run, ok, message)
+   ! (&material alone: the &loading group, which the calibration does not use, may be left out)
+   call read_case(case_path, run, ok, message, material_only=.true.)
    if (.not. ok) call fail(message)
    ! --write must not replace an input (the paths resolved and compared: drivers/README.md)
    if (len(write_path) > 0) then

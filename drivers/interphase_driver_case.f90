@@ -158,15 +158,19 @@ contains
    end function material_entry_kinds
 
    !> Read and check a case file. On failure `ok` is false and `message` says what and where,
-   !> always naming the case file.
-   subroutine read_case(path, run, ok, message)
+   !> always naming the case file. With `material_only` (interphase-calibrate) the `&loading` group
+   !> is not read: it may be left out, and where given only its syntax is checked (the entries'
+   !> names and kinds); run's loading components keep their defaults.
+   subroutine read_case(path, run, ok, message, material_only)
       character(len=*), intent(in) :: path        !! case file path
       type(case_type), intent(out) :: run        !! the case, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      logical, intent(in), optional :: material_only   !! read &material alone (default false)
       integer :: unit, ios
       character(len=512) :: iomsg
       type(entry_line_type), allocatable :: lines(:)
+      logical :: with_loading
 
       ok = .false.
       run%path = path
@@ -181,7 +185,9 @@ contains
          return
       end if
       call read_material(unit, run, ok, message)
-      if (ok) then
+      with_loading = .true.
+      if (present(material_only)) with_loading = .not. material_only
+      if (ok .and. with_loading) then
          rewind (unit)
          call read_loading(unit, run, ok, message)
       end if
@@ -692,19 +698,19 @@ contains
       end function short
    end function material_summary
 
-   !> True when a real entry still holds UNSET_REAL (a NaN from the file is not "unset").
-   !> Whether writing `path` would replace an input of the run: the case file, its history, RVE
-   !> table or R-curve file (the paths resolved: same_file). One comparison a statement: same_file
-   !> is not pure, and GCC may skip an impure call in an .or. chain.
+   !> Whether writing `path` would replace an input of the run: the case file, its history (when
+   !> &loading was read), RVE table or R-curve file (the paths resolved: same_file). One comparison
+   !> a statement: same_file is not pure, and GCC may skip an impure call in an .or. chain.
    logical function writes_an_input(run, path)
       type(case_type), intent(in) :: run
       character(len=*), intent(in) :: path
       writes_an_input = same_file(path, run%path)
-      if (.not. writes_an_input) writes_an_input = same_file(path, run%history_path)
+      if (.not. writes_an_input .and. allocated(run%history_path)) writes_an_input = same_file(path, run%history_path)
       if (.not. writes_an_input .and. len(run%table_path) > 0) writes_an_input = same_file(path, run%table_path)
       if (.not. writes_an_input .and. len(run%rcurve_path) > 0) writes_an_input = same_file(path, run%rcurve_path)
    end function writes_an_input
 
+   !> True when a real entry still holds UNSET_REAL (a NaN from the file is not "unset").
    pure logical function is_unset(value)
       real(dp), intent(in) :: value               !! the entry after the namelist read
 
