@@ -6,7 +6,8 @@
 #
 # Checks (each prints its largest residual; any failure gives exit code 1):
 #   format     every header line '# key = value', required keys, one '# columns:' line (the 23
-#              columns of format 1, or those and I_fNT, format 2), that many finite numbers per
+#              columns of format 1, or those and I_fNT, format 2, by name in any order, as the
+#              loader takes them), that many finite numbers per
 #              row, at least 4 rows (the loader's not-a-knot spline), a ascending from 0 to b.
 #              Read as the loader (src/interphase_text_input.f90) reads them: a carriage return
 #              ending a line is dropped (CRLF files), a number is [sign](digits[.[digits]] |
@@ -67,9 +68,21 @@ BEGIN {
 { sub(/\r$/, "") }
 /^#/ {
   line = $0
-  if (line ~ /^# columns: /) {
-    ncolsline++; c = line; sub(/^# columns: /, "", c)
-    if (c == cols) ncol = 23; else if (c == cols " I_fNT") ncol = 24; else badcols = 1
+  if (line ~ /^# columns:/) {
+    # the columns by name, in any order (as the loader takes them): pos[i] is the canonical
+    # place (cols, then I_fNT 24) of the i-th column of the table
+    ncolsline++; c = line; sub(/^# columns:/, "", c)
+    ncol = split(c, names, " ")
+    nknown = split(cols " I_fNT", known, " ")
+    delete seen
+    for (i = 1; i <= ncol; i++) {
+      pos[i] = 0
+      for (j = 1; j <= nknown; j++) if (names[i] == known[j]) pos[i] = j
+      if (pos[i] == 0) { printf "the # columns: line names an unknown column %s\n", names[i]; badcols = 1 }
+      else if (pos[i] in seen) { printf "the # columns: line names %s twice\n", names[i]; badcols = 1 }
+      else seen[pos[i]] = 1
+    }
+    for (j = 1; j <= 23; j++) if (!(j in seen)) { printf "the # columns: line does not name %s\n", known[j]; badcols = 1 }
     next
   }
   if (n == 0 && line !~ /^# [A-Za-z_0-9]+ = ./) { printf "header line is not \"# key = value\": %s\n", line; badhdr = 1 }
@@ -83,7 +96,7 @@ NF == 0 { next }
   for (i = 1; i <= NF; i++) {
     x = isnumber($i) ? numval($i) : 0
     if (!isnumber($i) || !finite(x)) { badnum = 1; printf "row %d field %d not a finite number: %s\n", n, i, $i }
-    v[n, i] = x
+    if (i <= ncol && pos[i] > 0) v[n, pos[i]] = x
   }
   if (n > 1 && !(v[n, 1] > v[n - 1, 1])) badorder = 1
 }
@@ -92,7 +105,7 @@ END {
   fmt = 0
   for (i = 1; i <= nreq; i++) if (!(req[i] in hdr)) { printf "missing header key %s\n", req[i]; fmt = 1 }
   if (badhdr) fmt = 1
-  if (ncolsline != 1 || badcols) { print "the # columns: line is missing, repeated or different"; fmt = 1 }
+  if (ncolsline != 1 || badcols) { print "the # columns: line is missing, repeated or does not name the 23 columns (and I_fNT)"; fmt = 1 }
   if (badrow || badnum || badorder) fmt = 1
   if (n < 4) { printf "%d rows: a table needs at least 4 (a = 0, a = b and 2 between; the loader'"'"'s not-a-knot cubic spline)\n", n; fmt = 1 }
   hm = hdr["h_m"]; hb = hdr["h_b"]; b = hdr["b"]; Em = hdr["E_m"]; nm = hdr["nu_m"]; Eb = hdr["E_b"]; nb = hdr["nu_b"]

@@ -33,7 +33,15 @@ perturb 3 24 1e-7 > "$work/t10.dat"; expect_fail "I_fNT off by 1e-7 ((ii'), (iii
 perturb 2 21 1e-9 > "$work/t11.dat"; expect_fail "T^f at the shortest crack off by 1e-9 ((ii'), (iii'))" "$work/t11.dat"
 awk '/^#/ || NF == 0 { print; next } { if (++n == 1) $24 = "1e-3"; print }' "$table" > "$work/t12.dat"
 expect_fail "I_fNT = 1e-3 at a = 0 (limit 0)" "$work/t12.dat"
-sed 's/^# columns: a D C_TT C_TN C_NT/# columns: a D C_TT C_NT C_TN/' "$table" > "$work/t7.dat"; expect_fail "columns line changed" "$work/t7.dat"
+# the columns are read by name, in any order, as the loader reads them: the table with its
+# columns C_TT and C_NN moved to the end (names and numbers) must pass; with only their names
+# swapped (C_NN's numbers read as C_TT's), or a column misnamed or missing, it must fail
+awk '/^# columns: / { sub(/ C_TT/, ""); sub(/ C_NN/, ""); print $0 " C_NN C_TT"; next }
+     /^#/ || NF == 0 { print; next } { tt = $3; nn = $6; $3 = ""; $6 = ""; $0 = $0; print $0, nn, tt }' "$table" > "$work/moved.dat"
+bash "$here/check-table.sh" "$work/moved.dat" "$diag" > /dev/null || { echo "the table with columns moved must pass"; exit 1; }
+sed '/^# columns: /s/ C_NN C_TT$/ C_TT C_NN/' "$work/moved.dat" > "$work/t7.dat"; expect_fail "C_TT and C_NN named the other way round" "$work/t7.dat"
+sed '/^# columns: /s/ Dbar_TN / Dbar_Tn /' "$table" > "$work/t13.dat"; expect_fail "a column misnamed" "$work/t13.dat"
+sed '/^# columns: /s/ Sc_N / /' "$table" > "$work/t14.dat"; expect_fail "a column not named" "$work/t14.dat"
 awk '!/^#/ && NF { n++; if (n == 2) next } { print }' "$table" | sed '/^0 0 /d' > "$work/t8.dat"; expect_fail "a = 0 row missing" "$work/t8.dat"
 awk '{ for (i = 1; i < NF; i++) if ($i == "resTfpt=" && ++k == 2) $(i + 1) = "2e-9"; print }' "$diag" > "$work/d9.txt"
 expect_fail "p3 crack shear stress not uniform (2e-9)" "$table" "$work/d9.txt"
