@@ -603,31 +603,34 @@ contains
       character(len=*), intent(in) :: update_detail
       character(len=MESSAGE_LEN) :: text
       character(len=2*MESSAGE_LEN) :: long
+      !> the times, written first (a write to `long` may not read it: no internal file in its own list)
+      character(len=:), allocatable :: times
       character(len=:), allocatable :: name
       integer :: c, ios
 
       write (long, '(a,g0.10,a,g0.10,a)', iostat=ios) 'from t = ', point%time, ' to t = ', failure%time_to, ': '
+      times = trim(long)
       select case (failure%kind)
       case (FAILURE_FATAL)
-         long = trim(long)//' '//trim(update_detail)
+         long = times//' '//trim(update_detail)
       case (FAILURE_HALVINGS)
          if (failure%status == STATUS_BEYOND_PEAK) then
             c = failure%component
             name = component_name(c, .true., point%ntens)
-            write (long, '(a,1x,a,a,a,g0.6,a,a,a,a,g0.6,a)', iostat=ios) trim(long), 'the imposed traction ', name, &
+            write (long, '(a,1x,a,a,a,g0.6,a,a,a,a,a,g0.6,a)', iostat=ios) times, 'the imposed traction ', name, &
                ' = ', failure%target(c), ' MPa is ', beyond_peak_reason(failure, point%ntens), 'the largest |', name, &
                '| reached is ', failure%peak(c), ' MPa)'
          else if (failure%status == STATUS_MIXED_NOT_CONVERGED) then
-            write (long, '(a,1x,a,i0,a,es9.3,a,i0,a,es8.2,a,i0,a)', iostat=ios) trim(long), &
+            write (long, '(a,1x,a,i0,a,es9.3,a,i0,a,es8.2,a,i0,a)', iostat=ios) times, &
                'no converged step even after ', MAX_HALVINGS, ' halvings of the sub-increment: Newton on the '// &
                'tangent left a traction residual of ', failure%residual, ' MPa after ', failure%iterations, &
                ' iteration(s) (traction tolerance ', tolerance, ' MPa, at most ', MAX_NEWTON, ')'
          else
-            write (long, '(a,1x,a,a,i0,a)', iostat=ios) trim(long), trim(update_detail), &
+            write (long, '(a,1x,a,a,i0,a)', iostat=ios) times, trim(update_detail), &
                '; no convergence even after ', MAX_HALVINGS, ' halvings of the sub-increment'
          end if
       case default
-         long = trim(long)//' '//trim(update_detail)
+         long = times//' '//trim(update_detail)
       end select
       ! a message longer than MESSAGE_LEN (a long update message behind the times) ends in '...',
       ! so that a reader sees it was cut

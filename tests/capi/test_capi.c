@@ -661,6 +661,10 @@ static void test_run_history(const char *csv_path) {
   CHECK(status == INTERPHASE_STATUS_BEYOND_PEAK && strstr(detail, "beyond the peak the material can carry") &&
             done > 1 && done < 201 && o_tr[2 * (done - 1)] <= K_N * 0.00044,
         "beyond the peak: status %d, %zu rows: %s", status, done, detail);
+  /* the message ends with the largest traction reached, just below the peak K_N s0_N = 0.212387 MPa */
+  const char *reached = strstr(detail, "the largest |Sigma_N| reached is 0.21238");
+  CHECK(reached != NULL && strcmp(reached + strlen(reached) - 5, " MPa)") == 0, "beyond the peak: the peak not named: %s",
+        detail);
 
   /* the micromechanical model: an imposed Sigma_N, then Sigma_T at s_N = 0, raised to 5 MPa. The
    * fully damaged point's stiffnesses are round-off of zero (1e-13 MPa/mm); without the flat-
