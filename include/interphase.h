@@ -116,7 +116,8 @@ extern "C" {
  *
  * @param props          material constants, @p nprops doubles (docs/abaqus.md, PROPS table)
  * @param nprops         number of PROPS (9 simplified, 8 micromechanical; 4 more with the
- *                       fracture-mechanics damage law: docs/abaqus.md)
+ *                       fracture-mechanics damage law; then up to 7 option constants:
+ *                       docs/abaqus.md)
  * @param ntens          2 (2-D: s_N, s_T) or 3 (3-D: s_N, s_T1, s_T2)
  * @param state_old      INTERPHASE_NSTATE doubles: the state at the start of the increment
  * @param separation     @p ntens doubles: total separation at the end of the increment (mm);
@@ -185,7 +186,8 @@ int interphase_update_dt(const double *props, int nprops, int ntens, const doubl
  * @return INTERPHASE_STATUS_OK (0), or the status of the first step that fails (the rows from
  *         it on are untouched; a host may retry that step in smaller ones); the checks of row 0
  *         are those of interphase_update on its inputs (INTERPHASE_STATUS_BAD_STATE,
- *         INTERPHASE_STATUS_BAD_HOST_INPUT for a separation, traction or energy out of range).
+ *         INTERPHASE_STATUS_BAD_HOST_INPUT for a separation, traction or energy out of range);
+ *         @p nrows = 0 gives INTERPHASE_STATUS_BAD_HISTORY, as in interphase_run_history.
  */
 int interphase_run(const double *props, int nprops, int ntens, size_t nrows, const double *separation,
                    const double *time, double *traction, double *tangent, double *state,
@@ -274,7 +276,7 @@ int interphase_run_history(const double *props, int nprops, int ntens, size_t nr
  * @param detail      out, may be NULL: on failure, a NUL-terminated message naming the file, the
  *                    line and the failed check (e.g. "bad.dat:5: 2 numbers where the ...")
  * @param detail_len  size of @p detail in bytes (257 holds any message: at most 256 characters)
- * @return INTERPHASE_STATUS_OK (0), or INTERPHASE_STATUS_TABLE_* (50-58) or
+ * @return INTERPHASE_STATUS_OK (0), or INTERPHASE_STATUS_TABLE_* (49-58) or
  *         INTERPHASE_STATUS_SPLINE_* (40-48); on failure the table loaded before (if any) stays.
  */
 int interphase_load_table(const char *path, char *detail, size_t detail_len);

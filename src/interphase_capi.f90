@@ -250,7 +250,7 @@ contains
          return
       end if
       if (nrows < 1_c_size_t) then
-         code = STATUS_BAD_STATE
+         code = STATUS_BAD_HISTORY
          message = 'nrows = 0: the path needs at least its starting row (row 0, the state to start from)'
          call finish()
          return

@@ -565,7 +565,7 @@ static void test_run(const char *csv_path) {
   tra[0] = tra0;
   status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 0, sep, tim, tra, NULL, sta, psi, wd, &done, detail,
                           sizeof detail);
-  CHECK(status == INTERPHASE_STATUS_BAD_STATE && done == 0, "nrows = 0: status %d", status);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0, "nrows = 0: status %d", status);
   status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 4, 3, sep, tim, tra, NULL, sta, psi, wd, NULL, NULL, 0);
   CHECK(status == INTERPHASE_STATUS_BAD_NTENS, "ntens = 4: status %d", status);
   double bad_props[INTERPHASE_NPROPS_SIMPLIFIED];
