@@ -24,9 +24,9 @@ program interphase_check_deck
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
       RCURVE_EQUIVALENT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
-      GROWTH_FIXED_LAMBDA
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN
-   use interphase_params, only: law_params_type, from_props
+      GROWTH_FIXED_LAMBDA, HOST_CALCULIX
+   use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
+   use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_driver_cli, only: get_argument, exit_program, print_version
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
       tried_path, clip_text, parse_real, TEXT_LINE, TEXT_END
@@ -432,7 +432,8 @@ contains
          if (materials(m)%user_line /= 0 .and. materials(m)%nconstants == materials(m)%nread .and. &
             .not. materials(m)%bad_constant .and. materials(m)%nread <= MAX_CONSTANTS) then
             call from_props(materials(m)%constants(1:materials(m)%nread), params, status, message)
-            if (status == STATUS_OK) then
+            ! (the VUMAT takes separations, T0 = 1: its layer options are refused below)
+            if (status == STATUS_OK .and. .not. explicit) then
                t_layer = params%layer_thickness
                normal = params%layer_normal
             end if
@@ -476,6 +477,17 @@ contains
                   '(docs/abaqus.md, PROPS)', nfail)
             else
                call from_props(mat%constants(1:mat%nread), params, status, message)
+               if (status == STATUS_OK) then
+                  ! what the VUMAT refuses at its first call: the UMAT's layer and host options
+                  if (explicit) call refuse_umat_options(params, 'the VUMAT', status, message)
+                  if (status == STATUS_OK .and. .not. explicit .and. params%host == HOST_CALCULIX) then
+                     status = STATUS_BAD_OPTION
+                     ! (the host option is the last constant: given, it ends PROPS)
+                     message = 'PROPS('//int_to_string(mat%nread)//') host = '// &
+                        int_to_string(HOST_CALCULIX)//' (CalculiX conventions) in an Abaqus deck: the UMAT would '// &
+                        'neither read nor write SSE and SPD, and the energies would be lost: leave it 0'
+                  end if
+               end if
                if (status /= STATUS_OK) then
                   call record_failure(where//': '//trim(message), nfail)
                else
