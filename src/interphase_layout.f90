@@ -21,7 +21,7 @@ module interphase_layout
    ! ---- PROPS (material constants, `*USER MATERIAL, CONSTANTS=...`) --------------------------
    !> Model selector: MODEL_SIMPLIFIED or MODEL_MICROMECHANICAL.
    integer, parameter, public :: PROP_MODEL = 1
-   !> Damage-law selector: DAMAGE_DISPLACEMENT.
+   !> Damage-law selector: DAMAGE_DISPLACEMENT or DAMAGE_FRACTURE.
    integer, parameter, public :: PROP_DAMAGE_LAW = 2
    !> Coulomb friction coefficient mu on the crack faces (-), mu >= 0.
    integer, parameter, public :: PROP_MU = 3
