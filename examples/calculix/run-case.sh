@@ -51,9 +51,13 @@ deck_abs=$(cd "$(dirname "$deck")" && pwd)/$(basename "$deck")
 cd "$outdir"
 rm -f "$name.dat" "$name.csv" "$name.point.csv" "$name.png"
 start=$(date +%s)
-if ! LD_LIBRARY_PATH="$cache${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" OMP_NUM_THREADS=${OMP_NUM_THREADS:-1} \
-      "$ccx" -i "$name" > "$name.log" 2>&1 || ! grep -q "Job finished" "$name.log" || grep -q "\*ERROR" "$name.log"; then
-   echo "run-case.sh: ccx failed on $deck (last lines of $outdir/$name.log):" >&2
+# (GFORTRAN_UNBUFFERED_ALL: ccx's Fortran messages reach the log even when ccx then crashes, as
+# it does on a *USER MATERIAL whose constants and temperature lines do not add up)
+rc=0
+LD_LIBRARY_PATH="$cache${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" OMP_NUM_THREADS=${OMP_NUM_THREADS:-1} \
+   GFORTRAN_UNBUFFERED_ALL=1 "$ccx" -i "$name" > "$name.log" 2>&1 || rc=$?
+if [ $rc -ne 0 ] || ! grep -q "Job finished" "$name.log" || grep -q "\*ERROR" "$name.log"; then
+   echo "run-case.sh: ccx failed on $deck (exit status $rc; last lines of $outdir/$name.log):" >&2
    grep -E "\*ERROR|\*WARNING in interphase" "$name.log" | tail -n 5 >&2 || true
    tail -n 5 "$name.log" >&2
    exit 1
