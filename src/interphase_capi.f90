@@ -31,7 +31,8 @@ module interphase_capi
    use interphase_kernel, only: interface_update, update_point
    use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
       describe_failure, FAILURE_OUTPUT
-   use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL, separation_names
+   use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL, separation_names, STATUS_NONFINITE_SEPARATION, &
+      STATUS_SEPARATION_OUT_OF_RANGE
    implicit none
    private
    public :: interphase_update_c, interphase_update_dt_c, interphase_status_message_c, interphase_load_table_c, &
@@ -136,6 +137,7 @@ contains
       integer :: code, i, j, n, nsv
       logical :: viscous
       character(len=MESSAGE_LEN) :: message
+      character(len=36) :: values_text
 
       message = ''
       call decode_material(props, nprops, ntens, 'the C API', params, code, message)
@@ -167,8 +169,17 @@ contains
             real_text(old%d, 6), ' at separation '//separation_names(n)//' (mm) ', separation(1:n)
          call finish()
          return
+      else if (code == STATUS_NONFINITE_SEPARATION .or. code == STATUS_SEPARATION_OUT_OF_RANGE) then
+         ! (the values first, on their own: a format's items after them would not line up in 2-D)
+         write (values_text, '(3es12.4)', iostat=i) separation(1:n)
+         message = 'separation '//separation_names(n)//' (mm) '//trim(values_text)//': not finite'
+         if (code == STATUS_SEPARATION_OUT_OF_RANGE) write (message, '(a,es8.1,a)', iostat=i) 'separation '// &
+            separation_names(n)//' (mm) '//trim(values_text)//': beyond |s_i| <= ', SEPARATION_MAX, ' mm'
+         call finish()
+         return
       else if (code /= STATUS_OK) then
-         write (message, '(a,3es12.4)') 'separation (mm) ', separation(1:n)
+         write (message, '(a,3es12.4)', iostat=i) 'update failed at separation '//separation_names(n)//' (mm) ', &
+            separation(1:n)
          call finish()
          return
       end if

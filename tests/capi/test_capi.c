@@ -221,14 +221,17 @@ static void test_failures(void) {
   const double s_nan[2] = {NAN, 0.0};
   status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_nan, traction, tangent, state_new, &psi,
                              detail, sizeof detail);
-  CHECK(status == INTERPHASE_STATUS_NONFINITE_SEPARATION, "NaN separation: status %d", status);
+  CHECK(status == INTERPHASE_STATUS_NONFINITE_SEPARATION && strstr(detail, "separation s_N, s_T (mm)") != NULL &&
+            strstr(detail, ": not finite") != NULL,
+        "NaN separation: status %d, \"%s\"", status, detail);
   CHECK(traction[0] == -7.0 && psi == -7.0, "NaN separation: outputs were touched");
 
   /* a finite separation beyond the admissible range, and one at its edge */
   const double s_far[2] = {0.0, -2.0 * INTERPHASE_SEPARATION_MAX}, s_edge[2] = {INTERPHASE_SEPARATION_MAX, 0.0};
   status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_far, traction, tangent, state_new, &psi,
                              detail, sizeof detail);
-  CHECK(status == INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE && strstr(detail, "-2.0000E+20") != NULL,
+  CHECK(status == INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE && strstr(detail, "-2.0000E+20") != NULL &&
+            strstr(detail, "separation s_N, s_T (mm)") != NULL && strstr(detail, ": beyond |s_i| <= ") != NULL,
         "separation -2e20 mm: status %d, \"%s\"", status, detail);
   CHECK(traction[0] == -7.0 && psi == -7.0, "separation -2e20 mm: outputs were touched");
   status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_edge, traction, tangent, state_new, &psi,
