@@ -23,7 +23,7 @@ module interphase_capi
       STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_BAD_TIME_INCREMENT, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
-   use interphase_rcurve, only: load_rcurve, rcurve_coverage
+   use interphase_rcurve, only: load_rcurve, rcurve_overrun
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, SEPARATION_MAX, HOST_VALUE_MAX
    use interphase_finite, only: is_within
    use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
@@ -165,8 +165,7 @@ contains
          call finish()
          return
       else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
-         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(76), '; the crack grows beyond it from D = ', &
-            real_text(old%d, 6), ' at separation '//separation_names(n)//' (mm) ', separation(1:n)
+         message = rcurve_overrun(76, max(old%d, params%d0), separation(1:n))
          call finish()
          return
       else if (code == STATUS_NONFINITE_SEPARATION .or. code == STATUS_SEPARATION_OUT_OF_RANGE) then
@@ -304,11 +303,12 @@ contains
                   write (message, '(a,i0,a,es12.4,a)') 'row ', row - 1, ': dt = ', dt, &
                      ' s: viscous regularisation needs a finite dt >= 0'
                else
-                  message = 'the material has viscous regularisation (its viscosity option): pass the times'
+                  write (message, '(a,i0,a)') 'row ', row - 1, ': the material has viscous regularisation (its '// &
+                     'viscosity option): pass the times (time is NULL)'
                end if
             else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
-               write (message, '(a,i0,a,a,a,g0.6,a,3es12.4)', iostat=ios) 'row ', row - 1, ': ', rcurve_coverage(50), &
-                  '; the crack grows beyond it from D = ', old%d, ' at separation '//separation_names(n)//' (mm) ', s(1:n)
+               write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
+                  rcurve_overrun(50, max(old%d, params%d0), s(1:n))
             else
                write (message, '(a,i0,a,3es12.4)') 'row ', row - 1, ': update failed at separation '// &
                   separation_names(n)//' (mm) ', s(1:n)
@@ -531,8 +531,7 @@ contains
          fatal = .true.
          return
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
-         write (law%detail, '(a,a,g0.6,a,3es12.4)', iostat=ios) rcurve_coverage(76), '; the crack grows beyond it from D = ', &
-            old%d, ' at separation '//separation_names(n)//' (mm) ', s(1:n)
+         law%detail = rcurve_overrun(76, max(old%d, law%params%d0), s(1:n))
          fatal = .true.
          return
       else if (status /= STATUS_OK) then

@@ -49,7 +49,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       NSTATV_VISCOUS, REGIME_INTACT, REGIME_SLIP
    use interphase_state, only: interface_state_type, ONE_BITS, SLIP_MAX_BITS, SIGN_BIT, REGIME_BITS
    use interphase_kernel, only: update_point
-   use interphase_rcurve, only: rcurve_coverage, rcurve_loaded, rcurve_covers
+   use interphase_rcurve, only: rcurve_coverage, rcurve_loaded, rcurve_covers, rcurve_overrun
    use interphase_micro_coefficients, only: custom_table_loaded
    use interphase_umat_failure, only: umat_fail
    implicit none
@@ -151,8 +151,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          exit update
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
          ! the R-curve file does not reach the damage this point needs: a setup error
-         write (message, '(a,a,a,a,3es12.4)', iostat=i) rcurve_coverage(76), '; the crack grows beyond it from D = ', &
-            real_text(old%d, 6), ' at separation '//separation_names(nsep)//' (mm) ', s(1:nsep)
+         message = rcurve_overrun(76, max(old%d, params%d0), s(1:nsep))
          exit update
       else if (status /= STATUS_OK) then
          write (message, '(a,3es12.4)') 'update failed at separation '//separation_names(nsep)//' (mm) ', s(1:nsep)
