@@ -17,7 +17,8 @@ module interphase_capi
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
-   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE
+   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, &
+      LFM_RCURVE, MODEL_MICROMECHANICAL
    use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
       STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
@@ -721,6 +722,7 @@ contains
       type(law_params_type), intent(out) :: params
       integer, intent(out) :: code
       character(len=MESSAGE_LEN), intent(out) :: message
+      integer :: slot       !! the R-curve selector's PROPS index
       message = ''
       if (nprops < 0) then
          code = STATUS_BAD_NPROPS
@@ -738,11 +740,15 @@ contains
       ! data loaded at start-up: a missing table or R-curve, or one that does not cover D0
       call check_run_time_data(params, code, message)
       if (code == STATUS_TABLE_NOT_LOADED) then
-         write (message, '(a,i0,a)') 'PROPS[', PROP_TABLE - 1, '] = 1 selects the custom RVE table, but none is '// &
-            'loaded: call interphase_load_table(path, ...) before any update'
+         ! (PROPS numbered from 1 as in every other message and in docs/abaqus.md: props[7] in C)
+         write (message, '(a,i0,a,i0,a)') 'PROPS(', PROP_TABLE, ') = 1 (props[', PROP_TABLE - 1, &
+            '] in C) selects the custom RVE table, but none is loaded: call interphase_load_table(path, ...) '// &
+            'before any update'
       else if (code == STATUS_RCURVE_NOT_LOADED) then
-         message = 'the R-curve selector 3 selects the tabulated R-curve, but none is loaded: call '// &
-            'interphase_load_rcurve(path, ...) before any update'
+         slot = merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, params%model == MODEL_MICROMECHANICAL) + LFM_RCURVE
+         write (message, '(a,i0,a,i0,a)') 'PROPS(', slot, ') = 3 (props[', slot - 1, &
+            '] in C) selects the tabulated R-curve, but none is loaded: call interphase_load_rcurve(path, ...) '// &
+            'before any update'
       end if
    end subroutine decode_material
 

@@ -382,6 +382,9 @@ static void test_load_table(const char *paper, const char *coarse) {
   interphase_status_message(status, msg, sizeof msg);
   CHECK(status == INTERPHASE_STATUS_TABLE_NOT_LOADED && strcmp(msg, "custom RVE table selected but none loaded") == 0,
         "no table loaded: status %d \"%s\"", status, msg);
+  CHECK(strstr(detail, "PROPS(8) = 1 (props[7] in C) selects the custom RVE table") != NULL &&
+            strstr(detail, "call interphase_load_table(path, ...)") != NULL,
+        "no table loaded: detail \"%s\"", detail);
   CHECK(traction[0] == -7.0 && tangent[0] == -7.0 && state_new[0] == -7.0 && psi == -7.0,
         "no table loaded: outputs were touched");
 
@@ -442,6 +445,10 @@ static void test_load_rcurve(void) {
 
   int status = interphase_update(tabulated, NPROPS_FRACTURE, 2, state, s, traction, tangent, state_new, &psi, NULL, 0);
   CHECK(status == INTERPHASE_STATUS_RCURVE_NOT_LOADED, "no R-curve loaded: status %d", status);
+  char why[300];
+  interphase_update(tabulated, NPROPS_FRACTURE, 2, state, s, traction, tangent, state_new, &psi, why, sizeof why);
+  CHECK(strstr(why, "PROPS(11) = 3 (props[10] in C) selects the tabulated R-curve") != NULL,
+        "no R-curve loaded: detail \"%s\"", why);
 
   expect_load_failure(interphase_load_rcurve, "no-such-dir/missing-rcurve.txt", INTERPHASE_STATUS_RCURVE_UNREADABLE,
                       "no-such-dir/missing-rcurve.txt");
