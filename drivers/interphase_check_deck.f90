@@ -80,6 +80,7 @@ program interphase_check_deck
       real(dp) :: constants(MAX_CONSTANTS) = 0.0_dp
       logical :: unsymm = .false.
       integer :: depvar = -1                   !! *DEPVAR (-1: none)
+      integer :: depvar_line = 0               !! line of *DEPVAR's count (0: none)
       logical :: depvar_bad = .false.          !! *DEPVAR given, but not a count (reported)
       real(dp) :: density = -1.0_dp            !! *DENSITY (-1: none)
       integer :: line = 0                      !! line of *MATERIAL
@@ -361,6 +362,7 @@ contains
                   if (values(1) >= 0.0_dp .and. values(1) <= 1.0e9_dp .and. &
                       .not. abs(values(1) - aint(values(1))) > 0.0_dp) then
                      materials(current)%depvar = nint(values(1))
+                     materials(current)%depvar_line = lineno
                   else
                      materials(current)%depvar_bad = .true.
                      if (len_trim(materials(current)%bad_data) == 0) materials(current)%bad_data = &
@@ -384,7 +386,8 @@ contains
             'or back, by an import between two decks)', nfail)
       end if
       if (size(sections) == 0) then
-         write (output_unit, '(a)') path//': no *COHESIVE SECTION: nothing for interphase to check'
+         write (output_unit, '(a)') path//': no *COHESIVE SECTION: nothing for interphase to check (solid '// &
+            'sections with the thin-layer mode and CalculiX decks are not checked: docs/abaqus.md)'
          return
       end if
       do i = 1, size(sections)
@@ -404,7 +407,7 @@ contains
 
       type(law_params_type) :: params
       character(len=MESSAGE_LEN) :: message
-      character(len=:), allocatable :: where, solver, summary, notes, hook, section_where
+      character(len=:), allocatable :: where, solver, summary, notes, hook, section_where, why
       integer :: m, k, status, nfail_before, depvar_needed, normal
       real(dp) :: t_layer
 
@@ -526,8 +529,11 @@ contains
             else if (mat%depvar < 0) then
                call record_failure(where//': no *DEPVAR: '//trim(solver)//' needs at least '//int_to_string(depvar_needed), nfail)
             else if (mat%depvar < depvar_needed) then
-               call record_failure(where//': *DEPVAR '//int_to_string(mat%depvar)//' but '//trim(solver)//' needs at least '// &
-                  int_to_string(depvar_needed), nfail)
+               why = ''
+               if (depvar_needed == NSTATV_VISCOUS .and. .not. explicit) why = ' (the viscous damage takes STATEV(5))'
+               call record_failure(path//':'//int_to_string(mat%depvar_line)//': *DEPVAR of '//trim(mat%name)//': '// &
+                  int_to_string(mat%depvar)//' but '//trim(solver)//' needs at least '//int_to_string(depvar_needed)// &
+                  why, nfail)
             end if
             if (.not. explicit .and. .not. mat%unsymm) then
                if (status /= STATUS_OK) then
