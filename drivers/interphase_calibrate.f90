@@ -76,7 +76,8 @@ program interphase_calibrate
       call exit_program(1)
    end if
 
-   ! (&material alone: the &loading group, which the calibration does not use, may be left out)
+   ! (the &loading group, which the calibration does not use, may be left out; where given it is
+   ! read, and --write may not replace its history)
    call read_case(case_path, run, ok, message, material_only=.true.)
    if (.not. ok) call fail(message)
    ! --write must not replace an input (the paths resolved and compared: drivers/README.md)

@@ -159,8 +159,8 @@ contains
 
    !> Read and check a case file. On failure `ok` is false and `message` says what and where,
    !> always naming the case file. With `material_only` (interphase-calibrate) the `&loading` group
-   !> is not read: it may be left out, and where given only its syntax is checked (the entries'
-   !> names and kinds); run's loading components keep their defaults.
+   !> may be left out (run's loading components then keep their defaults); where given it is read
+   !> and checked as always.
    subroutine read_case(path, run, ok, message, material_only)
       character(len=*), intent(in) :: path        !! case file path
       type(case_type), intent(out) :: run        !! the case, valid when ok
@@ -185,8 +185,12 @@ contains
          return
       end if
       call read_material(unit, run, ok, message)
+      ! (material_only: a &loading group that is given is still read, so that its history is known
+      ! to writes_an_input; the pre-check's lines name each entry 'group.entry')
       with_loading = .true.
-      if (present(material_only)) with_loading = .not. material_only
+      if (present(material_only)) then
+         if (material_only) with_loading = any(index(lines%name, 'loading.') == 1)
+      end if
       if (ok .and. with_loading) then
          rewind (unit)
          call read_loading(unit, run, ok, message)
