@@ -409,6 +409,7 @@ contains
       character(len=MESSAGE_LEN) :: message
       character(len=:), allocatable :: where, solver, summary, notes, hook, section_where, why
       integer :: m, k, status, nfail_before, depvar_needed, normal
+      logical :: decoded       !! the material's constants decode (params holds them)
       real(dp) :: t_layer
 
       nfail_before = nfail
@@ -452,6 +453,7 @@ contains
          associate (mat => materials(m))
             where = path//':'//int_to_string(mat%user_line)//': *USER MATERIAL of '//trim(mat%name)
             status = -1
+            decoded = .false.
             if (len_trim(mat%bad_data) > 0) call record_failure(trim(mat%bad_data), nfail)
             if (mat%bad_constant) then
                continue     ! its constants are not decoded: the field that is not a number is named above
@@ -480,6 +482,7 @@ contains
                   '(docs/abaqus.md, PROPS)', nfail)
             else
                call from_props(mat%constants(1:mat%nread), params, status, message)
+               decoded = status == STATUS_OK
                if (status == STATUS_OK) then
                   ! what the VUMAT refuses at its first call: the UMAT's layer and host options
                   if (explicit) call refuse_umat_options(params, 'the VUMAT', status, message)
@@ -520,8 +523,9 @@ contains
                end if
             end if
             depvar_needed = merge(NSTATV_VUMAT, NSTATV_REQUIRED, explicit)
-            ! (params is the decoded material when from_props succeeded above)
-            if (status == STATUS_OK .and. .not. explicit) then
+            ! (params is the decoded material when from_props succeeded above, whatever the
+            ! host-option checks after it said)
+            if (decoded .and. .not. explicit) then
                if (params%viscosity > 0.0_dp) depvar_needed = NSTATV_VISCOUS
             end if
             if (mat%depvar_bad) then
@@ -536,7 +540,7 @@ contains
                   why, nfail)
             end if
             if (.not. explicit .and. .not. mat%unsymm) then
-               if (status /= STATUS_OK) then
+               if (.not. decoded) then
                   call record_failure(where//': no UNSYMM: the tangent DDSDDE is unsymmetric (friction, damage)', nfail)
                else if (params%stiffness == STIFFNESS_CONSISTENT) then
                   call record_failure(where//': no UNSYMM: the consistent tangent DDSDDE is unsymmetric (friction, '// &

@@ -13,7 +13,7 @@ module interphase_params
       OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, OPT_HOST
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, RCURVE_CONSTANT, RCURVE_EQUIVALENT, &
-      RCURVE_TABULATED, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, HOST_CALCULIX, STIFFNESS_FIXED_DAMAGE
+      RCURVE_TABULATED, GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA
    use interphase_status, only: STATUS_OK, STATUS_BAD_NPROPS, STATUS_BAD_MODEL, &
       STATUS_BAD_DAMAGE_LAW, STATUS_BAD_MU, STATUS_BAD_S0_N, STATUS_BAD_SF_N, STATUS_BAD_S0_T, &
       STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_TABLE_SELECTOR, MESSAGE_LEN, &
@@ -241,14 +241,6 @@ contains
          call reject(STATUS_BAD_OPTION, base + OPT_VISCOSITY, trim(OPTION_SPECS(OPT_VISCOSITY)%symbol), &
             values(OPT_VISCOSITY), 'viscous regularisation is for the displacement-driven law (PROPS(2) = 1); '// &
             'the fracture law''s damage is a root of g(D) = 0 (docs/theory.md): set it to 0', status, message)
-         return
-      end if
-      if (nint(values(OPT_HOST)) == HOST_CALCULIX .and. nint(values(OPT_STIFFNESS)) /= STIFFNESS_FIXED_DAMAGE) then
-         ! (host = 1 was given, so the stiffness option before it was too: its PROPS index is named)
-         call reject(STATUS_BAD_OPTION, base + OPT_STIFFNESS, trim(OPTION_SPECS(OPT_STIFFNESS)%symbol), &
-            values(OPT_STIFFNESS), 'CalculiX (host option 1) assembles only the symmetric part of DDSDDE, with '// &
-            'which Newton stalls where damage grows (docs/calculix.md): set it to 2, the stiffness at fixed damage', &
-            status, message)
          return
       end if
       call store_options(values, params)

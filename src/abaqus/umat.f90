@@ -46,7 +46,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       NPROPS_OPTIONS, LFM_D0, LFM_RCURVE, LFM_GC_I, LFM_GC_II, OPT_GROWTH_SLIP, OPT_CONTACT_BAND, OPT_VISCOSITY, &
       OPT_STIFFNESS, OPT_HOST, OPTION_DEFAULTS, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, TABLE_DEFAULT_CODE, &
       RCURVE_TABULATED, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, NSTATV_REQUIRED, &
-      NSTATV_VISCOUS, REGIME_INTACT, REGIME_SLIP
+      NSTATV_VISCOUS, REGIME_INTACT, REGIME_SLIP, STIFFNESS_FIXED_DAMAGE
    use interphase_state, only: interface_state_type, ONE_BITS, SLIP_MAX_BITS, SIGN_BIT, REGIME_BITS
    use interphase_kernel, only: update_point
    use interphase_rcurve, only: rcurve_coverage, rcurve_loaded, rcurve_covers, rcurve_overrun
@@ -134,6 +134,13 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
             status = STATUS_BAD_HOST_INPUT
             exit update
          end if
+      else if (params%stiffness /= STIFFNESS_FIXED_DAMAGE) then
+         ! (the CalculiX host: only its branch pays for the test)
+         write (message, '(a,i0,a,i0,a)') 'PROPS(', options_base(params) + OPT_STIFFNESS, ') stiffness = ', &
+            params%stiffness, ' is not allowed with the host option 1 (CalculiX): CalculiX assembles only the '// &
+            'symmetric part of DDSDDE, with which Newton stalls where damage grows (docs/calculix.md): set it to 2'
+         status = STATUS_BAD_OPTION
+         exit update
       end if
       if (map%identity) then
          ! a cohesive element: the separations themselves (NTENS = 2 or 3; written out, as below)
