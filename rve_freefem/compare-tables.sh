@@ -11,8 +11,9 @@
 # exceeds TOL (the other columns are printed, not checked); exit 2 if a row of NEW has no row
 # with the same a in REF, for a usage error or an unknown column; 3 for an unreadable file.
 # I_fNT (format 2) is compared when both tables have it; otherwise the 23 columns of format 1 are.
-# Tables are read as the loader reads them: a carriage return ending a line is dropped, and a
-# Fortran exponent letter d/D is read as e.
+# Tables are read as the loader reads them: the columns by the names of their '# columns:' line,
+# in any order; a carriage return ending a line is dropped, and a Fortran exponent letter d/D is
+# read as e.
 set -u
 export LC_ALL=C
 usage() { echo "usage: compare-tables.sh [--tol TOL] [--cols LIST] REF.dat NEW.dat" >&2; exit 2; }
@@ -43,13 +44,29 @@ BEGIN {
 }
 FNR == 1 { fi++ }
 { sub(/\r$/, "") }
-/^#/ { if ($0 ~ /^# b = /) b = $4 + 0; if ($0 ~ /^# columns: .* I_fNT$/) withI[fi] = 1; next }
+/^#/ {
+  if ($0 ~ /^# b = /) b = $4 + 0
+  # the columns by name, in any order, as the loader takes them: at[fi, k] is the canonical
+  # place (name[]) of the k-th column of the file
+  if ($0 ~ /^# columns:/) {
+    line = $0; sub(/^# columns:/, "", line); ncol[fi] = split(line, given, " ")
+    for (k = 1; k <= ncol[fi]; k++) {
+      at[fi, k] = 0
+      for (j = 1; j <= nc; j++) if (given[k] == name[j]) at[fi, k] = j
+      if (at[fi, k] == 0) { print "compare-tables.sh: error: " FILENAME ": unknown column " given[k] > "/dev/stderr"; stop = 1; exit 2 }
+      if (at[fi, k] == 24) withI[fi] = 1
+      named[fi, at[fi, k]] = 1
+    }
+    for (j = 1; j <= 23; j++) if (!((fi, j) in named)) { print "compare-tables.sh: error: " FILENAME ": the columns line does not name " name[j] > "/dev/stderr"; stop = 1; exit 2 }
+  }
+  next
+}
 NF == 0 { next }
 {
   for (j = 1; j <= NF; j++) if ($j ~ /[dD]/) sub(/[dD]/, "e", $j)
-  if (fi == 1) { nr++; for (j = 1; j <= 24; j++) R[nr, j] = $j + 0
-    for (j = 3; j <= 24; j++) if (abs($j) > S[fam[j]]) S[fam[j]] = abs($j) }
-  else { nn++; for (j = 1; j <= 24; j++) N[nn, j] = $j + 0 }
+  if (fi == 1) { nr++; for (k = 1; k <= NF && k <= ncol[fi]; k++) R[nr, at[fi, k]] = $k + 0
+    for (j = 3; j <= 24; j++) if (abs(R[nr, j]) > S[fam[j]]) S[fam[j]] = abs(R[nr, j]) }
+  else { nn++; for (k = 1; k <= NF && k <= ncol[fi]; k++) N[nn, at[fi, k]] = $k + 0 }
 }
 END {
   if (stop) exit 2

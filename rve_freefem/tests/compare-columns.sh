@@ -43,4 +43,16 @@ awk '/^#/ || NF == 0 { print; next } { gsub(/e/, "d"); print }' "$table" | sed '
 grep -q 'd-' "$work/crlf-d.dat" || { echo "FAIL no d exponent in the test table"; fail=1; }
 cmp_ --tol 0 "$table" "$work/crlf-d.dat"; rc=$?
 expect "CRLF and d exponents read as the same numbers (I_fNT compared too)" 0 '^I_fNT .* ok$'
+# the columns by name, as the loader reads them: C_TT and C_NN moved to the end (names and
+# numbers) compare equal; a misnamed or a missing column is an error
+awk '/^# columns: / { sub(/ C_TT/, ""); sub(/ C_NN/, ""); print $0 " C_NN C_TT"; next }
+     /^#/ || NF == 0 { print; next } { tt = $3; nn = $6; $3 = ""; $6 = ""; $0 = $0; print $0, nn, tt }' "$table" > "$work/moved.dat"
+cmp_ --tol 0 "$table" "$work/moved.dat"; rc=$?
+expect "columns moved: the same table" 0 '^ok: all checked columns within 0'
+sed '/^# columns: /s/ Dbar_TN / Dbar_Tn /' "$table" > "$work/misnamed.dat"
+cmp_ "$table" "$work/misnamed.dat"; rc=$?
+expect "a column misnamed" 2 'unknown column Dbar_Tn'
+sed '/^# columns: /s/ Sc_N / /' "$table" > "$work/unnamed.dat"
+cmp_ "$table" "$work/unnamed.dat"; rc=$?
+expect "a column not named" 2 'does not name Sc_N'
 exit $fail

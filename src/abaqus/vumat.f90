@@ -46,7 +46,6 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_RCURVE_OUT_OF_RANGE, status_message, STATUS_BAD_HOST_INPUT
    use interphase_finite, only: is_within
-   use interphase_real_text, only: real_text
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
    use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_state, only: interface_state_type, unpack_statev, pack_statev, count_invalid_states, state_slots
@@ -54,7 +53,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
    use interphase_block, only: block_update, density_counts, block_supports, block_energies
-   use interphase_rcurve, only: rcurve_coverage
+   use interphase_rcurve, only: rcurve_overrun
    use interphase_abaqus_interfaces, only: interphase_host_message
    use interphase_replay_file, only: write_replay
    implicit none
@@ -282,8 +281,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                call update_point(params, old, ntens, s_point, traction, tangent, new, psi(k), status, dt)
                if (status == STATUS_RCURVE_OUT_OF_RANGE) then
                   ! the R-curve file does not reach the damage this point needs: a setup error
-                  write (message, '(a,a,i0,a,a)', iostat=status) rcurve_coverage(), '; at block point ', km, &
-                     ' the crack grows beyond it from D = ', real_text(old%d, 6)
+                  write (message, '(a,i0,a,a)', iostat=status) 'block point ', km, ': ', &
+                     rcurve_overrun(60, max(old%d, params%d0), s_point(1:ntens))
                   fatal_code = STATUS_RCURVE_OUT_OF_RANGE
                   exit update
                end if

@@ -493,6 +493,15 @@ static void test_load_rcurve(void) {
             strstr(detail, "grows beyond it from D = ") != NULL,
         "short R-curve: detail \"%s\"", detail);
   CHECK(state_old[0] <= 0.3 && step > 2, "short R-curve: last D = %g after %d updates", state_old[0], step - 1);
+  /* a virgin point (D = 0 in its state) opened at once beyond the snap: the crack grows from D0,
+     which the detail names, not from the state's 0 */
+  const double virgin[INTERPHASE_NSTATE] = {0.0}, open_at_once[2] = {0.0046, 0.0};
+  status = interphase_update(tabulated, NPROPS_FRACTURE, 2, virgin, open_at_once, traction, tangent, state_new, &psi,
+                             detail, sizeof detail);
+  const char *from = strstr(detail, "grows beyond it from D = ");
+  double d_from = from == NULL ? -1.0 : strtod(from + strlen("grows beyond it from D = "), NULL);
+  CHECK(status == INTERPHASE_STATUS_RCURVE_OUT_OF_RANGE && d_from == 0.05,
+        "short R-curve, virgin point: status %d, the crack grows from D = %g (D0 = 0.05): %s", status, d_from, detail);
 }
 
 /* interphase_run: the mixed history's rows (the driver's CSV) along one path in one call, equal
