@@ -42,6 +42,7 @@
 module interphase_mixed_control
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
+   use interphase_real_text, only: real_text
    use interphase_layout, only: NSTATV_VISCOUS
    use interphase_status, only: STATUS_OK, STATUS_BEYOND_PEAK, STATUS_MIXED_NOT_CONVERGED, MESSAGE_LEN
    implicit none
@@ -603,13 +604,12 @@ contains
       character(len=*), intent(in) :: update_detail
       character(len=MESSAGE_LEN) :: text
       character(len=2*MESSAGE_LEN) :: long
-      !> the times, written first (a write to `long` may not read it: no internal file in its own list)
-      character(len=:), allocatable :: times
+      character(len=:), allocatable :: times       !! 'from t = ... to t = ...:'
       character(len=:), allocatable :: name
       integer :: c, ios
 
-      write (long, '(a,g0.10,a,g0.10,a)', iostat=ios) 'from t = ', point%time, ' to t = ', failure%time_to, ': '
-      times = trim(long)
+      ! (real_text: the same text whatever the compiler, a leading zero included)
+      times = 'from t = '//real_text(point%time, 10)//' to t = '//real_text(failure%time_to, 10)//':'
       select case (failure%kind)
       case (FAILURE_FATAL)
          long = times//' '//trim(update_detail)
@@ -617,9 +617,9 @@ contains
          if (failure%status == STATUS_BEYOND_PEAK) then
             c = failure%component
             name = component_name(c, .true., point%ntens)
-            write (long, '(a,1x,a,a,a,g0.6,a,a,a,a,a,g0.6,a)', iostat=ios) times, 'the imposed traction ', name, &
-               ' = ', failure%target(c), ' MPa is ', beyond_peak_reason(failure, point%ntens), 'the largest |', name, &
-               '| reached is ', failure%peak(c), ' MPa)'
+            long = times//' the imposed traction '//name//' = '//real_text(failure%target(c), 6)//' MPa is '// &
+               beyond_peak_reason(failure, point%ntens)//'the largest |'//name//'| reached is '// &
+               real_text(failure%peak(c), 6)//' MPa)'
          else if (failure%status == STATUS_MIXED_NOT_CONVERGED) then
             write (long, '(a,1x,a,i0,a,es9.3,a,i0,a,es8.2,a,i0,a)', iostat=ios) times, &
                'no converged step even after ', MAX_HALVINGS, ' halvings of the sub-increment: Newton on the '// &
