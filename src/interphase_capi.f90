@@ -16,7 +16,7 @@ module interphase_capi
       c_associated, c_f_pointer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
-   use interphase_real_text, only: real_text
+   use interphase_real_text, only: real_text, es_field
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, &
       LFM_RCURVE, MODEL_MICROMECHANICAL
    use interphase_provider, only: check_run_time_data
@@ -32,7 +32,7 @@ module interphase_capi
    use interphase_kernel, only: interface_update, update_point
    use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
       describe_failure, FAILURE_OUTPUT
-   use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL, separation_names, STATUS_NONFINITE_SEPARATION, &
+   use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL, separation_text, STATUS_NONFINITE_SEPARATION, &
       STATUS_SEPARATION_OUT_OF_RANGE
    implicit none
    private
@@ -138,7 +138,6 @@ contains
       integer :: code, i, j, n, nsv
       logical :: viscous
       character(len=MESSAGE_LEN) :: message
-      character(len=36) :: values_text
 
       message = ''
       call decode_material(props, nprops, ntens, 'the C API', params, code, message)
@@ -170,16 +169,16 @@ contains
          call finish()
          return
       else if (code == STATUS_NONFINITE_SEPARATION .or. code == STATUS_SEPARATION_OUT_OF_RANGE) then
-         ! (the values first, on their own: a format's items after them would not line up in 2-D)
-         write (values_text, '(3es12.4)', iostat=i) separation(1:n)
-         message = 'separation '//separation_names(n)//' (mm) '//trim(values_text)//': not finite'
-         if (code == STATUS_SEPARATION_OUT_OF_RANGE) write (message, '(a,es8.1,a)', iostat=i) 'separation '// &
-            separation_names(n)//' (mm) '//trim(values_text)//': beyond |s_i| <= ', SEPARATION_MAX, ' mm'
+         if (code == STATUS_NONFINITE_SEPARATION) then
+            message = 'separation '//separation_text(separation(1:n))//': not finite'
+         else
+            message = 'separation '//separation_text(separation(1:n))//': beyond |s_i| <='// &
+               es_field(SEPARATION_MAX, 8, 1)//' mm'
+         end if
          call finish()
          return
       else if (code /= STATUS_OK) then
-         write (message, '(a,3es12.4)', iostat=i) 'update failed at separation '//separation_names(n)//' (mm) ', &
-            separation(1:n)
+         message = 'update failed at separation '//separation_text(separation(1:n))
          call finish()
          return
       end if
@@ -311,8 +310,8 @@ contains
                write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
                   rcurve_overrun(50, max(old%d, params%d0), s(1:n))
             else
-               write (message, '(a,i0,a,3es12.4)') 'row ', row - 1, ': update failed at separation '// &
-                  separation_names(n)//' (mm) ', s(1:n)
+               write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': update failed at separation ', &
+                  separation_text(s(1:n))
             end if
             call finish()
             return
@@ -536,7 +535,7 @@ contains
          fatal = .true.
          return
       else if (status /= STATUS_OK) then
-         write (law%detail, '(a,3es12.4)', iostat=ios) 'update failed at separation '//separation_names(n)//' (mm) ', s(1:n)
+         law%detail = 'update failed at separation '//separation_text(s(1:n))
          return
       end if
       ! the UMAT's SPD and SSE

@@ -11,7 +11,7 @@ module interphase_rcurve
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
-   use interphase_status, only: message_path, separation_names, STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
+   use interphase_status, only: message_path, separation_text, STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_SPLINE_OUT_OF_RANGE, status_message
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
@@ -210,11 +210,8 @@ contains
       real(dp), intent(in) :: d_from            !! D_n, or D0 for a crack that has not grown yet (-)
       real(dp), intent(in) :: s(:)              !! the separation (mm)
       character(len=:), allocatable :: text
-      character(len=36) :: values
-      integer :: ios
-      write (values, '(3es12.4)', iostat=ios) s
       text = rcurve_coverage(room)//'; the crack grows beyond it from D = '//real_text(d_from, 6)// &
-         ' at separation '//separation_names(size(s))//' (mm) '//trim(values)
+         ' at separation '//separation_text(s)
    end function rcurve_overrun
 
    !> The file the tabulated R-curve came from, as given to load_rcurve ('' when none is loaded).

@@ -1,9 +1,10 @@
 !> Status codes of interphase and their messages. Library code never stops: every failure is a
 !> status that the caller (an adapter, the driver) turns into a cut-back, a host error or an exit.
 module interphase_status
+   use interphase_kinds, only: dp
    implicit none
    private
-   public :: status_message, severity_label, file_loader, message_path, separation_names
+   public :: status_message, severity_label, file_loader, message_path, separation_text
 
    !> Length of the message strings that go with a status.
    integer, parameter, public :: MESSAGE_LEN = 256
@@ -197,13 +198,17 @@ contains
       end if
    end function message_path
 
-   !> The names of a separation's components for messages, normal first (the UMAT's and the C
-   !> interface's order): 's_N, s_T' in 2-D, 's_N, s_T1, s_T2' in 3-D.
-   pure function separation_names(n) result(names)
-      integer, intent(in) :: n          !! 2 or 3
-      character(len=:), allocatable :: names
-      names = 's_N, s_T'
-      if (n == 3) names = 's_N, s_T1, s_T2'
-   end function separation_names
+   !> A separation for messages, its components named, normal first (the UMAT's and the C
+   !> interface's order): 's_N, s_T (mm)   1.0000E-03  0.0000E+00' in 2-D, with s_T1, s_T2 in 3-D.
+   pure function separation_text(s) result(text)
+      real(dp), intent(in) :: s(:)      !! the separation (mm), 2 or 3 components
+      character(len=:), allocatable :: text
+      character(len=36) :: values
+      integer :: ios
+      write (values, '(3es12.4)', iostat=ios) s(1:min(3, size(s)))
+      text = 's_N, s_T'
+      if (size(s) == 3) text = 's_N, s_T1, s_T2'
+      text = text//' (mm) '//trim(values)
+   end function separation_text
 
 end module interphase_status

@@ -36,7 +36,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    use interphase_status, only: STATUS_OK, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN, SEVERITY_WARNING, &
       SEVERITY_FATAL, STATUS_BAD_HOST_INPUT, STATUS_NONFINITE_SEPARATION, STATUS_SEPARATION_OUT_OF_RANGE, &
       STATUS_BAD_TIME_INCREMENT, STATUS_BAD_NTENS, STATUS_BAD_OPTION, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
-      STATUS_BAD_STATE, STATUS_BAD_NSTATV, separation_names
+      STATUS_BAD_STATE, STATUS_BAD_NSTATV, separation_text
    use interphase_params, only: law_params_type, HOST_VALUE_MAX, HOST_INCREMENT_MAX, SLIP_MAX, check_constants, &
       decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS
    use interphase_layer, only: layer_map_type
@@ -161,7 +161,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          message = rcurve_overrun(76, max(old%d, params%d0), s(1:nsep))
          exit update
       else if (status /= STATUS_OK) then
-         write (message, '(a,3es12.4)') 'update failed at separation '//separation_names(nsep)//' (mm) ', s(1:nsep)
+         message = 'update failed at separation '//separation_text(s(1:nsep))
          severity = SEVERITY_WARNING
          exit update
       end if
