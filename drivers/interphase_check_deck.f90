@@ -24,9 +24,9 @@ program interphase_check_deck
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
       RCURVE_EQUIVALENT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
-      GROWTH_FIXED_LAMBDA, HOST_CALCULIX
+      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST
    use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
-   use interphase_params, only: law_params_type, from_props, refuse_umat_options
+   use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count
    use interphase_driver_cli, only: get_argument, exit_program, print_version
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
       tried_path, clip_text, parse_real, TEXT_LINE, TEXT_END
@@ -408,7 +408,7 @@ contains
       type(law_params_type) :: params
       character(len=MESSAGE_LEN) :: message
       character(len=:), allocatable :: where, solver, summary, notes, hook, section_where, why
-      integer :: m, k, status, nfail_before, depvar_needed, normal
+      integer :: m, k, status, nfail_before, depvar_needed, normal, nm, nconstants
       logical :: decoded       !! the material's constants decode (params holds them)
       real(dp) :: t_layer
 
@@ -488,8 +488,8 @@ contains
                   if (explicit) call refuse_umat_options(params, 'the VUMAT', status, message)
                   if (status == STATUS_OK .and. .not. explicit .and. params%host == HOST_CALCULIX) then
                      status = STATUS_BAD_OPTION
-                     ! (the host option is the last constant: given, it ends PROPS)
-                     message = 'PROPS('//int_to_string(mat%nread)//') host = '// &
+                     call constants_count(params%model, params%damage_law, nm, nconstants)
+                     message = 'PROPS('//int_to_string(nconstants + OPT_HOST)//') host = '// &
                         int_to_string(HOST_CALCULIX)//' (CalculiX conventions) in an Abaqus deck: the UMAT would '// &
                         'neither read nor write SSE and SPD, and the energies would be lost: leave it 0'
                   end if

@@ -17,15 +17,14 @@ module interphase_capi
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text, es_field
-   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, &
-      LFM_RCURVE, MODEL_MICROMECHANICAL
+   use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE, LFM_RCURVE
    use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
       STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_BAD_TIME_INCREMENT, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_overrun
-   use interphase_params, only: law_params_type, from_props, refuse_umat_options, SEPARATION_MAX, HOST_VALUE_MAX
+   use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count, SEPARATION_MAX, HOST_VALUE_MAX
    use interphase_finite, only: is_within
    use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
@@ -721,7 +720,7 @@ contains
       type(law_params_type), intent(out) :: params
       integer, intent(out) :: code
       character(len=MESSAGE_LEN), intent(out) :: message
-      integer :: slot       !! the R-curve selector's PROPS index
+      integer :: slot, nm, needed       !! the R-curve selector's PROPS index; the constants' counts
       message = ''
       if (nprops < 0) then
          code = STATUS_BAD_NPROPS
@@ -744,7 +743,8 @@ contains
             '] in C) selects the custom RVE table, but none is loaded: call interphase_load_table(path, ...) '// &
             'before any update'
       else if (code == STATUS_RCURVE_NOT_LOADED) then
-         slot = merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, params%model == MODEL_MICROMECHANICAL) + LFM_RCURVE
+         call constants_count(params%model, params%damage_law, nm, needed)
+         slot = nm + LFM_RCURVE
          write (message, '(a,i0,a,i0,a)') 'PROPS(', slot, ') = 3 (props[', slot - 1, &
             '] in C) selects the tabulated R-curve, but none is loaded: call interphase_load_rcurve(path, ...) '// &
             'before any update'

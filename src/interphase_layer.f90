@@ -18,10 +18,9 @@
 !> layer stiffness there would be a second, unmodelled mortar.
 module interphase_layer
    use interphase_kinds, only: dp
-   use interphase_params, only: law_params_type
+   use interphase_params, only: law_params_type, constants_count
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_OPTION, MESSAGE_LEN
-   use interphase_layout, only: NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, NPROPS_FRACTURE_EXTRA, &
-      OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, MODEL_MICROMECHANICAL, DAMAGE_FRACTURE
+   use interphase_layout, only: OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL
    implicit none
    private
    public :: layer_map

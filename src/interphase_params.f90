@@ -21,7 +21,7 @@ module interphase_params
    implicit none
    private
    public :: law_params_type, from_props, decode_props, params_from_values, set_fracture_params, set_options, to_props, &
-      refuse_umat_options
+      refuse_umat_options, constants_count
    ! (for the UMAT, which includes decode_props' source: interphase_decode_props.inc)
    public :: check_constants, decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS
 
@@ -255,7 +255,7 @@ contains
       character(len=*), intent(in) :: entry
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
-      integer :: k, base
+      integer :: k, base, nm
       status = STATUS_OK
       k = 0
       if (params%layer_thickness > 0.0_dp) then
@@ -266,8 +266,7 @@ contains
          k = OPT_HOST
       end if
       if (k == 0) return
-      base = merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, params%model == MODEL_MICROMECHANICAL)
-      if (params%damage_law == DAMAGE_FRACTURE) base = base + NPROPS_FRACTURE_EXTRA
+      call constants_count(params%model, params%damage_law, nm, base)
       status = STATUS_BAD_OPTION
       write (message, '(a,i0,a,a,a,a,a)') 'PROPS(', base + k, ') ', trim(OPTION_SPECS(k)%symbol), &
          ' is an option of the UMAT only (thin continuum layers, host conventions); ', entry, &

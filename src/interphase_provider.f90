@@ -5,8 +5,8 @@
 module interphase_provider
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
-   use interphase_params, only: law_params_type
-   use interphase_layout, only: PROP_TABLE, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, LFM_RCURVE
+   use interphase_params, only: law_params_type, constants_count
+   use interphase_layout, only: PROP_TABLE, LFM_RCURVE
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, DAMAGE_FRACTURE, &
       RCURVE_TABULATED
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
