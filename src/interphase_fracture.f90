@@ -29,7 +29,8 @@ module interphase_fracture
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
    use interphase_micro_coefficients, only: micro_coefficients
    use interphase_rcurve, only: tabulated_rcurve
-   use interphase_response, only: response_type
+   use interphase_response, only: response_type, shared_respond => respond
+   use interphase_provider, only: provider_values_at => coefficient_values_at
    implicit none
    private
    ! (growth_point: public for the tests, which check the search's roots against g itself)
@@ -389,7 +390,7 @@ contains
 
       real(dp) :: d_lo, d_hi, d_bound, d_next, step, dx_last, dx_older
       integer :: iter, scan, how
-      logical :: have_hi, have_two
+      logical :: have_hi, have_two, arrested
       integer :: k, lo
       integer, parameter :: BY_NEWTON = 1, BY_BISECTION = 2, BY_SCAN = 3
 
@@ -402,6 +403,16 @@ contains
       ! closed-crack toughness vanishes at D = 1, and g would be 0/0)
       if (d_from >= 1.0_dp) return
       k = 1
+      ! an open crack under the equivalent R-curve: g at D_n from the separation alone, and where
+      ! it stays below 0 the response from the coefficients' values alone (open_arrest)
+      if (params%rcurve == RCURVE_EQUIVALENT) then
+         call open_arrest(params, d_from, load, ntens, at(k), arrested, status)
+         if (status /= STATUS_OK) return
+         if (arrested) then
+            which = k
+            return
+         end if
+      end if
       call growth_point(params, d_from, load, ntens, at(k), status)
       if (status /= STATUS_OK) return
       if (at(k)%g < 0.0_dp) then
@@ -482,6 +493,54 @@ contains
       end do
       status = STATUS_STAGGER_NOT_CONVERGED
    end subroutine grow_crack
+
+   !> growth_point at D_n for an open crack under the equivalent R-curve, where the crack does not
+   !> grow, at a third of its cost: there g = (s_N/sigma_N(D))^2 + |s_T|^2/sigma_T(D)^2 - 1 needs no
+   !> coefficient, and the response at a D that does not grow needs the coefficients' values alone
+   !> (coefficient_values_at: the numbers coefficients_at gives, bit for bit), not their first and
+   !> second derivatives (two thirds of a table lookup). arrested = .true.: `at` holds what
+   !> growth_point gives there (g < 0, g's derivatives zero, the response, whose dtrac_dd, read
+   !> only by a growing crack's tangent, is formed from zeros). arrested = .false.: g >= 0 (or
+   !> NaN), or the crack is closed at D_n (s_N <= 0 at D_n > 0; or the table's Dbar_NN <= 0 there,
+   !> which check_interpolant refuses only at its samples): growth_point decides, and `at` is
+   !> undefined. The same expressions as growth_point's, so the same bits. (The provider's and
+   !> the response module's entries, out of line: a second call of this module's own copies
+   !> would keep the compiler from inlining them into growth_point.)
+   pure subroutine open_arrest(params, d, load, ntens, at, arrested, status)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d                       !! D_n (-)
+      type(crack_load_type), intent(in) :: load
+      integer, intent(in) :: ntens
+      type(growth_point_type), intent(out) :: at
+      logical, intent(out) :: arrested
+      integer, intent(out) :: status
+      type(coefficient_set_type) :: c, zeros
+      real(dp) :: sig_n, sig_t, dsig_n, dsig_t, gi, gii, g, t2
+      arrested = .false.
+      status = STATUS_OK
+      if (.not. (load%s_n > 0.0_dp .or. .not. (d > 0.0_dp))) return
+      t2 = load%st(1)**2 + load%st(2)**2
+      call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
+      call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
+      gi = 0.0_dp
+      if (load%s_n > 0.0_dp) gi = (load%s_n/sig_n)**2
+      gii = t2/sig_t**2
+      g = gi + gii - 1.0_dp
+      if (.not. (g < 0.0_dp)) return
+      call provider_values_at(params, d, c, zeros, status)
+      if (status /= STATUS_OK) return
+      if (.not. (d <= 0.0_dp .or. c%dbar_n*load%s_n > 0.0_dp)) return
+      call shared_respond(params, c, zeros, d, load%slip_old, load%s_n, load%st, ntens, .false., at%r, status)
+      if (status /= STATUS_OK) return
+      arrested = .true.
+      at%d = d
+      at%g = g
+      at%g_s = 0.0_dp
+      at%g_lam = 0.0_dp
+      at%g_d = 0.0_dp
+      at%m = 0.0_dp
+      if (d > 0.0_dp) at%m = d*c%ufbar
+   end subroutine open_arrest
 
    !> The search's step from two evaluations of h (`search_function`) with their slopes: at the
    !> latest, p1 (D_1, h_1, h_1' < 0, Newton step s = -h_1/h_1'), and another, p0 (D_0, h_0,
