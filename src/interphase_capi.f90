@@ -167,17 +167,8 @@ contains
          message = rcurve_overrun(76, max(old%d, params%d0), separation(1:n))
          call finish()
          return
-      else if (code == STATUS_NONFINITE_SEPARATION .or. code == STATUS_SEPARATION_OUT_OF_RANGE) then
-         if (code == STATUS_NONFINITE_SEPARATION) then
-            message = 'separation '//separation_text(separation(1:n))//': not finite'
-         else
-            message = 'separation '//separation_text(separation(1:n))//': beyond |s_i| <='// &
-               es_field(SEPARATION_MAX, 8, 1)//' mm'
-         end if
-         call finish()
-         return
       else if (code /= STATUS_OK) then
-         message = 'update failed at separation '//separation_text(separation(1:n))
+         message = separation_failure(code, separation(1:n))
          call finish()
          return
       end if
@@ -309,8 +300,9 @@ contains
                write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
                   rcurve_overrun(50, max(old%d, params%d0), s(1:n))
             else
-               write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': update failed at separation ', &
-                  separation_text(s(1:n))
+               ! (the row's separation as given: s is the previous row's plus the increment)
+               write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
+                  separation_failure(code, separation(at + 1:at + n))
             end if
             call finish()
             return
@@ -534,7 +526,7 @@ contains
          fatal = .true.
          return
       else if (status /= STATUS_OK) then
-         law%detail = 'update failed at separation '//separation_text(s(1:n))
+         law%detail = separation_failure(status, s(1:n))
          return
       end if
       ! the UMAT's SPD and SSE
@@ -691,6 +683,23 @@ contains
       status = int(code, c_int)
       if (code /= STATUS_OK) call copy_to_c(trim(message), detail, detail_len)
    end function load_file
+
+   !> What an update that failed at separation s says (the detail of interphase_update, of each
+   !> row of interphase_run and of interphase_run_history's steps): not finite, beyond the range
+   !> the update admits (|s_i| <= SEPARATION_MAX), or another failure there.
+   function separation_failure(code, s) result(text)
+      integer, intent(in) :: code                     !! the update's status
+      real(dp), intent(in) :: s(:)                    !! separation (mm)
+      character(len=:), allocatable :: text
+      select case (code)
+      case (STATUS_NONFINITE_SEPARATION)
+         text = 'separation '//separation_text(s)//': not finite'
+      case (STATUS_SEPARATION_OUT_OF_RANGE)
+         text = 'separation '//separation_text(s)//': beyond |s_i| <='//es_field(SEPARATION_MAX, 8, 1)//' mm'
+      case default
+         text = 'update failed at separation '//separation_text(s)
+      end select
+   end function separation_failure
 
    !> Copy `text` into the C buffer `buf` of `len` bytes, truncated, NUL-terminated.
    subroutine copy_to_c(text, buf, len)

@@ -570,9 +570,19 @@ static void test_run(const char *csv_path) {
                           sizeof detail);
   CHECK(status == INTERPHASE_STATUS_NONFINITE_SEPARATION && done == bad, "NaN at row %zu: status %d, rows_done %zu",
         bad, status, done);
-  CHECK(strstr(detail, "row 700:") != NULL, "detail does not name the row: %s", detail);
+  CHECK(strstr(detail, "row 700: separation s_N, s_T (mm) ") != NULL && strstr(detail, " NaN ") != NULL &&
+            strstr(detail, ": not finite") != NULL,
+        "detail does not name the row, its separation and the reason: %s", detail);
   CHECK(tra[2 * (bad - 1)] != -12345.0 && tra[2 * bad] == -12345.0 && psi[bad] == -12345.0 && psi[n - 1] == -12345.0,
         "rows from the failed one on were written");
+  /* a finite separation beyond the admissible range at row 700: named as given, with the range */
+  sep[2 * bad] = -2.0 * INTERPHASE_SEPARATION_MAX;
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, n, sep, tim, tra, NULL, sta, psi, wd, &done, detail,
+                          sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE && done == bad &&
+            strstr(detail, "row 700: separation s_N, s_T (mm) ") != NULL && strstr(detail, " -2.0000E+20 ") != NULL &&
+            strstr(detail, ": beyond |s_i| <= ") != NULL,
+        "separation -2e20 mm at row %zu: status %d, rows_done %zu: %s", bad, status, done, detail);
   sep[2 * bad] = saved;
 
   /* the starting row and the arguments are checked as interphase_update checks its inputs */
