@@ -5,10 +5,12 @@
 !>     interphase-calibrate CASE.nml [--increments N] [--write FILE.nml]
 !>
 !> CASE.nml is a micromechanical case file (its &loading group is not used and may be left out). The program runs
-!> the monotonic mode-I and mode-II tests (h1I, h1II) to full damage through `umat`, takes the
-!> fracture energies G_I, G_II as the dissipated energy at the end (SPD) and the undamaged
-!> stiffnesses K_N, K_T from the tangent at the origin (the UMAT's DDSDDE at zero separation of the
-!> virgin point, whatever the step), and sets
+!> the monotonic mode-I and mode-II tests (h1I, h1II) to 1.01 sf through `umat`, refuses a test
+!> that ends before full damage (D < 1: the fracture law's crack growth is not bounded by sf),
+!> takes the fracture energies G_I, G_II as the dissipated energy at the end (SPD) and the
+!> stiffnesses K_N, K_T as the slopes at the start of each test (the UMAT's DDSDDE of the virgin
+!> point at 1e-9 sf in the test's direction, whatever the step: with an initial crack D0 > 0 the
+!> opening and the frictionless slip at s_N = 0, not the closed crack's stick at s = 0), and sets
 !>     s0_N = 2 G_I/(K_N sf_N),   s0_T = 2 G_II/(K_T sf_T)
 !> so that the simplified model's fracture energies 1/2 K s0 sf equal them (sf kept). It prints
 !> the numbers and, with --write, a `&material` group of the calibrated simplified model.
@@ -18,7 +20,7 @@ program interphase_calibrate
    use interphase_layout, only: PROP_MODEL, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, PROP_SF_T, &
       MODEL_MICROMECHANICAL
    use interphase_micro_coefficients, only: custom_table_source
-   use interphase_layout, only: PROP_TABLE
+   use interphase_layout, only: PROP_TABLE, SV_DAMAGE
    use interphase_driver_case, only: case_type, read_case, load_start_up_data, writes_an_input
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
    use interphase_driver_text, only: int_to_string, real_to_string
@@ -27,15 +29,19 @@ program interphase_calibrate
    use interphase_driver_cli, only: get_argument, exit_program, print_version
    implicit none
 
+   !> Where the slope at the start of a test is taken: this fraction of sf (-)
+   real(dp), parameter :: S_START = 1.0e-9_dp
+
    type(case_type) :: run
    type(law_params_type) :: params
    character(len=:), allocatable :: case_path, write_path, message, argument
    character(len=MESSAGE_LEN) :: why
    integer :: increments, i, nargs, unit, ios, status
-   logical :: ok
+   logical :: ok, increments_given
    real(dp) :: g_i, g_ii, k_n, k_t, peak_n, peak_t, s_peak_n, s_peak_t, s0_n, s0_t
 
    increments = 20000
+   increments_given = .false.
    case_path = ''
    write_path = ''
    nargs = command_argument_count()
@@ -51,16 +57,20 @@ program interphase_calibrate
          call print_version('interphase-calibrate')
          call exit_program(0)
       case ('--increments')
+         ! an option given twice: which one counts is not guessed
+         if (increments_given) call fail('--increments given twice')
+         increments_given = .true.
          i = i + 1
          call get_argument(i, argument)
-         ! a whole number of at most 9 digits
+         ! a whole number of at most 9 digits, at least 10
          ios = 1
          if (len(argument) > 0 .and. len(argument) <= 9) then
             if (verify(argument, '0123456789') == 0) read (argument, '(i9)', iostat=ios) increments
          end if
-         if (ios /= 0) call fail("--increments needs a whole number (at most 9 digits), got '"//argument//"'")
+         if (ios /= 0) call fail("--increments needs a whole number from 10 to 999999999, got '"//argument//"'")
          if (increments < 10) call fail('--increments needs at least 10, got '//argument)
       case ('--write')
+         if (len(write_path) > 0) call fail('--write given twice')
          i = i + 1
          call get_argument(i, write_path)
          if (len(write_path) == 0) call fail('--write needs a file name')
@@ -96,8 +106,8 @@ program interphase_calibrate
    call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
    if (.not. ok) call fail(message)
 
-   call monotonic(1, run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)
-   call monotonic(2, run%props(PROP_SF_T), g_ii, k_t, peak_t, s_peak_t)
+   call monotonic(1, 'N', run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)
+   call monotonic(2, 'T', run%props(PROP_SF_T), g_ii, k_t, peak_t, s_peak_t)
    s0_n = 2.0_dp*g_i/(k_n*run%props(PROP_SF_N))
    s0_t = 2.0_dp*g_ii/(k_t*run%props(PROP_SF_T))
 
@@ -115,8 +125,8 @@ program interphase_calibrate
       call fail('no simplified model matches: the calibrated s0 is not below sf (G > 1/2 K sf^2)')
 
    if (len(write_path) > 0) then
-      open (newunit=unit, file=write_path, status='replace', action='write', iostat=ios)
-      if (ios /= 0) call fail('cannot write '//write_path)
+      open (newunit=unit, file=write_path, status='replace', action='write', iostat=ios, iomsg=why)
+      if (ios /= 0) call fail('cannot write '//write_path//': '//trim(why))
       write (unit, '(a)') '! Simplified model calibrated by interphase-calibrate on '//case_path
       write (unit, '(a)') '! (same K, sf and fracture energies as the micromechanical model; table '// &
          custom_table_source(nint(run%props(PROP_TABLE)))//')'
@@ -139,10 +149,12 @@ program interphase_calibrate
 contains
 
    !> Monotonic pure-mode test (component 1: s_N, 2: s_T) from 0 to 1.01 sf in `increments`
-   !> steps: dissipated energy at the end, undamaged stiffness, peak traction.
-   subroutine monotonic(component, sf, energy, stiffness, peak, s_peak)
+   !> steps: dissipated energy at the end, the slope at the start, peak traction. A test that
+   !> ends with D < 1 is refused: its dissipated energy is not the fracture energy.
+   subroutine monotonic(component, mode, sf, energy, stiffness, peak, s_peak)
       integer, intent(in) :: component
-      real(dp), intent(in) :: sf
+      character(len=1), intent(in) :: mode        !! 'N' or 'T', for the messages
+      real(dp), intent(in) :: sf                  !! the case's sf of the mode (mm)
       real(dp), intent(out) :: energy, stiffness, peak, s_peak
       type(point_state_type) :: point, probe
       real(dp) :: s(2), pnewdt, ddsdde(2, 2)
@@ -150,12 +162,15 @@ contains
       point = new_point(2, 0.0_dp)
       peak = 0.0_dp
       s_peak = 0.0_dp
-      ! the undamaged stiffness: the tangent at the origin of the virgin point (a zero increment,
-      ! whose state is not kept), not that of the first step, which may already pass s0
+      ! the slope at the start of the test: the tangent of the virgin point (an increment whose
+      ! state is not kept) at 1e-9 sf in the test's direction, not that of the first step, which
+      ! may already pass s0; not at s = 0 either, where an initial crack (D0 > 0) is closed and
+      ! sticks (the intact stiffness) while the test opens it, or slips at s_N = 0 without friction
       probe = point
       s = 0.0_dp
+      s(component) = S_START*sf
       call call_umat(run%props, probe, s, 0.0_dp, pnewdt, ddsdde)
-      if (pnewdt < 1.0_dp) call fail('the UMAT failed at the origin of the monotonic test; see its message above')
+      if (pnewdt < 1.0_dp) call fail('the UMAT failed at the start of the monotonic test; see its message above')
       stiffness = ddsdde(component, component)
       do k = 1, increments
          s = 0.0_dp
@@ -169,6 +184,12 @@ contains
          end if
       end do
       energy = point%spd
+      if (.not. (point%statev(SV_DAMAGE) >= 1.0_dp)) call fail('the mode-'//trim(merge('I ', 'II', mode == 'N'))// &
+         ' test ended at D = '//real_to_string(point%statev(SV_DAMAGE))//' with Sigma_'//mode//' = '// &
+         real_to_string(point%stress(component))//' MPa at s_'//mode//' = 1.01 sf_'//mode//' = '// &
+         real_to_string(1.01_dp*sf)//' mm: the crack did not reach b, so the dissipated energy '// &
+         real_to_string(energy)//' N/mm is not the fracture energy (with the fracture law sf_'//mode// &
+         ' does not bound the growth: raise it until the test breaks the interface)')
    end subroutine monotonic
 
    subroutine fail(text)
@@ -182,7 +203,8 @@ contains
       integer, intent(in) :: unit                 !! where to print
       write (unit, '(a)') 'usage: interphase-calibrate MICRO_CASE.nml [--increments N] [--write SIMPLIFIED.nml]', &
          '       interphase-calibrate --help | --version', &
-         '  Runs the monotonic mode-I and mode-II tests of a micromechanical case to full damage and', &
+         '  Runs the monotonic mode-I and mode-II tests of a micromechanical case to 1.01 sf (refusing', &
+         '  a test that does not break the interface) and', &
          '  prints K_N, K_T, G_I, G_II, the peaks and the simplified model''s s0_N, s0_T with the same', &
          '  fracture energies (the paper''s section 5.2); --write saves that simplified &material.', &
          '  --increments N: steps per test (default 20000, at least 10).', &

@@ -20,6 +20,7 @@ import os
 import pathlib
 import shutil
 import subprocess
+import sys
 import tempfile
 
 import numpy as np
@@ -51,7 +52,14 @@ def simplified(k_n, k_t, s0_n, sf_n, s0_t, sf_t):
 
 
 def find_calibrate(given):
-    for candidate in (given, os.environ.get("INTERPHASE_CALIBRATE"), shutil.which("interphase-calibrate"),
+    """interphase-calibrate: the one given (--calibrate, or INTERPHASE_CALIBRATE), which must be an
+    executable file, else the one on PATH or in build/release, else None."""
+    for name, chosen in (("--calibrate", given), ("INTERPHASE_CALIBRATE", os.environ.get("INTERPHASE_CALIBRATE"))):
+        if chosen:
+            if not (os.path.isfile(chosen) and os.access(chosen, os.X_OK)):
+                sys.exit(f"fit_simplified.py: error: {name} {chosen}: not an executable file")
+            return str(chosen)
+    for candidate in (shutil.which("interphase-calibrate"),
                       SOURCE / "build" / "release" / "drivers" / "interphase-calibrate"):
         if candidate and os.access(candidate, os.X_OK):
             return str(candidate)
@@ -63,8 +71,7 @@ def energy_calibration(calibrate, micro, k_n, k_t):
     if calibrate:
         with tempfile.TemporaryDirectory() as work:
             case = pathlib.Path(work) / "micro.nml"
-            case.write_text("&material\n" + "".join(f"  {k} = {v!r}\n" for k, v in MICRO.items())
-                            + "/\n&loading\n  history = 'none.txt'\n  increments = 1\n  output = 'none.csv'\n/\n")
+            case.write_text("&material\n" + "".join(f"  {k} = {v!r}\n" for k, v in MICRO.items()) + "/\n")
             written = pathlib.Path(work) / "calibrated.nml"
             subprocess.run([calibrate, str(case), "--write", str(written)], check=True, capture_output=True)
             m = interphase.read_namelist(written)["material"]
