@@ -75,7 +75,7 @@ extern "C" {
 #define INTERPHASE_STATUS_RCURVE_NOT_LOADED 24           /**< tabulated R-curve selected, none loaded */
 #define INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE 25     /**< a separation component |s_i| > 1e20 mm */
 #define INTERPHASE_STATUS_BAD_HOST_INPUT 26              /**< adapters: host stress/energy not finite */
-#define INTERPHASE_STATUS_BAD_TIME_INCREMENT 27          /**< time increment missing, negative or not finite (viscosity) */
+#define INTERPHASE_STATUS_BAD_TIME_INCREMENT 27          /**< time increment negative or not finite, or missing (viscosity) */
 /* history replays (interphase_run_history) */
 #define INTERPHASE_STATUS_BEYOND_PEAK 28                 /**< an imposed traction beyond the peak the material can carry */
 #define INTERPHASE_STATUS_MIXED_NOT_CONVERGED 29         /**< imposed traction not met (Newton), even in halved steps */
@@ -147,7 +147,7 @@ int interphase_update(const double *props, int nprops, int ntens, const double *
  * material with it, @p state_old and @p state_new hold INTERPHASE_NSTATE_VISCOUS doubles (the
  * fifth: the damage law's own D), else INTERPHASE_NSTATE. interphase_update refuses such a
  * material with INTERPHASE_STATUS_BAD_TIME_INCREMENT; so does this function for a @p dt that is
- * negative or not finite. Otherwise as interphase_update.
+ * negative or not finite, whatever the material. Otherwise as interphase_update.
  */
 int interphase_update_dt(const double *props, int nprops, int ntens, const double *state_old,
                          const double *separation, double dt, double *traction, double *tangent,
@@ -169,7 +169,9 @@ int interphase_update_dt(const double *props, int nprops, int ntens, const doubl
  * @param ntens              2 (2-D) or 3 (3-D)
  * @param nrows              rows of the path, the start included (>= 1)
  * @param separation         @p nrows * @p ntens doubles: the separation at each row (mm)
- * @param time               @p nrows doubles (s), or NULL (no time increment: a material with
+ * @param time               @p nrows doubles (s), finite and not decreasing (else
+ *                           INTERPHASE_STATUS_BAD_TIME_INCREMENT at the first row that breaks it,
+ *                           whatever the material), or NULL (no time increment: a material with
  *                           viscous regularisation is then refused, as by interphase_update)
  * @param traction           in/out, @p nrows * @p ntens doubles (MPa): row 0 given
  * @param tangent            out, NULL or @p nrows * @p ntens * @p ntens doubles, each row's

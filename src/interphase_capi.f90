@@ -25,7 +25,7 @@ module interphase_capi
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_overrun
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count, SEPARATION_MAX, HOST_VALUE_MAX
-   use interphase_finite, only: is_within
+   use interphase_finite, only: is_within, is_finite
    use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update, update_point
@@ -152,15 +152,22 @@ contains
          call finish()
          return
       end if
+      ! a time increment, where given, is a finite dt >= 0 whatever the material (only viscous
+      ! regularisation reads it)
+      if (present(dt)) then
+         if (.not. (is_finite(dt) .and. dt >= 0.0_dp)) then
+            code = STATUS_BAD_TIME_INCREMENT
+            write (message, '(a,es12.4,a)') 'dt = ', dt, ' s: the time increment must be finite and >= 0'
+            call finish()
+            return
+         end if
+      end if
       s(1:n) = separation(1:n)
       call update_point(params, old, n, s, t, k, new, psi, code, dt)
       if (code == STATUS_BAD_TIME_INCREMENT) then
-         if (present(dt)) then
-            write (message, '(a,es12.4,a)') 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
-         else
-            message = 'the material has viscous regularisation (its viscosity option): call '// &
-               'interphase_update_dt with the time increment'
-         end if
+         ! (dt absent: a finite dt >= 0 was checked above)
+         message = 'the material has viscous regularisation (its viscosity option): call '// &
+            'interphase_update_dt with the time increment'
          call finish()
          return
       else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
@@ -283,19 +290,24 @@ contains
          s(1:n) = separation(at - n + 1:at) + ds(1:n)
          if (timed) then
             dt = times(row) - times(row - 1)
+            ! the times finite and not decreasing, whatever the material (only viscous
+            ! regularisation reads them)
+            if (.not. (is_finite(dt) .and. dt >= 0.0_dp)) then
+               code = STATUS_BAD_TIME_INCREMENT
+               write (message, '(a,i0,a,es12.4,a,es12.4,a,es12.4,a)', iostat=ios) 'row ', row - 1, ': dt = ', dt, &
+                  ' s (time ', times(row), ' after ', times(row - 1), '): the times must be finite and must not decrease'
+               call finish()
+               return
+            end if
             call update_point(params, old, n, s, t, k, new, psi, code, dt)
          else
             call update_point(params, old, n, s, t, k, new, psi, code)
          end if
          if (code /= STATUS_OK) then
             if (code == STATUS_BAD_TIME_INCREMENT) then
-               if (timed) then
-                  write (message, '(a,i0,a,es12.4,a)') 'row ', row - 1, ': dt = ', dt, &
-                     ' s: viscous regularisation needs a finite dt >= 0'
-               else
-                  write (message, '(a,i0,a)') 'row ', row - 1, ': the material has viscous regularisation (its '// &
-                     'viscosity option): pass the times (time is NULL)'
-               end if
+               ! (timed: a finite dt >= 0 was checked above)
+               write (message, '(a,i0,a)') 'row ', row - 1, ': the material has viscous regularisation (its '// &
+                  'viscosity option): pass the times (time is NULL)'
             else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
                write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
                   rcurve_overrun(50, max(old%d, params%d0), s(1:n))

@@ -4,6 +4,7 @@ table and R-curve loading, and concurrent use from threads."""
 
 import ctypes
 import os
+import pathlib
 import re
 import subprocess
 import threading
@@ -146,6 +147,17 @@ def test_run_input_checks():
     m = interphase.Material(**SIMPLIFIED)
     with pytest.raises(ValueError, match="time must increase"):
         m.run([[0, 0], [0.01, 0]], time=[1.0, 1.0])
+    # the row and the values named; a time that is not finite is said to be so
+    with pytest.raises(ValueError, match=re.escape("time[2] = 1.0 is not greater than time[1] = 2.0")):
+        m.run([[0, 0], [0.01, 0], [0.02, 0]], time=[0.0, 2.0, 1.0])
+    with pytest.raises(ValueError, match=re.escape("time[1] = nan is not finite")):
+        m.run([[0, 0], [0.01, 0]], time=[0.0, float("nan")])
+    # a time increment is finite and >= 0 whatever the material (only viscosity reads it)
+    for dt in (float("nan"), -1.0, float("inf")):
+        with pytest.raises(interphase.InterphaseError, match="the time increment must be finite and >= 0") as caught:
+            m.update([0.001, 0.0], dt=dt)
+        assert caught.value.status == interphase.STATUS_BAD_TIME_INCREMENT
+    assert m.update([0.001, 0.0], dt=0.0).traction[0] == m.update([0.001, 0.0]).traction[0]
     with pytest.raises(ValueError, match="shape"):
         m.run([0.0, 0.01])
     with pytest.raises(ValueError, match="increments"):
@@ -160,7 +172,8 @@ def test_run_input_checks():
 
 def test_viscous_material_needs_time_increments():
     m = interphase.Material(**dict(SIMPLIFIED, viscosity=0.5))
-    with pytest.raises(interphase.InterphaseError) as caught:
+    with pytest.raises(interphase.InterphaseError, match=re.escape("Material.update(separation, state, dt=...)")) \
+            as caught:
         m.update([0.001, 0.0], m.initial_state())
     assert caught.value.status == interphase.STATUS_BAD_TIME_INCREMENT
     slow = m.run([[0, 0], [0.01, 0]], time=[0, 100.0], increments=50)
@@ -193,6 +206,48 @@ def test_tables_and_rcurves(source_dir, tmp_path):
         interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
                                    rcurve_file=tmp_path / "none.txt"))
     assert caught.value.status == interphase.STATUS_RCURVE_UNREADABLE
+
+
+def test_an_edited_file_is_loaded_again(tmp_path):
+    """An R-curve or table edited and saved under the same name is read again by the next material
+    that names it (not the copy loaded before), and refused if the edit broke it."""
+    rcurve = tmp_path / "edited.txt"
+    entries = dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated", rcurve_file=rcurve)
+    history = [[0, 0], [0.05, 0.02]]
+    first, second = "0.0 0.01 0.02\n1.0 0.015 0.03\n", "0.0 0.05 0.10\n1.0 0.06 0.12\n"
+    rcurve.write_text(first)
+    w_first = interphase.Material(**entries).run(history, increments=100).dissipated_energy[-1]
+    rcurve.write_text(second)
+    w_second = interphase.Material(**entries).run(history, increments=100).dissipated_energy[-1]
+    (tmp_path / "fresh.txt").write_text(second)
+    w_fresh = interphase.Material(**dict(entries, rcurve_file=tmp_path / "fresh.txt")).run(
+        history, increments=100).dissipated_energy[-1]
+    assert w_second == w_fresh and w_second != w_first
+    rcurve.write_text("0.0 nan 0.10\n1.0 0.06 0.12\n")
+    with pytest.raises(interphase.InterphaseError) as caught:
+        interphase.Material(**entries)
+    assert "edited.txt" in str(caught.value)
+    # the same for a table: a copy of the built-in one, then broken
+    table = tmp_path / "table.dat"
+    table.write_text((pathlib.Path(os.environ["INTERPHASE_SOURCE_DIR"]) / "tables" / "paper.dat").read_text())
+    interphase.Material(**dict(MICRO, table=table)).update([0.001, 0.0])
+    table.write_text(table.read_text().replace("# columns:", "# columns: extra", 1))
+    with pytest.raises(interphase.InterphaseError) as caught:
+        interphase.Material(**dict(MICRO, table=table))
+    assert "table.dat" in str(caught.value)
+
+
+def test_run_sizes_its_output_for_the_rows_it_writes():
+    """output_every: the output arrays hold the rows written, not every sub-increment (10**6
+    sub-increments written every 10**5: 12 rows, not 11 MB of rows)."""
+    import tracemalloc
+    m = interphase.Material(**SIMPLIFIED)
+    tracemalloc.start()
+    r = m.run([[0, 0], [0.001, 0]], increments=10**6, output_every=10**5)
+    peak = tracemalloc.get_traced_memory()[1]
+    tracemalloc.stop()
+    assert len(r) == 11 and r.time[-1] == 1.0
+    assert peak < 10**6, f"peak {peak} bytes"
 
 
 def test_blank_text_entries_are_left_out(source_dir, tmp_path):

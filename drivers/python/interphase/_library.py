@@ -111,9 +111,21 @@ def text_of(buffer):
 
 
 # The custom RVE table and the tabulated R-curve are library-wide data (the loaders are not
-# thread-safe): this package loads each file when a material that names it is used, and only
-# when another one is loaded.
+# thread-safe): this package loads each file when a material that names it is used, again when
+# another file is named or the file has changed since it was loaded (its modification time, size
+# or inode: a file edited and saved under the same name), and not otherwise.
 _loaded = {"table": None, "rcurve": None}
+
+
+def _signature(path):
+    """What identifies a file's contents as loaded: its absolute path and the stat fields an edit
+    changes (None where it cannot be read: the loader then says why)."""
+    path = os.path.abspath(path)
+    try:
+        st = os.stat(path)
+    except OSError:
+        return (path, None)
+    return (path, st.st_mtime_ns, st.st_size, st.st_ino, st.st_dev, st.st_ctime_ns)
 
 
 def load_table(path):
@@ -129,15 +141,18 @@ def load_rcurve(path):
 def _load_file(kind, loader, path):
     path = os.fspath(path)
     detail = detail_buffer()
+    signature = _signature(path)                                  # (before the read: an edit during it reloads)
+    _loaded[kind] = None                                          # (after a failed load the next use tries again)
     status = loader(os.fsencode(path), detail, DETAIL_LEN)      # (the bytes of the name, any encoding)
     if status != _status.STATUS_OK:
         raise InterphaseError(status, text_of(detail))
-    _loaded[kind] = os.path.abspath(path)
+    _loaded[kind] = signature
 
 
 def ensure_loaded(kind, path):
-    """Load `path` as the table or R-curve unless it is the one loaded."""
+    """Load `path` as the table or R-curve unless it is the one loaded, unchanged since."""
     if path is None:
         return
-    if _loaded[kind] != os.path.abspath(path):
+    signature = _signature(path)
+    if signature[1] is None or _loaded[kind] != signature:
         (load_table if kind == "table" else load_rcurve)(path)

@@ -138,7 +138,8 @@ class Material:
     The values are checked by the library itself (the UMAT's decoder): a value out of range raises
     InterphaseError with the library's status code and message (which PROPS, which range). The
     table and the R-curve files are loaded (and checked) when the material is made, and again
-    whenever another file was loaded since (they are library-wide data: not thread-safe).
+    whenever another file was loaded since or the file changed (they are library-wide data: not
+    thread-safe).
     """
 
     def __init__(self, **entries):
@@ -334,6 +335,10 @@ class Material:
                                               traction.ctypes.data, tangent.ctypes.data, new.ctypes.data,
                                               ctypes.byref(psi), detail, DETAIL_LEN)
         if status != st.STATUS_OK:
+            if status == st.STATUS_BAD_TIME_INCREMENT and dt is None:
+                # (the library's message names its C entry, interphase_update_dt)
+                raise InterphaseError(status, "the material has viscous regularisation (its viscosity option): "
+                                      "pass the time increment, Material.update(separation, state, dt=...)")
             raise InterphaseError(status, text_of(detail))
         return Update(traction, tangent, new, psi.value)
 
@@ -378,10 +383,14 @@ class Material:
         t = np.arange(nrows, dtype=np.float64) if time is None else _numbers("time", time, "Material.run")
         if t.shape != (nrows,):
             raise ValueError(f"time must hold {nrows} values, got shape {t.shape}")
-        if not np.all(np.diff(t) > 0.0):
-            raise ValueError("time must increase strictly")
-        if not np.all(np.isfinite(t)):
-            raise ValueError("time must be finite")
+        bad = np.flatnonzero(~np.isfinite(t))
+        if bad.size:
+            raise ValueError(f"Material.run: time[{bad[0]}] = {t[bad[0]]!r} is not finite")
+        bad = np.flatnonzero(~(np.diff(t) > 0.0))
+        if bad.size:
+            i = bad[0] + 1
+            raise ValueError(f"Material.run: time must increase strictly: time[{i}] = {t[i]!r} is not greater "
+                             f"than time[{i - 1}] = {t[i - 1]!r}")
         increments = _count("increments", increments, "Material.run")
         # (output_every < 1 and traction_tolerance are checked by the library: STATUS_BAD_HISTORY)
         output_every = _count("output_every", output_every, "Material.run", minimum=None)
@@ -398,8 +407,10 @@ class Material:
         value = np.ascontiguousarray(value)
         t = np.ascontiguousarray(t)
         props, props_p = _as_c(self.props)
-        # rows: the start and one per sub-increment; more where steps are halved
-        capacity = 1 + (nrows - 1) * increments
+        # rows: the start, one per output_every-th sub-increment and the end of every segment; more
+        # where steps are halved (the library then says STATUS_OUTPUT_FULL, and the run is made
+        # again with 4 times the room)
+        capacity = 1 + ((nrows - 1) * increments) // output_every + (nrows - 1) if output_every >= 1 else 1
         capacity += capacity // 8 + 16
         while True:
             out_t = np.empty(capacity)
