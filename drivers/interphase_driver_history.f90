@@ -106,6 +106,15 @@ contains
             call close_text_file(unit)
             return
          end if
+         ! a carriage return inside the line (the one before the newline is dropped): the file's
+         ! lines end in a carriage return alone (old Mac), and the whole file reads as one line
+         i = index(line, achar(13))
+         if (i > 0) then
+            message = where//'a carriage return inside the line (column '//int_to_string(i)//'): a carriage '// &
+               'return alone ends lines on old Macs; save the file with Unix or Windows line ends'
+            call close_text_file(unit)
+            return
+         end if
          comment = index(line, '#')
          if (comment > 0) then
             select case (columns_line_kind(line(comment + 1:)))

@@ -287,6 +287,12 @@ def test_read_history(source_dir, tmp_path):
     bad.write_text("0 0 0\n1 0 1-2\n")
     with pytest.raises(ValueError, match="bad.txt:2: column 3: cannot parse '1-2' as a number"):
         interphase.read_history(bad)
+    # old Mac line ends (a carriage return alone): the driver's message, which names the column
+    cr = tmp_path / "cr.txt"
+    cr.write_bytes(b"0 0 0\r1 0.01 0\r")
+    with pytest.raises(ValueError, match=re.escape("cr.txt:1: a carriage return inside the line (column 6): a "
+                                                   "carriage return alone ends lines on old Macs")):
+        interphase.read_history(cr)
 
 
 def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):

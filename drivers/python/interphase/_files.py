@@ -281,6 +281,10 @@ def read_history(path, control=False):
     named, names_line, first_line = None, 0, 0
     for number, line in enumerate(_text_lines(path), 1):
         where = f"{path}:{number}"
+        if "\r" in line:   # (the one before the newline is dropped: old Mac line ends)
+            column = line.encode("utf-8", "surrogateescape").index(b"\r") + 1      # (in bytes, as the driver counts)
+            raise ValueError(f"{where}: a carriage return inside the line (column {column}): a carriage return "
+                             "alone ends lines on old Macs; save the file with Unix or Windows line ends")
         head, hash_, comment = line.partition("#")
         # (the driver's columns_line_kind: tabs read as blanks, leading blanks dropped, A-Z lowered)
         text = comment.replace("\t", " ").lstrip(" ")
