@@ -11,9 +11,12 @@
 # exceeds TOL (the other columns are printed, not checked); exit 2 if a row of NEW has no row
 # with the same a in REF, for a usage error or an unknown column; 3 for an unreadable file.
 # I_fNT (format 2) is compared when both tables have it; otherwise the 23 columns of format 1 are.
-# Tables are read as the loader reads them: the columns by the names of their '# columns:' line,
-# in any order; a carriage return ending a line is dropped, and a Fortran exponent letter d/D is
-# read as e.
+# Tables are read as the loader reads them (rve_freefem/table-reader.awk, the reader of every
+# rve_freefem tool): the columns by the names of their '# columns:' line, in any order; a carriage
+# return ending a line is dropped, and a Fortran exponent letter d/D is read as e; what the loader
+# refuses (a row with a field missing or not a number, a repeated or unordered a, no columns
+# line, a bad header value) is named with its file, exit 2. T^f at a = 0, a placeholder the
+# loader does not use (the value of the smallest crack, copied), is not compared.
 set -u
 export LC_ALL=C
 usage() { echo "usage: compare-tables.sh [--tol TOL] [--cols LIST] REF.dat NEW.dat" >&2; exit 2; }
@@ -34,7 +37,21 @@ if [ -n "$tol" ]; then
 fi
 for f in "$1" "$2"; do [ -f "$f" ] && [ -r "$f" ] || { echo "compare-tables.sh: error: cannot read $f" >&2; exit 3; }; done
 
-awk -v tol="$tol" -v cols="$cols" '
+# both tables as the loader reads them, in the canonical column order (table-reader.awk: the one
+# reader of the rve_freefem tools; what it refuses is named, with the file, exit 2)
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+work=$(mktemp -d) || { echo "compare-tables.sh: error: cannot make a temporary directory" >&2; exit 3; }
+trap 'rm -rf "$work"' EXIT
+k=0
+for f in "$1" "$2"; do
+  k=$((k + 1))
+  if ! awk -f "$here/table-reader.awk" -v dest="$work/$k.dat" "$f" > "$work/$k.txt"; then
+    sed "s|^|compare-tables.sh: error: $f: |" "$work/$k.txt" >&2
+    exit 2
+  fi
+done
+
+awk -v tol="$tol" -v cols="$cols" -v ref="$1" -v new="$2" '
 function abs(x) { return x < 0 ? -x : x }
 BEGIN {
   nc = split("a D C_TT C_TN C_NT C_NN Dbar_TT Dbar_TN Dbar_NT Dbar_NN Cc_TT Cc_TN Cc_NT Cc_NN Tc_T Tc_N Sc_T Sc_N Cf_T Cf_N Tf Sf ufbar I_fNT", name, " ")
@@ -43,30 +60,17 @@ BEGIN {
   else for (j = 3; j <= 24; j++) sel[j] = 1
 }
 FNR == 1 { fi++ }
-{ sub(/\r$/, "") }
+# the canonical tables: "# columns: a D ... ufbar [I_fNT]", rows in that order
+/^# columns:/ { withI[fi] = (NF - 2 == 24); next }
 /^#/ {
   if ($0 ~ /^# b = /) b = $4 + 0
-  # the columns by name, in any order, as the loader takes them: at[fi, k] is the canonical
-  # place (name[]) of the k-th column of the file
-  if ($0 ~ /^# columns:/) {
-    line = $0; sub(/^# columns:/, "", line); ncol[fi] = split(line, given, " ")
-    for (k = 1; k <= ncol[fi]; k++) {
-      at[fi, k] = 0
-      for (j = 1; j <= nc; j++) if (given[k] == name[j]) at[fi, k] = j
-      if (at[fi, k] == 0) { print "compare-tables.sh: error: " FILENAME ": unknown column " given[k] > "/dev/stderr"; stop = 1; exit 2 }
-      if (at[fi, k] == 24) withI[fi] = 1
-      named[fi, at[fi, k]] = 1
-    }
-    for (j = 1; j <= 23; j++) if (!((fi, j) in named)) { print "compare-tables.sh: error: " FILENAME ": the columns line does not name " name[j] > "/dev/stderr"; stop = 1; exit 2 }
-  }
   next
 }
 NF == 0 { next }
 {
-  for (j = 1; j <= NF; j++) if ($j ~ /[dD]/) sub(/[dD]/, "e", $j)
-  if (fi == 1) { nr++; for (k = 1; k <= NF && k <= ncol[fi]; k++) R[nr, at[fi, k]] = $k + 0
+  if (fi == 1) { nr++; for (k = 1; k <= NF; k++) R[nr, k] = $k + 0
     for (j = 3; j <= 24; j++) if (abs(R[nr, j]) > S[fam[j]]) S[fam[j]] = abs(R[nr, j]) }
-  else { nn++; for (k = 1; k <= NF && k <= ncol[fi]; k++) N[nn, at[fi, k]] = $k + 0 }
+  else { nn++; for (k = 1; k <= NF; k++) N[nn, k] = $k + 0 }
 }
 END {
   if (stop) exit 2
@@ -80,13 +84,15 @@ END {
     if (k > nr) continue
     matched++
     for (j = 3; j <= last; j++) {
+      # (T^f at a = 0 is a placeholder, the value of the smallest crack copied: the loader does not use it)
+      if (j == 21 && N[i, 1] == 0) continue
       fl = 1e-6 * S[fam[j]]; den = abs(R[k, j]); if (den < fl) den = fl; if (den == 0) den = 1
       r = abs(N[i, j] - R[k, j]) / den
       if (r > mx[j] || !(j in at)) { mx[j] = r; at[j] = N[i, 1] }
     }
   }
   if (matched == 0) { print "no common a values" > "/dev/stderr"; exit 2 }
-  if (matched < nn) { printf "%d rows of %s have no row with the same a in %s\n", nn - matched, ARGV[2], ARGV[1] > "/dev/stderr"; exit 2 }
+  if (matched < nn) { printf "%d rows of %s have no row with the same a in %s\n", nn - matched, new, ref > "/dev/stderr"; exit 2 }
   printf "%d common a values\n", matched
   printf "%-8s %14s %14s %s\n", "column", "max rel change", "at a (mm)", (tol != "" ? "check" : "")
   bad = 0; over = ""
@@ -97,4 +103,4 @@ END {
   }
   if (tol != "") { if (bad) printf "FAIL: checked column(s)%s exceed %s\n", over, tol; else printf "ok: all checked columns within %s\n", tol }
   exit bad
-}' "$1" "$2"
+}' "$work/1.dat" "$work/2.dat"

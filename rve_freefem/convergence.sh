@@ -81,6 +81,15 @@ bash "$here/compare-tables.sh" "$outdir/$name-r4.dat" "$outdir/$name-r2.dat" \
   || die 4 "compare-tables.sh failed (exit $?) on $outdir/$name-r4.dat and $outdir/$name-r2.dat (see above)"
 echo
 echo "== per a: relative change base -> x2 (and x2 -> x4) of $KEY"
+# the three tables in the canonical column order (table-reader.awk, as compare-tables.sh read them
+# above): the comparison below takes the columns by position
+canon=$(mktemp -d) || die 3 "cannot make a temporary directory"
+trap 'rm -rf "$canon"' EXIT
+k=0
+for f in "$base" "$outdir/$name-r2.dat" "$outdir/$name-r4.dat"; do
+  k=$((k + 1))
+  awk -f "$here/table-reader.awk" -v dest="$canon/$k.dat" "$f" || die 4 "$f: not read as the loader reads it (above)"
+done
 awk -v key="$KEY" '
 function abs(x) { return x < 0 ? -x : x }
 BEGIN { split("a D C_TT C_TN C_NT C_NN Dbar_TT Dbar_TN Dbar_NT Dbar_NN Cc_TT Cc_TN Cc_NT Cc_NN Tc_T Tc_N Sc_T Sc_N Cf_T Cf_N Tf Sf ufbar", nm, " ")
@@ -88,7 +97,6 @@ BEGIN { split("a D C_TT C_TN C_NT C_NN Dbar_TT Dbar_TN Dbar_NT Dbar_NN Cc_TT Cc_
         printf "%-14s", "a (mm)"; for (i = 1; i <= nk; i++) printf " %18s", k[i]; printf "\n" }
 { sub(/\r$/, "") }
 /^#/ || NF == 0 { next }
-{ for (j = 1; j <= NF; j++) gsub(/[dD]/, "e", $j) }
 FILENAME == ARGV[1] { nb++; for (j = 1; j <= 23; j++) B[nb, j] = $j; rows[nb] = $1; next }
 FILENAME == ARGV[2] { for (j = 1; j <= 23; j++) R2[$1 + 0, j] = $j; next }
 { for (j = 1; j <= 23; j++) R4[$1 + 0, j] = $j }
@@ -97,6 +105,6 @@ END {
     printf "%-14.8g", a
     for (i = 1; i <= nk; i++) { j = c[i]; d1 = (R2[a, j] != 0) ? abs(B[r, j] - R2[a, j]) / abs(R2[a, j]) : abs(B[r, j]); d2 = (R2[a, j] != 0) ? abs(R4[a, j] - R2[a, j]) / abs(R2[a, j]) : abs(R4[a, j])
       if (abs(R2[a, j]) < 1e-9) printf " %18s", "exact 0"; else printf "  %7.1e (%7.1e)", d1, d2 }
-    printf "\n" } }' "$base" "$outdir/$name-r2.dat" "$outdir/$name-r4.dat" \
+    printf "\n" } }' "$canon/1.dat" "$canon/2.dat" "$canon/3.dat" \
   || die 4 "the per-a comparison failed (awk exit $?)"
 exit $st

@@ -20,9 +20,23 @@ fi
 [ -r "$table" ] || { echo "$prog: error: cannot read $table" >&2; exit 3; }
 mkdir -p "$out" || { echo "$prog: error: cannot create $out" >&2; exit 3; }
 fields=${table%.dat}-fields.dat
+name=$(basename "${table%.dat}")
+# the table as the loader reads it, in the canonical column order (table-reader.awk: the plots
+# below take the columns by position, whatever the order of the file's '# columns:' line)
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+work=$(mktemp -d) || { echo "$prog: error: cannot make a temporary directory" >&2; exit 3; }
+trap 'rm -rf "$work"' EXIT
+if ! awk -f "$here/table-reader.awk" -v dest="$work/table.dat" "$table" > "$work/why.txt"; then
+  sed "s|^|$prog: error: $table: |" "$work/why.txt" >&2
+  exit 3
+fi
+source_table=$table
+table=$work/table.dat
+# (the PNG files this run writes are counted against this mark: not those of an earlier run)
+touch "$work/mark"
 hdr() { awk -v k="$1" '$1 == "#" && $2 == k && $3 == "=" { print $4; exit }' "$table"; }
-CT=$(hdr Chat_TT); CN=$(hdr Chat_NN); h=$(hdr h); b=$(hdr b); name=$(basename "${table%.dat}")
-[ -n "$CT" ] && [ -n "$CN" ] && [ -n "$h" ] && [ -n "$b" ] || { echo "$prog: error: $table lacks Chat_TT, Chat_NN, h or b in its header" >&2; exit 3; }
+CT=$(hdr Chat_TT); CN=$(hdr Chat_NN); h=$(hdr h); b=$(hdr b)
+[ -n "$CT" ] && [ -n "$CN" ] && [ -n "$h" ] && [ -n "$b" ] || { echo "$prog: error: $source_table lacks Chat_TT, Chat_NN, h or b in its header" >&2; exit 3; }
 if gnuplot -e "set terminal pngcairo" > /dev/null 2>&1; then term="pngcairo size 1000,700 font ',11'"; else term="png size 1000,700"; fi
 
 gp() { gnuplot 2>&1 <<EOF | grep -v '^ *$' | grep -vi 'warning: empty' >&2
@@ -120,4 +134,4 @@ plot for [i=0:$((nblk - 1))] '$fields' index i u 2:7 w l lw 1.5 t sprintf('a = %
 else
   echo "$prog: no side file $fields: Figs 9, 10, 15 not made"
 fi
-echo "$prog: wrote $(ls "$out"/*.png 2>/dev/null | wc -l) PNG files to $out"
+echo "$prog: wrote $(find "$out" -maxdepth 1 -name '*.png' -newer "$work/mark" | wc -l) PNG files to $out"

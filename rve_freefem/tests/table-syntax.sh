@@ -42,4 +42,23 @@ awk -v n="$n" '/^#/ || NF == 0 { print; next } { k++; if (k == 1 || k == 2 || k 
 check "3 rows (a = 0, one a, a = b) refused" fail "$work/three.dat" '^3 rows: a table needs at least 4'
 awk -v n="$n" '/^#/ || NF == 0 { print; next } { k++; if (k == 1 || k == 2 || k == 3 || k == n) print }' "$table" > "$work/four.dat"
 check "4 rows accepted" pass "$work/four.dat" '4 rows of'
+# the header as the loader reads it: its numbers in range, a key it reads given once, h = h_m +
+# h_b, b and h given, no byte-order mark; a repeated row named
+hdrset() { sed "s/^# $1 = .*/# $1 = $2/" "$table"; }
+hdrset E_m -1000 > "$work/Em.dat"
+check "E_m = -1000 refused (not an identity passed with a negative scale)" fail "$work/Em.dat" 'E_m = "-1000" is not one positive number'
+hdrset nu_m 0.7 > "$work/num.dat"
+check "nu_m = 0.7 refused" fail "$work/num.dat" 'nu_m = "0.7" is not one number in [(]-1, 0.5[)]'
+hdrset E_m 1000x > "$work/Emx.dat"
+check "E_m = 1000x refused" fail "$work/Emx.dat" 'E_m = "1000x" is not one positive number'
+hdrset h 40 > "$work/h.dat"
+check "h not h_m + h_b refused" fail "$work/h.dat" "the header's h = 40 mm is not h_m [+] h_b = 5 mm"
+grep -v '^# h = ' "$table" > "$work/noh.dat"
+check "h missing refused" fail "$work/noh.dat" 'must give "b = [.][.][.]" and "h = [.][.][.]"'
+awk '{ print } /^# E_b = / { print }' "$table" > "$work/Eb2.dat"
+check "E_b given twice refused" fail "$work/Eb2.dat" 'key "E_b" given twice'
+printf '\357\273\277' | cat - "$table" > "$work/bom.dat"
+check "a byte-order mark refused and named" fail "$work/bom.dat" 'byte-order mark'
+awk '/^#/ || NF == 0 { print; next } { if (++k == 5) print; print }' "$table" > "$work/dup.dat"
+check "a repeated row named" fail "$work/dup.dat" '^row 6 [(]line [0-9]+[)]: a = [0-9.e-]+ does not exceed the previous a'
 exit $fail
