@@ -538,19 +538,22 @@ contains
       call interpolation_data(table, x, y)
       call spline_build(x, y, TABLE_SPLINE_METHOD, spline, status)
       if (status == STATUS_SPLINE_TOO_FEW_POINTS) then
-         write (message, '(a,a,i0,a)') message_path(path), ': ', n, ' rows, but the interpolant '// &
+         write (message, '(a,a,i0,a)') message_path(table%source), ': ', n, ' rows, but the interpolant '// &
             '(a not-a-knot cubic spline) needs at least 4: add rows between a = 0 and a = b'
          return
       else if (status /= STATUS_OK) then
-         message = message_path(path)//': '//status_message(status)
+         message = message_path(table%source)//': '//status_message(status)
          return
       end if
       call spline_export(spline, knots, coef)
       ! the interpolant between the rows must be a law too (signs the update relies on)
       call check_interpolant(table%variable, knots, coef, status, bad_d, bad_name, bad_value)
       if (status /= STATUS_OK) then
-         write (message, '(a,a,a,a,es10.3,a,es10.3,a,es10.3,a)') message_path(path), ': interpolant between rows: ', &
-            trim(bad_name), ' = ', bad_value, ' at D = ', bad_d, ' (a = ', bad_d*table%b, ' mm), not > 0: add rows there'
+         ! (the path as tried: a relative one resolved; D with its ligament 1 - D, which four
+         ! digits of D near a = b would hide)
+         write (message, '(a,a,a,a,es10.3,a,es10.3,a,es10.3,a,es10.3,a)') message_path(table%source), &
+            ': interpolant between rows: ', trim(bad_name), ' = ', bad_value, ' at 1 - D = ', 1.0_dp - bad_d, &
+            ' (a = b - ', (1.0_dp - bad_d)*table%b, ' mm, b = ', table%b, ' mm), not > 0: add rows there'
          return
       end if
       call guide_build(knots, guide, guide_scale, guide_steps)
