@@ -54,6 +54,12 @@ fi
 params=$1
 out=${2:-}
 [ -f "$params" ] && [ -r "$params" ] || die 3 "cannot read parameter file '$params'"
+# the output, before any FreeFEM run: a file name in a directory that can be written
+if [ -n "$out" ]; then
+  [ -d "$out" ] && die 2 "the output '$out' is a directory: name the table file (e.g. ${out%/}/$(basename "${params%.params}").dat)"
+  outdir=$(dirname "$out")
+  [ -d "$outdir" ] && [ -w "$outdir" ] || die 3 "cannot write $out: its directory $outdir does not exist or is not writable"
+fi
 if [ "$check_only" = 0 ]; then
   command -v FreeFem++ >/dev/null 2>&1 || die 3 "FreeFem++ not found: install the Debian package freefem++"
 fi
@@ -63,24 +69,29 @@ case "$jobs" in ''|*[!0-9]*) die 2 "--jobs must be a positive integer" ;; esac
 # ---------------------------------------------------------------- read and check the parameters
 # prints "key<TAB>value" lines; fails on syntax errors and unknown keys.  A carriage return at
 # the end of a line (a file saved with Windows line endings) is dropped.
-parsed=$(awk '
+parsed=$(awk -v file="$params" '
   BEGIN { n = split("h_m h_b b E_m nu_m E_b nu_b order hmax ftip htipmax grow fseg refine huni a_over_b_list a_over_b_uniform ligament_over_b a_list_mm fields_a_over_b fields_a_mm", k, " ")
           for (i = 1; i <= n; i++) known[k[i]] = 1 }
+  NR == 1 && index($0, "\357\273\277") == 1 {
+    printf "%s:1: the file starts with a UTF-8 byte-order mark (bytes EF BB BF): save it without one\n", file > "/dev/stderr"
+    bad = 1; sub(/^\357\273\277/, "") }
   { sub(/\r$/, ""); sub(/#.*/, "") }
   /^[ \t]*$/ { next }
   {
     eq = index($0, "=")
-    if (eq == 0) { printf "line %d: expected key = value: %s\n", NR, $0 > "/dev/stderr"; bad = 1; next }
+    if (eq == 0) { printf "%s:%d: expected key = value: %s\n", file, NR, $0 > "/dev/stderr"; bad = 1; next }
     key = substr($0, 1, eq - 1); val = substr($0, eq + 1)
     gsub(/^[ \t]+|[ \t]+$/, "", key); gsub(/^[ \t]+|[ \t]+$/, "", val); gsub(/[ \t]+/, " ", val)
-    if (!(key in known)) { printf "line %d: unknown key \"%s\"\n", NR, key > "/dev/stderr"; bad = 1; next }
-    if (key in seen) { printf "line %d: key \"%s\" given twice\n", NR, key > "/dev/stderr"; bad = 1; next }
+    if (!(key in known)) { printf "%s:%d: unknown key \"%s\"\n", file, NR, key > "/dev/stderr"; bad = 1; next }
+    if (key in seen) { printf "%s:%d: key \"%s\" given twice\n", file, NR, key > "/dev/stderr"; bad = 1; next }
     seen[key] = 1
-    printf "%s\t%s\n", key, val
+    printf "%s\t%s\t%d\n", key, val, NR
   }
   END { exit bad }' "$params") || die 2 "bad parameter file '$params' (see above)"
 
 get() { printf '%s\n' "$parsed" | awk -F'\t' -v k="$1" '$1 == k { print $2; f = 1 } END { exit !f }'; }
+# where a key was given, for the messages about its value: "PARAMS:LINE: "
+loc() { printf '%s:%s: ' "$params" "$(printf '%s\n' "$parsed" | awk -F'\t' -v k="$1" '$1 == k { print $3; exit }')"; }
 # numbers: a decimal literal (no d exponent, no inf/nan) that is a finite double whose magnitude,
 # when not 0, lies in [1e-100, 1e100] (so that products and quotients of two stay finite);
 # numcode prints nothing and returns 0, 1 (not a number), 2 (not finite) or 3 (out of range)
@@ -117,30 +128,30 @@ chk() { awk -v x="$1" "BEGIN { exit !($2) }"; }
 declare -A P
 for key in h_m h_b b E_m nu_m E_b nu_b; do
   P[$key]=$(get "$key") || die 2 "parameter '$key' missing in '$params'"
-  checknum "parameter '$key'" "${P[$key]}"
+  checknum "$(loc "$key")parameter '$key'" "${P[$key]}"
 done
 for key in h_m h_b b E_m E_b; do
-  chk "${P[$key]}" "x > 0" || die 2 "parameter '$key' = ${P[$key]} must be positive"
+  chk "${P[$key]}" "x > 0" || die 2 "$(loc "$key")parameter '$key' = ${P[$key]} must be positive"
 done
 for key in nu_m nu_b; do
-  chk "${P[$key]}" "x < 0.5" || die 2 "parameter '$key' = ${P[$key]}: Poisson's ratio must be < 0.5 (plane strain)"
-  chk "${P[$key]}" "x > -1" || die 2 "parameter '$key' = ${P[$key]}: Poisson's ratio must be > -1"
+  chk "${P[$key]}" "x < 0.5" || die 2 "$(loc "$key")parameter '$key' = ${P[$key]}: Poisson's ratio must be < 0.5 (plane strain)"
+  chk "${P[$key]}" "x > -1" || die 2 "$(loc "$key")parameter '$key' = ${P[$key]}: Poisson's ratio must be > -1"
 done
 # mesh controls with defaults
 declare -A D=([order]=P2 [hmax]=1 [ftip]=0.005 [htipmax]=0.005 [grow]=1.25 [fseg]=0.1 [refine]=1 [huni]=0)
 for key in order hmax ftip htipmax grow fseg refine huni; do
   P[$key]=$(get "$key") || P[$key]=${D[$key]}
 done
-case "${P[order]}" in P1|P2) ;; *) die 2 "parameter 'order' = '${P[order]}' must be P1 or P2" ;; esac
+case "${P[order]}" in P1|P2) ;; *) die 2 "$(loc order)parameter 'order' = '${P[order]}' must be P1 or P2" ;; esac
 for key in hmax ftip htipmax grow fseg refine huni; do
-  checknum "parameter '$key'" "${P[$key]}"
+  checknum "$(loc "$key")parameter '$key'" "${P[$key]}"
 done
-for key in hmax ftip htipmax; do chk "${P[$key]}" "x > 0" || die 2 "parameter '$key' = ${P[$key]} must be positive"; done
-chk "${P[ftip]}" "x < 1" || die 2 "parameter 'ftip' must be < 1"
-chk "${P[grow]}" "x >= 1 && x < 3" || die 2 "parameter 'grow' = ${P[grow]} must be in [1, 3)"
-chk "${P[fseg]}" "x > 0 && x <= 1" || die 2 "parameter 'fseg' = ${P[fseg]} must be in (0, 1]"
-chk "${P[refine]}" "x >= 1" || die 2 "parameter 'refine' = ${P[refine]} must be >= 1"
-chk "${P[huni]}" "x >= 0" || die 2 "parameter 'huni' = ${P[huni]} must be >= 0"
+for key in hmax ftip htipmax; do chk "${P[$key]}" "x > 0" || die 2 "$(loc "$key")parameter '$key' = ${P[$key]} must be positive"; done
+chk "${P[ftip]}" "x < 1" || die 2 "$(loc ftip)parameter 'ftip' must be < 1"
+chk "${P[grow]}" "x >= 1 && x < 3" || die 2 "$(loc grow)parameter 'grow' = ${P[grow]} must be in [1, 3)"
+chk "${P[fseg]}" "x > 0 && x <= 1" || die 2 "$(loc fseg)parameter 'fseg' = ${P[fseg]} must be in (0, 1]"
+chk "${P[refine]}" "x >= 1" || die 2 "$(loc refine)parameter 'refine' = ${P[refine]} must be >= 1"
+chk "${P[huni]}" "x >= 0" || die 2 "$(loc huni)parameter 'huni' = ${P[huni]} must be >= 0"
 checknum "--refine" "$refine_mult"
 chk "$refine_mult" "x >= 1" || die 2 "--refine must be a number >= 1"
 refine=$(awk -v a="${P[refine]}" -v m="$refine_mult" 'BEGIN { printf "%.17g", a * m }')
@@ -151,7 +162,7 @@ bval=${P[b]}
 if [ "$uniform" = 1 ]; then
   for key in b h_m h_b; do
     awk -v x="${P[$key]}" -v u="${P[huni]}" 'BEGIN { q = x / u; r = int(q + 0.5); d = q - r; if (d < 0) d = -d; exit !(d <= 1e-9 * q) }' \
-      || die 2 "parameter 'huni' = ${P[huni]}: the uniform mesh needs $key = ${P[$key]} to be a whole multiple of huni"
+      || die 2 "$(loc huni)parameter 'huni' = ${P[huni]}: the uniform mesh needs $key = ${P[$key]} to be a whole multiple of huni"
   done
 fi
 
@@ -169,37 +180,44 @@ if [ "$a_override_given" = 1 ]; then
   given="--a-over-b \"$a_override\""
 else
   if v=$(get a_over_b_list); then
-    checklist "a_over_b_list" "$v"
+    checklist "$(loc a_over_b_list)a_over_b_list" "$v"
     for f in $v; do
-      chk "$f" "x >= 0" || die 2 "a_over_b_list: a/b = $f < 0"
-      chk "$f" "x <= 1" || die 2 "a_over_b_list: crack half-length a/b = $f > 1: a must not exceed b"
+      chk "$f" "x >= 0" || die 2 "$(loc a_over_b_list)a_over_b_list: a/b = $f < 0"
+      chk "$f" "x <= 1" || die 2 "$(loc a_over_b_list)a_over_b_list: crack half-length a/b = $f > 1: a must not exceed b"
       alist_raw+=$'\n'$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", f * b }')
     done
     given+=" a_over_b_list = $v;"
   fi
   if v=$(get a_list_mm); then
-    checklist "a_list_mm" "$v"
+    checklist "$(loc a_list_mm)a_list_mm" "$v"
     for f in $v; do
-      chk "$f" "x >= 0" || die 2 "a_list_mm: a = $f < 0"
-      awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x <= b) }' || die 2 "a_list_mm: crack half-length a = $f > b = $bval"
+      chk "$f" "x >= 0" || die 2 "$(loc a_list_mm)a_list_mm: a = $f < 0"
+      awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x <= b) }' || die 2 "$(loc a_list_mm)a_list_mm: crack half-length a = $f > b = $bval"
       alist_raw+=$'\n'$f
     done
     given+=" a_list_mm = $v;"
   fi
   if v=$(get a_over_b_uniform); then
     set -- $v
-    [ $# -eq 3 ] || die 2 "a_over_b_uniform needs 'start stop step', got '$v'"
-    checklist "a_over_b_uniform" "$v"
-    chk "$3" "x > 0" || die 2 "a_over_b_uniform: step must be > 0"
-    awk -v s="$1" -v e="$2" 'BEGIN { exit !(s >= 0 && e <= 1 && s <= e) }' || die 2 "a_over_b_uniform: need 0 <= start <= stop <= 1 (a must not exceed b)"
+    [ $# -eq 3 ] || die 2 "$(loc a_over_b_uniform)a_over_b_uniform needs 'start stop step', got '$v'"
+    checklist "$(loc a_over_b_uniform)a_over_b_uniform" "$v"
+    chk "$3" "x > 0" || die 2 "$(loc a_over_b_uniform)a_over_b_uniform: step must be > 0"
+    awk -v s="$1" -v e="$2" 'BEGIN { exit !(s >= 0 && e <= 1 && s <= e) }' || die 2 "$(loc a_over_b_uniform)a_over_b_uniform: need 0 <= start <= stop <= 1 (a must not exceed b)"
+    # the stop is a point of the range: a step that does not divide stop - start would drop it
+    awk -v s="$1" -v e="$2" -v d="$3" 'BEGIN { q = (e - s) / d; exit !(q - int(q + 0.5) <= 1e-9 * (q > 1 ? q : 1) && int(q + 0.5) - q <= 1e-9 * (q > 1 ? q : 1)) }' \
+      || die 2 "$(loc a_over_b_uniform)a_over_b_uniform = $v: the step does not divide stop - start, so the points would be $(awk -v s="$1" -v e="$2" -v d="$3" 'BEGIN { for (x = s; x <= e + 1e-12; x += d) printf "%g ", x }')without the stop $2"
     alist_raw+=$'\n'$(awk -v s="$1" -v e="$2" -v d="$3" -v b="$bval" 'BEGIN { n = int((e - s) / d + 1e-9); for (i = 0; i <= n; i++) printf "%.15g\n", (s + i * d) * b }')
     given+=" a_over_b_uniform = $v;"
   fi
   if v=$(get ligament_over_b); then
     set -- $v
-    [ $# -eq 3 ] || die 2 "ligament_over_b needs 'from to per-decade', got '$v'"
-    checklist "ligament_over_b" "$v"
-    awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { exit !(f > 0 && f <= 1 && t > 0 && t <= f && n >= 1) }' || die 2 "ligament_over_b: need 0 < to <= from <= 1 and per-decade >= 1"
+    [ $# -eq 3 ] || die 2 "$(loc ligament_over_b)ligament_over_b needs 'from to per-decade', got '$v'"
+    checklist "$(loc ligament_over_b)ligament_over_b" "$v"
+    awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { exit !(f > 0 && f <= 1 && t > 0 && t <= f && n >= 1) }' || die 2 "$(loc ligament_over_b)ligament_over_b: need 0 < to <= from <= 1 and per-decade >= 1"
+    # a whole number per decade, and the last ligament one of the points: else it would be dropped
+    chk "$3" "x == int(x)" || die 2 "$(loc ligament_over_b)ligament_over_b = $v: per-decade = $3 must be a whole number"
+    awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { q = n * log(f / t) / log(10); r = int(q + 0.5); exit !(q - r <= 1e-9 * (q > 1 ? q : 1) && r - q <= 1e-9 * (q > 1 ? q : 1)) }' \
+      || die 2 "$(loc ligament_over_b)ligament_over_b = $v: 'to' is not a whole number of steps 10^(-1/$3) below 'from', so it would not be a point (per-decade * log10(from/to) = $(awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { printf "%.6g", n * log(f / t) / log(10) }'))"
     alist_raw+=$'\n'$(awk -v f="$1" -v t="$2" -v n="$3" -v b="$bval" 'BEGIN { m = int(n * log(f / t) / log(10) + 1e-9); for (j = 0; j <= m; j++) { l = f * 10 ^ (-j / n); printf "%.15g\n", b - l * b } }')
     given+=" ligament_over_b = $v;"
   fi
@@ -208,17 +226,17 @@ fi
 # --a-over-b, where the side file holds those of them that are in the list
 fields_raw=""
 if v=$(get fields_a_over_b); then
-  checklist "fields_a_over_b" "$v"
+  checklist "$(loc fields_a_over_b)fields_a_over_b" "$v"
   for f in $v; do
-    chk "$f" "x >= 0 && x <= 1" || die 2 "fields_a_over_b: a/b = $f outside [0, 1]"
+    chk "$f" "x >= 0 && x <= 1" || die 2 "$(loc fields_a_over_b)fields_a_over_b: a/b = $f outside [0, 1]"
     fields_raw+=$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", (f == 1) ? b : f * b }')$'\n'
   done
   [ "$a_override_given" = 1 ] || given+=" fields_a_over_b = $v;"
 fi
 if v=$(get fields_a_mm); then
-  checklist "fields_a_mm" "$v"
+  checklist "$(loc fields_a_mm)fields_a_mm" "$v"
   for f in $v; do
-    awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x >= 0 && x <= b) }' || die 2 "fields_a_mm: a = $f outside [0, b]"
+    awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x >= 0 && x <= b) }' || die 2 "$(loc fields_a_mm)fields_a_mm: a = $f outside [0, b]"
     fields_raw+=$f$'\n'
   done
   [ "$a_override_given" = 1 ] || given+=" fields_a_mm = $v;"
@@ -248,7 +266,7 @@ fi
 if [ "$uniform" = 1 ]; then
   # every a must fall on a node of the squares (rve.edp's test)
   bad=$(printf '%s\n' "$alist" | awk -v u="${P[huni]}" -v b="$bval" '{ q = $1 / u; d = q - int(q + 0.5); if (d < 0) d = -d; if (d > 1e-9 * b / u) { printf "%s%s", sep, $1; sep = " " } }')
-  [ -z "$bad" ] || die 2 "parameter 'huni' = ${P[huni]}: the crack half-lengths a = $bad mm are not multiples of huni (the crack tips must be nodes of the uniform mesh)"
+  [ -z "$bad" ] || die 2 "$(loc huni)parameter 'huni' = ${P[huni]}: the crack half-lengths a = $bad mm are not multiples of huni (the crack tips must be nodes of the uniform mesh)"
 else
   # rve.edp's graded point sets (its grade()), counted before any run: the shortest tip spacing
   # FreeFEM accepts, and the size of the mesh of one a.  The unknowns of one a are ~100-250 times

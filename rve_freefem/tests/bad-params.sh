@@ -38,7 +38,7 @@ case_ ligament_tiny   "too short for this mesh"        's/^a_over_b_list = .*/a_
 case_ E_infinite      "'E_m' = '1e400' is not a finite number" 's/^E_m = .*/E_m = 1e400/'
 case_ E_huge          "'E_b' = '1e200' is out of range"  's/^E_b = .*/E_b = 1e200/'
 case_ list_empty      "a_over_b_list is empty"         's/^a_over_b_list = .*/a_over_b_list =/'
-case_ three_rows      "a_over_b_uniform = 0.1 0.2 5: 1 distinct .* 3 rows, but it needs at least 4" 's/^a_over_b_list = .*/a_over_b_uniform = 0.1 0.2 5/'
+case_ three_rows      "a_over_b_uniform = 0.1 0.1 5: 1 distinct .* 3 rows, but it needs at least 4" 's/^a_over_b_list = .*/a_over_b_uniform = 0.1 0.1 5/'
 case_ grow_one        "grow = 1, ftip = 0.05, .* at a = 0.05 mm the mesh would need 10000 elements along the interface" 's/^grow = .*/grow = 1/; $a a_list_mm = 0.05'
 case_ huni_b          "'huni' = 0.3: the uniform mesh needs b = 25 to be a whole multiple of huni" '$a huni = 0.3'
 case_ huni_a          "'huni' = 1: the crack half-lengths a = 12.5 mm are not multiples of huni" '$a huni = 1'
