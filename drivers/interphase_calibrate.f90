@@ -9,7 +9,7 @@
 !> that ends before full damage (D < 1: the fracture law's crack growth is not bounded by sf),
 !> takes the fracture energies G_I, G_II as the dissipated energy at the end (SPD) and the
 !> stiffnesses K_N, K_T as the slopes at the start of each test (the UMAT's DDSDDE of the virgin
-!> point at 1e-9 sf in the test's direction, whatever the step: with an initial crack D0 > 0 the
+!> point at 1e-9 s0 in the test's direction, whatever the step: with an initial crack D0 > 0 the
 !> opening and the frictionless slip at s_N = 0, not the closed crack's stick at s = 0), and sets
 !>     s0_N = 2 G_I/(K_N sf_N),   s0_T = 2 G_II/(K_T sf_T)
 !> so that the simplified model's fracture energies 1/2 K s0 sf equal them (sf kept). It prints
@@ -29,7 +29,7 @@ program interphase_calibrate
    use interphase_driver_cli, only: get_argument, exit_program, print_version
    implicit none
 
-   !> Where the slope at the start of a test is taken: this fraction of sf (-)
+   !> Where the slope at the start of a test is taken: this fraction of s0 (of sf, were it smaller) (-)
    real(dp), parameter :: S_START = 1.0e-9_dp
 
    type(case_type) :: run
@@ -106,8 +106,8 @@ program interphase_calibrate
    call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
    if (.not. ok) call fail(message)
 
-   call monotonic(1, 'N', run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)
-   call monotonic(2, 'T', run%props(PROP_SF_T), g_ii, k_t, peak_t, s_peak_t)
+   call monotonic(1, 'N', run%props(PROP_S0_N), run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)
+   call monotonic(2, 'T', run%props(PROP_S0_T), run%props(PROP_SF_T), g_ii, k_t, peak_t, s_peak_t)
    s0_n = 2.0_dp*g_i/(k_n*run%props(PROP_SF_N))
    s0_t = 2.0_dp*g_ii/(k_t*run%props(PROP_SF_T))
 
@@ -151,10 +151,10 @@ contains
    !> Monotonic pure-mode test (component 1: s_N, 2: s_T) from 0 to 1.01 sf in `increments`
    !> steps: dissipated energy at the end, the slope at the start, peak traction. A test that
    !> ends with D < 1 is refused: its dissipated energy is not the fracture energy.
-   subroutine monotonic(component, mode, sf, energy, stiffness, peak, s_peak)
+   subroutine monotonic(component, mode, s0, sf, energy, stiffness, peak, s_peak)
       integer, intent(in) :: component
       character(len=1), intent(in) :: mode        !! 'N' or 'T', for the messages
-      real(dp), intent(in) :: sf                  !! the case's sf of the mode (mm)
+      real(dp), intent(in) :: s0, sf              !! the case's s0 and sf of the mode (mm)
       real(dp), intent(out) :: energy, stiffness, peak, s_peak
       type(point_state_type) :: point, probe
       real(dp) :: s(2), pnewdt, ddsdde(2, 2)
@@ -163,12 +163,12 @@ contains
       peak = 0.0_dp
       s_peak = 0.0_dp
       ! the slope at the start of the test: the tangent of the virgin point (an increment whose
-      ! state is not kept) at 1e-9 sf in the test's direction, not that of the first step, which
-      ! may already pass s0; not at s = 0 either, where an initial crack (D0 > 0) is closed and
+      ! state is not kept) at 1e-9 s0 in the test's direction (below the onset of damage), not
+      ! that of the first step, which may already pass s0; not at s = 0 either, where an initial crack (D0 > 0) is closed and
       ! sticks (the intact stiffness) while the test opens it, or slips at s_N = 0 without friction
       probe = point
       s = 0.0_dp
-      s(component) = S_START*sf
+      s(component) = S_START*min(s0, sf)
       call call_umat(run%props, probe, s, 0.0_dp, pnewdt, ddsdde)
       if (pnewdt < 1.0_dp) call fail('the UMAT failed at the start of the monotonic test; see its message above')
       stiffness = ddsdde(component, component)

@@ -46,7 +46,7 @@ k=0
 for f in "$1" "$2"; do
   k=$((k + 1))
   if ! awk -f "$here/table-reader.awk" -v dest="$work/$k.dat" "$f" > "$work/$k.txt"; then
-    sed "s|^|compare-tables.sh: error: $f: |" "$work/$k.txt" >&2
+    PREFIX="compare-tables.sh: error: $f: " awk '{ print ENVIRON["PREFIX"] $0 }' "$work/$k.txt" >&2
     exit 2
   fi
 done

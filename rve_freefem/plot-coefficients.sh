@@ -27,7 +27,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 work=$(mktemp -d) || { echo "$prog: error: cannot make a temporary directory" >&2; exit 3; }
 trap 'rm -rf "$work"' EXIT
 if ! awk -f "$here/table-reader.awk" -v dest="$work/table.dat" "$table" > "$work/why.txt"; then
-  sed "s|^|$prog: error: $table: |" "$work/why.txt" >&2
+  PREFIX="$prog: error: $table: " awk '{ print ENVIRON["PREFIX"] $0 }' "$work/why.txt" >&2
   exit 3
 fi
 source_table=$table

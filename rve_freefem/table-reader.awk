@@ -6,7 +6,7 @@
 #
 #   awk -f table-reader.awk -v dest=CANONICAL.dat TABLE.dat
 #
-# Writes to dest the header lines as read, the line "# columns: a D C_TT ... ufbar" (I_fNT last
+# Writes to dest the header lines as read (the numbers of the keys the loader reads as %.17g), the line "# columns: a D C_TT ... ufbar" (I_fNT last
 # where the table has it) and the rows with their numbers in that order (%.17g: the values read,
 # a Fortran d exponent read as e). Prints what it refuses, one line each, on standard output and
 # exits 1 (dest is then incomplete); exits 0 otherwise, printing nothing.
@@ -72,6 +72,8 @@ NR == 1 && index($0, "\357\273\277") == 1 {
           f = hv; gsub(/^[ \t]+|[ \t]+$/, "", f)
           if ((k in positive) && !header_number(k, f, 0, "")) refuse("line " NR ": " k " = \"" f "\" is not one positive number")
           if ((k == "nu_m" || k == "nu_b") && !header_number(k, f, -1, 0.5)) refuse("line " NR ": " k " = \"" f "\" is not one number in (-1, 0.5)")
+          # (its number as read, a d exponent as e: the tools read the canonical header with awk)
+          if (isnumber(f) && finite(numval(f))) { line = "# " k " = " sprintf("%.17g", numval(f)); hv = f }
         }
       }
       hdr[k] = hv
@@ -83,7 +85,7 @@ NR == 1 && index($0, "\357\273\277") == 1 {
 NF == 0 { next }
 {
   n++
-  if (ncolsline == 0) { refuse("row " n " (line " NR ") comes before the # columns: line"); exit 1 }
+  if (ncolsline == 0) { refuse("row " n " (line " NR ") comes before the # columns: line"); aborted = 1; exit 1 }
   if (NF != ncol) refuse("row " n " has " NF " fields, the columns line names " ncol)
   delete x
   for (i = 1; i <= NF; i++) {
@@ -98,6 +100,7 @@ NF == 0 { next }
   print out > dest
 }
 END {
+  if (aborted) { close(dest); exit 1 }
   if (ncolsline == 0) refuse("the # columns: line is missing")
   if (!("b" in hdr) || !("h" in hdr)) refuse("the header before \"# columns:\" must give \"b = ...\" and \"h = ...\"")
   else if (("h_m" in hdr) && ("h_b" in hdr) && header_number("h", hdr["h"], 0, "") && header_number("h_m", hdr["h_m"], 0, "") \

@@ -528,6 +528,7 @@ contains
       real(dp) :: guide_scale
       integer :: guide_steps
       character(len=32) :: bad_name
+      integer :: ios
 
       call read_rve_table(path, table, status, message)
       if (status /= STATUS_OK) return
@@ -551,7 +552,10 @@ contains
       if (status /= STATUS_OK) then
          ! (the path as tried: a relative one resolved; D with its ligament 1 - D, which four
          ! digits of D near a = b would hide)
-         write (message, '(a,a,a,a,es10.3,a,es10.3,a,es10.3,a,es10.3,a)') message_path(table%source), &
+         ! (the path shortened to leave the rest of the message its 145 characters; iostat: a
+         ! message never stops the host)
+         write (message, '(a,a,a,a,es10.3,a,es10.3,a,es10.3,a,es10.3,a)', iostat=ios) &
+            message_path(table%source, MESSAGE_LEN - 145), &
             ': interpolant between rows: ', trim(bad_name), ' = ', bad_value, ' at 1 - D = ', 1.0_dp - bad_d, &
             ' (a = b - ', (1.0_dp - bad_d)*table%b, ' mm, b = ', table%b, ' mm), not > 0: add rows there'
          return

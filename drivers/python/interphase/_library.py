@@ -9,8 +9,10 @@ Where it is looked for, in this order:
 """
 
 import ctypes
+import hashlib
 import os
 import pathlib
+import time
 
 from . import _status
 
@@ -113,8 +115,15 @@ def text_of(buffer):
 # The custom RVE table and the tabulated R-curve are library-wide data (the loaders are not
 # thread-safe): this package loads each file when a material that names it is used, again when
 # another file is named or the file has changed since it was loaded (its modification time, size
-# or inode: a file edited and saved under the same name), and not otherwise.
+# or inode; while it is recent, its contents: a file edited and saved under the same name), and
+# not otherwise.
 _loaded = {"table": None, "rcurve": None}
+
+
+#: how recent a modification makes a loaded file count as changed at its next use (ns): two
+#: seconds, the coarsest modification-time tick of common file systems (FAT; NFS and old kernels
+#: round to a second)
+RACY_NS = 2_000_000_000
 
 
 def _signature(path):
@@ -141,12 +150,28 @@ def load_rcurve(path):
 def _load_file(kind, loader, path):
     path = os.fspath(path)
     detail = detail_buffer()
-    signature = _signature(path)                                  # (before the read: an edit during it reloads)
+    # (the signature and the digest before the read: an edit during it reloads)
+    signature = _signature(path)
+    digest = _racy_digest(path, signature)
     _loaded[kind] = None                                          # (after a failed load the next use tries again)
     status = loader(os.fsencode(path), detail, DETAIL_LEN)      # (the bytes of the name, any encoding)
     if status != _status.STATUS_OK:
         raise InterphaseError(status, text_of(detail))
-    _loaded[kind] = signature
+    _loaded[kind] = (signature, digest)
+
+
+def _racy_digest(path, signature):
+    """The digest of a file modified within RACY_NS of now, None for an older one. Such a file may
+    be rewritten again within one tick of the file system's clock with the same size, and its
+    signature would not change: its contents are compared too until it is older than that (git's
+    "racily clean" rule)."""
+    if signature[1] is None or signature[1] < time.time_ns() - RACY_NS:
+        return None
+    try:
+        with open(path, "rb") as file:
+            return hashlib.sha256(file.read()).digest()
+    except OSError:
+        return b""
 
 
 def ensure_loaded(kind, path):
@@ -154,5 +179,13 @@ def ensure_loaded(kind, path):
     if path is None:
         return
     signature = _signature(path)
-    if signature[1] is None or _loaded[kind] != signature:
+    entry = _loaded[kind]
+    if signature[1] is None or entry is None or entry[0] != signature:
         (load_table if kind == "table" else load_rcurve)(path)
+    elif entry[1] is not None:
+        # loaded when it had just been modified: its contents decide while it is that recent
+        digest = _racy_digest(path, signature)
+        if digest is None:
+            _loaded[kind] = (signature, None)
+        elif digest != entry[1]:
+            (load_table if kind == "table" else load_rcurve)(path)

@@ -385,12 +385,12 @@ class Material:
             raise ValueError(f"time must hold {nrows} values, got shape {t.shape}")
         bad = np.flatnonzero(~np.isfinite(t))
         if bad.size:
-            raise ValueError(f"Material.run: time[{bad[0]}] = {t[bad[0]]!r} is not finite")
+            raise ValueError(f"Material.run: time[{bad[0]}] = {float(t[bad[0]])!r} is not finite")
         bad = np.flatnonzero(~(np.diff(t) > 0.0))
         if bad.size:
             i = bad[0] + 1
-            raise ValueError(f"Material.run: time must increase strictly: time[{i}] = {t[i]!r} is not greater "
-                             f"than time[{i - 1}] = {t[i - 1]!r}")
+            raise ValueError(f"Material.run: time must increase strictly: time[{i}] = {float(t[i])!r} is not "
+                             f"greater than time[{i - 1}] = {float(t[i - 1])!r}")
         increments = _count("increments", increments, "Material.run")
         # (output_every < 1 and traction_tolerance are checked by the library: STATUS_BAD_HISTORY)
         output_every = _count("output_every", output_every, "Material.run", minimum=None)
