@@ -304,15 +304,16 @@ contains
             call update_point(params, old, n, s, t, k, new, psi, code)
          end if
          if (code /= STATUS_OK) then
+            ! (the messages name the row's separation as given: s is the previous row's plus the
+            ! increment, which may differ from it in the last bit)
             if (code == STATUS_BAD_TIME_INCREMENT) then
                ! (timed: a finite dt >= 0 was checked above)
                write (message, '(a,i0,a)') 'row ', row - 1, ': the material has viscous regularisation (its '// &
                   'viscosity option): pass the times (time is NULL)'
             else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
                write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
-                  rcurve_overrun(50, max(old%d, params%d0), s(1:n))
+                  rcurve_overrun(50, max(old%d, params%d0), separation(at + 1:at + n))
             else
-               ! (the row's separation as given: s is the previous row's plus the increment)
                write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
                   separation_failure(code, separation(at + 1:at + n))
             end if

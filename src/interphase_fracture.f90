@@ -148,11 +148,7 @@ contains
          ! G_cII = -(k_t' + q'(1 - W)) sigma_T^2, so g is the same: it goes over continuously into
          ! the closed crack's (G_cII = kappa sigma_T^2, kappa = -(k_t' + q') in pure mode II), and
          ! the law stays equivalent to the displacement law, whose D the band does not change)
-         call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
-         call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
-         if (load%s_n > 0.0_dp) gi = (load%s_n/sig_n)**2
-         gii = t2/sig_t**2
-         g = gi + gii - 1.0_dp
+         call equivalent_open_g(params, d, load%s_n, t2, g, gi, gii, sig_n, sig_t, dsig_n, dsig_t)
       else
          if (.not. closed) then
             if (load%s_n > 0.0_dp) gi = -dc%k_n*load%s_n**2
@@ -494,18 +490,34 @@ contains
       status = STATUS_STAGGER_NOT_CONVERGED
    end subroutine grow_crack
 
+   !> g of an open crack under the equivalent R-curve at D, from the separation alone (G/G_c with
+   !> G_c = -k' sigma(D)^2: k' cancels), g = gi + gii - 1, gi = (s_N/sigma_N(D))^2 (0 unless
+   !> s_N > 0), gii = |s_T|^2/sigma_T(D)^2, with the scales sigma(D) and their slopes.
+   pure subroutine equivalent_open_g(params, d, s_n, t2, g, gi, gii, sig_n, sig_t, dsig_n, dsig_t)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d, s_n, t2          !! D (-), s_N (mm), |s_T|^2 (mm^2)
+      real(dp), intent(out) :: g, gi, gii         !! (-)
+      real(dp), intent(out) :: sig_n, sig_t, dsig_n, dsig_t     !! sigma(D) (mm), d sigma/dD (mm)
+      call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
+      call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
+      gi = 0.0_dp
+      if (s_n > 0.0_dp) gi = (s_n/sig_n)**2
+      gii = t2/sig_t**2
+      g = gi + gii - 1.0_dp
+   end subroutine equivalent_open_g
+
    !> growth_point at D_n for an open crack under the equivalent R-curve, where the crack does not
-   !> grow, at a third of its cost: there g = (s_N/sigma_N(D))^2 + |s_T|^2/sigma_T(D)^2 - 1 needs no
-   !> coefficient, and the response at a D that does not grow needs the coefficients' values alone
+   !> grow, at a third of its cost: there g needs no coefficient (equivalent_open_g), and the
+   !> response at a D that does not grow needs the coefficients' values alone
    !> (coefficient_values_at: the numbers coefficients_at gives, bit for bit), not their first and
    !> second derivatives (two thirds of a table lookup). arrested = .true.: `at` holds what
    !> growth_point gives there (g < 0, g's derivatives zero, the response, whose dtrac_dd, read
    !> only by a growing crack's tangent, is formed from zeros). arrested = .false.: g >= 0 (or
-   !> NaN), or the crack is closed at D_n (s_N <= 0 at D_n > 0; or the table's Dbar_NN <= 0 there,
-   !> which check_interpolant refuses only at its samples): growth_point decides, and `at` is
-   !> undefined. The same expressions as growth_point's, so the same bits. (The provider's and
-   !> the response module's entries, out of line: a second call of this module's own copies
-   !> would keep the compiler from inlining them into growth_point.)
+   !> NaN), or the response finds the crack closed at D_n (s_N <= 0 at D_n > 0 is not tried; the
+   !> table's Dbar_NN <= 0, which check_interpolant refuses only at its samples): growth_point
+   !> decides, and `at` is undefined. (The provider's and the response module's entries, out of
+   !> line: a second call of this module's own copies would keep the compiler from inlining them
+   !> into growth_point.)
    pure subroutine open_arrest(params, d, load, ntens, at, arrested, status)
       type(law_params_type), intent(in) :: params
       real(dp), intent(in) :: d                       !! D_n (-)
@@ -515,31 +527,27 @@ contains
       logical, intent(out) :: arrested
       integer, intent(out) :: status
       type(coefficient_set_type) :: c, zeros
-      real(dp) :: sig_n, sig_t, dsig_n, dsig_t, gi, gii, g, t2
+      real(dp) :: sig_n, sig_t, dsig_n, dsig_t, gi, gii
       arrested = .false.
       status = STATUS_OK
       if (.not. (load%s_n > 0.0_dp .or. .not. (d > 0.0_dp))) return
-      t2 = load%st(1)**2 + load%st(2)**2
-      call equivalent_scale(params%s0_n, params%eta_n, d, sig_n, dsig_n)
-      call equivalent_scale(params%s0_t, params%eta_t, d, sig_t, dsig_t)
-      gi = 0.0_dp
-      if (load%s_n > 0.0_dp) gi = (load%s_n/sig_n)**2
-      gii = t2/sig_t**2
-      g = gi + gii - 1.0_dp
-      if (.not. (g < 0.0_dp)) return
+      call equivalent_open_g(params, d, load%s_n, load%st(1)**2 + load%st(2)**2, at%g, gi, gii, sig_n, sig_t, &
+         dsig_n, dsig_t)
+      if (.not. (at%g < 0.0_dp)) return
       call provider_values_at(params, d, c, zeros, status)
       if (status /= STATUS_OK) return
-      if (.not. (d <= 0.0_dp .or. c%dbar_n*load%s_n > 0.0_dp)) return
       call shared_respond(params, c, zeros, d, load%slip_old, load%s_n, load%st, ntens, .false., at%r, status)
+      if (at%r%closed) then
+         status = STATUS_OK                           ! (growth_point answers for a closed crack)
+         return
+      end if
       if (status /= STATUS_OK) return
-      arrested = .true.
       at%d = d
-      at%g = g
       at%g_s = 0.0_dp
       at%g_lam = 0.0_dp
       at%g_d = 0.0_dp
-      at%m = 0.0_dp
-      if (d > 0.0_dp) at%m = d*c%ufbar
+      at%m = merge(d*c%ufbar, 0.0_dp, d > 0.0_dp)
+      arrested = .true.
    end subroutine open_arrest
 
    !> The search's step from two evaluations of h (`search_function`) with their slopes: at the
