@@ -40,6 +40,16 @@ else()
   set(_PFUNIT_LITE_OWN_FLAGS "")
 endif()
 
+# OpenMP, as real pFUnit compiles its test programs (without it the `!$` lines stay comments)
+find_package(OpenMP COMPONENTS Fortran QUIET)
+if(OpenMP_Fortran_FOUND)
+  set(_PFUNIT_LITE_OPENMP TRUE)
+else()
+  set(_PFUNIT_LITE_OPENMP FALSE)
+  message(STATUS "pfunit_lite: OpenMP for Fortran not found: the test programs are compiled without it "
+                 "(real pFUnit's are compiled with it: an !$ line is not checked here)")
+endif()
+
 if(NOT TARGET pfunit_lite_preprocessor)
   add_executable(pfunit_lite_preprocessor "${_PFUNIT_LITE_SOURCE_DIR}/pf_preprocess.f90")
   set_target_properties(pfunit_lite_preprocessor PROPERTIES
@@ -139,6 +149,11 @@ end program funit_driver
   endif()
   # Plain signature, as pFUnit's add_pfunit_ctest: callers may add libraries the same way.
   target_link_libraries(${test_name} pfunit_lite_funit ${PF_LINK_LIBRARIES})
+  # Real pFUnit's test programs are compiled with OpenMP (../shared/PFUNIT.md): an `!$` line must
+  # compile here too, so the same flag where the compiler has it.
+  if(_PFUNIT_LITE_OPENMP)
+    target_link_libraries(${test_name} OpenMP::OpenMP_Fortran)
+  endif()
 
   if(PF_WORKING_DIRECTORY)
     set(working_directory "${PF_WORKING_DIRECTORY}")

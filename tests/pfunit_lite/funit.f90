@@ -132,7 +132,7 @@ contains
       end do
    end subroutine funit_initialize
 
-   !> Runs one test (unless filtered out): before, the test if before passed, after; then tallies.
+   !> Runs one test (unless filtered out): before, then the test and after if before passed; tallies.
    subroutine funit_run_test(suite, name, test, before, after)
       character(len=*), intent(in) :: suite   !! module of the test
       character(len=*), intent(in) :: name    !! test procedure
@@ -145,8 +145,11 @@ contains
       end if
       current_failed = .false.
       if (present(before)) call before()
-      if (.not. current_failed) call test()
-      if (present(after)) call after()
+      ! as pFUnit's TestCase%runBare: the test and the after procedure only when before raised nothing
+      if (.not. current_failed) then
+         call test()
+         if (present(after)) call after()
+      end if
       if (current_failed) then
          n_failed = n_failed + 1
          if (verbose) write (output_unit, '(2a)') 'FAILED  ', current_test
@@ -224,11 +227,13 @@ contains
    end subroutine equal_logical
 
    !> Strings are equal when they differ only by leading and trailing blanks (pFUnit's default).
-   subroutine equal_string(expected, actual, message)
-      character(len=*), intent(in) :: expected, actual
+   !> The second argument is `found`, as in pFUnit's string assertion (its numeric ones call it
+   !> `actual`), so that a keyword call compiles here only where it compiles with pFUnit.
+   subroutine equal_string(expected, found, message)
+      character(len=*), intent(in) :: expected, found
       character(len=*), intent(in), optional :: message
-      call conclude(adjustl(expected) == adjustl(actual), 'assertEqual', &
-         'expected <"' // trim(adjustl(expected)) // '"> but found <"' // trim(adjustl(actual)) // '">', message)
+      call conclude(adjustl(expected) == adjustl(found), 'assertEqual', &
+         'expected <"' // trim(adjustl(expected)) // '"> but found <"' // trim(adjustl(found)) // '">', message)
    end subroutine equal_string
 
    subroutine equal_r0(expected, actual, message)
@@ -375,13 +380,13 @@ contains
       end if
    end function within
 
-   !> |e - a| <= tol*|e|; a zero expected value always fails, as in pFUnit.
+   !> |e - a| <= tol*|e|; a zero expected value always fails, as in pFUnit, and so does an infinite
+   !> one (pFUnit's |a - e| is NaN for a = e = Inf, and Inf <= tol*Inf would pass any finite a: never
+   !> accepted here).
    elemental logical function relatively_within(e, a, tol)
       real(dp), intent(in) :: e, a, tol
-      if (ieee_is_nan(e) .or. is_zero(e)) then
+      if (ieee_is_nan(e) .or. is_zero(e) .or. .not. ieee_is_finite(e)) then
          relatively_within = .false.
-      else if (.not. ieee_is_finite(e)) then
-         relatively_within = within(e, a, 0.0_dp)
       else
          relatively_within = within(e, a, tol * abs(e))
       end if

@@ -2,16 +2,23 @@
 !>
 !>    pf_preprocess <input.pf> <output.F90>
 !>
-!> Supported (the subset of pFUnit 4.x that interphase uses): `@test` / `@test(...)` (options are
-!> ignored), `@before`, `@after`, each on its own line before a module subroutine without arguments,
-!> and one-line assertions `@assertXxx(...)` whose names are in ASSERTIONS. Other lines are copied
+!> Supported (the subset of pFUnit 4.x that interphase uses): `@test` (without options), `@before`,
+!> `@after`, each on its own line before a module subroutine without arguments, and one-line
+!> assertions `@assertXxx(...)` whose names are in ASSERTIONS. Other lines are copied
 !> verbatim. An assertion becomes `call funit_location(file, line)`, `call assertXxx(...)` and
 !> `if (anyExceptions()) return`, with `#line` markers so that compiler messages (and backtraces)
 !> point at the .pf lines. After the file a module `wrap_<module>` is appended whose `run_suite` runs the
 !> tests in file order through funit_run_test. Anything else starting with `@`, an assertion with a
 !> trailing comment, an @assert line that real pFUnit would truncate (over 132 - 8 columns without
-!> its indentation), a @test/@before/@after before anything but a plain `subroutine` line (real
-!> pFUnit skips `recursive subroutine` etc. in silence), or a module not named like the file is an error: message `file:line: error: ...`
+!> its indentation), a @test/@before/@after before anything but a line of the one form real pFUnit
+!> reads, `subroutine name()` with an optional comment (it skips `recursive subroutine`,
+!> `subroutine name() bind(c)`, a continued line etc. in silence after @test, and stops after
+!> @before/@after, where a `#` line is not allowed either), @test options (real pFUnit gives them
+!> meaning: ifdef=, npes=, ...), a file whose `module name` lines (the form real pFUnit reads:
+!> nothing after the name, not even a comment) are not exactly one, named like the file, a module
+!> name longer than 57 characters (real pFUnit's suite function `<module>_suite`), or a test whose
+!> registration line in real pFUnit's generated code (`      <test>, setUp=<before>,
+!> tearDown=<after>))`) would pass 132 columns is an error: message `file:line: error: ...`
 !> on standard error, no output file, exit status 1.
 program pf_preprocess
    use, intrinsic :: iso_fortran_env, only: error_unit, iostat_eor, iostat_end
@@ -19,6 +26,8 @@ program pf_preprocess
 
    !> Longest Fortran name.
    integer, parameter :: MAX_NAME_LEN = 63
+   !> Suffix of the suite function real pFUnit generates for a module (`<module>_suite`).
+   character(len=*), parameter :: PFUNIT_SUITE_SUFFIX = '_suite'
    !> Longest free-form line; a longer generated statement is continued on further lines
    !> (pieces of at least MIN_CHUNK_LEN characters, whatever the indentation).
    integer, parameter :: MAX_LINE_LEN = 132, MIN_CHUNK_LEN = 60
@@ -47,7 +56,9 @@ program pf_preprocess
    character(len=:), allocatable :: in_path, out_path, pf_file, module_name, line, text
    character(len=:), allocatable :: before_name, after_name
    type(name_t), allocatable :: tests(:)
-   integer :: in_unit, out_unit, ios, line_no, out_line, pending, pending_line
+   !> the line of each test's subroutine statement
+   integer, allocatable :: test_lines(:)
+   integer :: in_unit, out_unit, ios, line_no, out_line, pending, pending_line, module_lines
    logical :: module_found, at_end
 
    call get_arguments(in_path, out_path)
@@ -63,7 +74,8 @@ program pf_preprocess
    open (newunit=out_unit, file=out_path, status='replace', action='write', iostat=ios)
    if (ios /= 0) call stop_usage('cannot write ' // out_path)
 
-   allocate (tests(0))
+   allocate (tests(0), test_lines(0))
+   module_lines = 0
    before_name = ''
    after_name = ''
    module_found = .false.
@@ -80,8 +92,13 @@ program pf_preprocess
       if (text(1:min(1, len(text))) == '@') then
          call translate_directive()
       else
+         ! (real pFUnit reads the line after @before/@after skipping only blank and `!` lines)
+         if ((pending == BEFORE .or. pending == AFTER) .and. text(1:min(1, len(text))) == '#') &
+            call fail(line_no, trim(DIRECTIVE_NAMES(pending)) // ' (line ' // int_str(pending_line) // &
+            ') must be followed by its subroutine line: real pFUnit reads the next line that is not blank or ' &
+            // 'a "!" comment as the subroutine statement, and stops at a preprocessor line')
          if (pending /= NONE .and. is_statement(text)) call take_procedure()
-         if (is_module_statement(text)) module_found = .true.
+         call check_module_statement()
          call emit(line)
       end if
    end do
@@ -89,6 +106,11 @@ program pf_preprocess
    if (pending /= NONE) call fail(pending_line, trim(DIRECTIVE_NAMES(pending)) // ' is not followed by a subroutine')
    if (.not. module_found) call fail(1, 'no "module ' // module_name // '" statement: pFUnit needs each .pf file to ' &
       // 'hold one module named like the file')
+   if (len(module_name) + len(PFUNIT_SUITE_SUFFIX) > MAX_NAME_LEN) call fail(1, 'module name "' // module_name // &
+      '" is ' // int_str(len(module_name)) // ' characters: real pFUnit names the suite function "' // module_name // &
+      PFUNIT_SUITE_SUFFIX // '", longer than ' // int_str(MAX_NAME_LEN) // ' (at most ' // &
+      int_str(MAX_NAME_LEN - len(PFUNIT_SUITE_SUFFIX)) // ' characters)')
+   call check_registration_lines()
    call emit_wrapper()
    close (out_unit)
 
@@ -115,7 +137,10 @@ contains
             pending = TEST
             if (len(rest) > 0) then
                if (rest(1:1) /= '(' .or. matching_paren(rest) /= len(rest)) &
-                  call fail(line_no, 'expected "@test" or "@test(options)" alone on the line')
+                  call fail(line_no, 'expected "@test" alone on the line')
+               call fail(line_no, 'test options ("@test' // rest // '") are not supported by pfunit_lite: real ' &
+                  // 'pFUnit gives them meaning (ifdef= leaves the test out unless the macro is defined, npes= ' &
+                  // 'makes it an MPI test, ...) that pfunit_lite cannot reproduce; write "@test" alone')
             end if
          else
             pending = merge(BEFORE, AFTER, lower(name) == 'before')
@@ -181,10 +206,22 @@ contains
       end do
       call split_word(rest, word, after_name_text)
       if (len(word) == 0) call fail(line_no, 'subroutine name expected')
+      if (.not. pfunit_reads_tail(after_name_text)) then
+         if (pending == TEST) then
+            call fail(line_no, '@test (line ' // int_str(pending_line) // ') must be followed by a line of the form ' &
+               // '"subroutine ' // word // '()", with nothing after it but a comment: real pFUnit reads no other ' &
+               // 'form of the line (a continued line, bind(c), a second statement ...) and skips it in silence, ' &
+               // 'taking the next plain subroutine as the test')
+         else
+            call fail(line_no, trim(DIRECTIVE_NAMES(pending)) // ' (line ' // int_str(pending_line) // &
+               ') must be followed by a line of the form "subroutine ' // word // '()", with nothing after it ' &
+               // 'but a comment: real pFUnit stops at any other form ("Improper format in declaration of test ' &
+               // 'procedure")')
+         end if
+      end if
       if (len(after_name_text) > 0) then
          if (after_name_text(1:1) == '(') then
-            close_at = matching_paren(after_name_text)
-            if (close_at == 0) close_at = len(after_name_text)
+            close_at = index(after_name_text, ')')
             if (len_trim(after_name_text(2:close_at - 1)) > 0) call fail(line_no, 'test procedure "' // word // &
                '" must take no arguments (parameterised tests, @testCase, are not supported by pfunit_lite)')
          end if
@@ -193,6 +230,7 @@ contains
       select case (pending)
       case (TEST)
          tests = [tests, name_t(word)]
+         test_lines = [test_lines, line_no]
       case (BEFORE)
          if (len(before_name) > 0) call fail(line_no, 'a second @before in the module')
          before_name = word
@@ -203,14 +241,74 @@ contains
       pending = NONE
    end subroutine take_procedure
 
+   !> What may follow the name on a test procedure's line for real pFUnit, whose pattern is
+   !> `\s*subroutine\s+(\w*)\s*(\([\w\s,]*\))?\s*(!.*)*$`: nothing, a comment, or a parenthesised
+   !> list of names, blanks and commas followed by nothing or a comment (tail: left-adjusted, trimmed).
+   pure logical function pfunit_reads_tail(tail)
+      character(len=*), intent(in) :: tail
+      character(len=:), allocatable :: after
+      integer :: close_at, i
+      pfunit_reads_tail = .true.
+      if (len(tail) == 0) return
+      if (tail(1:1) == '!') return
+      pfunit_reads_tail = .false.
+      if (tail(1:1) /= '(') return
+      close_at = index(tail, ')')
+      if (close_at == 0) return
+      do i = 2, close_at - 1
+         if (.not. (is_name_char(tail(i:i)) .or. tail(i:i) == ' ' .or. tail(i:i) == TAB .or. tail(i:i) == ',')) return
+      end do
+      after = strip_leading(tail(close_at + 1:))
+      pfunit_reads_tail = len(after) == 0
+      if (.not. pfunit_reads_tail) pfunit_reads_tail = after(1:1) == '!'
+   end function pfunit_reads_tail
+
+   !> A `module` line (text): real pFUnit takes every line `\s*module\s+(\w*)\s*$` as the suite's
+   !> module, the last one winning, and no other form (a trailing comment makes the file module-less
+   !> for it). Exactly one such line, named like the file, is accepted here.
+   subroutine check_module_statement()
+      character(len=:), allocatable :: word, rest, name, tail
+      call split_word(text, word, rest)
+      if (lower(word) /= 'module') return
+      call split_word(rest, name, tail)
+      if (len(tail) == 0 .and. len(rest) == len(name)) then
+         module_lines = module_lines + 1
+         if (module_lines > 1) call fail(line_no, 'a second module statement ("' // text // '"): real pFUnit ' &
+            // 'takes the last "module name" line of a .pf file as the module of its tests; keep one module ' &
+            // 'in a .pf file, named like the file')
+         if (lower(name) /= lower(module_name)) call fail(line_no, 'module "' // name // '": pFUnit needs each ' &
+            // '.pf file to hold one module named like the file, "' // module_name // '"')
+         module_found = .true.
+      else if (lower(name) == lower(module_name) .and. tail(1:min(1, len(tail))) == '!') then
+         call fail(line_no, 'a comment after "module ' // name // '": real pFUnit reads the module statement ' &
+            // 'only with nothing after the name, and would take the file as holding no module; put the ' &
+            // 'comment on its own line')
+      end if
+   end subroutine check_module_statement
+
+   !> Real pFUnit registers each test with a generated line `      <test>, setUp=<before>,
+   !> tearDown=<after>))` (the hooks only where given), which gfortran refuses beyond 132 columns
+   !> ("Line truncated").
+   subroutine check_registration_lines()
+      integer :: i, columns
+      do i = 1, size(tests)
+         columns = 6 + len(tests(i)%s) + 2
+         if (len(before_name) > 0) columns = columns + len(', setUp=') + len(before_name)
+         if (len(after_name) > 0) columns = columns + len(', tearDown=') + len(after_name)
+         if (columns > MAX_LINE_LEN) call fail(test_lines(i), 'test "' // tests(i)%s // '": real pFUnit registers ' &
+            // 'it with a generated line of ' // int_str(columns) // ' columns (the test''s name, then setUp= and ' &
+            // 'tearDown= with the @before and @after names), over ' // int_str(MAX_LINE_LEN) // &
+            ' ("Line truncated"): shorten the names')
+      end do
+   end subroutine check_registration_lines
+
    !> Appends `module wrap_<module>` with `run_suite`, which runs every test in file order.
    subroutine emit_wrapper()
       character(len=:), allocatable :: wrap_name, hooks
       integer :: i
 
       wrap_name = WRAP_PREFIX // lower(module_name)
-      if (len(wrap_name) > MAX_NAME_LEN) call fail(1, 'module name "' // module_name // '" is too long for ' &
-         // 'pfunit_lite (at most ' // int_str(MAX_NAME_LEN - len(WRAP_PREFIX)) // ' characters)')
+      ! (within MAX_NAME_LEN: the module name is checked against real pFUnit's shorter limit)
       hooks = ''
       if (len(before_name) > 0) hooks = hooks // ', before=' // before_name
       if (len(after_name) > 0) hooks = hooks // ', after=' // after_name
@@ -322,16 +420,6 @@ contains
       word = s(1:i - 1)
       rest = trim(strip_leading(s(i:)))
    end subroutine split_word
-
-   !> `module <module_name>` (not `module procedure`, `module subroutine`, ...).
-   pure logical function is_module_statement(statement)
-      character(len=*), intent(in) :: statement
-      character(len=:), allocatable :: word, rest, name, tail
-      call split_word(statement, word, rest)
-      call split_word(rest, name, tail)
-      is_module_statement = lower(word) == 'module' .and. lower(name) == lower(module_name) &
-         .and. (len(tail) == 0 .or. tail(1:min(1, len(tail))) == '!')
-   end function is_module_statement
 
    !> Not blank, not a comment, not a preprocessor line.
    pure logical function is_statement(stripped)
