@@ -135,7 +135,7 @@ contains
       type(interface_state_type) :: old, new
       real(dp) :: s(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS)
       integer :: code, i, j, n, nsv
-      logical :: viscous
+      logical :: viscous, bad_dt
       character(len=MESSAGE_LEN) :: message
 
       message = ''
@@ -155,9 +155,12 @@ contains
       ! a time increment, where given, is a finite dt >= 0 whatever the material (only viscous
       ! regularisation reads it)
       if (present(dt)) then
-         if (.not. (is_finite(dt) .and. dt >= 0.0_dp)) then
+         ! (finite first, then the sign: no ordered comparison with a NaN, which raises the invalid flag)
+         bad_dt = .not. is_finite(dt)
+         if (.not. bad_dt) bad_dt = dt < 0.0_dp
+         if (bad_dt) then
             code = STATUS_BAD_TIME_INCREMENT
-            write (message, '(a,es12.4,a)') 'dt = ', dt, ' s: the time increment must be finite and >= 0'
+            write (message, '(a,es12.4e3,a)') 'dt = ', dt, ' s: the time increment must be finite and >= 0'
             call finish()
             return
          end if
@@ -242,7 +245,7 @@ contains
       real(dp) :: s(3), ds(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS), dt
       integer(c_size_t) :: row, n_done
       integer :: code, i, j, n, nsv, at, ios
-      logical :: viscous, timed
+      logical :: viscous, timed, bad_dt
       character(len=MESSAGE_LEN) :: message
       character(len=32) :: row_text
 
@@ -292,9 +295,11 @@ contains
             dt = times(row) - times(row - 1)
             ! the times finite and not decreasing, whatever the material (only viscous
             ! regularisation reads them)
-            if (.not. (is_finite(dt) .and. dt >= 0.0_dp)) then
+            bad_dt = .not. is_finite(dt)
+            if (.not. bad_dt) bad_dt = dt < 0.0_dp
+            if (bad_dt) then
                code = STATUS_BAD_TIME_INCREMENT
-               write (message, '(a,i0,a,es12.4,a,es12.4,a,es12.4,a)', iostat=ios) 'row ', row - 1, ': dt = ', dt, &
+               write (message, '(a,i0,a,es12.4e3,a,es12.4e3,a,es12.4e3,a)', iostat=ios) 'row ', row - 1, ': dt = ', dt, &
                   ' s (time ', times(row), ' after ', times(row - 1), '): the times must be finite and must not decrease'
                call finish()
                return

@@ -276,7 +276,10 @@ contains
       real(dp) :: ratio, weight, d_v
       status = STATUS_BAD_TIME_INCREMENT
       if (.not. present(dt)) return
-      if (.not. (is_finite(dt) .and. dt >= 0.0_dp)) return
+      ! (finite first, then the sign: no ordered comparison with a NaN, which raises the invalid
+      ! flag, and a host with floating-point traps stops there)
+      if (.not. is_finite(dt)) return
+      if (dt < 0.0_dp) return
       status = STATUS_OK
       ratio = dt/eta
       weight = 1.0_dp                                 ! dt/eta beyond the range of reals: inviscid

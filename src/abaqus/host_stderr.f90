@@ -1,6 +1,8 @@
 !> Message hook for stand-alone hosts (the single-point driver, benchmarks, research codes):
-!> writes the adapter's message to standard error. It never stops the program: the caller sees
-!> the failure through PNEWDT < 1 and decides.
+!> writes the adapter's message to standard error. It never stops the program: a UMAT caller sees
+!> a failure through PNEWDT < 1, a VUMAT caller a failed point through its STATEV(9) = 1; a fatal
+!> VUMAT error (the block held) only through this message: a host that must stop on it links its
+!> own interphase_host_message instead (docs/abaqus.md).
 subroutine interphase_host_message(severity, message)
    use, intrinsic :: iso_fortran_env, only: error_unit
    use interphase_status, only: severity_label

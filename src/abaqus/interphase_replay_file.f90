@@ -5,11 +5,14 @@
 !> fails writes the call's inputs there, as the namelist group `&replay` (PROPS, the incoming
 !> STATEV, STRESS, SSE and SPD, STRAN, DSTRAN, TIME, DTIME, the element, point and increment, the
 !> message, and the files INTERPHASE_TABLE and INTERPHASE_RCURVE name), every real with 17
-!> significant digits so that it reads back bit for bit. One file per element, point and
-!> increment: interphase-replay-<source>-e<NOEL>-p<NPT>-k<KINC>.nml. Without the variable nothing
-!> is written and nothing is looked up but the variable.
+!> significant digits so that it reads back bit for bit. One file per failed call, never one
+!> written over: interphase-replay-<source>-e<NOEL>-p<NPT>-k<KINC>.nml, or with -2, -3, ... before
+!> `.nml` where that name is taken (a retried increment, a later step whose increments count
+!> from 1 again, another block of the VUMAT's at the same block point, an earlier run). Without
+!> the variable nothing is written and nothing is looked up but the variable.
 !>
-!> Thread-safe: no module data; each call opens its own unit (`newunit`) on its own file.
+!> Thread-safe: no module data; each call opens its own unit (`newunit`) on a file it creates
+!> (status 'new': two calls cannot take the same name).
 module interphase_replay_file
    use interphase_kinds, only: dp
    implicit none
@@ -20,11 +23,14 @@ module interphase_replay_file
    character(len=*), parameter :: REPLAY_VARIABLE = 'INTERPHASE_REPLAY_DIR'
    !> Largest PROPS and STATEV a replay file holds.
    integer, parameter :: REPLAY_MAX_PROPS = 64, REPLAY_MAX_STATEV = 64
+   !> Most files of one name (the name itself, then -2 ... -REPLAY_MAX_COPIES).
+   integer, parameter :: REPLAY_MAX_COPIES = 999
 
 contains
 
    !> Write the replay file of a failed call if INTERPHASE_REPLAY_DIR names a folder; `written`
-   !> is its path ('' when none was written: no variable, or the file could not be opened).
+   !> is its path ('' when none was written: no variable, the file could not be created, or
+   !> REPLAY_MAX_COPIES files of its name exist).
    subroutine write_replay(source, message, props, statev, stress, sse, spd, stran, dstran, time, &
          dtime, noel, npt, kinc, written, ndi, nshr)
       character(len=*), intent(in) :: source       !! 'umat' or 'vumat'
@@ -39,18 +45,24 @@ contains
       integer, intent(in), optional :: ndi, nshr  !! the host's NDI, NSHR (default 1, NTENS - 1)
       character(len=:), allocatable :: folder, path
       character(len=64) :: name
-      integer :: unit, ios
+      character(len=8) :: copy
+      integer :: unit, ios, n
+      logical :: exists
 
       written = ''
       if (.not. environment(REPLAY_VARIABLE, folder)) return
-      write (name, '(a,a,a,i0,a,i0,a,i0,a)') 'interphase-replay-', source, '-e', noel, '-p', npt, '-k', kinc, '.nml'
-      if (folder(len(folder):len(folder)) == '/') then
-         path = folder//trim(name)
-      else
-         path = folder//'/'//trim(name)
-      end if
-      open (newunit=unit, file=path, status='replace', action='write', form='formatted', iostat=ios)
-      if (ios /= 0) return
+      write (name, '(a,a,a,i0,a,i0,a,i0)') 'interphase-replay-', source, '-e', noel, '-p', npt, '-k', kinc
+      if (folder(len(folder):len(folder)) /= '/') folder = folder//'/'
+      do n = 1, REPLAY_MAX_COPIES
+         copy = ''
+         if (n > 1) write (copy, '(a,i0)') '-', n
+         path = folder//trim(name)//trim(copy)//'.nml'
+         open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=ios)
+         if (ios == 0) exit
+         ! a name that is taken: the next copy's; any other failure (no folder, not writable): none
+         inquire (file=path, exist=exists)
+         if (.not. exists .or. n == REPLAY_MAX_COPIES) return
+      end do
       call write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, dstran, &
          time, dtime, noel, npt, kinc, ios, ndi=ndi, nshr=nshr)
       close (unit)

@@ -23,13 +23,16 @@
 !> (interphase_block, column by column); the others the point update
 !> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
-!> Failures: bad sizes, PROPS, density (outside [1e-50, 1e50]) or incoming STATEV, a NaN or Inf
-!> in stressOld, the old energies or strainInc, or one of them beyond 1e150 (strainInc: 1e50)
-!> (STATUS_BAD_HOST_INPUT), a custom RVE table or R-curve
+!> Failures: bad sizes (a negative nblock too), PROPS, density (outside [1e-50, 1e50]) or
+!> incoming STATEV (the separations STATEV(6:8) not finite or beyond 1e20 mm), with viscous
+!> regularisation a dt that is negative or not finite (STATUS_BAD_TIME_INCREMENT), a NaN or Inf
+!> in stressOld, the old energies or a point's separation increment, or one of them beyond 1e150
+!> (the increment: 1e50 mm) (STATUS_BAD_HOST_INPUT), a custom RVE table or R-curve
 !> selected but not loaded (VEXTERNALDB), and a tabulated R-curve that does not cover D0 or the
 !> damage a point reaches, are fatal (the whole block is held at
 !> its old values and the host hook is called with SEVERITY_FATAL; Abaqus then stops). A point
-!> whose update fails (e.g. a non-finite increment, or a separation beyond |s_i| = 1e20 mm) keeps its old stress, state and energies,
+!> whose update fails on admissible inputs (a separation s_old + ds beyond |s_i| = 1e20 mm,
+!> inadmissible coefficients) keeps its old stress, state and energies,
 !> gets STATEV(SV_FAILED) = 1, and one warning per call names the number of failed points and
 !> the first one; the other points of the block are updated (Abaqus/Explicit has no PNEWDT).
 !> With INTERPHASE_REPLAY_DIR set, the first failed point's call is written there as a UMAT call
@@ -44,9 +47,10 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_layout, only: NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
       SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID, NSTATV_SHARED, NSTATV_VISCOUS
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
-      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_RCURVE_OUT_OF_RANGE, status_message, STATUS_BAD_HOST_INPUT
+      SEVERITY_WARNING, SEVERITY_FATAL, STATUS_RCURVE_OUT_OF_RANGE, status_message, STATUS_BAD_HOST_INPUT, &
+      STATUS_BAD_STATE, STATUS_BAD_TIME_INCREMENT
    use interphase_finite, only: is_within
-   use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX
+   use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX, SEPARATION_MAX
    use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_state, only: interface_state_type, unpack_statev, pack_statev, count_invalid_states, state_slots
    use interphase_kernel, only: update_point
@@ -87,6 +91,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    real(dp), parameter :: THICKNESS = 1.0_dp
    !> Separation per tensor shear strain: engineering shear = 2 x tensor shear.
    real(dp), parameter :: SHEAR_FACTOR = 2.0_dp
+   !> Largest finite time increment (s): any finite dt is taken (the kernel's test).
+   real(dp), parameter :: HUGE_DT = huge(1.0_dp)
 
    !> Points updated per pass. The passes' working arrays are local (on the stack, 144 KB; an
    !> automatic array sized by nblock would be allocated on the heap per call). Long passes let
@@ -101,11 +107,13 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    logical :: ok(CHUNK)
    real(dp) :: s_point(3), sv(NSTATV_VISCOUS)
    real(dp) :: traction(3), tangent(3, 3), psi_first
-   logical :: blocked, packaging, viscous, bad_state
+   logical :: blocked, packaging, viscous, bad_state, bad_dt
    integer :: nsv   !! STATEV slots of the state (state_slots)
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
+   integer :: ios
    character(len=MESSAGE_LEN) :: message, first_message
+   character(len=40) :: increment_text
 
    ntens = ndir + nshr
    nt = nshr
@@ -115,6 +123,11 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    ! arrays cost the vectorised loops ~2.5 ns per point with gfortran, docs/performance.md).
    update: block
       ! ---- setup checks: fatal, the whole block is held ----------------------------------------
+      if (nblock < 0) then
+         write (message, '(a,i0,a)') 'nblock = ', nblock, ': the number of points in a call cannot be negative'
+         fatal_code = -1
+         exit update
+      end if
       if (ndir /= 1 .or. (nshr /= 1 .and. nshr /= 2)) then
          write (message, '(a,i0,a,i0,a)') 'ndir = ', ndir, ', nshr = ', nshr, &
             ': interphase needs a cohesive element with ndir = 1 and nshr = 1 (2-D) or 2 (3-D)'
@@ -135,6 +148,22 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       end if
       viscous = params%viscosity > 0.0_dp
       nsv = state_slots(params)
+      ! viscous regularisation needs dt: one value for the whole block, the host's (as the UMAT's
+      ! DTIME: fatal)
+      ! (is_within before the sign: no comparison with a NaN, which would raise the invalid flag)
+      if (viscous) then
+         if (.not. is_within(dt, HUGE_DT)) then
+            bad_dt = .true.
+         else
+            bad_dt = dt < 0.0_dp
+         end if
+         if (bad_dt) then
+            write (message, '(a,es12.4e3,a)', iostat=ios) 'dt = ', dt, &
+               ' s: viscous regularisation needs a finite dt >= 0'
+            fatal_code = STATUS_BAD_TIME_INCREMENT
+            exit update
+         end if
+      end if
       ! a custom table or R-curve that was not loaded at start-up (VEXTERNALDB)
       call check_run_time_data(params, status, message)
       if (status /= STATUS_OK) then
@@ -316,7 +345,32 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
             end if
             nfailed = nfailed + nbad
-            ! a failed point's increment may not be finite: no work is counted on it
+            ! a failed point whose increment, or incoming separation STATEV(6:8) (the VUMAT's own
+            ! output, within SEPARATION_MAX), is not finite or out of range failed on the host's
+            ! data, not on the law: fatal, as the energies' check below is for the other points
+            do k = 1, n
+               if (ok(k)) cycle
+               km = k0 + k - 1
+               if (.not. all(is_within(ds(k, 1:ntens), HOST_INCREMENT_MAX))) then
+                  write (increment_text, '(3es12.4e3)', iostat=ios) ds(k, 1:ntens)
+                  write (message, '(a,i0,a,a,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
+                     ': separation increment (mm)', trim(increment_text), &
+                     ' (T0 strainInc, tensor shears x 2): the host must pass finite increments within ', &
+                     HOST_INCREMENT_MAX, ' mm'
+                  fatal_code = STATUS_BAD_HOST_INPUT
+                  exit update
+               end if
+               if (.not. all(is_within(stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1), SEPARATION_MAX))) then
+                  write (increment_text, '(3es12.4e3)', iostat=ios) stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1)
+                  write (message, '(a,i0,a,i0,a,i0,a,a,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
+                     ': incoming STATEV(', SV_SEP_N, ':', SV_SEP_N + ntens - 1, ') separation (mm)', &
+                     trim(increment_text), ': must be finite within ', SEPARATION_MAX, &
+                     ' mm (what the VUMAT returned last)'
+                  fatal_code = STATUS_BAD_STATE
+                  exit update
+               end if
+            end do
+            ! (no work is counted on a failed point: its increment is zeroed for the energies' pass)
             do j = 1, ntens
                ds(1:n, j) = merge(ds(1:n, j), 0.0_dp, ok(1:n))
             end do
@@ -337,11 +391,15 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   is_within(enerinternold(km), HOST_VALUE_MAX) .and. is_within(enerinelasold(km), HOST_VALUE_MAX) &
                   .and. all(is_within(ds(k, 1:ntens), HOST_INCREMENT_MAX)))) exit
             end do
-            write (first_message, '(3es11.3)') stressold(km, :)
-            write (message, '(a,i0,a,a,a,2es11.3,a,es9.1e3,a,es9.1e3,a)') 'block point ', km, ': stressOld (MPa)', &
-               trim(first_message), ', enerInternOld, enerInelasOld ', enerinternold(km), enerinelasold(km), &
-               ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the VUMAT returned last) '// &
-               'and separation increments within ', HOST_INCREMENT_MAX, ' mm'
+            k = min(k, n)
+            km = k0 + k - 1
+            ! (e3 exponents: values up to 1e150 and beyond are printed)
+            write (first_message, '(3es11.3e3)', iostat=ios) stressold(km, :)
+            write (increment_text, '(3es11.3e3)', iostat=ios) ds(k, 1:ntens)
+            write (message, '(a,i0,a,a,a,2es11.3e3,a,a,a,es9.1e3,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
+               ': stressOld (MPa)', trim(first_message), ', energies', enerinternold(km), &
+               enerinelasold(km), ', increment (mm)', trim(increment_text), ': the host must pass finite values within ', &
+               HOST_VALUE_MAX, ', increments within ', HOST_INCREMENT_MAX, ' mm'
             fatal_code = STATUS_BAD_HOST_INPUT
             exit update
          end if
@@ -365,6 +423,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             character(len=2*MESSAGE_LEN) :: full
             character(len=:), allocatable :: replay
             real(dp) :: sep_old(3), dsep(3), rho_first
+            integer :: kinc     !! the increment's number for the replay file's name, totalTime/dt
             write (full, '(a,a,i0,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
                ' points failed and were held at their old stress and state (STATEV(', SV_FAILED, &
                ') = 1); first at block point ', first_failed, ': ', status_message(first_status), ': ', trim(first_message)
@@ -375,10 +434,15 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             dsep(1) = THICKNESS*straininc(first_failed, 1)
             dsep(2:ntens) = SHEAR_FACTOR*THICKNESS*straininc(first_failed, 2:ntens)
             rho_first = density(first_failed)*THICKNESS
+            ! (0 where dt is not positive or the quotient is not a default integer)
+            kinc = 0
+            if (dt > 0.0_dp .and. totaltime >= 0.0_dp) then
+               if (totaltime/dt < real(huge(kinc), dp) - 1.0_dp) kinc = nint(totaltime/dt)
+            end if
             call write_replay('vumat', trim(full), props, stateold(first_failed, 1:NSTATV_SHARED), &
                stressold(first_failed, :), (enerinternold(first_failed) - enerinelasold(first_failed))*rho_first, &
                enerinelasold(first_failed)*rho_first, sep_old(1:ntens), dsep(1:ntens), [steptime, totaltime], dt, &
-               first_failed, 0, nint(totaltime/max(dt, tiny(1.0_dp))), replay)
+               first_failed, 0, kinc, replay)
             if (len(replay) > 0) full = trim(full)//' (replay file: '//replay//')'
             call interphase_host_message(SEVERITY_WARNING, trim(full))
          end block
