@@ -103,7 +103,7 @@ program interphase_calibrate
    if (params%viscosity > 0.0_dp) call fail(case_path//': &material: viscosity = '// &
       real_to_string(params%viscosity)//' s: the calibration''s tests are quasi-static (rate-independent '// &
       'fracture energies): set it to 0')
-   call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
+   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message)
    if (.not. ok) call fail(message)
 
    call monotonic(1, 'N', run%props(PROP_S0_N), run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)

@@ -738,23 +738,39 @@ contains
    end subroutine add_name
 
    !> Start-up, as UEXTERNALDB does in Abaqus: read the custom RVE table and the tabulated R-curve
-   !> a case names (empty path: none), once, before any update.
-   subroutine load_start_up_data(table_path, rcurve_path, ok, message)
+   !> a case names (empty path: none), once, before any update. A refusal names where the file
+   !> was given: `context` (the case file and group, e.g. 'case.nml: &material: '), then the entry.
+   subroutine load_start_up_data(table_path, rcurve_path, context, ok, message, rcurve_entry)
       character(len=*), intent(in) :: table_path   !! custom RVE table, or ''
       character(len=*), intent(in) :: rcurve_path  !! tabulated R-curve, or ''
+      character(len=*), intent(in) :: context      !! the case file and group that name them
       logical, intent(out) :: ok                   !! true when everything named was read
       character(len=:), allocatable, intent(out) :: message  !! the reason when not ok
+      !> the entry that names the R-curve file (default rcurve_file, as &material and &joint)
+      character(len=*), intent(in), optional :: rcurve_entry
       integer :: status
       character(len=MESSAGE_LEN) :: text
 
       ok = .true.
       message = ''
       status = STATUS_OK
-      if (len(table_path) > 0) call load_custom_table(table_path, status, text)
-      if (status == STATUS_OK .and. len(rcurve_path) > 0) call load_rcurve(rcurve_path, status, text)
+      if (len(table_path) > 0) then
+         call load_custom_table(table_path, status, text)
+         if (status /= STATUS_OK) message = context//'table: '
+      end if
+      if (status == STATUS_OK .and. len(rcurve_path) > 0) then
+         call load_rcurve(rcurve_path, status, text)
+         if (status /= STATUS_OK) then
+            if (present(rcurve_entry)) then
+               message = context//rcurve_entry//': '
+            else
+               message = context//'rcurve_file: '
+            end if
+         end if
+      end if
       if (status /= STATUS_OK) then
          ok = .false.
-         message = status_message(status)//': '//trim(text)
+         message = message//status_message(status)//': '//trim(text)
       end if
    end subroutine load_start_up_data
 

@@ -58,7 +58,7 @@ program interphase_point
    call read_history(run%history_path, history, ok, message)
    if (.not. ok) call fail(message)
    ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does)
-   call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
+   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message)
    if (.not. ok) call fail(message)
    summary = material_summary(run%props)
    write (output_unit, '(a)') run%name//': '//summary
@@ -135,8 +135,9 @@ contains
          int_to_string(replayed%noel)//', point '//int_to_string(replayed%npt)//', increment '// &
          int_to_string(replayed%kinc)//' that failed with: '//trim(replayed%failure)
       write (output_unit, '(a)') 'material: '//material_summary(replayed%props(1:replayed%nprops))
-      call load_start_up_data(trim(replayed%table), trim(replayed%rcurve), ok, message)
-      if (.not. ok) call fail(path//': the files the run had loaded: '//message)
+      call load_start_up_data(trim(replayed%table), trim(replayed%rcurve), &
+         path//': &replay (the files the run had loaded): ', ok, message, rcurve_entry='rcurve')
+      if (.not. ok) call fail(message)
       call repeat_replay_call(replayed, failed)
       if (failed) call exit_program(1)
       call exit_program(0)

@@ -54,7 +54,7 @@ program interphase_fe2d
    call read_fe2d_case(case_path, run, ok, message)
    if (.not. ok) call fail(message)
    ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does)
-   call load_start_up_data(run%table_path, run%rcurve_path, ok, message)
+   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &joint: ', ok, message)
    if (.not. ok) call fail(message)
    call build_mesh(run, mesh)
    ! the joint's material, as interphase-point names it (model, table, law, key parameters)
@@ -102,7 +102,9 @@ program interphase_fe2d
       real_to_string(result%rows(COL_SHEAR, result%nrows))//' N at normal force '// &
       real_to_string(result%rows(COL_NORMAL, result%nrows))//' N (step '// &
       int_to_string(nint(result%rows(COL_STEP, result%nrows)))//')'
-   if (run%plot .and. .not. no_plot) call plot_csv()
+   ! the gnuplot script whenever the case plots (with --no-plot too: `gnuplot SCRIPT` draws the
+   ! figure later), the PNG unless --no-plot
+   if (run%plot) call plot_csv(.not. no_plot)
 
 contains
 
@@ -126,23 +128,34 @@ contains
          '  elements calling the interphase UMAT) and writes the load-displacement CSV, the', &
          '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).', &
          '  CASE.nml groups: &geometry, &mesh, &brick, &joint (the &material entries of interphase-point),', &
-         '  &loading; documented in drivers/fe2d/README.md (installed: share/doc/interphase);', &
+         '  &loading; documented in drivers/fe2d/README.md (installed:', &
+         '  share/doc/interphase/drivers/fe2d/README.md);', &
          '  cases to start from in share/interphase/fe2d-cases.'
    end subroutine print_usage
 
-   subroutine plot_csv()
+   !> Write the gnuplot script next to the CSV and, when `draw` and gnuplot is on PATH, run it.
+   subroutine plot_csv(draw)
+      logical, intent(in) :: draw                 !! run gnuplot (not --no-plot)
       character(len=:), allocatable :: directory, stem, script_name
 
-      if (.not. gnuplot_available()) then
-         write (output_unit, '(a)') 'gnuplot not found: PNG skipped (install Debian package gnuplot-nox)'
-         return
-      end if
       directory = directory_of(csv_path)
       stem = stem_of(csv_path)
       script_name = stem//'.gp'
+      message = refuse_special_output(join_path(directory, script_name), case_path//': the plot script')
+      if (len(message) > 0) call fail(message)
       call write_curve_plot_script(join_path(directory, script_name), base_name(csv_path), &
          stem//'.png', run%name, run%props(PROP_MU), ok, message)
       if (.not. ok) call fail(message)
+      if (.not. draw) then
+         write (output_unit, '(a)') run%name//': plot script written to '//join_path(directory, script_name)// &
+            ' (--no-plot; in its folder, gnuplot '//script_name//' draws '//stem//'.png)'
+         return
+      end if
+      if (.not. gnuplot_available()) then
+         write (output_unit, '(a)') 'gnuplot not found: PNG skipped (install Debian package gnuplot-nox); in '// &
+            'the folder of '//script_name//', gnuplot '//script_name//' draws it later'
+         return
+      end if
       call run_gnuplot(directory, script_name, ok, message)
       if (.not. ok) call fail(message)
       write (output_unit, '(a)') run%name//': plot written to '//join_path(directory, stem//'.png')

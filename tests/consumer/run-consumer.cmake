@@ -25,6 +25,12 @@ function(run_step what)
 endfunction()
 
 run_step("install" ${CMAKE_COMMAND} --install ${INTERPHASE_BUILD} --prefix ${prefix} --config ${BUILD_TYPE})
+# the documentation where interphase-point's and interphase-fe2d's --help say it is
+foreach(doc IN ITEMS README.md docs/abaqus.md drivers/README.md drivers/fe2d/README.md drivers/python/README.md)
+  if(NOT EXISTS ${prefix}/share/doc/interphase/${doc})
+    message(FATAL_ERROR "consumer test: the install has no share/doc/interphase/${doc}")
+  endif()
+endforeach()
 run_step("configure consumer" ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} -B ${WORK}/build
          -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${BUILD_TYPE} ${compiler_option})
 run_step("build consumer" ${CMAKE_COMMAND} --build ${WORK}/build)
