@@ -12,7 +12,8 @@
 !> the variable nothing is written and nothing is looked up but the variable.
 !>
 !> Thread-safe: no module data; each call opens its own unit (`newunit`) on a file it creates
-!> (status 'new': two calls cannot take the same name).
+!> (status 'new': two calls never write one file; of two that take the same name at the same
+!> instant, one writes none).
 module interphase_replay_file
    use interphase_kinds, only: dp
    implicit none
@@ -57,11 +58,18 @@ contains
          copy = ''
          if (n > 1) write (copy, '(a,i0)') '-', n
          path = folder//trim(name)//trim(copy)//'.nml'
+         ! a name that is taken: the next copy's. (Looked up before the open, not after a failed
+         ! one: flang 19's run time deletes the existing file when an OPEN with status 'new' fails.)
+         inquire (file=path, exist=exists)
+         if (exists) then
+            if (n == REPLAY_MAX_COPIES) return
+            cycle
+         end if
+         ! status 'new': a call that takes the same name at the same instant (another thread) makes
+         ! this open fail, and this call writes none, rather than both writing one file
          open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=ios)
          if (ios == 0) exit
-         ! a name that is taken: the next copy's; any other failure (no folder, not writable): none
-         inquire (file=path, exist=exists)
-         if (.not. exists .or. n == REPLAY_MAX_COPIES) return
+         return                      ! no folder, not writable, or the name taken just now
       end do
       call write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, dstran, &
          time, dtime, noel, npt, kinc, ios, ndi=ndi, nshr=nshr)
