@@ -67,10 +67,23 @@ rc=$?
 if [ $rc -ne 0 ] && grep -q "cannot read parameter file" "$work/dir.out"; then echo "ok   directory_as_file: exit $rc"; else echo "FAIL directory_as_file"; cat "$work/dir.out"; fail=1; fi
 # rve.edp itself validates its arguments
 printf '1\n30\n' > "$work/a.count"
-for args in "-nub 0.5" "-hm -2" "-Em 0" ; do
+for args in "-nub 0.5" "-hm -2" "-Em 0" "-ftipp 0.05" "-Em 2500x" "-Em 1-2" "-Em 1e" "-Em ." "-Em 1e+" "-Em -" ; do
   FreeFem++ -nw -v 0 "$here/rve.edp" -hm 2 -hb 3 -b 25 -Em 1000 -num 0.15 -Eb 16000 -nub 0.15 $args -alist "$work/a.count" -out "$work/rows" > "$work/edp.out" 2>&1
   rc=$?
   if [ $rc -eq 2 ] && grep -q "rve.edp: error:" "$work/edp.out"; then echo "ok   rve.edp $args: exit 2: $(grep -m1 'rve.edp: error' "$work/edp.out")"; else echo "FAIL rve.edp $args (exit $rc)"; cat "$work/edp.out"; fail=1; fi
+done
+# (the messages of the malformed numbers, and the unknown key)
+for args in "-Em 2500x" "-Em 1-2" "-Em 1e" "-Em ." ; do
+  FreeFem++ -nw -v 0 "$here/rve.edp" -hm 2 -hb 3 -b 25 -Em 1000 -num 0.15 -Eb 16000 -nub 0.15 $args -alist "$work/a.count" -out "$work/rows" > "$work/edp.out" 2>&1
+  if grep -q "is not a number" "$work/edp.out"; then echo "ok   rve.edp $args: not a number"; else echo "FAIL rve.edp $args: no 'is not a number'"; cat "$work/edp.out"; fail=1; fi
+done
+FreeFem++ -nw -v 0 "$here/rve.edp" -hm 2 -hb 3 -b 25 -Em 1000 -num 0.15 -Eb 16000 -nub 0.15 -ftipp 0.05 -alist "$work/a.count" -out "$work/rows" > "$work/edp.out" 2>&1
+if grep -q "unknown argument -ftipp" "$work/edp.out"; then echo "ok   rve.edp -ftipp: unknown argument"; else echo "FAIL rve.edp -ftipp"; cat "$work/edp.out"; fail=1; fi
+# well-formed numbers are read (the run stops later, at a = 30 > b)
+for args in "-Em 1.5e+3" "-Em +1000." "-Em .5e4" "-Em 1E3" ; do
+  FreeFem++ -nw -v 0 "$here/rve.edp" -hm 2 -hb 3 -b 25 -Em 1000 -num 0.15 -Eb 16000 -nub 0.15 $args -alist "$work/a.count" -out "$work/rows" > "$work/edp.out" 2>&1
+  rc=$?
+  if [ $rc -eq 2 ] && grep -q "> b" "$work/edp.out"; then echo "ok   rve.edp $args: read"; else echo "FAIL rve.edp $args (exit $rc)"; cat "$work/edp.out"; fail=1; fi
 done
 FreeFem++ -nw -v 0 "$here/rve.edp" -hm 2 -hb 3 -b 25 -Em 1000 -num 0.15 -Eb 16000 -nub 0.15 -alist "$work/a.count" -out "$work/rows" > "$work/edp.out" 2>&1
 rc=$?
