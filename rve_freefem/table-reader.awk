@@ -12,7 +12,10 @@
 # exits 1 (dest is then incomplete); exits 0 otherwise, printing nothing.
 #
 # Read as the loader reads: a carriage return ending a line dropped (CRLF files); a UTF-8
-# byte-order mark refused; every header line "# key = value"; a key the loader reads given once;
+# byte-order mark refused; blanks and tabs before and after a "#"; every header line
+# "# key = value" (the key all before the first " = "); a key the loader reads given once, and not
+# after the "# columns:" line (where the loader refuses it too; it also refuses misspellings of
+# such keys there, which this reader does not look for);
 # b, h, h_m, h_b, E_m, E_b, Chat_TT, Chat_NN one positive number, nu_m and nu_b one number in
 # (-1, 0.5); b and h given; h = h_m + h_b (1e-12 h) where the layers are given; one "# columns:"
 # line naming the 23 columns of format 1 (and I_fNT, format 2), each once; every row as many
@@ -42,12 +45,14 @@ NR == 1 && index($0, "\357\273\277") == 1 {
   refuse("line 1: the file starts with a UTF-8 byte-order mark (bytes EF BB BF): save it without one")
   sub(/^\357\273\277/, "")
 }
-/^#/ {
-  line = $0
-  if (line ~ /^# columns:/) {
+/^[ \t]*#/ {
+  # (as the loader: blanks and tabs before and after the #; the line written as "# " and the rest)
+  rest = $0; sub(/^[ \t]*#[ \t]*/, "", rest)
+  line = "# " rest
+  if (rest ~ /^columns:/) {
     ncolsline++
     if (ncolsline > 1) { refuse("line " NR ": a second \"# columns:\" line"); next }
-    c = line; sub(/^# columns:/, "", c)
+    c = rest; sub(/^columns:/, "", c)
     ncol = split(c, names, " ")
     for (i = 1; i <= ncol; i++) {
       pos[i] = 0
@@ -62,10 +67,17 @@ NR == 1 && index($0, "\357\273\277") == 1 {
     print out > dest
     next
   }
-  if (ncolsline == 0) {
-    if (line !~ /^# [A-Za-z_0-9]+ = ./) refuse("header line is not \"# key = value\": " line)
+  # "key = value": the key all before the first " = " (as the loader, which ignores keys it does
+  # not read)
+  eqpos = index(rest, " = ")
+  if (ncolsline > 0) {
+    # after the header: a key the loader reads would be ignored there, and the loader refuses it
+    if (eqpos >= 2 && (substr(rest, 1, eqpos - 1) in isread))
+      refuse("line " NR ": key \"" substr(rest, 1, eqpos - 1) "\" after the \"# columns:\" line, where the header has ended")
+  } else {
+    if (eqpos < 2) refuse("header line is not \"# key = value\": " $0)
     else {
-      k = line; sub(/^# /, "", k); sub(/ = .*/, "", k); hv = line; sub(/^# [A-Za-z_0-9]+ = /, "", hv)
+      k = substr(rest, 1, eqpos - 1); hv = substr(rest, eqpos + 3)
       if (k in isread) {
         if (k in hdr) refuse("line " NR ": key \"" k "\" given twice")
         else {

@@ -87,8 +87,9 @@ module interphase_rve_table
       real(dp), allocatable :: i_fnt(:)           !! I_fNT of each row (MPa mm); only with has_betti
       logical :: has_elastic = .false.            !! the header gives E_m, nu_m, E_b, nu_b
       real(dp) :: elastic(4) = 0.0_dp             !! E_m (MPa), nu_m, E_b (MPa), nu_b; with has_elastic
-      !> the header gives the layers' heights h_m, h_b (mm) too: with the elastic constants, the
-      !> intact laminate's closed forms are checked against the a = 0 row (check_rve_table)
+      !> the header gives the layers' heights h_m, h_b (mm): their sum is checked against h, and
+      !> with the elastic constants the intact laminate's closed forms against the a = 0 row
+      !> (check_rve_table)
       logical :: has_layers = .false.
       real(dp) :: layers(2) = 0.0_dp              !! h_m, h_b (mm); with has_layers
       !> the header's closed forms Chat_TT, Chat_NN (MPa; per unit E), checked against the a = 0 row
@@ -401,7 +402,7 @@ contains
       end if
       table%has_elastic = all(have_elastic)
       if (table%has_elastic) table%elastic = elastic
-      table%has_layers = all(have_layers) .and. table%has_elastic
+      table%has_layers = all(have_layers)
       if (table%has_layers) table%layers = layers
       table%has_chat = have_chat
       table%chat = chat
@@ -627,9 +628,10 @@ contains
             call identity(1, 'C_TT(0) > 0 and C_NN(0) > 0', min(c0_t, c0_n), status, message)
             return
          end if
-         ! the intact laminate (a = 0) in closed form, from the header's layers and elastic constants
-         ! (plane strain, layers in series: shear moduli G, and constrained moduli M for s_N),
-         ! and the header's own Chat: a header that does not describe the data is refused
+         ! the header's layers add up to its h (wherever both are given), the intact laminate (a = 0)
+         ! in closed form from its layers and elastic constants (plane strain, layers in series:
+         ! shear moduli G, and constrained moduli M for s_N), and its own Chat: a header that does
+         ! not describe the data is refused
          if (table%has_layers) then
             if (abs(table%layers(1) + table%layers(2) - h) > 1.0e-12_dp*h) then
                status = STATUS_TABLE_IDENTITY
@@ -637,6 +639,8 @@ contains
                   ' mm is not h_m + h_b = '//real_text(table%layers(1) + table%layers(2))//' mm'
                return
             end if
+         end if
+         if (table%has_layers .and. table%has_elastic) then
             term(1) = h/(table%layers(1)/shear_modulus(table%elastic(1), table%elastic(2)) + &
                table%layers(2)/shear_modulus(table%elastic(3), table%elastic(4)))
             term(2) = h/(table%layers(1)/constrained_modulus(table%elastic(1), table%elastic(2)) + &

@@ -61,4 +61,14 @@ printf '\357\273\277' | cat - "$table" > "$work/bom.dat"
 check "a byte-order mark refused and named" fail "$work/bom.dat" 'byte-order mark'
 awk '/^#/ || NF == 0 { print; next } { if (++k == 5) print; print }' "$table" > "$work/dup.dat"
 check "a repeated row named" fail "$work/dup.dat" '^row 6 [(]line [0-9]+[)]: a = [0-9.e-]+ does not exceed the previous a'
+# the header's forms the loader reads: blanks and tabs before and after "#", "#columns:" with no
+# blank; a key the loader reads after the columns line is refused, as the loader refuses it
+awk '/^# / { sub(/^# /, (NR % 2 ? "  #\t" : "#")) } { print }' "$table" > "$work/blanks.dat"
+grep -q '^#columns:' "$work/blanks.dat" && grep -q '^  #' "$work/blanks.dat" || { echo "FAIL the header forms were not made"; fail=1; }
+check "blanks around # and #columns: read as the loader reads them" pass "$work/blanks.dat"
+awk '{ print } /^# columns:/ { print "# b = 25" }' "$table" > "$work/late-key.dat"
+check "a key the loader reads after the columns line refused" fail "$work/late-key.dat" 'key "b" after the "# columns:" line'
+# h = h_m + h_b is checked whenever both layers are given, with or without E and nu (the loader too)
+grep -v '^# [En]' "$table" | sed 's/^# h = .*/# h = 40/' > "$work/h-no-elastic.dat"
+check "h not h_m + h_b refused without E and nu" fail "$work/h-no-elastic.dat" "the header's h = 40 mm is not h_m [+] h_b = 5 mm"
 exit $fail
