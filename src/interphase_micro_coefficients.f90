@@ -137,11 +137,20 @@ contains
       ! T^f = v/D, T^f' = (v' - T^f)/D, T^f'' = (v'' - 2 T^f')/D with v = D T^f
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
+      ! C^f_T from the reciprocity relation (reciprocal_cf), not from its own spline
+      v(IC_CF_T) = reciprocal_cf(v(IC_K_T), v(IC_KC_T), d, v(IC_UFBAR))
       coef = as_set(v, tf)
       if (.not. present(dcoef_dd)) return
       dv = dv*dx_dd
       dtf = 0.0_dp
       if (d > 0.0_dp) dtf = (dv(IC_DTF) - tf)/d
+      ! C^f_T = -K m with K = k_T + k^c_T and m = D ufbar: C^f' = -(K' m + K m'),
+      ! C^f'' = -(K'' m + 2 K' m' + K m'') (the second before the first overwrites dv)
+      if (present(d2coef_dd2)) d2v(IC_CF_T) = -((d2v(IC_K_T) + d2v(IC_KC_T))*(d*v(IC_UFBAR)) &
+         + 2.0_dp*(dv(IC_K_T) + dv(IC_KC_T))*(v(IC_UFBAR) + d*dv(IC_UFBAR)) &
+         + (v(IC_K_T) + v(IC_KC_T))*(2.0_dp*dv(IC_UFBAR) + d*d2v(IC_UFBAR)))
+      dv(IC_CF_T) = -((dv(IC_K_T) + dv(IC_KC_T))*(d*v(IC_UFBAR)) + (v(IC_K_T) + v(IC_KC_T))*(v(IC_UFBAR) &
+         + d*dv(IC_UFBAR)))
       dcoef_dd = as_set(dv, dtf)
       if (present(d2coef_dd2)) then
          d2tf = 0.0_dp
@@ -149,6 +158,23 @@ contains
          d2coef_dd2 = as_set(d2v, d2tf)
       end if
    end subroutine table_coefficients
+
+   !> C^f_T at D from the reciprocity relation of the RVE problems, C^f_T = -(C_TT(0)/h) D ufbar
+   !> (docs/rve.md; the tables meet it at their rows to 1e-15), with C_TT(0)/h = k_T + k^c_T
+   !> (eq 52, which the splines, linear in the data, keep to rounding), instead of the column's
+   !> own spline: D ufbar is not a cubic of the interpolation variable, and two separate splines
+   !> drift apart between the rows (3.8e-4 relative in the last interval of tables/paper.dat,
+   !> D > 0.9999). The energy of a closed crack that grows at fixed integrated slip pi = D ufbar
+   !> lambda needs C^f/m constant (docs/theory.md, 'Crack growth under slip'); with a drift the
+   !> dissipation fell on histories near D = 1, by up to 0.26 % of it on a frictionless cycle,
+   !> without converging under refinement. Every provider of the tables (table_coefficients,
+   !> table_values, block_values) forms it so, in this order of operations (the same bits).
+   elemental real(dp) function reciprocal_cf(k_t, kc_t, d, ufbar) result(cf_t)
+      real(dp), intent(in) :: k_t, kc_t          !! k_T, k^c_T at D (MPa/mm)
+      real(dp), intent(in) :: d                  !! D (-)
+      real(dp), intent(in) :: ufbar              !! ufbar at D (-)
+      cf_t = -(k_t + kc_t)*(d*ufbar)
+   end function reciprocal_cf
 
    !> The guided path of table_coefficients: the interval of x from the knots' guide, and every
    !> column's cubic in cubic_eval's Horner form with its first derivative in x (and the second,
@@ -232,6 +258,7 @@ contains
       end do
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
+      v(IC_CF_T) = reciprocal_cf(v(IC_K_T), v(IC_KC_T), d, v(IC_UFBAR))
       coef = as_set(v, tf)
    end subroutine table_values
 
@@ -421,7 +448,7 @@ contains
             dbar_t(k) = v(IC_DBAR_T, i)
             tc_t(k) = v(IC_TC_T, i)
             sc_n(k) = v(IC_SC_N, i)
-            cf_t(k) = v(IC_CF_T, i)
+            cf_t(k) = reciprocal_cf(v(IC_K_T, i), v(IC_KC_T, i), d(k), v(IC_UFBAR, i))
             t(i) = v(IC_DTF, i)
             ufbar(k) = v(IC_UFBAR, i)
          end do
