@@ -13,7 +13,8 @@
 !>
 !> Thread-safe: no module data; each call opens its own unit (`newunit`) on a file it creates
 !> (status 'new': two calls never write one file; of two that take the same name at the same
-!> instant, one writes none).
+!> instant, one writes none, and with flang 19, whose failed open as new deletes the existing
+!> file, the other's can be lost too).
 module interphase_replay_file
    use interphase_kinds, only: dp
    implicit none

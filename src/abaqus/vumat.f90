@@ -24,7 +24,8 @@
 !> (interphase_kernel) point by point. Both return the UMAT's numbers bit for bit.
 !>
 !> Failures: bad sizes (a negative nblock too), PROPS, density (outside [1e-50, 1e50]) or
-!> incoming STATEV (the separations STATEV(6:8) not finite or beyond 1e20 mm), with viscous
+!> incoming STATEV (the separations STATEV(6:8) not finite or beyond 1e20 mm where that makes a
+!> point's update fail), a stepTime or totalTime that is not finite, with viscous
 !> regularisation a dt that is negative or not finite (STATUS_BAD_TIME_INCREMENT), a NaN or Inf
 !> in stressOld, the old energies or a point's separation increment, or one of them beyond 1e150
 !> (the increment: 1e50 mm) (STATUS_BAD_HOST_INPUT), a custom RVE table or R-curve
@@ -91,7 +92,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    real(dp), parameter :: THICKNESS = 1.0_dp
    !> Separation per tensor shear strain: engineering shear = 2 x tensor shear.
    real(dp), parameter :: SHEAR_FACTOR = 2.0_dp
-   !> Largest finite time increment (s): any finite dt is taken (the kernel's test).
+   !> Largest finite time (s): is_within(t, HUGE_DT) is t's finiteness test.
    real(dp), parameter :: HUGE_DT = huge(1.0_dp)
 
    !> Points updated per pass. The passes' working arrays are local (on the stack, 144 KB; an
@@ -126,6 +127,13 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       if (nblock < 0) then
          write (message, '(a,i0,a)') 'nblock = ', nblock, ': the number of points in a call cannot be negative'
          fatal_code = -1
+         exit update
+      end if
+      ! the host's times: finite (they are compared below; a NaN would raise the invalid flag)
+      if (.not. (is_within(steptime, HUGE_DT) .and. is_within(totaltime, HUGE_DT))) then
+         write (message, '(a,es12.4e3,a,es12.4e3,a)', iostat=ios) 'stepTime = ', steptime, ', totalTime = ', &
+            totaltime, ' s: the host must pass finite times'
+         fatal_code = STATUS_BAD_HOST_INPUT
          exit update
       end if
       if (ndir /= 1 .or. (nshr /= 1 .and. nshr /= 2)) then
@@ -434,10 +442,13 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             dsep(1) = THICKNESS*straininc(first_failed, 1)
             dsep(2:ntens) = SHEAR_FACTOR*THICKNESS*straininc(first_failed, 2:ntens)
             rho_first = density(first_failed)*THICKNESS
-            ! (0 where dt is not positive or the quotient is not a default integer)
+            ! (0 where dt is not a positive finite number, or the quotient would not be below 2e9:
+            ! no comparison with a NaN, no overflow; totalTime is finite, checked at the start)
             kinc = 0
-            if (dt > 0.0_dp .and. totaltime >= 0.0_dp) then
-               if (totaltime/dt < real(huge(kinc), dp) - 1.0_dp) kinc = nint(totaltime/dt)
+            if (is_within(dt, HUGE_DT)) then
+               if (dt > 0.0_dp .and. totaltime >= 0.0_dp) then
+                  if (totaltime/2.0e9_dp < dt) kinc = nint(totaltime/dt)
+               end if
             end if
             call write_replay('vumat', trim(full), props, stateold(first_failed, 1:NSTATV_SHARED), &
                stressold(first_failed, :), (enerinternold(first_failed) - enerinelasold(first_failed))*rho_first, &

@@ -135,10 +135,12 @@ contains
       case ('test', 'before', 'after')
          if (lower(name) == 'test') then
             pending = TEST
+            ! (`@test()`, empty parentheses, is a plain @test for real pFUnit too)
             if (len(rest) > 0) then
                if (rest(1:1) /= '(' .or. matching_paren(rest) /= len(rest)) &
                   call fail(line_no, 'expected "@test" alone on the line')
-               call fail(line_no, 'test options ("@test' // rest // '") are not supported by pfunit_lite: real ' &
+               if (len_trim(rest(2:len(rest) - 1)) > 0) &
+                  call fail(line_no, 'test options ("@test' // rest // '") are not supported by pfunit_lite: real ' &
                   // 'pFUnit gives them meaning (ifdef= leaves the test out unless the macro is defined, npes= ' &
                   // 'makes it an MPI test, ...) that pfunit_lite cannot reproduce; write "@test" alone')
             end if
