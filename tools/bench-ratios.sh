@@ -113,9 +113,11 @@ onefile_umat() {
       && gfortran -O2 -fno-inline -c stub.f90 \
       && gfortran $driver_flags -c "$here/drivers/interphase_driver_text.f90" "$nolto/drivers/interphase_driver_version.f90" \
       && gfortran $driver_flags -c "$here/drivers/interphase_driver_cli.f90" \
+      && gcc -O2 -c "$here/drivers/interphase_driver_posix.c" \
       && gfortran $driver_flags -c "$here/drivers/bench_umat.f90" \
       && gfortran -o bench-umat-standard bench_umat.o standard.o stub.o interphase_driver_cli.o \
-         interphase_driver_text.o interphase_driver_version.o -llapack) >"$work/standard-$arch.log" 2>&1 || return 1
+         interphase_driver_posix.o interphase_driver_text.o interphase_driver_version.o -llapack) \
+      >"$work/standard-$arch.log" 2>&1 || return 1
    [ "$arch" = native ] || return 0
    (cd "$dir" && printf '%s\n' \
          'subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, dstran, &' \
@@ -133,7 +135,8 @@ onefile_umat() {
       && gfortran -O2 -c empty_umat.f90 \
       && objcopy --weaken-symbol=umat_ standard.o standard-weak.o \
       && gfortran -o bench-umat-empty bench_umat.o empty_umat.o standard-weak.o stub.o interphase_driver_cli.o \
-         interphase_driver_text.o interphase_driver_version.o -llapack) >>"$work/standard-$arch.log" 2>&1
+         interphase_driver_posix.o interphase_driver_text.o interphase_driver_version.o -llapack) \
+      >>"$work/standard-$arch.log" 2>&1
 }
 onefile_umat native || true
 if [ -x "$work/standard-native/bench-umat-standard" ]; then
