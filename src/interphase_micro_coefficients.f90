@@ -138,19 +138,19 @@ contains
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
       ! C^f_T from the reciprocity relation (reciprocal_cf), not from its own spline
-      v(IC_CF_T) = reciprocal_cf(v(IC_K_T), v(IC_KC_T), d, v(IC_UFBAR))
+      v(IC_CF_T) = reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR))
       coef = as_set(v, tf)
       if (.not. present(dcoef_dd)) return
       dv = dv*dx_dd
       dtf = 0.0_dp
       if (d > 0.0_dp) dtf = (dv(IC_DTF) - tf)/d
-      ! C^f_T = -K m with K = k_T + k^c_T and m = D ufbar: C^f' = -(K' m + K m'),
-      ! C^f'' = -(K'' m + 2 K' m' + K m'') (the second before the first overwrites dv)
-      if (present(d2coef_dd2)) d2v(IC_CF_T) = -((d2v(IC_K_T) + d2v(IC_KC_T))*(d*v(IC_UFBAR)) &
-         + 2.0_dp*(dv(IC_K_T) + dv(IC_KC_T))*(v(IC_UFBAR) + d*dv(IC_UFBAR)) &
-         + (v(IC_K_T) + v(IC_KC_T))*(2.0_dp*dv(IC_UFBAR) + d*d2v(IC_UFBAR)))
-      dv(IC_CF_T) = -((dv(IC_K_T) + dv(IC_KC_T))*(d*v(IC_UFBAR)) + (v(IC_K_T) + v(IC_KC_T))*(v(IC_UFBAR) &
-         + d*dv(IC_UFBAR)))
+      ! C^f_T = -K m with K = T^c_T and m = D ufbar: C^f' = -(K' m + K m'),
+      ! C^f'' = -(K'' m + 2 K' m' + K m'') (dv and d2v in D here; at D = 1, where the other
+      ! columns' derivatives are 0 by convention, these are the product rule's, -K ufbar and
+      ! -2 K ufbar': no caller asks for derivatives there)
+      if (present(d2coef_dd2)) d2v(IC_CF_T) = -(d2v(IC_TC_T)*(d*v(IC_UFBAR)) &
+         + 2.0_dp*dv(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)) + v(IC_TC_T)*(2.0_dp*dv(IC_UFBAR) + d*d2v(IC_UFBAR)))
+      dv(IC_CF_T) = -(dv(IC_TC_T)*(d*v(IC_UFBAR)) + v(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)))
       dcoef_dd = as_set(dv, dtf)
       if (present(d2coef_dd2)) then
          d2tf = 0.0_dp
@@ -160,20 +160,23 @@ contains
    end subroutine table_coefficients
 
    !> C^f_T at D from the reciprocity relation of the RVE problems, C^f_T = -(C_TT(0)/h) D ufbar
-   !> (docs/rve.md; the tables meet it at their rows to 1e-15), with C_TT(0)/h = k_T + k^c_T
-   !> (eq 52, which the splines, linear in the data, keep to rounding), instead of the column's
+   !> (docs/rve.md; the tables meet it at their rows to 1e-15), with C_TT(0)/h = T^c_T (the p2
+   !> crack stress, constant in the tables, so that its spline is too), instead of the column's
    !> own spline: D ufbar is not a cubic of the interpolation variable, and two separate splines
-   !> drift apart between the rows (3.8e-4 relative in the last interval of tables/paper.dat,
-   !> D > 0.9999). The energy of a closed crack that grows at fixed integrated slip pi = D ufbar
-   !> lambda needs C^f/m constant (docs/theory.md, 'Crack growth under slip'); with a drift the
-   !> dissipation fell on histories near D = 1, by up to 0.26 % of it on a frictionless cycle,
-   !> without converging under refinement. Every provider of the tables (table_coefficients,
-   !> table_values, block_values) forms it so, in this order of operations (the same bits).
-   elemental real(dp) function reciprocal_cf(k_t, kc_t, d, ufbar) result(cf_t)
-      real(dp), intent(in) :: k_t, kc_t          !! k_T, k^c_T at D (MPa/mm)
+   !> drift apart between the rows (1e-6 to 1e-4 relative for D < 0.9999 of tables/paper.dat,
+   !> 3.8e-4 in its last interval). The closed crack's stored energy is the potential of its
+   !> traction and of the crack stress tau = T^c_T s_T + T^f lambda that the friction step uses
+   !> only when C^f/m = -T^c_T (m = D ufbar; docs/theory.md, 'Crack growth under slip'): with
+   !> the drift the dissipation fell on histories near D = 1, without converging under
+   !> refinement. (T^c_T, not k_T + k^c_T, which eq 52 makes equal to it: a table that meets
+   !> eq 52 only to the loader's 1e-8 would leave a residue there.) Every provider of the tables
+   !> (table_coefficients, table_values, block_values) forms it so, in this order of operations
+   !> (the same bits).
+   elemental real(dp) function reciprocal_cf(tc_t, d, ufbar) result(cf_t)
+      real(dp), intent(in) :: tc_t               !! T^c_T at D (MPa/mm)
       real(dp), intent(in) :: d                  !! D (-)
       real(dp), intent(in) :: ufbar              !! ufbar at D (-)
-      cf_t = -(k_t + kc_t)*(d*ufbar)
+      cf_t = -tc_t*(d*ufbar)
    end function reciprocal_cf
 
    !> The guided path of table_coefficients: the interval of x from the knots' guide, and every
@@ -258,7 +261,7 @@ contains
       end do
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
-      v(IC_CF_T) = reciprocal_cf(v(IC_K_T), v(IC_KC_T), d, v(IC_UFBAR))
+      v(IC_CF_T) = reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR))
       coef = as_set(v, tf)
    end subroutine table_values
 
@@ -448,7 +451,7 @@ contains
             dbar_t(k) = v(IC_DBAR_T, i)
             tc_t(k) = v(IC_TC_T, i)
             sc_n(k) = v(IC_SC_N, i)
-            cf_t(k) = reciprocal_cf(v(IC_K_T, i), v(IC_KC_T, i), d(k), v(IC_UFBAR, i))
+            cf_t(k) = reciprocal_cf(v(IC_TC_T, i), d(k), v(IC_UFBAR, i))
             t(i) = v(IC_DTF, i)
             ufbar(k) = v(IC_UFBAR, i)
          end do
