@@ -210,3 +210,51 @@ def test_beyond_the_peak_as_the_driver(point_driver, source_dir, tmp_path):
     assert "beyond the peak the material can carry" in error.detail
     assert error.name == "STATUS_BEYOND_PEAK"
     assert error.result.traction[-1, 0] < 0.25
+
+
+def tangent_case(source_dir, tmp_path, history, extra=""):
+    """A case file in tmp_path with the driver's tangent check on `history` (drivers/cases)."""
+    case = tmp_path / "tangent.nml"
+    case.write_text("&material\n  model = 'simplified', damage_law = 'displacement', mu = 0.75,\n"
+                    "  s0_n = 0.00044, sf_n = 0.04, s0_t = 0.00072, sf_t = 0.06,\n"
+                    "  k_n = 482.69742679680568, k_t = 198.75776397515528\n/\n"
+                    f"&loading\n  history = '{source_dir / 'drivers' / 'cases' / history}', increments = 200,\n"
+                    f"  output = 'tangent.csv', plot = .false., tangent_check = 1e-5{extra}\n/\n")
+    return case
+
+
+def test_tangent_check_is_the_drivers(point_driver, source_dir, tmp_path):
+    """Material.tangent_check gives interphase-point's tangent_error column, number for number, on
+    the paper's mixed history (every row but the first: the driver also checks the steps that
+    reach the history's first row, which run does not return), and its worst error and kinks."""
+    case = tangent_case(source_dir, tmp_path, "mixed.txt")
+    done = subprocess.run([point_driver, str(case), "--output-dir", str(tmp_path), "--no-plot"],
+                          capture_output=True, text=True)
+    assert done.returncode == 0, done.stdout + done.stderr
+    table = np.genfromtxt(tmp_path / "tangent.csv", delimiter=",", names=True, dtype=None, encoding="ascii")
+    c = interphase.read_case(case)
+    check = c.check_tangent(c.run())
+    assert np.isnan(check.errors[0])
+    assert np.array_equal(check.errors[1:], table["tangent_error"][1:])
+    assert check.passed and check.checked == len(table) - 1 and check.kinks == 2 and check.unchecked == 0
+    assert check.worst == np.max(table["tangent_error"][1:])
+
+
+def test_tangent_check_finds_a_wrong_tangent(source_dir, tmp_path):
+    """h2I at t = 4: a closed, damaged crack at s_N = 0 with s_T = 0, where the update slips on both
+    sides and DDSDDE is the stick tangent (drivers/README.md, 'The tangent check'): the check
+    reports it, relative error 0.41, and fails. On the mixed history written every 10th step the
+    rows are not each the update of the previous one (friction makes the path count): refused."""
+    c = interphase.read_case(tangent_case(source_dir, tmp_path, "h2I.txt"))
+    check = c.check_tangent(c.run())
+    assert not check.passed
+    assert check.worst == pytest.approx(0.41, abs=0.01)
+    assert check.worst_time == pytest.approx(4.0)
+    c = interphase.read_case(tangent_case(source_dir, tmp_path, "mixed.txt", ", output_every = 10"))
+    with pytest.raises(ValueError, match="output_every=1"):
+        c.check_tangent(c.run())
+    case = tangent_case(source_dir, tmp_path, "h2I.txt")
+    case.write_text(case.read_text().replace(", tangent_check = 1e-5", ""))
+    c = interphase.read_case(case)
+    with pytest.raises(ValueError, match="no tangent check"):
+        c.check_tangent(c.run())

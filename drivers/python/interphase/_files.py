@@ -8,7 +8,7 @@ import numpy as np
 
 from . import _status
 from ._library import InterphaseError
-from ._material import Material, DEFAULT_TRACTION_TOLERANCE, _count
+from ._material import Material, DEFAULT_TRACTION_TOLERANCE, DEFAULT_TANGENT_STEP, _count
 
 _NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?")
 #: the largest file the readers take (bytes), as the driver's (interphase_text_input's MAX_FILE_BYTES)
@@ -528,8 +528,6 @@ _KINDS = {
                 "traction_tolerance": "real", "output_every": "integer", "tangent_check": "real",
                 "tangent_step": "real"},
 }
-#: interphase-point's default tangent_step (mm)
-DEFAULT_TANGENT_STEP = 1.0e-8
 
 
 def _at_entry(path, group, text, lines):
@@ -562,8 +560,8 @@ class Case:
     """A case file of interphase-point: `material` (Material), `time`, `value` and `control` (the
     history, normal first: separations, or tractions where `control` is true), `increments`,
     `traction_tolerance`, `output_every` and `output` (the CSV name the driver writes), and the
-    driver's tangent check `tangent_check` and `tangent_step` (read and checked; `run` does not
-    make the check). `separation` is `value` (a history without traction control holds
+    driver's tangent check `tangent_check` and `tangent_step` (`check_tangent` makes the check on
+    a result of `run`). `separation` is `value` (a history without traction control holds
     separations only)."""
 
     def __init__(self, material, time, value, increments, output, control=None,
@@ -585,6 +583,14 @@ class Case:
         return self.material.run(self.value, self.time, self.increments, tangent=tangent,
                                  control=self.control if self.control.any() else None,
                                  traction_tolerance=self.traction_tolerance, output_every=self.output_every)
+
+    def check_tangent(self, result):
+        """The case's tangent check (tangent_check > 0, tangent_step) on `result`, a run of the
+        case with output_every = 1: Material.tangent_check. Raises ValueError when the case sets
+        no check (tangent_check = 0)."""
+        if not self.tangent_check > 0.0:
+            raise ValueError("the case sets no tangent check (&loading: tangent_check = 0, the default)")
+        return self.material.tangent_check(result, self.tangent_check, step=self.tangent_step)
 
 
 def read_case(path):

@@ -28,6 +28,8 @@ MAX_HALVINGS = 10
 MAX_NEWTON = 25
 #: interphase-point's default traction_tolerance (MPa)
 DEFAULT_TRACTION_TOLERANCE = 1.0e-12
+#: interphase-point's default tangent_step (mm): the perturbation of the tangent check
+DEFAULT_TANGENT_STEP = 1.0e-8
 
 # the keyword entries of the driver's &material (drivers/interphase_driver_case.f90)
 _REQUIRED = ("model", "damage_law", "mu", "s0_n", "sf_n", "s0_t", "sf_t")
@@ -443,6 +445,74 @@ class Material:
         return result
 
 
+    def tangent_check(self, result, tolerance, step=DEFAULT_TANGENT_STEP):
+        """interphase-point's tangent check (`tangent_check`, drivers/README.md) over a Result of
+        this material's `run` made with output_every=1: at every step after the first the update
+        from the previous row's state to the row's separation is repeated, and its tangent is
+        compared with the central finite difference of the traction (each component moved by
+        +-step, mm) from that same state; where the forward and backward differences disagree by
+        more than tolerance x the tangent's scale (a kink within +-step: a change of regime, a
+        reversal, s_N = 0) with the nearer one-sided one. The error of a step is
+        max|FD - tangent| / max|tangent| (the driver's CSV column tangent_error, the same numbers).
+
+        The first row is not checked (the steps that reach it, when the history starts away from
+        zero, are not returned; the driver checks them too). Returns a TangentCheck. Raises
+        ValueError when a row is not the update of the previous row's state, bit for bit (a run
+        with output_every > 1 skips steps; where the law is path-independent over them, as in a
+        monotonic segment, the rows still are, and are checked as the larger increments they
+        are), or tolerance or step is not a finite number > 0.
+        """
+        self._prepare()
+        tolerance = _real("tolerance", tolerance, "Material.tangent_check")
+        step = _real("step", step, "Material.tangent_check")
+        if not (tolerance > 0.0 and math.isfinite(tolerance)):
+            raise ValueError(f"Material.tangent_check: tolerance must be a finite number > 0, got {tolerance!r}")
+        if not (step > 0.0 and math.isfinite(step)):
+            raise ValueError(f"Material.tangent_check: step must be a finite number > 0 (mm), got {step!r}")
+        nrows, n = result.separation.shape
+        errors = np.full(nrows, np.nan)
+        checked = kinks = unchecked = 0
+        for k in range(1, nrows):
+            old = result.state[k - 1]
+            s = result.separation[k].copy()
+            dt = result.time[k] - result.time[k - 1]
+            base = self.update(s, old, dt=dt)
+            if not (np.array_equal(base.traction, result.traction[k]) and np.array_equal(base.state, result.state[k])):
+                raise ValueError(f"Material.tangent_check: row {k} (t = {float(result.time[k])!r}) is not the update "
+                                 f"of row {k - 1}'s state: run the history with output_every=1")
+            tangent = base.tangent
+            scale = float(np.max(np.abs(tangent)))
+            column_error = np.zeros(n)
+            kink = False
+            failed = False
+            for j in range(n):
+                probe = s.copy()
+                try:
+                    probe[j] = s[j] + step
+                    plus = self.update(probe, old, dt=dt).traction
+                    probe[j] = s[j] - step
+                    minus = self.update(probe, old, dt=dt).traction
+                except InterphaseError:
+                    failed = True
+                    break
+                central = (plus - minus) / (2.0 * step)
+                forward = (plus - base.traction) / step
+                backward = (base.traction - minus) / step
+                scale = max(scale, float(np.max(np.abs(central))))
+                column_error[j] = np.max(np.abs(central - tangent[:, j]))
+                if np.max(np.abs(forward - backward)) > tolerance * max(scale, np.finfo(float).tiny):
+                    kink = True
+                    one_sided = min(np.max(np.abs(forward - tangent[:, j])), np.max(np.abs(backward - tangent[:, j])))
+                    column_error[j] = min(column_error[j], one_sided)
+            if failed:
+                unchecked += 1
+                continue
+            errors[k] = float(np.max(column_error)) / scale if scale > 0.0 else 0.0
+            checked += 1
+            kinks += int(kink)
+        return TangentCheck(result.time, errors, tolerance, step, checked, kinks, unchecked)
+
+
 class Update:
     """The result of Material.update: traction, tangent, state, stored_energy."""
 
@@ -457,6 +527,30 @@ class Update:
     def __repr__(self):
         return (f"Update(traction={self.traction!r}, tangent={self.tangent!r}, state={self.state!r}, "
                 f"stored_energy={self.stored_energy!r})")
+
+
+class TangentCheck:
+    """Material.tangent_check's outcome: errors (one per row of the Result: the relative error of
+    the tangent at that step, NaN for the first row and for a step whose perturbed update failed),
+    worst and worst_time (the largest error and its row's time; 0 and NaN when none was checked),
+    checked, kinks (steps compared one-sided) and unchecked (steps not checked), tolerance and step,
+    and passed (worst <= tolerance), as interphase-point's summary line reports them."""
+
+    def __init__(self, time, errors, tolerance, step, checked, kinks, unchecked):
+        self.errors, self.tolerance, self.step = errors, tolerance, step
+        self.checked, self.kinks, self.unchecked = checked, kinks, unchecked
+        valid = ~np.isnan(errors)
+        if valid.any():
+            k = int(np.flatnonzero(valid)[np.argmax(errors[valid])])
+            self.worst, self.worst_time = float(errors[k]), float(time[k])
+        else:
+            self.worst, self.worst_time = 0.0, math.nan
+        self.passed = self.worst <= tolerance
+
+    def __repr__(self):
+        return (f"TangentCheck(worst={self.worst!r} at t = {self.worst_time!r}, checked={self.checked}, "
+                f"kinks={self.kinks}, unchecked={self.unchecked}, tolerance={self.tolerance!r}, "
+                f"passed={self.passed})")
 
 
 class Result:
