@@ -144,7 +144,7 @@ contains
       dv = dv*dx_dd
       dtf = 0.0_dp
       if (d > 0.0_dp) dtf = (dv(IC_DTF) - tf)/d
-      ! C^f_T = -K m with K = T^c_T and m = D ufbar: C^f' = -(K' m + K m'),
+      ! C^f_T = -K m with K = tc_t and m = D ufbar: C^f' = -(K' m + K m'),
       ! C^f'' = -(K'' m + 2 K' m' + K m'') (dv and d2v in D here; at D = 1, where the other
       ! columns' derivatives are 0 by convention, these are the product rule's, -K ufbar and
       ! -2 K ufbar': no caller asks for derivatives there)
@@ -160,20 +160,20 @@ contains
    end subroutine table_coefficients
 
    !> C^f_T at D from the reciprocity relation of the RVE problems, C^f_T = -(C_TT(0)/h) D ufbar
-   !> (docs/rve.md; the tables meet it at their rows to 1e-15), with C_TT(0)/h = T^c_T (the p2
-   !> crack stress, constant in the tables, so that its spline is too), instead of the column's
+   !> (docs/rve.md; the tables meet it at their rows to 5e-15), with C_TT(0)/h = tc_t = T^c_T/h
+   !> (the p2 crack stress, constant in the tables, so that its spline is too), instead of the column's
    !> own spline: D ufbar is not a cubic of the interpolation variable, and two separate splines
    !> drift apart between the rows (1e-6 to 1e-4 relative for D < 0.9999 of tables/paper.dat,
    !> 3.8e-4 in its last interval). The closed crack's stored energy is the potential of its
-   !> traction and of the crack stress tau = T^c_T s_T + T^f lambda that the friction step uses
-   !> only when C^f/m = -T^c_T (m = D ufbar; docs/theory.md, 'Crack growth under slip'): with
+   !> traction and of the crack stress tau = tc_t s_T + T^f lambda that the friction step uses
+   !> only when C^f/m = -tc_t (m = D ufbar; docs/theory.md, 'Crack growth under slip'): with
    !> the drift the dissipation fell on histories near D = 1, without converging under
-   !> refinement. (T^c_T, not k_T + k^c_T, which eq 52 makes equal to it: a table that meets
+   !> refinement. (tc_t, not k_T + k^c_T, which eq 52 makes equal to it: a table that meets
    !> eq 52 only to the loader's 1e-8 would leave a residue there.) Every provider of the tables
    !> (table_coefficients, table_values, block_values) forms it so, in this order of operations
    !> (the same bits).
    elemental real(dp) function reciprocal_cf(tc_t, d, ufbar) result(cf_t)
-      real(dp), intent(in) :: tc_t               !! T^c_T at D (MPa/mm)
+      real(dp), intent(in) :: tc_t               !! tc_t = T^c_T/h at D (MPa/mm)
       real(dp), intent(in) :: d                  !! D (-)
       real(dp), intent(in) :: ufbar              !! ufbar at D (-)
       cf_t = -tc_t*(d*ufbar)
