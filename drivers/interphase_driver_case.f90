@@ -756,19 +756,17 @@ contains
       status = STATUS_OK
       if (len(table_path) > 0) then
          call load_custom_table(table_path, status, text)
-         if (status /= STATUS_OK) message = context//'table: '
+         message = context//'table: '
       end if
       if (status == STATUS_OK .and. len(rcurve_path) > 0) then
          call load_rcurve(rcurve_path, status, text)
-         if (status /= STATUS_OK) then
-            if (present(rcurve_entry)) then
-               message = context//rcurve_entry//': '
-            else
-               message = context//'rcurve_file: '
-            end if
-         end if
+         message = context//'rcurve_file: '
+         if (present(rcurve_entry)) message = context//rcurve_entry//': '
       end if
-      if (status /= STATUS_OK) then
+      ! (message holds where the last file read was named; it is kept only with its refusal)
+      if (status == STATUS_OK) then
+         message = ''
+      else
          ok = .false.
          message = message//status_message(status)//': '//trim(text)
       end if

@@ -25,7 +25,7 @@ module interphase_capi
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_overrun
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count, SEPARATION_MAX, HOST_VALUE_MAX
-   use interphase_finite, only: is_within, is_finite
+   use interphase_finite, only: is_within, is_finite, is_finite_nonnegative
    use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update, update_point
@@ -135,7 +135,7 @@ contains
       type(interface_state_type) :: old, new
       real(dp) :: s(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS)
       integer :: code, i, j, n, nsv
-      logical :: viscous, bad_dt
+      logical :: viscous
       character(len=MESSAGE_LEN) :: message
 
       message = ''
@@ -155,10 +155,7 @@ contains
       ! a time increment, where given, is a finite dt >= 0 whatever the material (only viscous
       ! regularisation reads it)
       if (present(dt)) then
-         ! (finite first, then the sign: no ordered comparison with a NaN, which raises the invalid flag)
-         bad_dt = .not. is_finite(dt)
-         if (.not. bad_dt) bad_dt = dt < 0.0_dp
-         if (bad_dt) then
+         if (.not. is_finite_nonnegative(dt)) then
             code = STATUS_BAD_TIME_INCREMENT
             write (message, '(a,es12.4e3,a)') 'dt = ', dt, ' s: the time increment must be finite and >= 0'
             call finish()
@@ -245,7 +242,7 @@ contains
       real(dp) :: s(3), ds(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS), dt
       integer(c_size_t) :: row, n_done
       integer :: code, i, j, n, nsv, at, ios
-      logical :: viscous, timed, bad_dt
+      logical :: viscous, timed
       character(len=MESSAGE_LEN) :: message
       character(len=32) :: row_text
 
@@ -295,9 +292,7 @@ contains
             dt = times(row) - times(row - 1)
             ! the times finite and not decreasing, whatever the material (only viscous
             ! regularisation reads them)
-            bad_dt = .not. is_finite(dt)
-            if (.not. bad_dt) bad_dt = dt < 0.0_dp
-            if (bad_dt) then
+            if (.not. is_finite_nonnegative(dt)) then
                code = STATUS_BAD_TIME_INCREMENT
                write (message, '(a,i0,a,es12.4e3,a,es12.4e3,a,es12.4e3,a)', iostat=ios) 'row ', row - 1, ': dt = ', dt, &
                   ' s (time ', times(row), ' after ', times(row - 1), '): the times must be finite and must not decrease'

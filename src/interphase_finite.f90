@@ -12,8 +12,8 @@ module interphase_finite
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: is_finite, is_within, all_within, binary64_bits, EXPONENT_MASK, MAGNITUDE_MASK, HIGH_HALF, &
-      LOW_HALF, LOW_HALF_MASK
+   public :: is_finite, is_finite_nonnegative, is_within, all_within, binary64_bits, EXPONENT_MASK, &
+      MAGNITUDE_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
 
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
    integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
@@ -33,5 +33,14 @@ contains
    include 'interphase_is_finite.inc'
 
    include 'interphase_within.inc'
+
+   !> True when x is a finite number >= 0 (a time increment): finiteness first, so that no
+   !> ordered comparison meets a NaN (it raises the invalid flag, and a host with floating-point
+   !> traps stops there).
+   elemental logical function is_finite_nonnegative(x)
+      real(dp), intent(in) :: x
+      is_finite_nonnegative = is_finite(x)
+      if (is_finite_nonnegative) is_finite_nonnegative = x >= 0.0_dp
+   end function is_finite_nonnegative
 
 end module interphase_finite

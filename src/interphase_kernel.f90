@@ -27,7 +27,7 @@
 !> - 1/2 D T^f ufbar |lambda|^2 (docs/theory.md).
 module interphase_kernel
    use, intrinsic :: iso_fortran_env, only: int64
-   use interphase_finite, only: is_finite, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, MAGNITUDE_MASK
+   use interphase_finite, only: is_finite, is_finite_nonnegative, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, MAGNITUDE_MASK
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, SEPARATION_MAX
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
@@ -276,10 +276,7 @@ contains
       real(dp) :: ratio, weight, d_v
       status = STATUS_BAD_TIME_INCREMENT
       if (.not. present(dt)) return
-      ! (finite first, then the sign: no ordered comparison with a NaN, which raises the invalid
-      ! flag, and a host with floating-point traps stops there)
-      if (.not. is_finite(dt)) return
-      if (dt < 0.0_dp) return
+      if (.not. is_finite_nonnegative(dt)) return
       status = STATUS_OK
       ratio = dt/eta
       weight = 1.0_dp                                 ! dt/eta beyond the range of reals: inviscid

@@ -20,7 +20,7 @@ module interphase_micro_coefficients
       cubic_locate, cubic_eval, guide_build
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
       interpolation_data, N_COEFFICIENTS, TABLE_SPLINE_METHOD, VARIABLE_DAMAGE, IC_K_N, IC_K_T, &
-      IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_CF_T, IC_DTF, IC_UFBAR
+      IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_DTF, IC_UFBAR
    use interphase_default_table, only: DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_SOURCE, &
       DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS
    implicit none
@@ -102,7 +102,7 @@ contains
       integer, intent(in), optional :: guide_steps
 
       real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS), d2v(N_COEFFICIENTS)
-      real(dp) :: tf, dtf, d2tf
+      real(dp) :: tf, dtf, d2tf, dcf, d2cf
       integer :: interval
 
       if (d > 0.0_dp .and. d < D_MIN_CRACK) then
@@ -137,9 +137,8 @@ contains
       ! T^f = v/D, T^f' = (v' - T^f)/D, T^f'' = (v'' - 2 T^f')/D with v = D T^f
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
-      ! C^f_T from the reciprocity relation (reciprocal_cf), not from its own spline
-      v(IC_CF_T) = reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR))
-      coef = as_set(v, tf)
+      ! C^f_T from the reciprocity relation (reciprocal_cf), not from a spline of its own
+      coef = as_set(v, tf, reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR)))
       if (.not. present(dcoef_dd)) return
       dv = dv*dx_dd
       dtf = 0.0_dp
@@ -148,14 +147,14 @@ contains
       ! C^f'' = -(K'' m + 2 K' m' + K m'') (dv and d2v in D here; at D = 1, where the other
       ! columns' derivatives are 0 by convention, these are the product rule's, -K ufbar and
       ! -2 K ufbar': no caller asks for derivatives there)
-      if (present(d2coef_dd2)) d2v(IC_CF_T) = -(d2v(IC_TC_T)*(d*v(IC_UFBAR)) &
-         + 2.0_dp*dv(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)) + v(IC_TC_T)*(2.0_dp*dv(IC_UFBAR) + d*d2v(IC_UFBAR)))
-      dv(IC_CF_T) = -(dv(IC_TC_T)*(d*v(IC_UFBAR)) + v(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)))
-      dcoef_dd = as_set(dv, dtf)
+      dcf = -(dv(IC_TC_T)*(d*v(IC_UFBAR)) + v(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)))
+      dcoef_dd = as_set(dv, dtf, dcf)
       if (present(d2coef_dd2)) then
          d2tf = 0.0_dp
          if (d > 0.0_dp) d2tf = (d2v(IC_DTF) - 2.0_dp*dtf)/d
-         d2coef_dd2 = as_set(d2v, d2tf)
+         d2cf = -(d2v(IC_TC_T)*(d*v(IC_UFBAR)) + 2.0_dp*dv(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)) &
+            + v(IC_TC_T)*(2.0_dp*dv(IC_UFBAR) + d*d2v(IC_UFBAR)))
+         d2coef_dd2 = as_set(d2v, d2tf, d2cf)
       end if
    end subroutine table_coefficients
 
@@ -261,8 +260,7 @@ contains
       end do
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
-      v(IC_CF_T) = reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR))
-      coef = as_set(v, tf)
+      coef = as_set(v, tf, reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR)))
    end subroutine table_values
 
    !> ufbar(D) alone, for the slip measure m = D ufbar (interphase_response): the column IC_UFBAR
@@ -465,14 +463,14 @@ contains
       end do
    end subroutine block_values
 
-   !> The interpolated columns (IC_* order) as a coefficient set, with T^f given apart.
-   pure function as_set(v, tf) result(c)
+   !> The interpolated columns (IC_* order) as a coefficient set, with T^f and C^f_T given apart.
+   pure function as_set(v, tf, cf_t) result(c)
       real(dp), intent(in) :: v(N_COEFFICIENTS)
-      real(dp), intent(in) :: tf
+      real(dp), intent(in) :: tf, cf_t           !! T^f and C^f_T (or their derivatives), formed apart
       type(coefficient_set_type) :: c
       c = coefficient_set_type(k_n=v(IC_K_N), k_t=v(IC_K_T), kc_n=v(IC_KC_N), kc_t=v(IC_KC_T), &
          dbar_n=v(IC_DBAR_N), dbar_t=v(IC_DBAR_T), tc_t=v(IC_TC_T), sc_n=v(IC_SC_N), &
-         cf_t=v(IC_CF_T), tf=tf, ufbar=v(IC_UFBAR))
+         cf_t=cf_t, tf=tf, ufbar=v(IC_UFBAR))
    end function as_set
 
    !> The interpolant between a table's rows must be a law where the update uses it (0 < D < 1):

@@ -61,10 +61,12 @@ module interphase_rve_table
    !> Interpolated columns, in interface units (per unit separation; docs/theory.md): the
    !> members of `coefficient_set_type`, in this order, except that T^f, which grows like 1/D
    !> as D -> 0, is interpolated as D T^f (IC_DTF), which is smooth with a finite limit at D = 0
-   !> (`short_crack_a_tf`); the provider divides by D.
-   integer, parameter, public :: N_COEFFICIENTS = 11
+   !> (`short_crack_a_tf`); the provider divides by D. C^f_T is not among them: the provider forms
+   !> it from the reciprocity relation C^f_T = -tc_t D ufbar (interphase_micro_coefficients,
+   !> `reciprocal_cf`; the table's column is checked against the relation at its rows).
+   integer, parameter, public :: N_COEFFICIENTS = 10
    integer, parameter, public :: IC_K_N = 1, IC_K_T = 2, IC_KC_N = 3, IC_KC_T = 4, &
-      IC_DBAR_N = 5, IC_DBAR_T = 6, IC_TC_T = 7, IC_SC_N = 8, IC_CF_T = 9, IC_DTF = 10, IC_UFBAR = 11
+      IC_DBAR_N = 5, IC_DBAR_T = 6, IC_TC_T = 7, IC_SC_N = 8, IC_DTF = 9, IC_UFBAR = 10
 
    !> Relative tolerance of the identity checks: the FreeFEM tables satisfy them to ~1e-11.
    real(dp), parameter, public :: IDENTITY_TOL = 1.0e-8_dp
@@ -867,7 +869,6 @@ contains
             y(i, IC_DBAR_T) = r(COL_DBAR_TT)/h
             y(i, IC_TC_T) = r(COL_TC_T)/h
             y(i, IC_SC_N) = r(COL_SC_N)/h
-            y(i, IC_CF_T) = r(COL_CF_T)
             ! D T^f: the a = 0 row's T^f (no finite value) is replaced by the exact limit
             if (r(COL_D) > 0.0_dp) then
                y(i, IC_DTF) = r(COL_D)*r(COL_TF)

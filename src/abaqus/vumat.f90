@@ -50,7 +50,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NSTATV, MESSAGE_LEN, &
       SEVERITY_WARNING, SEVERITY_FATAL, STATUS_RCURVE_OUT_OF_RANGE, status_message, STATUS_BAD_HOST_INPUT, &
       STATUS_BAD_STATE, STATUS_BAD_TIME_INCREMENT
-   use interphase_finite, only: is_within
+   use interphase_finite, only: is_within, is_finite, is_finite_nonnegative
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX, SEPARATION_MAX
    use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_state, only: interface_state_type, unpack_statev, pack_statev, count_invalid_states, state_slots
@@ -92,8 +92,6 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    real(dp), parameter :: THICKNESS = 1.0_dp
    !> Separation per tensor shear strain: engineering shear = 2 x tensor shear.
    real(dp), parameter :: SHEAR_FACTOR = 2.0_dp
-   !> Largest finite time (s): is_within(t, HUGE_DT) is t's finiteness test.
-   real(dp), parameter :: HUGE_DT = huge(1.0_dp)
 
    !> Points updated per pass. The passes' working arrays are local (on the stack, 144 KB; an
    !> automatic array sized by nblock would be allocated on the heap per call). Long passes let
@@ -108,7 +106,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    logical :: ok(CHUNK)
    real(dp) :: s_point(3), sv(NSTATV_VISCOUS)
    real(dp) :: traction(3), tangent(3, 3), psi_first
-   logical :: blocked, packaging, viscous, bad_state, bad_dt
+   logical :: blocked, packaging, viscous, bad_state
    integer :: nsv   !! STATEV slots of the state (state_slots)
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
@@ -130,7 +128,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          exit update
       end if
       ! the host's times: finite (they are compared below; a NaN would raise the invalid flag)
-      if (.not. (is_within(steptime, HUGE_DT) .and. is_within(totaltime, HUGE_DT))) then
+      if (.not. (is_finite(steptime) .and. is_finite(totaltime))) then
          write (message, '(a,es12.4e3,a,es12.4e3,a)', iostat=ios) 'stepTime = ', steptime, ', totalTime = ', &
             totaltime, ' s: the host must pass finite times'
          fatal_code = STATUS_BAD_HOST_INPUT
@@ -158,19 +156,10 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       nsv = state_slots(params)
       ! viscous regularisation needs dt: one value for the whole block, the host's (as the UMAT's
       ! DTIME: fatal)
-      ! (is_within before the sign: no comparison with a NaN, which would raise the invalid flag)
-      if (viscous) then
-         if (.not. is_within(dt, HUGE_DT)) then
-            bad_dt = .true.
-         else
-            bad_dt = dt < 0.0_dp
-         end if
-         if (bad_dt) then
-            write (message, '(a,es12.4e3,a)', iostat=ios) 'dt = ', dt, &
-               ' s: viscous regularisation needs a finite dt >= 0'
-            fatal_code = STATUS_BAD_TIME_INCREMENT
-            exit update
-         end if
+      if (viscous .and. .not. is_finite_nonnegative(dt)) then
+         write (message, '(a,es12.4e3,a)', iostat=ios) 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
+         fatal_code = STATUS_BAD_TIME_INCREMENT
+         exit update
       end if
       ! a custom table or R-curve that was not loaded at start-up (VEXTERNALDB)
       call check_run_time_data(params, status, message)
@@ -445,7 +434,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             ! (0 where dt is not a positive finite number, or the quotient would not be below 2e9:
             ! no comparison with a NaN, no overflow; totalTime is finite, checked at the start)
             kinc = 0
-            if (is_within(dt, HUGE_DT)) then
+            if (is_finite(dt)) then
                if (dt > 0.0_dp .and. totaltime >= 0.0_dp) then
                   if (totaltime/2.0e9_dp < dt) kinc = nint(totaltime/dt)
                end if

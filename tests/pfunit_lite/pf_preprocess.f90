@@ -48,18 +48,19 @@ program pf_preprocess
       'assertAny', 'assertIsFinite']
    character(len=*), parameter :: TAB = achar(9), CR = achar(13)
 
-   !> A name in a growing list.
+   !> A test in a growing list: its name and the line of its subroutine statement.
    type :: name_t
       character(len=:), allocatable :: s
+      integer :: line = 0
    end type name_t
 
    character(len=:), allocatable :: in_path, out_path, pf_file, module_name, line, text
    character(len=:), allocatable :: before_name, after_name
    type(name_t), allocatable :: tests(:)
-   !> the line of each test's subroutine statement
-   integer, allocatable :: test_lines(:)
-   integer :: in_unit, out_unit, ios, line_no, out_line, pending, pending_line, module_lines
-   logical :: module_found, at_end
+   !> the `module name` lines read (more than one, or one named otherwise than the file, is refused)
+   integer :: module_lines
+   integer :: in_unit, out_unit, ios, line_no, out_line, pending, pending_line
+   logical :: at_end
 
    call get_arguments(in_path, out_path)
    pf_file = base_name(in_path)
@@ -74,11 +75,10 @@ program pf_preprocess
    open (newunit=out_unit, file=out_path, status='replace', action='write', iostat=ios)
    if (ios /= 0) call stop_usage('cannot write ' // out_path)
 
-   allocate (tests(0), test_lines(0))
+   allocate (tests(0))
    module_lines = 0
    before_name = ''
    after_name = ''
-   module_found = .false.
    pending = NONE
    pending_line = 0
    line_no = 0
@@ -104,7 +104,7 @@ program pf_preprocess
    end do
    close (in_unit)
    if (pending /= NONE) call fail(pending_line, trim(DIRECTIVE_NAMES(pending)) // ' is not followed by a subroutine')
-   if (.not. module_found) call fail(1, 'no "module ' // module_name // '" statement: pFUnit needs each .pf file to ' &
+   if (module_lines == 0) call fail(1, 'no "module ' // module_name // '" statement: pFUnit needs each .pf file to ' &
       // 'hold one module named like the file')
    if (len(module_name) + len(PFUNIT_SUITE_SUFFIX) > MAX_NAME_LEN) call fail(1, 'module name "' // module_name // &
       '" is ' // int_str(len(module_name)) // ' characters: real pFUnit names the suite function "' // module_name // &
@@ -231,8 +231,7 @@ contains
 
       select case (pending)
       case (TEST)
-         tests = [tests, name_t(word)]
-         test_lines = [test_lines, line_no]
+         tests = [tests, name_t(word, line_no)]
       case (BEFORE)
          if (len(before_name) > 0) call fail(line_no, 'a second @before in the module')
          before_name = word
@@ -280,7 +279,6 @@ contains
             // 'in a .pf file, named like the file')
          if (lower(name) /= lower(module_name)) call fail(line_no, 'module "' // name // '": pFUnit needs each ' &
             // '.pf file to hold one module named like the file, "' // module_name // '"')
-         module_found = .true.
       else if (lower(name) == lower(module_name) .and. tail(1:min(1, len(tail))) == '!') then
          call fail(line_no, 'a comment after "module ' // name // '": real pFUnit reads the module statement ' &
             // 'only with nothing after the name, and would take the file as holding no module; put the ' &
@@ -297,7 +295,7 @@ contains
          columns = 6 + len(tests(i)%s) + 2
          if (len(before_name) > 0) columns = columns + len(', setUp=') + len(before_name)
          if (len(after_name) > 0) columns = columns + len(', tearDown=') + len(after_name)
-         if (columns > MAX_LINE_LEN) call fail(test_lines(i), 'test "' // tests(i)%s // '": real pFUnit registers ' &
+         if (columns > MAX_LINE_LEN) call fail(tests(i)%line, 'test "' // tests(i)%s // '": real pFUnit registers ' &
             // 'it with a generated line of ' // int_str(columns) // ' columns (the test''s name, then setUp= and ' &
             // 'tearDown= with the @before and @after names), over ' // int_str(MAX_LINE_LEN) // &
             ' ("Line truncated"): shorten the names')
