@@ -27,7 +27,9 @@ module interphase_fracture
    use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED, STATUS_BAD_COEFFICIENTS, &
       STATUS_MODEL_UNAVAILABLE
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
-   use interphase_micro_coefficients, only: micro_coefficients
+   use interphase_micro_coefficients, only: micro_coefficients, table_curvature_type
+   use interphase_rve_table, only: N_COEFFICIENTS, IC_K_N, IC_K_T, IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, &
+      IC_SC_N, IC_DTF, IC_UFBAR
    use interphase_rcurve, only: tabulated_rcurve
    use interphase_response, only: response_type, shared_respond => respond
    use interphase_provider, only: provider_values_at => coefficient_values_at
@@ -93,6 +95,7 @@ contains
       integer, intent(out) :: status
 
       type(coefficient_set_type) :: c, dc, d2c
+      type(table_curvature_type) :: curvature
       real(dp) :: slip_trial(2), dslip_dd(2), slip(2), g, g_s(3), g_lam(2), g_d, dlam_dd(2)
       real(dp) :: t2, gi, gii, gi_s(3), gii_s(3), gii_lam(2), gi_d, gii_d
       real(dp) :: gc(2), dgc(2), sig_n, sig_t, dsig_n, dsig_t, a1, a2, b1, b2, lam_s, lam2, kappa, dkappa
@@ -109,7 +112,7 @@ contains
       at%d = d
       at%g = 0.0_dp
       at%m = 0.0_dp
-      call coefficients_at(params, d, c, dc, status, d2c)
+      call coefficients_at(params, d, c, dc, status, curvature)
       if (status /= STATUS_OK) return
       if (d > 0.0_dp) at%m = d*c%ufbar
       t2 = load%st(1)**2 + load%st(2)**2
@@ -136,7 +139,8 @@ contains
       if (params%contact_band > 0.0_dp .and. params%model == MODEL_MICROMECHANICAL .and. .not. closed &
          .and. params%rcurve /= RCURVE_EQUIVALENT) then
          call contact_band_shape(params%contact_band, load%s_n, load%st, ntens, in_band, band_g, band_grad)
-         if (in_band) call band_stiffness(c, dc, d2c, q, dq, d2q)
+         ! (q and dq here; d2q, from the second derivatives, below where the crack grows)
+         if (in_band) call band_stiffness(c, dc, NO_COEFFICIENTS, q, dq, d2q)
       end if
 
       ! g: energy release rates (eq-20 convention) over the R-curve
@@ -197,6 +201,9 @@ contains
          return
       end if
 
+      ! the coefficients' second derivatives at D (formed only here: at D_n most calls stop above)
+      call second_derivatives_at(params, d, c, dc, curvature, d2c)
+      if (in_band) call band_stiffness(c, dc, d2c, q, dq, d2q)
       g_s = 0.0_dp
       g_lam = 0.0_dp
       if (equivalent_open) then
@@ -578,6 +585,22 @@ contains
       scan_point = 1.0_dp - (1.0_dp - d_from)*SCAN_DEPTH**(real(j, dp)/real(N_SCAN, dp))
    end function scan_point
 
+   !> The coefficients' second derivatives d2/dD2 at D, from what coefficients_at gave there
+   !> (c, dc and the table's `curvature`): the micromechanical table's (micro_second_derivatives),
+   !> zeros for the simplified model (linear in D; curvature not read).
+   pure subroutine second_derivatives_at(params, d, c, dc, curvature, d2c)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d                                   !! damage D = a/b
+      type(coefficient_set_type), intent(in) :: c, dc             !! coefficients_at's set and d/dD
+      type(table_curvature_type), intent(in) :: curvature         !! coefficients_at's, at D
+      type(coefficient_set_type), intent(out) :: d2c              !! d2/dD2
+      if (params%model == MODEL_MICROMECHANICAL) then
+         call micro_second_derivatives(d, c, dc, curvature, d2c)
+      else
+         d2c = NO_COEFFICIENTS
+      end if
+   end subroutine second_derivatives_at
+
    ! the response at fixed D, here where the compiler inlines it into the search's evaluation
    ! (interphase_response's, from the same source: a private copy)
    include 'interphase_response.inc'
@@ -585,5 +608,8 @@ contains
    ! growth function (interphase_provider's, from the same source: private copies)
    include 'interphase_coefficients_at.inc'
    include 'interphase_simplified.inc'
+   ! the table's second derivatives, here where growth_point inlines them (interphase_micro_coefficients',
+   ! from the same source: a private copy)
+   include 'interphase_second_derivatives.inc'
 
 end module interphase_fracture

@@ -35,7 +35,7 @@ module interphase_kernel
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, STATUS_BAD_TIME_INCREMENT, &
       STATUS_SEPARATION_OUT_OF_RANGE, STATUS_BAD_COEFFICIENTS, STATUS_MODEL_UNAVAILABLE
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
-   use interphase_micro_coefficients, only: micro_coefficients, micro_values
+   use interphase_micro_coefficients, only: micro_coefficients, micro_values, table_curvature_type
    use interphase_damage, only: damage_terms_type
    use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
    use interphase_response, only: response_type, slip_measure
@@ -109,10 +109,11 @@ contains
 
       type(coefficient_set_type) :: c, dc
       type(response_type) :: r
+      type(growth_point_type) :: at(2)          ! the fracture law's root search's evaluations
       type(damage_terms_type) :: terms
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
-      integer :: nt, j, m
+      integer :: nt, which
       !> the damage law's D is on its growing branch (displacement law: D_law < D^ < 1; fracture
       !> law: D_n < D < 1), the only case where dD/ds can be non-zero and the tangent needs dt/dD
       !> (D can change otherwise too: a jump to 1, viscous relaxation; dD/ds is 0 there)
@@ -194,8 +195,8 @@ contains
          end if
          form_response = .true.
       else
-         call fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, grows, status, form_response, c, dc, &
-            slip_trial, dslip_dd)
+         call fracture_update(params, old, s_n, st, ntens, d, at, which, dd_ds, grows, status, form_response, c, &
+            dc, slip_trial, dslip_dd)
          if (status /= STATUS_OK) return
       end if
       ! the response at D: the displacement law's, and the fracture law's where the crack ran to b
@@ -205,6 +206,29 @@ contains
          if (status /= STATUS_OK) return
       end if
 
+      if (form_response) then
+         call update_outputs(params, d, grows, dd_ds, ntens, r, traction, tangent, new, psi)
+      else
+         ! (the search's evaluation at D, where it is: not copied)
+         call update_outputs(params, d, grows, dd_ds, ntens, at(which)%r, traction, tangent, new, psi)
+      end if
+   end subroutine update_point
+
+   !> update_point's outputs from the response r at the increment's damage D (dD/ds = dd_ds where
+   !> the damage law's D grows): the state, the traction, the tangent of the STIFFNESS_* option
+   !> and the stored energy.
+   pure subroutine update_outputs(params, d, grows, dd_ds, ntens, r, traction, tangent, new, psi)
+      type(law_params_type), intent(in) :: params
+      real(dp), intent(in) :: d                          !! damage at the end of the increment (-)
+      logical, intent(in) :: grows                       !! as update_point's
+      real(dp), intent(in) :: dd_ds(3)                   !! dD/ds (1/mm)
+      integer, intent(in) :: ntens
+      type(response_type), intent(in) :: r               !! the response at D
+      real(dp), intent(out) :: traction(3)               !! (MPa)
+      real(dp), intent(out) :: tangent(3, 3)             !! (MPa/mm)
+      type(interface_state_type), intent(inout) :: new
+      real(dp), intent(out) :: psi                       !! (N/mm)
+      integer :: j, m
       if (params%damage_law /= DAMAGE_DISPLACEMENT) new%d_inviscid = d
       new%d = d
       new%slip = r%slip
@@ -241,7 +265,7 @@ contains
             tangent(1:m, 1:m) = 0.5_dp*(tangent(1:m, 1:m) + transpose(tangent(1:m, 1:m)))
       end select
       psi = r%psi
-   end subroutine update_point
+   end subroutine update_outputs
 
    !> tangent(1:m, 1:m) = from(1:m, 1:m) for m = 2 or 3 (the 2-D block written out, the 3-D one in
    !> whole columns: an assignment of a run-time extent compiles to a byte loop).
@@ -296,27 +320,28 @@ contains
    !> The fracture-mechanics law: D from g = 0, the response at that D, and dD/ds (the root
    !> search returns both from its last evaluation). Where the crack ran to b (D = 1) the
    !> response is the caller's to form (`broken`: from c, dc and the trial slip it returns).
-   pure subroutine fracture_update(params, old, s_n, st, ntens, d, r, dd_ds, grows, status, broken, c, dc, &
-         slip_trial, dslip_dd)
+   pure subroutine fracture_update(params, old, s_n, st, ntens, d, at, which, dd_ds, grows, status, broken, c, &
+         dc, slip_trial, dslip_dd)
       type(law_params_type), intent(in) :: params
       type(interface_state_type), intent(in) :: old
       real(dp), intent(in) :: s_n, st(2)
       integer, intent(in) :: ntens
       real(dp), intent(out) :: d                      !! damage at the end of the increment
-      type(response_type), intent(out) :: r           !! response at d (unless broken)
+      !> the root search's evaluations (grow_crack): at(which)%r is the response at d (unless broken)
+      type(growth_point_type), intent(out) :: at(2)
+      integer, intent(out) :: which                   !! 1 or 2 (0 where broken)
       real(dp), intent(out) :: dd_ds(3)               !! dD/ds (0 unless the crack grows)
       logical, intent(out) :: grows                   !! the crack grows to D < 1: dd_ds may be non-zero
       integer, intent(out) :: status
-      !> the crack ran to b (D = 1): r is not set, the caller forms it by `respond` (without
+      !> the crack ran to b (D = 1): no response is set, the caller forms it by `respond` (without
       !> D-derivatives) from c, dc at D = 1 and the trial slip from D_n
       logical, intent(out) :: broken
       type(coefficient_set_type), intent(out) :: c, dc     !! at D = 1 where broken
       real(dp), intent(out) :: slip_trial(2), dslip_dd(2)     !! lambda_trial, its D-slope, where broken
 
       type(crack_load_type) :: load
-      type(growth_point_type) :: at(2)
       real(dp) :: d_n, denominator, numerator(3)
-      integer :: j, nt, which
+      integer :: j, nt
 
       nt = ntens - 1
       d_n = max(old%d, params%d0)                     ! the initial crack a0 = D0 b
@@ -336,7 +361,6 @@ contains
          call growth_trial_slip(params%growth_slip, d_n, load%m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
          return
       end if
-      r = at(which)%r
 
       ! dD/ds from g(D, s, lambda(D, s)) = 0 while the crack grows
       grows = d > d_n .and. d < 1.0_dp
@@ -344,8 +368,8 @@ contains
          numerator = at(which)%g_s
          denominator = at(which)%g_d
          do j = 1, nt
-            numerator = numerator + at(which)%g_lam(j)*r%dlam_ds(j, :)
-            denominator = denominator + at(which)%g_lam(j)*r%dlam_dd(j)
+            numerator = numerator + at(which)%g_lam(j)*at(which)%r%dlam_ds(j, :)
+            denominator = denominator + at(which)%g_lam(j)*at(which)%r%dlam_dd(j)
          end do
          if (abs(denominator) > 0.0_dp) dd_ds(1:ntens) = -numerator(1:ntens)/denominator
       end if

@@ -26,7 +26,20 @@ module interphase_micro_coefficients
    implicit none
    private
    public :: micro_coefficients, micro_values, micro_ufbar, load_custom_table, custom_table_source, table_coefficients, &
-      custom_table_loaded, check_interpolant, default_table_data, micro_block_coefficients
+      custom_table_loaded, check_interpolant, default_table_data, micro_block_coefficients, table_curvature_type, &
+      micro_second_derivatives
+
+   !> What a table evaluation with derivatives keeps so that the second derivatives d2/dD2 of its
+   !> set can be formed later, and only where they are used (`micro_second_derivatives`): the
+   !> fracture law's search needs them at a damage where the crack grows, which it knows only
+   !> after g there is formed. No default initialisation (hot path): table_coefficients sets every
+   !> member.
+   type :: table_curvature_type
+      real(dp) :: d2v_x(N_COEFFICIENTS)  !! the interpolated columns' second derivatives in the crack variable x
+      real(dp) :: dv_x(N_COEFFICIENTS)   !! their first derivatives in x
+      real(dp) :: dx_dd                  !! dx/dD (-)
+      real(dp) :: d2x_dd2                !! d2x/dD2 (-)
+   end type table_curvature_type
 
    !> Points per interval between two rows at which `check_interpolant` evaluates the interpolant.
    integer, parameter :: INTERPOLANT_SAMPLES = 16
@@ -54,24 +67,25 @@ contains
    include 'interphase_crack_variable.inc'
 
    !> Coefficients at D from the selected table (TABLE_DEFAULT_CODE or TABLE_CUSTOM_CODE).
-   pure subroutine micro_coefficients(table, d, coef, dcoef_dd, status, d2coef_dd2)
+   pure subroutine micro_coefficients(table, d, coef, dcoef_dd, status, curvature)
       integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
       real(dp), intent(in) :: d                              !! damage D = a/b
       type(coefficient_set_type), intent(out) :: coef        !! coefficients at D
-      !> their derivatives d/dD (absent: not formed; then d2coef_dd2 must be absent too)
+      !> their derivatives d/dD (absent: not formed; then curvature must be absent too)
       type(coefficient_set_type), intent(out), optional :: dcoef_dd
       integer, intent(out) :: status
-      type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives
+      !> what `micro_second_derivatives` needs for the second derivatives at D
+      type(table_curvature_type), intent(out), optional :: curvature
       if (table == TABLE_CUSTOM_CODE) then
          if (.not. allocated(custom_coef)) then
             status = STATUS_TABLE_NOT_LOADED
             return
          end if
          call table_coefficients(custom_variable, custom_knots, custom_coef, d, coef, dcoef_dd, status, &
-            d2coef_dd2, custom_guide, custom_guide_scale, custom_guide_steps)
+            curvature, custom_guide, custom_guide_scale, custom_guide_steps)
       else
          call table_coefficients(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, d, &
-            coef, dcoef_dd, status, d2coef_dd2, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, &
+            coef, dcoef_dd, status, curvature, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, &
             DEFAULT_TABLE_GUIDE_STEPS)
       end if
    end subroutine micro_coefficients
@@ -82,7 +96,7 @@ contains
    !> zero derivatives. Below D = D_MIN_CRACK (> 0) T^f ~ 1/D and its derivatives ~ 1/D^2,
    !> 1/D^3 would come close to overflow: STATUS_BAD_COEFFICIENTS (no update reaches such a D:
    !> the displacement law's first damage is above 1e-16, and D0 is the fracture law's start).
-   pure subroutine table_coefficients(variable, knots, coef_table, d, coef, dcoef_dd, status, d2coef_dd2, &
+   pure subroutine table_coefficients(variable, knots, coef_table, d, coef, dcoef_dd, status, curvature, &
          guide, guide_scale, guide_steps)
       integer, intent(in) :: variable                        !! VARIABLE_* of the knots
       real(dp), contiguous, intent(in) :: knots(:)           !! knots, ascending
@@ -90,19 +104,20 @@ contains
       real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)
       real(dp), intent(in) :: d
       type(coefficient_set_type), intent(out) :: coef
-      !> first derivatives d/dD (absent: not formed; d2coef_dd2, which needs them, must then be
+      !> first derivatives d/dD (absent: not formed; curvature, which needs them, must then be
       !> absent too: it would be left undefined)
       type(coefficient_set_type), intent(out), optional :: dcoef_dd
       integer, intent(out) :: status
-      type(coefficient_set_type), intent(out), optional :: d2coef_dd2   !! second derivatives d2/dD2
+      !> what `micro_second_derivatives` needs for the second derivatives d2/dD2 at D
+      type(table_curvature_type), intent(out), optional :: curvature
       !> the knots' interval guide (guide_build), all three or none: the interval from x's cell
       !> (the same interval as cubic_locate's binary search, in fewer steps)
       integer, intent(in), optional :: guide(:)
       real(dp), intent(in), optional :: guide_scale
       integer, intent(in), optional :: guide_steps
 
-      real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS), d2v(N_COEFFICIENTS)
-      real(dp) :: tf, dtf, d2tf, dcf, d2cf
+      real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS), unused_d2v(N_COEFFICIENTS)
+      real(dp) :: tf, dtf, dcf
       integer :: interval
 
       if (d > 0.0_dp .and. d < D_MIN_CRACK) then
@@ -117,21 +132,31 @@ contains
          return
       end if
       call crack_variable(variable, d, x, dx_dd, d2x_dd2)
-      if (present(guide)) then
+      ! the columns' values v, and their derivatives in x, then in D (dv); with `curvature` the
+      ! second derivatives in x and what turns them into D's, kept for micro_second_derivatives
+      if (present(guide) .and. present(curvature)) then
          call guided_cubics(size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, x, &
-            present(d2coef_dd2), v, dv, d2v, status)
+            .true., v, curvature%dv_x, curvature%d2v_x, status)
          if (status /= STATUS_OK) return
-         ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
-         if (present(d2coef_dd2)) d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
+         curvature%dx_dd = dx_dd
+         curvature%d2x_dd2 = d2x_dd2
+         dv = curvature%dv_x*dx_dd
+      else if (present(guide)) then
+         call guided_cubics(size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, x, &
+            .false., v, dv, unused_d2v, status)
+         if (status /= STATUS_OK) return
+         dv = dv*dx_dd
       else
          call cubic_locate(knots, x, interval, status)
          if (status /= STATUS_OK) return
-         if (present(d2coef_dd2)) then
-            call cubic_eval(knots, coef_table, interval, x, v, dv, d2v)
-            ! d2X/dD2 = X_xx (dx/dD)^2 + X_x d2x/dD2
-            d2v = d2v*dx_dd*dx_dd + dv*d2x_dd2
+         if (present(curvature)) then
+            call cubic_eval(knots, coef_table, interval, x, v, curvature%dv_x, curvature%d2v_x)
+            curvature%dx_dd = dx_dd
+            curvature%d2x_dd2 = d2x_dd2
+            dv = curvature%dv_x*dx_dd
          else
             call cubic_eval(knots, coef_table, interval, x, v, dv)
+            dv = dv*dx_dd
          end if
       end if
       ! T^f = v/D, T^f' = (v' - T^f)/D, T^f'' = (v'' - 2 T^f')/D with v = D T^f
@@ -140,23 +165,18 @@ contains
       ! C^f_T from the reciprocity relation (reciprocal_cf), not from a spline of its own
       coef = as_set(v, tf, reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR)))
       if (.not. present(dcoef_dd)) return
-      dv = dv*dx_dd
       dtf = 0.0_dp
       if (d > 0.0_dp) dtf = (dv(IC_DTF) - tf)/d
-      ! C^f_T = -K m with K = tc_t and m = D ufbar: C^f' = -(K' m + K m'),
-      ! C^f'' = -(K'' m + 2 K' m' + K m'') (dv and d2v in D here; at D = 1, where the other
-      ! columns' derivatives are 0 by convention, these are the product rule's, -K ufbar and
-      ! -2 K ufbar': no caller asks for derivatives there)
+      ! C^f_T = -K m with K = tc_t and m = D ufbar: C^f' = -(K' m + K m') (dv in D here; at
+      ! D = 1, where the other columns' derivatives are 0 by convention, this is the product
+      ! rule's -K ufbar: no caller asks for derivatives there)
       dcf = -(dv(IC_TC_T)*(d*v(IC_UFBAR)) + v(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)))
       dcoef_dd = as_set(dv, dtf, dcf)
-      if (present(d2coef_dd2)) then
-         d2tf = 0.0_dp
-         if (d > 0.0_dp) d2tf = (d2v(IC_DTF) - 2.0_dp*dtf)/d
-         d2cf = -(d2v(IC_TC_T)*(d*v(IC_UFBAR)) + 2.0_dp*dv(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)) &
-            + v(IC_TC_T)*(2.0_dp*dv(IC_UFBAR) + d*d2v(IC_UFBAR)))
-         d2coef_dd2 = as_set(d2v, d2tf, d2cf)
-      end if
    end subroutine table_coefficients
+
+   ! the second derivatives from what table_coefficients kept (one source, included in
+   ! interphase_fracture too, where the search's evaluation inlines it)
+   include 'interphase_second_derivatives.inc'
 
    !> C^f_T at D from the reciprocity relation of the RVE problems, C^f_T = -(C_TT(0)/h) D ufbar
    !> (docs/rve.md; the tables meet it at their rows to 5e-15), with C_TT(0)/h = tc_t = T^c_T/h

@@ -1,5 +1,6 @@
 !> The coefficient set at a damage D from the model's provider (simplified formulas or the
-!> micromechanical RVE table), with its first and, on request, second D-derivatives; and the
+!> micromechanical RVE table), with its first D-derivatives (and, on request, what the table
+!> provider needs for the second: interphase_micro_coefficients' table_curvature_type); and the
 !> check that the data a material needs at run time (a custom RVE table, a tabulated R-curve)
 !> has been loaded, for hosts to make its absence a setup error rather than a failed update.
 module interphase_provider
@@ -12,7 +13,8 @@ module interphase_provider
    use interphase_status, only: STATUS_OK, STATUS_MODEL_UNAVAILABLE, STATUS_TABLE_NOT_LOADED, &
       STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR
-   use interphase_micro_coefficients, only: micro_coefficients, micro_values, micro_ufbar, custom_table_loaded
+   use interphase_micro_coefficients, only: micro_coefficients, micro_values, micro_ufbar, custom_table_loaded, &
+      table_curvature_type
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    implicit none
    private
