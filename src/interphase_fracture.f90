@@ -110,10 +110,9 @@ contains
       a2 = 0.0_dp
       b2 = 0.0_dp
       at%d = d
-      at%g = 0.0_dp
-      at%m = 0.0_dp
       call coefficients_at(params, d, c, dc, status, curvature)
       if (status /= STATUS_OK) return
+      at%m = 0.0_dp
       if (d > 0.0_dp) at%m = d*c%ufbar
       t2 = load%st(1)**2 + load%st(2)**2
       ! friction with D frozen, from the slip the crack faces carry at D (at D_n itself lambda_n,
