@@ -345,34 +345,41 @@ contains
 
       nt = ntens - 1
       d_n = max(old%d, params%d0)                     ! the initial crack a0 = D0 b
-      load%s_n = s_n
-      load%st = st
-      load%slip_old = old%slip
-      broken = .false.
-      call grow_crack(params, d_n, load, ntens, d, status, at, which)
-      if (status /= STATUS_OK) return
       dd_ds = 0.0_dp
       grows = .false.
-      if (which == 0) then
-         ! D = 1 (the crack ran to b)
-         broken = .true.
-         call coefficient_values_at(params, d, c, dc, status)
+      broken = .false.
+      if (d_n < 1.0_dp) then
+         load%s_n = s_n
+         load%st = st
+         load%slip_old = old%slip
+         call grow_crack(params, d_n, load, ntens, d, status, at, which)
          if (status /= STATUS_OK) return
-         call growth_trial_slip(params%growth_slip, d_n, load%m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
-         return
+         if (which /= 0) then
+            ! dD/ds from g(D, s, lambda(D, s)) = 0 while the crack grows
+            grows = d > d_n .and. d < 1.0_dp
+            if (grows) then
+               numerator = at(which)%g_s
+               denominator = at(which)%g_d
+               do j = 1, nt
+                  numerator = numerator + at(which)%g_lam(j)*at(which)%r%dlam_ds(j, :)
+                  denominator = denominator + at(which)%g_lam(j)*at(which)%r%dlam_dd(j)
+               end do
+               if (abs(denominator) > 0.0_dp) dd_ds(1:ntens) = -numerator(1:ntens)/denominator
+            end if
+            return
+         end if
+      else
+         ! the crack has reached b: D stays (grow_crack's own first test, made here before its
+         ! call, which such a point then does not pay)
+         d = d_n
+         which = 0
+         load%m_from = 0.0_dp
       end if
-
-      ! dD/ds from g(D, s, lambda(D, s)) = 0 while the crack grows
-      grows = d > d_n .and. d < 1.0_dp
-      if (grows) then
-         numerator = at(which)%g_s
-         denominator = at(which)%g_d
-         do j = 1, nt
-            numerator = numerator + at(which)%g_lam(j)*at(which)%r%dlam_ds(j, :)
-            denominator = denominator + at(which)%g_lam(j)*at(which)%r%dlam_dd(j)
-         end do
-         if (abs(denominator) > 0.0_dp) dd_ds(1:ntens) = -numerator(1:ntens)/denominator
-      end if
+      ! D = 1: the crack ran to b in the increment, or had reached it before
+      broken = .true.
+      call coefficient_values_at(params, d, c, dc, status)
+      if (status /= STATUS_OK) return
+      call growth_trial_slip(params%growth_slip, d_n, load%m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
    end subroutine fracture_update
 
    ! the separation's range test, here where the compiler inlines it (interphase_finite's, from
