@@ -7,6 +7,7 @@ module interphase_fe2d_case
    use, intrinsic :: iso_fortran_env, only: iostat_end
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
+   use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_text_input, only: tried_path, parse_real
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
@@ -145,9 +146,9 @@ contains
          message = where//'bricks must be 2 (couplet) or 3 (triplet), got '//int_to_string(bricks)
          return
       end if
-      if (.not. positive(brick_length, 'brick_length')) return
-      if (.not. positive(brick_height, 'brick_height')) return
-      if (.not. positive(thickness, 'thickness')) return
+      if (.not. in_window(brick_length, 'brick_length')) return
+      if (.not. in_window(brick_height, 'brick_height')) return
+      if (.not. in_window(thickness, 'thickness')) return
       select case (to_lower(trim(adjustl(sides))))
       case ('free')
          run%sides = SIDES_FREE
@@ -175,11 +176,11 @@ contains
          read (unit, nml=geometry, iostat=ios, iomsg=iomsg)
          call group_status(run%path, group, ios, iomsg, ok, message)
       end subroutine read_group
-      logical function positive(value, name)
+      logical function in_window(value, name)
          real(dp), intent(in) :: value
          character(len=*), intent(in) :: name
-         positive = check_positive(where, name, value, message)
-      end function positive
+         in_window = check_window(where, name, value, message)
+      end function in_window
    end subroutine read_geometry
 
    subroutine read_mesh(unit, run, ok, message)
@@ -244,7 +245,7 @@ contains
       read (unit, nml=brick, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'brick', ios, iomsg, ok, message)
       if (.not. ok) return
-      ok = check_positive(where, 'e', e, message)
+      ok = check_window(where, 'e', e, message)
       if (.not. ok) return
       ok = .false.
       if (.not. ieee_is_finite(nu)) then
@@ -336,8 +337,8 @@ contains
          message = where//'precompression must be finite'
          return
       end if
-      if (precompression < 0.0_dp) then
-         message = where//'precompression is a compressive pressure and must be >= 0, got '// &
+      if (precompression < 0.0_dp .or. precompression > PROPS_VALUE_MAX) then
+         message = where//'precompression is a compressive pressure and must lie in [0, 1e20] MPa, got '// &
             real_to_string(precompression)
          return
       end if
@@ -354,9 +355,9 @@ contains
          message = where//'max_iterations must be in 1..50, got '//int_to_string(max_iterations)
          return
       end if
-      if (.not. check_positive(where, 'tolerance', tolerance, message)) return
-      if (.not. check_positive(where, 'displacement_tolerance', displacement_tolerance, message)) return
-      if (.not. check_positive(where, 'min_increment', min_increment, message)) return
+      if (.not. check_relative(where, 'tolerance', tolerance, message)) return
+      if (.not. check_relative(where, 'displacement_tolerance', displacement_tolerance, message)) return
+      if (.not. check_window(where, 'min_increment', min_increment, message)) return
       if (min_increment > 1.0_dp) then
          message = where//'min_increment is a fraction of the nominal increment and must be <= 1'
          return
@@ -405,21 +406,40 @@ contains
       end if
    end subroutine group_status
 
-   !> True when value is finite and > 0; else false with a message.
-   logical function check_positive(where, name, value, message)
+   !> True when value is finite and in the window of the PROPS' magnitudes, [1e-20, 1e20] (beyond
+   !> it the assembly's products and the solver's norms can overflow or lose every digit); else
+   !> false with a message.
+   logical function check_window(where, name, value, message)
       character(len=*), intent(in) :: where, name
       real(dp), intent(in) :: value
       character(len=:), allocatable, intent(inout) :: message
 
-      check_positive = .false.
+      check_window = .false.
       if (.not. ieee_is_finite(value)) then
          message = where//name//' must be finite'
-      else if (.not. (value > 0.0_dp)) then
-         message = where//name//' must be > 0, got '//real_to_string(value)
+      else if (.not. (value >= PROPS_VALUE_MIN .and. value <= PROPS_VALUE_MAX)) then
+         message = where//name//' must lie in [1e-20, 1e20], got '//real_to_string(value)
       else
-         check_positive = .true.
+         check_window = .true.
       end if
-   end function check_positive
+   end function check_window
+
+   !> True when value is a relative tolerance: finite, in [1e-20, 1) (a tolerance of 1 or more
+   !> accepts any iterate); else false with a message.
+   logical function check_relative(where, name, value, message)
+      character(len=*), intent(in) :: where, name
+      real(dp), intent(in) :: value
+      character(len=:), allocatable, intent(inout) :: message
+
+      check_relative = .false.
+      if (.not. ieee_is_finite(value)) then
+         message = where//name//' must be finite'
+      else if (.not. (value >= PROPS_VALUE_MIN .and. value < 1.0_dp)) then
+         message = where//name//' is a relative tolerance and must lie in [1e-20, 1), got '//real_to_string(value)
+      else
+         check_relative = .true.
+      end if
+   end function check_relative
 
    !> Read a shear history: two columns `t u_shear` (mm), `#` comments and blank lines allowed,
    !> time strictly increasing, at least two rows, first u_shear 0 (the precompression step
