@@ -342,6 +342,9 @@ def test_numeric_entries_must_be_numbers():
         with pytest.raises(TypeError, match="mu must be a number"):
             interphase.Material(**dict(SIMPLIFIED, mu=value))
     assert interphase.Material(**dict(SIMPLIFIED, mu=np.float64(0.5))).props[2] == 0.5
+    # an integer beyond the double range is named, not a bare OverflowError
+    with pytest.raises(ValueError, match="mu = 1000+ is beyond the range of a double"):
+        interphase.Material(**dict(SIMPLIFIED, mu=10**400))
 
 
 def test_threads_give_the_numbers_of_one():

@@ -54,7 +54,12 @@ def _real(name, value, who="Material"):
         return float(value)
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
         raise TypeError(f"{who}: {name} must be a number, got {value!r} ({type(value).__name__})")
-    return float(value)
+    try:
+        return float(value)
+    except OverflowError:
+        # an int (or Fraction) beyond the double range: named, as the library names a value
+        # out of its range
+        raise ValueError(f"{who}: {name} = {value} is beyond the range of a double (about 1.8e308)") from None
 
 
 #: the largest count the C interface takes (a C int)
