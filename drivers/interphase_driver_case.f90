@@ -115,7 +115,8 @@ module interphase_driver_case
    !> The entries of interphase-point's `&loading` group and their kinds (checked before the
    !> namelist read, with those of `material_entry_kinds('material')`).
    type(entry_kind_type), parameter :: LOADING_ENTRIES(8) = [ &
-      entry_kind_type('loading.history', KIND_STRING), entry_kind_type('loading.output', KIND_STRING), &
+      entry_kind_type('loading.history', KIND_STRING, ENTRY_LEN), &
+      entry_kind_type('loading.output', KIND_STRING, ENTRY_LEN), &
       entry_kind_type('loading.increments', KIND_INTEGER), entry_kind_type('loading.plot', KIND_LOGICAL), &
       entry_kind_type('loading.traction_tolerance', KIND_REAL), entry_kind_type('loading.output_every', KIND_INTEGER), &
       entry_kind_type('loading.tangent_check', KIND_REAL), entry_kind_type('loading.tangent_step', KIND_REAL)]
@@ -150,7 +151,7 @@ contains
          'k_n', 'k_t', 'd0', 'g_ci', 'g_cii', 'contact_band', 'viscosity']
       integer :: i
       do i = 1, size(STRINGS)
-         kinds(i) = entry_kind_type(group//'.'//trim(STRINGS(i)), KIND_STRING)
+         kinds(i) = entry_kind_type(group//'.'//trim(STRINGS(i)), KIND_STRING, ENTRY_LEN)
       end do
       do i = 1, size(REALS)
          kinds(size(STRINGS) + i) = entry_kind_type(group//'.'//trim(REALS(i)), KIND_REAL)

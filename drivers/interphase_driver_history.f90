@@ -5,9 +5,10 @@
 !>     0      0      0
 !>     1      0      0.05
 !>
-!> or `t s_T1 s_T2 s_N` (3-D, NTENS = 3). Times are arbitrary units, strictly increasing;
-!> separations in mm. Every data line has the same number of columns. Errors name the file and
-!> the line. The table is stored in the UMAT's component order: normal first, then shear(s).
+!> or `t s_T1 s_T2 s_N` (3-D, NTENS = 3). Times are arbitrary units, strictly increasing, each
+!> step finite; separations in mm, within the update's range (|s| <= SEPARATION_MAX, 1e20 mm).
+!> Every data line has the same number of columns. Errors name the file and the line. The table
+!> is stored in the UMAT's component order: normal first, then shear(s).
 !>
 !> Mixed control: a comment line `# columns: t s_T Sigma_N` names the columns; each component
 !> is given either as its separation (`s_T`, `s_T1`, `s_T2`, `s_N`; mm) or as its traction
@@ -23,6 +24,8 @@ module interphase_driver_history
    use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, to_lower, &
       text_file_type, open_line_file, close_text_file
    use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES
+   use interphase_params, only: SEPARATION_MAX
+   use interphase_finite, only: difference_is_finite
    implicit none
    private
    public :: history_type, read_history
@@ -197,6 +200,19 @@ contains
             end if
          end do
          ok = .false.
+         controls = .false.
+         if (named_columns > 0) controls(:ncolumns - 1) = named(:ncolumns - 1)
+         ! a separation beyond the range the update admits (|s_i| <= SEPARATION_MAX) would fail only
+         ! in the UMAT, in the middle of the replay
+         do i = 2, ncolumns
+            if (controls(i - 1)) cycle
+            if (abs(values(i)) > SEPARATION_MAX) then
+               message = where//'column '//int_to_string(i)//': separation '//real_to_string(values(i))// &
+                  ' mm is beyond the range the update admits, |s| <= '//real_to_string(SEPARATION_MAX)//' mm'
+               call close_text_file(unit)
+               return
+            end if
+         end do
 
          if (history%nrows > 0) then
             if (.not. (values(1) > history%time(history%nrows))) then
@@ -207,9 +223,15 @@ contains
                call close_text_file(unit)
                return
             end if
+            ! (the replay interpolates the time within the step: the step must be a number)
+            if (.not. difference_is_finite(values(1), history%time(history%nrows))) then
+               message = where//'time '//real_to_string(values(1))//': the time step from the previous time '// &
+                  real_to_string(history%time(history%nrows))//' (line '// &
+                  int_to_string(history%line(history%nrows))//') is not finite (beyond the largest double)'
+               call close_text_file(unit)
+               return
+            end if
          end if
-         controls = .false.
-         if (named_columns > 0) controls(:ncolumns - 1) = named(:ncolumns - 1)
          call append_row(history, line_number, values(1), values(2:ncolumns), controls(:ncolumns - 1))
       end do
       call close_text_file(unit)

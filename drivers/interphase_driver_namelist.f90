@@ -5,6 +5,10 @@
 !> the file, the line, the group and the entry (`&loading: plot = 'yes' (line 9) is not .true.
 !> or .false.`). A group or an entry that the program does not read is refused, with the list of
 !> those it reads (`&material: sf_tt (line 6) is not an entry of &material; its entries: ...`).
+!> A string longer than the variable that receives it is refused (the read would cut it short),
+!> and so is a string that holds '&' or '$': gfortran's namelist read, looking for a group, takes
+!> either for the start of one wherever it is, inside quotes too, and would read a group written
+!> inside a string of an earlier group in place of the real one.
 module interphase_driver_namelist
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
@@ -19,10 +23,12 @@ module interphase_driver_namelist
    !> Kinds of entry values.
    integer, parameter :: KIND_REAL = 1, KIND_INTEGER = 2, KIND_LOGICAL = 3, KIND_STRING = 4
 
-   !> One known entry: 'group.name' (lower case) and its kind.
+   !> One known entry: 'group.name' (lower case), its kind and, for a string, the length of the
+   !> variable that receives it (a longer value is refused: 0 refuses every string).
    type :: entry_kind_type
       character(len=64) :: name = ''
       integer :: kind = 0
+      integer :: length = 0
    end type entry_kind_type
 
    !> Where an entry of a case file was given: 'group.name' (lower case) and its line.
@@ -273,8 +279,17 @@ contains
       subroutine add_value(text, quoted)
          character(len=*), intent(in) :: text
          integer, intent(in) :: quoted
+         integer :: marker
          if (.not. in_entry) then
             call fail('&'//group//': a value without an entry name: '//clip_text(text))
+            return
+         end if
+         ! (a string's closing quote is in column i: its opening one in column i - len(text) + 1)
+         marker = scan(text, '&$')
+         if (quoted == KIND_STRING .and. marker > 0) then
+            call fail('&'//group//': '//name//' = '//clip_text(text)//' holds "'//text(marker:marker)// &
+               '" (column '//int_to_string(i - len(text) + marker)//'), which Fortran''s namelist read '// &
+               'takes for the start of a group even inside quotes: a string value cannot hold "&" or "$"')
             return
          end if
          nvalues = nvalues + 1
@@ -284,7 +299,7 @@ contains
 
       !> Check the entry just ended against its kind; false (message set) when it is wrong.
       logical function finish_entry() result(good)
-         integer :: j, kind
+         integer :: j, kind, length
          character(len=:), allocatable :: lower, where
          real(dp) :: number
          character(len=32) :: why
@@ -292,8 +307,12 @@ contains
          if (.not. in_entry) return
          in_entry = .false.
          kind = 0
+         length = 0
          do j = 1, size(known)
-            if (trim(known(j)%name) == group//'.'//name) kind = known(j)%kind
+            if (trim(known(j)%name) == group//'.'//name) then
+               kind = known(j)%kind
+               length = known(j)%length
+            end if
          end do
          where = path//':'//int_to_string(entry_line)//': &'//group//': '//name
          if (kind == 0) then
@@ -333,10 +352,31 @@ contains
             if (.not. good) message = where//' = '//clip_text(value)//' is not .true. or .false.'
          case (KIND_STRING)
             good = value_kind == KIND_STRING
-            if (.not. good) message = where//' = '//clip_text(value)//' is not a quoted string'
+            if (.not. good) then
+               message = where//' = '//clip_text(value)//' is not a quoted string'
+            else if (unquoted_length(value) > length) then
+               good = .false.
+               message = where//' = '//clip_text(value)//' is '//int_to_string(unquoted_length(value))// &
+                  ' characters long: this entry takes at most '//int_to_string(length)//' (a longer one '// &
+                  'would be cut short)'
+            end if
          end select
          if (.not. good) call close_text_file(unit)
       end function finish_entry
+
+      !> The length of the text of a quoted string (`quoted`: its quotes around it, a doubled quote
+      !> for one), as the namelist read stores it.
+      pure integer function unquoted_length(quoted) result(n)
+         character(len=*), intent(in) :: quoted
+         integer :: j
+         n = 0
+         j = 2
+         do while (j < len(quoted))
+            if (quoted(j:j) == quoted(1:1)) j = j + 1      ! (a doubled quote is one)
+            n = n + 1
+            j = j + 1
+         end do
+      end function unquoted_length
 
       !> The digits of an integer literal without its sign and leading zeros (at least 1).
       pure integer function significant_digits(literal) result(n)

@@ -222,7 +222,8 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  *
  * @param props, nprops, ntens  the material and the size, as interphase_update
  * @param nrows                 rows of the history (>= 1)
- * @param time                  @p nrows doubles, finite and strictly increasing (s)
+ * @param time                  @p nrows doubles, finite and strictly increasing, each step
+ *                              time[i] - time[i-1] finite (s)
  * @param value                 @p nrows * @p ntens doubles, row-major, each row normal first:
  *                              the separation (mm), or the traction (MPa) where control is 1
  * @param control               NULL (every component separation-controlled) or @p nrows * @p ntens

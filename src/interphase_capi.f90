@@ -25,7 +25,7 @@ module interphase_capi
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_overrun
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count, SEPARATION_MAX, HOST_VALUE_MAX
-   use interphase_finite, only: is_within, is_finite, is_finite_nonnegative
+   use interphase_finite, only: is_within, is_finite, is_finite_nonnegative, difference_is_finite
    use interphase_status, only: STATUS_BAD_HOST_INPUT, STATUS_BAD_STATE
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update, update_point
@@ -382,7 +382,7 @@ contains
       integer(c_int), value, intent(in) :: nprops          !! number of PROPS
       integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
       integer(c_size_t), value, intent(in) :: nrows        !! rows of the history (>= 1)
-      type(c_ptr), value, intent(in) :: time               !! nrows doubles, strictly increasing (s)
+      type(c_ptr), value, intent(in) :: time               !! nrows doubles, strictly increasing, each step finite (s)
       type(c_ptr), value, intent(in) :: value              !! nrows*ntens doubles (mm or MPa)
       type(c_ptr), value, intent(in) :: control            !! nrows*ntens ints (0, 1) or NULL
       integer(c_int), value, intent(in) :: increments      !! sub-increments per segment (>= 1)
@@ -445,9 +445,16 @@ contains
             write (message, '(a,i0,a,i0,a,i0,a,a,a)', iostat=ios) 'value[', (row - 1)*n + i - 1, '] (row ', &
                row - 1, ', component ', i - 1, ') = ', real_text(values(i, row)), ' is not finite'
          else if (row > 1) then
-            if (.not. times(row) > times(row - 1)) write (message, '(a,i0,a,g0.10,a,g0.10,a)', iostat=ios) &
-               'time[', row - 1, '] = ', times(row), ' is not greater than the previous time ', times(row - 1), &
-               '; times must increase strictly'
+            if (.not. times(row) > times(row - 1)) then
+               write (message, '(a,i0,a,g0.10,a,g0.10,a)', iostat=ios) &
+                  'time[', row - 1, '] = ', times(row), ' is not greater than the previous time ', times(row - 1), &
+                  '; times must increase strictly'
+            else if (.not. difference_is_finite(times(row), times(row - 1))) then
+               ! (the replay interpolates the time within the step: time[i] - time[i-1] must be a number)
+               write (message, '(a,i0,a,g0.10,a,i0,a,g0.10,a)', iostat=ios) 'time[', row - 1, '] = ', times(row), &
+                  ': the time step from time[', row - 2, '] = ', times(row - 1), &
+                  ' is not finite (beyond the largest double)'
+            end if
          end if
          if (len_trim(message) > 0) exit
       end do

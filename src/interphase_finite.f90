@@ -12,7 +12,7 @@ module interphase_finite
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: is_finite, is_finite_nonnegative, is_within, all_within, binary64_bits, EXPONENT_MASK, &
+   public :: is_finite, is_finite_nonnegative, is_within, all_within, difference_is_finite, binary64_bits, EXPONENT_MASK, &
       MAGNITUDE_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
 
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
@@ -42,5 +42,14 @@ contains
       is_finite_nonnegative = is_finite(x)
       if (is_finite_nonnegative) is_finite_nonnegative = x >= 0.0_dp
    end function is_finite_nonnegative
+
+   !> True when a - b is a finite number (a and b finite: a time step of a history), tested
+   !> without forming it: a difference beyond huge() raises the overflow flag, and a host with
+   !> floating-point traps stops there. a/2 - b/2 is the difference halved, rounded alike (no
+   !> halving of a number that large is inexact), and never overflows.
+   elemental logical function difference_is_finite(a, b)
+      real(dp), intent(in) :: a, b
+      difference_is_finite = abs(0.5_dp*a - 0.5_dp*b) <= 0.5_dp*huge(1.0_dp)
+   end function difference_is_finite
 
 end module interphase_finite

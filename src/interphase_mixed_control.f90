@@ -180,7 +180,7 @@ contains
    subroutine replay_history_path(law, time, value, traction_control, increments, tolerance, output_every, point, &
          failure)
       class(point_law_type), intent(inout) :: law
-      real(dp), intent(in) :: time(:)              !! nrows times, strictly increasing
+      real(dp), intent(in) :: time(:)              !! nrows times, strictly increasing, each step time(k+1) - time(k) finite
       real(dp), intent(in) :: value(:, :)          !! (ntens, nrows): mm, or MPa where traction-controlled
       logical, intent(in) :: traction_control(:, :)  !! (ntens, nrows): true where a traction
       integer, intent(in) :: increments            !! sub-increments per segment (>= 1)

@@ -74,16 +74,16 @@ module interphase_fe2d_case
    type(entry_kind_type), parameter :: FE2D_ENTRIES(21) = [ &
       entry_kind_type('geometry.bricks', KIND_INTEGER), entry_kind_type('geometry.brick_length', KIND_REAL), &
       entry_kind_type('geometry.brick_height', KIND_REAL), entry_kind_type('geometry.thickness', KIND_REAL), &
-      entry_kind_type('geometry.sides', KIND_STRING), entry_kind_type('mesh.nx', KIND_INTEGER), &
-      entry_kind_type('mesh.ny', KIND_INTEGER), entry_kind_type('mesh.integration', KIND_STRING), &
+      entry_kind_type('geometry.sides', KIND_STRING, ENTRY_LEN), entry_kind_type('mesh.nx', KIND_INTEGER), &
+      entry_kind_type('mesh.ny', KIND_INTEGER), entry_kind_type('mesh.integration', KIND_STRING, ENTRY_LEN), &
       entry_kind_type('brick.e', KIND_REAL), entry_kind_type('brick.nu', KIND_REAL), &
       entry_kind_type('loading.precompression', KIND_REAL), &
       entry_kind_type('loading.precompression_increments', KIND_INTEGER), &
-      entry_kind_type('loading.history', KIND_STRING), entry_kind_type('loading.increments', KIND_INTEGER), &
+      entry_kind_type('loading.history', KIND_STRING, ENTRY_LEN), entry_kind_type('loading.increments', KIND_INTEGER), &
       entry_kind_type('loading.tolerance', KIND_REAL), entry_kind_type('loading.displacement_tolerance', KIND_REAL), &
       entry_kind_type('loading.max_iterations', KIND_INTEGER), entry_kind_type('loading.min_increment', KIND_REAL), &
-      entry_kind_type('loading.output', KIND_STRING), entry_kind_type('loading.plot', KIND_LOGICAL), &
-      entry_kind_type('loading.assembly', KIND_STRING)]
+      entry_kind_type('loading.output', KIND_STRING, ENTRY_LEN), entry_kind_type('loading.plot', KIND_LOGICAL), &
+      entry_kind_type('loading.assembly', KIND_STRING, ENTRY_LEN)]
 
 contains
 

@@ -751,6 +751,13 @@ static void test_run_history(const char *csv_path) {
                                   NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
   CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 && strstr(detail, "time[2]"),
         "times not increasing: status %d: %s", status, detail);
+  /* finite times whose difference is not: the replay interpolates the time within the step */
+  const double wide[3] = {-1e308, 1e308, 1.5e308};
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, wide, shear, control, 10, 1e-12, 1, ROWS,
+                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 && strstr(detail, "time[1]") &&
+            strstr(detail, "the time step from time[0]") && strstr(detail, "is not finite"),
+        "a time step beyond the largest double: status %d: %s", status, detail);
   status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, shear, control, 200, 1e-15, 1, 10,
                                   NULL, NULL, o_tr, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
   CHECK(status == INTERPHASE_STATUS_OUTPUT_FULL && done == 10, "capacity 10: status %d, %zu rows: %s", status, done,

@@ -749,6 +749,16 @@ DRIVER_CASES = {
     "table_simplified": ("'simplified'", "'simplified', table = 'x.dat'", None),
     "increments_word": ("increments = 20", "increments = abc", None),
     "entry_unknown": ("increments = 20", "increments = 20, tangent = 1", None),
+    # a string holding a group marker ('&' or '$': gfortran's namelist read takes either for the
+    # start of a group inside quotes too), a string longer than the driver's ENTRY_LEN (bytes)
+    "group_in_string": ("'h.csv'", "'d&material model=\"micromechanical\" mu=0.1 /o.csv'", None),
+    "dollar_in_string": ("'h.txt'", "'h$material.txt'", None),
+    "model_too_long": ("'simplified'", "'simplified" + " " * 1100 + "junk'", None),
+    "output_of_entry_len": ("'h.csv'", "'h.csv" + " " * 1019 + "'", None),
+    "output_one_byte_too_long": ("'h.csv'", "'h.csv" + "x" * 1018 + "\u00e9'", None),
+    # history rows beyond the update's range: a time step that is not finite, |s| > 1e20 mm
+    "time_step_not_finite": ("'h.txt'", "'h.txt'", "-1e308 0 0\n1e308 0 0.001\n"),
+    "separation_beyond_range": ("'h.txt'", "'h.txt'", "0 0 0\n1 -2e20 0.01\n"),
 }
 
 
@@ -771,3 +781,13 @@ def test_read_case_refuses_what_the_driver_refuses(point_driver, tmp_path, monke
     error = caught.value
     got = error.detail if isinstance(error, interphase.InterphaseError) else str(error)
     assert got == expected[len("interphase-point: error: "):]
+
+
+def test_run_refuses_a_time_step_beyond_the_largest_double():
+    """Finite times whose difference is not (the replay interpolates the time within a step):
+    the library refuses them (STATUS_BAD_HISTORY), naming the time and the one before it."""
+    m = interphase.Material(**SIMPLIFIED)
+    with pytest.raises(interphase.InterphaseError, match=r"time\[1\] = .*: the time step from time\[0\] = .* is not "
+                       r"finite") as caught:
+        m.run([[0.0, 0.0], [0.01, 0.0]], time=[-1e308, 1e308])
+    assert caught.value.status == interphase.STATUS_BAD_HISTORY and caught.value.result is None

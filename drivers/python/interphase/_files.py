@@ -15,6 +15,11 @@ _NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?")
 MAX_FILE_BYTES = 64 * 1024 * 1024
 #: the longest line the readers take (bytes, without its newline), as the driver's (MAX_LINE_LEN)
 MAX_LINE_LEN = 65536
+#: the longest text of a string entry of a case file (bytes), as the driver's (ENTRY_LEN): a longer
+#: one is refused (the driver's namelist read would cut it short)
+ENTRY_LEN = 1024
+#: the largest |separation| of a history (mm), as the update admits (interphase_params' SEPARATION_MAX)
+SEPARATION_MAX = 1.0e20
 # the driver reads a regular file in chunks of this many bytes (interphase_text_input's CHUNK_LEN):
 # which of the two limits a line passes first is told chunk by chunk
 _CHUNK = 4096
@@ -329,11 +334,20 @@ def read_history(path, control=False):
             raise ValueError(f"{where}: found {len(words)} columns, but line {first_line} has {len(rows[0])}; "
                              "every data line must have the same number of columns")
         row = [_number(w, f"{where}: column {i}") for i, w in enumerate(words, 1)]
+        controls = named[1] if named is not None else [False] * (len(words) - 1)
+        # (the driver's checks: a separation beyond the update's range, a time step not finite)
+        for i, value in enumerate(row[1:], 2):
+            if not controls[i - 2] and abs(value) > SEPARATION_MAX:
+                raise ValueError(f"{where}: column {i}: separation {_real_text(value)} mm is beyond the range the "
+                                 f"update admits, |s| <= {_real_text(SEPARATION_MAX)} mm")
         if rows and not row[0] > rows[-1][0]:
             raise ValueError(f"{where}: time {_real_text(row[0])} is not greater than the previous time "
                              f"{_real_text(rows[-1][0])} (line {lines[-1]}); times must increase strictly")
+        if rows and not abs(0.5 * row[0] - 0.5 * rows[-1][0]) <= 0.5 * np.finfo(np.float64).max:
+            raise ValueError(f"{where}: time {_real_text(row[0])}: the time step from the previous time "
+                             f"{_real_text(rows[-1][0])} (line {lines[-1]}) is not finite (beyond the largest double)")
         rows.append(row)
-        flags.append(named[1] if named is not None else [False] * (len(words) - 1))
+        flags.append(controls)
         lines.append(number)
     if len(rows) < 2:
         raise ValueError(f"{path}: needs at least 2 data rows, found {len(rows)}")
@@ -392,6 +406,10 @@ def _typed(kind, quoted, text, where):
         return _lower(text) in (".true.", "t", ".t.")
     if not quoted:
         raise ValueError(f"{where} = {_clip(text)} is not a quoted string")
+    length = len(_unquoted(text).encode("utf-8", "surrogateescape"))
+    if length > ENTRY_LEN:
+        raise ValueError(f"{where} = {_clip(text)} is {length} characters long: this entry takes at most "
+                         f"{ENTRY_LEN} (a longer one would be cut short)")
     return _unquoted(text)
 
 
@@ -425,9 +443,17 @@ def _namelist_entries(path, known=None):
         value = _untyped(quoted, text, where) if kinds is None else _typed(kinds[name], quoted, text, where)
         groups[group][name] = (value, entry_line)
 
-    def add(quoted, text):
+    def add(quoted, text, column=0):
         if name is None:
             fail(f"&{group}: a value without an entry name: {_clip(text)}")
+        # gfortran's namelist read, looking for a group, takes '&' or '$' for its start inside quotes
+        # too (the driver's add_value): column, in bytes, of the string's opening quote
+        marker = next((k for k, ch in enumerate(text) if ch in "&$"), None) if quoted else None
+        if marker is not None:
+            at = column + len(text[:marker].encode("utf-8", "surrogateescape"))
+            fail(f'&{group}: {name} = {_clip(text)} holds "{text[marker]}" (column {at}), which Fortran\'s '
+                 'namelist read takes for the start of a group even inside quotes: a string value cannot hold '
+                 '"&" or "$"')
         values.append((quoted, text))
 
     for number, line in enumerate(_text_lines(path), 1):
@@ -486,7 +512,7 @@ def _namelist_entries(path, known=None):
                     j += 1
                 if j >= n:
                     fail(f"&{group}: a string that does not end on its line: {_clip(line[i:])}")
-                add(True, line[i:j + 1])
+                add(True, line[i:j + 1], len(line[:i].encode("utf-8", "surrogateescape")) + 1)
                 i = j + 1
             else:
                 j = i

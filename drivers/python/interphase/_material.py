@@ -393,7 +393,8 @@ class Material:
         bad = np.flatnonzero(~np.isfinite(t))
         if bad.size:
             raise ValueError(f"Material.run: time[{bad[0]}] = {float(t[bad[0]])!r} is not finite")
-        bad = np.flatnonzero(~(np.diff(t) > 0.0))
+        with np.errstate(over="ignore"):     # (a step beyond the largest double: the library refuses it)
+            bad = np.flatnonzero(~(np.diff(t) > 0.0))
         if bad.size:
             i = bad[0] + 1
             raise ValueError(f"Material.run: time must increase strictly: time[{i}] = {float(t[i])!r} is not "
