@@ -9,6 +9,7 @@ peak). The driver
 of the same build writes its CSV; the package writes the same table with Result.to_csv; the two
 files must be equal byte for byte (17 significant digits: every number equal to the last bit)."""
 
+import re
 import subprocess
 
 import numpy as np
@@ -139,13 +140,22 @@ def assert_same_partial_csv(driver, case, tmp_path, status, words):
 
 def test_halvings_as_the_driver(point_driver, tmp_path):
     """A sub-increment that fails is halved: a halved step converges (its row is written), the
-    rest fails until the tenth halving, as in interphase-point."""
+    rest fails until the tenth halving (Material.run, the driver's algorithm in the library). A
+    history file with such a separation (beyond 1e20 mm) is refused by both readers at its line."""
+    m = interphase.Material(**dict(SIMPLIFIED, damage_law="displacement"))
+    with pytest.raises(interphase.InterphaseError, match="even after 10 halvings") as caught:
+        m.run([[0.0, 0.0], [2e20, 0.0], [0.0, 0.0]], increments=3)
+    error = caught.value
+    assert error.status == interphase.STATUS_SEPARATION_OUT_OF_RANGE
+    assert error.result.separation[-1, 0] == 1e20 and len(error.result) == 3
     (tmp_path / "beyond.txt").write_text("0 0 0\n1 0 2e20\n2 0 0\n")
     case = write_case(tmp_path, "beyond", tmp_path / "beyond.txt", dict(SIMPLIFIED, damage_law="displacement"),
                       increments=3)
-    error = assert_same_partial_csv(point_driver, case, tmp_path, interphase.STATUS_SEPARATION_OUT_OF_RANGE,
-                                    "even after 10 halvings")
-    assert error.result.separation[-1, 0] == 1e20 and len(error.result) == 3
+    done = subprocess.run([point_driver, str(case), "--no-plot", "--output-dir", str(tmp_path)], capture_output=True)
+    expected = "beyond.txt:2: column 3: separation 0.2E+21 mm is beyond the range the update admits"
+    assert done.returncode != 0 and expected in done.stderr.decode()
+    with pytest.raises(ValueError, match=re.escape(expected)):
+        interphase.read_case(case)
 
 
 def test_a_fatal_failure_as_the_driver(point_driver, source_dir, tmp_path):
