@@ -16,7 +16,7 @@ module interphase_capi
       c_associated, c_f_pointer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
-   use interphase_real_text, only: real_text, es_field
+   use interphase_real_text, only: real_text, es_field, es_fields
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE, LFM_RCURVE
    use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
@@ -242,7 +242,7 @@ contains
       real(dp) :: s(3), ds(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS), dt
       integer(c_size_t) :: row, n_done
       integer :: code, i, j, n, nsv, at, ios
-      logical :: viscous, timed
+      logical :: viscous, timed, dt_ok
       character(len=MESSAGE_LEN) :: message
       character(len=32) :: row_text
 
@@ -274,9 +274,11 @@ contains
       if (.not. (all(is_within(separation(1:n), SEPARATION_MAX)) .and. all(is_within(traction(1:n), HOST_VALUE_MAX)) &
             .and. is_within(stored_energy(1), HOST_VALUE_MAX) .and. is_within(dissipated_energy(1), HOST_VALUE_MAX))) then
          code = STATUS_BAD_HOST_INPUT
-         write (message, '(a,es12.4,a,es9.1e3,a,es9.1e3,a)') 'row 0: the starting separation, traction and '// &
-            'energies must be finite, the separation within ', SEPARATION_MAX, ' mm, the rest within ', &
-            HOST_VALUE_MAX, ' (MPa, N/mm)'
+         message = 'row 0: separation (mm)'//trim(es_fields(separation(1:n), 11, 3))//', traction (MPa)'// &
+            trim(es_fields(traction(1:n), 11, 3))//', stored and dissipated energy (N/mm)'// &
+            trim(es_fields([stored_energy(1), dissipated_energy(1)], 11, 3))//': the starting values must be '// &
+            'finite, the separation within'//es_field(SEPARATION_MAX, 8, 1)//' mm, the rest within'// &
+            es_field(HOST_VALUE_MAX, 8, 1)
          call finish()
          return
       end if
@@ -289,13 +291,19 @@ contains
          ds(1:n) = separation(at + 1:at + n) - separation(at - n + 1:at)
          s(1:n) = separation(at - n + 1:at) + ds(1:n)
          if (timed) then
-            dt = times(row) - times(row - 1)
-            ! the times finite and not decreasing, whatever the material (only viscous
-            ! regularisation reads them)
-            if (.not. is_finite_nonnegative(dt)) then
+            ! the times finite, their step finite (a step beyond the largest double is not
+            ! formed) and not negative, whatever the material (only viscous regularisation reads
+            ! them)
+            dt_ok = all(is_finite(times(row - 1:row)))
+            if (dt_ok) dt_ok = difference_is_finite(times(row), times(row - 1))
+            if (dt_ok) then
+               dt = times(row) - times(row - 1)
+               dt_ok = dt >= 0.0_dp
+            end if
+            if (.not. dt_ok) then
                code = STATUS_BAD_TIME_INCREMENT
-               write (message, '(a,i0,a,es12.4e3,a,es12.4e3,a,es12.4e3,a)', iostat=ios) 'row ', row - 1, ': dt = ', dt, &
-                  ' s (time ', times(row), ' after ', times(row - 1), '): the times must be finite and must not decrease'
+               write (message, '(a,i0,a,es12.4e3,a,es12.4e3,a)', iostat=ios) 'row ', row - 1, ': time ', times(row), &
+                  ' s after ', times(row - 1), ' s: the times must be finite, with finite steps, and must not decrease'
                call finish()
                return
             end if

@@ -30,6 +30,9 @@
  *
  * Exits 0 when every check passes, 1 otherwise, printing each failed check.
  */
+/* (feenableexcept: a GNU extension of <fenv.h>, to run one call with the overflow trap on) */
+#define _GNU_SOURCE
+#include <fenv.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -590,8 +593,20 @@ static void test_run(const char *csv_path) {
   tra[0] = INFINITY;
   status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, sep, tim, tra, NULL, sta, psi, wd, &done, detail,
                           sizeof detail);
-  CHECK(status == INTERPHASE_STATUS_BAD_HOST_INPUT && done == 0, "infinite starting traction: status %d", status);
+  CHECK(status == INTERPHASE_STATUS_BAD_HOST_INPUT && done == 0 && strstr(detail, "row 0: separation (mm)") != NULL &&
+            strstr(detail, "traction (MPa)   Infinity") != NULL,
+        "infinite starting traction, named: status %d: %s", status, detail);
   tra[0] = tra0;
+  /* times whose step is beyond the largest double: refused before the step is formed (with the
+   * overflow trap on, forming it would stop the caller) */
+  const double wide_times[3] = {-1e308, 1e308, 1.5e308};
+  feenableexcept(FE_OVERFLOW | FE_INVALID | FE_DIVBYZERO);
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, sep, wide_times, tra, NULL, sta, psi, wd, &done,
+                          detail, sizeof detail);
+  fedisableexcept(FE_OVERFLOW | FE_INVALID | FE_DIVBYZERO);
+  CHECK(status == INTERPHASE_STATUS_BAD_TIME_INCREMENT && done == 1 && strstr(detail, "row 1: time ") != NULL &&
+            strstr(detail, "with finite steps") != NULL,
+        "a time step beyond the largest double: status %d, rows_done %zu: %s", status, done, detail);
   status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 0, sep, tim, tra, NULL, sta, psi, wd, &done, detail,
                           sizeof detail);
   CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0, "nrows = 0: status %d", status);
