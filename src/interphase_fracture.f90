@@ -515,8 +515,8 @@ contains
    !> growth_point at D_n for an open crack under the equivalent R-curve, where the crack does not
    !> grow, at a third of its cost: there g needs no coefficient (equivalent_open_g), and the
    !> response at a D that does not grow needs the coefficients' values alone
-   !> (coefficient_values_at: the numbers coefficients_at gives, bit for bit), not their first and
-   !> second derivatives (two thirds of a table lookup). arrested = .true.: `at` holds what
+   !> (coefficient_values_at: the numbers coefficients_at gives, bit for bit), not their
+   !> derivatives (most of a table lookup). arrested = .true.: `at` holds what
    !> growth_point gives there (g < 0, g's derivatives zero, the response, whose dtrac_dd, read
    !> only by a growing crack's tangent, is formed from zeros). arrested = .false.: g >= 0 (or
    !> NaN), or the response finds the crack closed at D_n (s_N <= 0 at D_n > 0 is not tried; the

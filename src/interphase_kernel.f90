@@ -317,9 +317,10 @@ contains
       dd_ds = weight*dd_ds
    end subroutine regularise_damage
 
-   !> The fracture-mechanics law: D from g = 0, the response at that D, and dD/ds (the root
-   !> search returns both from its last evaluation). Where the crack ran to b (D = 1) the
-   !> response is the caller's to form (`broken`: from c, dc and the trial slip it returns).
+   !> The fracture-mechanics law: D from g = 0, the response at that D (at(which)%r, the root
+   !> search's last evaluation, read in place), and dD/ds. Where the crack ran to b, or had
+   !> reached it (D = 1), the response is the caller's to form (`broken`: from c, dc and the trial
+   !> slip it returns).
    pure subroutine fracture_update(params, old, s_n, st, ntens, d, at, which, dd_ds, grows, status, broken, c, &
          dc, slip_trial, dslip_dd)
       type(law_params_type), intent(in) :: params

@@ -33,7 +33,7 @@ module interphase_micro_coefficients
    !> set can be formed later, and only where they are used (`micro_second_derivatives`): the
    !> fracture law's search needs them at a damage where the crack grows, which it knows only
    !> after g there is formed. No default initialisation (hot path): table_coefficients sets every
-   !> member.
+   !> member where it returns STATUS_OK.
    type :: table_curvature_type
       real(dp) :: d2v_x(N_COEFFICIENTS)  !! the interpolated columns' second derivatives in the crack variable x
       real(dp) :: dv_x(N_COEFFICIENTS)   !! their first derivatives in x
@@ -159,7 +159,7 @@ contains
             dv = dv*dx_dd
          end if
       end if
-      ! T^f = v/D, T^f' = (v' - T^f)/D, T^f'' = (v'' - 2 T^f')/D with v = D T^f
+      ! T^f = v/D, T^f' = (v' - T^f)/D with v = D T^f (T^f'': micro_second_derivatives)
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
       ! C^f_T from the reciprocity relation (reciprocal_cf), not from a spline of its own
