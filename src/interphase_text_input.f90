@@ -25,6 +25,12 @@ module interphase_text_input
    integer, parameter, public :: TEXT_LINE = 0, TEXT_END = 1, TEXT_LINE_TOO_LONG = 2, &
       TEXT_FILE_TOO_LARGE = 3, TEXT_READ_ERROR = 4
 
+   !> Why parse_real refuses a nonzero literal whose magnitude is below tiny(1.0_dp).
+   character(len=*), parameter :: UNDERFLOW_WHY = 'out of range (|x| < 2.2e-308)'
+   !> Digits of an exponent (leading zeros not counted) beyond which a literal is out of range
+   !> whatever its mantissa (10**6 > MAX_LINE_LEN digits).
+   integer, parameter :: MAX_EXPONENT_DIGITS = 6
+
    !> Bytes read from the file at once (its size permitting).
    integer, parameter :: CHUNK_LEN = 4096
 
@@ -275,11 +281,15 @@ contains
 
    !> The number in `field` when the whole field (leading and trailing blanks aside) is one
    !> finite real literal (is_real_literal); else ok = .false. and `why` says what is wrong.
+   !> A literal with a nonzero digit whose magnitude is below the smallest normal double,
+   !> tiny(1.0_dp) = 2.2250738585072014e-308 (it would read as 0, or as a subnormal with fewer
+   !> digits than written), is refused as out of range (UNDERFLOW_WHY), as one beyond
+   !> huge(1.0_dp) is: a value is never silently changed to another. A zero (0, 0.0e-999) is read.
    subroutine parse_real(field, value, ok, why)
       character(len=*), intent(in) :: field
       real(dp), intent(out) :: value
       logical, intent(out) :: ok
-      character(len=*), intent(out) :: why            !! 'not a number' or 'not finite'
+      character(len=*), intent(out) :: why            !! 'not a number', 'not finite (...)' or UNDERFLOW_WHY
       integer :: ios, first, last
       value = 0.0_dp
       ok = .false.
@@ -295,10 +305,21 @@ contains
          why = 'not finite (out of range)'
          return
       end if
+      if (vanishes(field(first:last))) then
+         why = UNDERFLOW_WHY
+         return
+      end if
       read (field(first:last), *, iostat=ios) value
       if (ios /= 0) return
       if (.not. is_finite(value)) then
+         value = 0.0_dp
          why = 'not finite (out of range)'
+         return
+      end if
+      if (abs(value) < tiny(value) .and. verify(mantissa_of(field(first:last)), '+-0.') > 0) then
+         ! a nonzero literal read as 0 or as a subnormal
+         value = 0.0_dp
+         why = UNDERFLOW_WHY
          return
       end if
       ok = .true.
@@ -347,7 +368,7 @@ contains
    pure logical function overflows(literal)
       character(len=*), intent(in) :: literal
       character(len=*), parameter :: HUGE_DIGITS = '17976931348623157'   ! huge(1.0_dp) = 0.1797...e309
-      integer, parameter :: HUGE_MAGNITUDE = 309, MAX_EXPONENT_DIGITS = 6
+      integer, parameter :: HUGE_MAGNITUDE = 309
       character(len=len(HUGE_DIGITS)) :: digits
       integer :: i, n, magnitude, exponent, mark, ndigits, ios
       logical :: before_point, significant
@@ -355,7 +376,7 @@ contains
       mark = scan(literal, 'eEdD')
       exponent = 0
       if (mark > 0) then
-         if (len(literal(mark + 1:)) - verify(literal(mark + 1:), '+-0') + 1 > MAX_EXPONENT_DIGITS) then
+         if (exponent_too_long(literal(mark + 1:))) then
             overflows = literal(mark + 1:mark + 1) /= '-' .and. verify(literal(1:mark - 1), '+-0.') > 0
             return
          end if
@@ -388,6 +409,46 @@ contains
       magnitude = magnitude + exponent
       overflows = magnitude > HUGE_MAGNITUDE .or. (magnitude == HUGE_MAGNITUDE .and. digits > HUGE_DIGITS)
    end function overflows
+
+   !> Whether the exponent of a real literal (the text after its letter: sign and digits) has
+   !> more than MAX_EXPONENT_DIGITS digits, its leading zeros not counted (e+0000001 has one),
+   !> so that its magnitude (at least 10**MAX_EXPONENT_DIGITS) lies beyond what any line's
+   !> mantissa could make up for (MAX_LINE_LEN digits): the literal is out of range unless its
+   !> digits are all zero.
+   pure logical function exponent_too_long(exponent_text)
+      character(len=*), intent(in) :: exponent_text
+      integer :: first_significant
+      first_significant = verify(exponent_text, '+-0')
+      exponent_too_long = .false.
+      if (first_significant == 0) return           ! all zeros: the exponent is 0
+      exponent_too_long = len(exponent_text) - first_significant + 1 > MAX_EXPONENT_DIGITS
+   end function exponent_too_long
+
+   !> Whether a real literal (is_real_literal) with a nonzero digit has a negative exponent too
+   !> long to read (exponent_too_long): its value is below tiny(1.0_dp), decided without reading
+   !> it.
+   pure logical function vanishes(literal)
+      character(len=*), intent(in) :: literal
+      integer :: mark
+      vanishes = .false.
+      mark = scan(literal, 'eEdD')
+      if (mark == 0) return
+      if (literal(mark + 1:mark + 1) /= '-') return
+      vanishes = exponent_too_long(literal(mark + 1:)) .and. verify(literal(1:mark - 1), '+-0.') > 0
+   end function vanishes
+
+   !> The mantissa of a real literal: the text before its exponent letter (all of it without one).
+   pure function mantissa_of(literal) result(mantissa)
+      character(len=*), intent(in) :: literal
+      character(len=:), allocatable :: mantissa
+      integer :: mark
+      mark = scan(literal, 'eEdD')
+      if (mark == 0) then
+         mantissa = literal
+      else
+         mantissa = literal(1:mark - 1)
+      end if
+   end function mantissa_of
 
    !> At most the first 60 characters of `text`, with '...' when cut, and a control character
    !> other than a tab as '?' (for messages).

@@ -520,6 +520,9 @@ contains
                if (index(why, 'finite') > 0) then
                   message = shown//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
                      ": '"//line(starts(k):ends(k))//"' is not a finite number"
+               else if (index(why, 'out of range') > 0) then
+                  message = shown//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
+                     ": '"//line(starts(k):ends(k))//"' is "//trim(why)
                else
                   message = shown//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
                      ": cannot parse '"//line(starts(k):ends(k))//"' as a number"

@@ -337,6 +337,23 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
     assert interphase.read_case(tmp_path / "accent.nml").increments >= 1
 
 
+def test_numbers_are_read_as_the_driver_reads_them():
+    """_parse_real: a nonzero literal below the smallest normal double is out of range (not 0, not
+    a subnormal); leading zeros of an exponent do not count towards its length."""
+    from interphase._files import _parse_real
+    for text in ("1e-400", "-1e-400", "1e-310", "4.9e-324", "2.2250738585072e-308", "1e-9999999",
+                 "1e-00000000000400", "000.00001e-304"):
+        assert _parse_real(text) == (None, "out of range (|x| < 2.2e-308)"), text
+    for text in ("0", "-0.0", "0e-400", "0.000e-9999999", "0d99999999"):
+        assert _parse_real(text) == (0.0, None), text
+    assert _parse_real("2.2250738585072014e-308") == (2.2250738585072014e-308, None)
+    assert _parse_real("1e0000000") == (1.0, None)
+    assert _parse_real("1.5E+000000000000002") == (150.0, None)
+    assert _parse_real("2.5d-0000001") == (0.25, None)
+    assert _parse_real("1e1000000") == (None, "not finite (out of range)")
+    assert _parse_real("1e+00001000000") == (None, "not finite (out of range)")
+
+
 def test_numeric_entries_must_be_numbers():
     for value in ("0.75", "1.0e", True):
         with pytest.raises(TypeError, match="mu must be a number"):
@@ -759,6 +776,12 @@ DRIVER_CASES = {
     # history rows beyond the update's range: a time step that is not finite, |s| > 1e20 mm
     "time_step_not_finite": ("'h.txt'", "'h.txt'", "-1e308 0 0\n1e308 0 0.001\n"),
     "separation_beyond_range": ("'h.txt'", "'h.txt'", "0 0 0\n1 -2e20 0.01\n"),
+    # a nonzero number below the smallest normal double (read as 0 or a subnormal before): refused
+    "mu_underflow": ("mu = 0.75", "mu = 1e-400", None),
+    "mu_subnormal": ("mu = 0.75", "mu = 1d-310", None),
+    "mu_exponent_zeros": ("mu = 0.75", "mu = 0.75e0000000", None),
+    "history_underflow": ("'h.txt'", "'h.txt'", "0 0 0\n1 0 1e-400\n"),
+    "history_exponent_zeros": ("'h.txt'", "'h.txt'", "0 0 0\n1 0 0.01E+000000000\n"),
 }
 
 

@@ -3,6 +3,7 @@
 import os
 import re
 import struct
+import sys
 
 import numpy as np
 
@@ -11,6 +12,8 @@ from ._library import InterphaseError
 from ._material import Material, DEFAULT_TRACTION_TOLERANCE, DEFAULT_TANGENT_STEP, _count
 
 _NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?")
+# why a nonzero literal below the smallest normal double is refused (interphase_text_input's UNDERFLOW_WHY)
+_UNDERFLOW_WHY = "out of range (|x| < 2.2e-308)"
 #: the largest file the readers take (bytes), as the driver's (interphase_text_input's MAX_FILE_BYTES)
 MAX_FILE_BYTES = 64 * 1024 * 1024
 #: the longest line the readers take (bytes, without its newline), as the driver's (MAX_LINE_LEN)
@@ -118,6 +121,13 @@ def _real_text(value):
     return text
 
 
+def _exponent_too_long(tail):
+    """Whether an exponent (the text after its letter) has more than 6 digits, its leading zeros
+    not counted (e+0000001 has one; e0000000 is 0): interphase_text_input's exponent_too_long."""
+    first = next((i for i, c in enumerate(tail) if c not in "+-0"), None)
+    return first is not None and len(tail) - first > 6
+
+
 def _overflows(literal):
     """Whether a real literal lies beyond the largest double, decided from its digits and exponent
     as the driver decides it (interphase_text_input's overflows: 1.7976931348623158e308 does)."""
@@ -126,9 +136,7 @@ def _overflows(literal):
     mantissa = literal
     if mark:
         tail = literal[mark.start() + 1:]
-        # (the exponent's characters from the first that is not a sign or a 0; all: one more)
-        first = next((i for i, c in enumerate(tail) if c not in "+-0"), None)
-        if (len(tail) + 1 if first is None else len(tail) - first) > 6:
+        if _exponent_too_long(tail):
             return tail[:1] != "-" and any(c not in "+-0." for c in literal[:mark.start()])
         exponent = int(tail)
         mantissa = literal[:mark.start()]
@@ -144,8 +152,9 @@ def _overflows(literal):
 
 def _parse_real(text):
     """(value, None) when `text` (blanks around it aside) is one finite real literal, else (None,
-    why): 'not a number', 'not finite (NaN or Inf)' or 'not finite (out of range)' (the driver's
-    parse_real)."""
+    why): 'not a number', 'not finite (NaN or Inf)', 'not finite (out of range)' or, for a
+    nonzero literal below the smallest normal double 2.2250738585072014e-308 (it would read as 0
+    or as a subnormal), _UNDERFLOW_WHY (the driver's parse_real)."""
     field = text.strip(" \t")
     if not _NUMBER.fullmatch(field):
         word = _lower(field[1:] if field[:1] in ("+", "-") else field)
@@ -154,9 +163,16 @@ def _parse_real(text):
         return None, "not a number"
     if _overflows(field):
         return None, "not finite (out of range)"
+    mark = re.search(r"[eEdD]", field)
+    mantissa = field[:mark.start()] if mark else field
+    nonzero = any(c not in "+-0." for c in mantissa)
+    if mark and field[mark.start() + 1:][:1] == "-" and _exponent_too_long(field[mark.start() + 1:]) and nonzero:
+        return None, _UNDERFLOW_WHY
     value = float(field.replace("d", "e").replace("D", "e"))
     if not np.isfinite(value):
         return None, "not finite (out of range)"
+    if abs(value) < sys.float_info.min and nonzero:
+        return None, _UNDERFLOW_WHY
     return value, None
 
 
