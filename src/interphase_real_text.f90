@@ -63,18 +63,35 @@ contains
 
    !> The value in an `es<width>.<decimals>` field, right-justified to `width`, with a
    !> non-finite value as NaN, Infinity or -Infinity (asterisks when even that does not fit).
+   !> An exponent of three digits (|exponent| >= 100) is written with its letter, as
+   !> `es<width>.<decimals>e3` writes it (1.250E+307, -2.2E-308; a plain es field drops the E:
+   !> 1.250+307), and so takes one character more than a two-digit one (1.250E+30): a width
+   !> of decimals + 7 fits a positive value, decimals + 8 a negative one, decimals + 9 keeps a
+   !> blank before every field.
    pure function es_field(value, width, decimals) result(text)
       real(dp), intent(in) :: value               !! the number
       integer, intent(in) :: width                !! field width (characters), 1..60
-      integer, intent(in) :: decimals             !! digits after the point
+      integer, intent(in) :: decimals             !! digits after the point, 0..60
       character(len=max(1, min(60, width))) :: text
       character(len=:), allocatable :: word
-      character(len=20) :: edit
-      integer :: ios
+      character(len=24) :: edit
+      character(len=80) :: wide
+      integer :: ios, d
 
       if (is_finite(value)) then
-         write (edit, '(a,i0,a,i0,a)') '(es', len(text), '.', max(0, decimals), ')'
-         write (text, edit, iostat=ios) value
+         d = max(0, min(60, decimals))
+         ! the exponent as the field rounds it (9.99e99 in es8.1 is 1.0E+100)
+         write (edit, '(a,i0,a,i0,a)') '(es', d + 12, '.', d, 'e3)'
+         write (wide, edit, iostat=ios) value
+         if (ios == 0) then
+            if (wide(d + 10:d + 10) == '0') then
+               ! two exponent digits: the usual es field (1.0E+20, not 1.0E+020)
+               write (edit, '(a,i0,a,i0,a)') '(es', len(text), '.', d, ')'
+            else
+               write (edit, '(a,i0,a,i0,a)') '(es', len(text), '.', d, 'e3)'
+            end if
+            write (text, edit, iostat=ios) value
+         end if
          if (ios /= 0) text = repeat('*', len(text))
          return
       end if

@@ -21,7 +21,7 @@ module interphase_rve_table
    use interphase_finite, only: is_finite
    use interphase_logarithm, only: ln_positive
    use interphase_kinds, only: dp
-   use interphase_real_text, only: real_text
+   use interphase_real_text, only: real_text, es_field
    use interphase_spline, only: SPLINE_NOT_A_KNOT
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
       parse_real, tried_path, clip_text, to_lower, TEXT_LINE, TEXT_END
@@ -816,17 +816,16 @@ contains
          character(len=MESSAGE_LEN), intent(out) :: message
          real(dp), intent(in), optional :: expected, allowed
          character(len=:), allocatable :: rest
-         character(len=8) :: difference, bound
          character(len=12) :: line_text
          integer :: ios
          status = STATUS_TABLE_IDENTITY
          write (line_text, '(i0)', iostat=ios) table%line(row)
          rest = ':'//trim(line_text)//': identity '//what//' fails: value '//trim(real_text(value))
          if (present(expected) .and. present(allowed)) then
-            write (difference, '(es8.1)', iostat=ios) abs(value - expected)
-            write (bound, '(es8.1)', iostat=ios) allowed
-            rest = rest//', expected '//trim(real_text(expected))//' (difference '//trim(adjustl(difference))// &
-               ', allowed '//trim(adjustl(bound))//')'
+            ! (es_field: a three-digit exponent keeps its E, 1.1E-308, not 1.1-308)
+            rest = rest//', expected '//trim(real_text(expected))//' (difference '// &
+               trim(adjustl(es_field(abs(value - expected), 9, 1)))//', allowed '// &
+               trim(adjustl(es_field(allowed, 9, 1)))//')'
          end if
          rest = rest//' at a = '//trim(real_text(table%rows(row, COL_A)))//' mm'
          ! the path shortened where the message would not fit otherwise: what fails is never cut

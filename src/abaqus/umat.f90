@@ -109,9 +109,10 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       end do
       if (.not. within) then
          if (.not. (all_within(ntens, stran, HOST_INCREMENT_MAX) .and. all_within(ntens, dstran, HOST_INCREMENT_MAX))) then
-            ! (es_fields: an infinity reads Infinity with every compiler)
-            message = 'STRAN '//es_fields(stran, 12, 4)
-            stress_text = es_fields(dstran, 11, 3)
+            ! (es_fields: an infinity reads Infinity with every compiler; widths with room for a sign,
+            ! a three-digit exponent and a blank before each field)
+            message = 'STRAN '//es_fields(stran, 13, 4)
+            stress_text = es_fields(dstran, 12, 3)
             message = trim(message)//', DSTRAN'//trim(stress_text)
             status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
                all(is_finite(stran)) .and. all(is_finite(dstran)))
@@ -119,7 +120,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
             exit update
          end if
          ! STRAN and DSTRAN in range: STRESS is not
-         stress_text = es_fields(stress, 11, 3)
+         stress_text = es_fields(stress, 12, 3)
          write (message, '(a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), &
             ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned last)'
          status = STATUS_BAD_HOST_INPUT
@@ -127,8 +128,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       end if
       if (host_energies) then
          if (.not. (is_within(sse, HOST_VALUE_MAX) .and. is_within(spd, HOST_VALUE_MAX))) then
-            write (message, '(a,a,a,a,a,es9.1e3,a)') 'incoming SSE ', es_fields([sse], 11, 3), ', SPD ', &
-               es_fields([spd], 11, 3), ': the host must pass finite values within ', HOST_VALUE_MAX, &
+            write (message, '(a,a,a,a,a,es9.1e3,a)') 'incoming SSE ', es_fields([sse], 12, 3), ', SPD ', &
+               es_fields([spd], 12, 3), ': the host must pass finite values within ', HOST_VALUE_MAX, &
                ' (those the UMAT returned last; a host that does not keep them, such as CalculiX, needs the '// &
                'host option 1)'
             status = STATUS_BAD_HOST_INPUT
