@@ -287,8 +287,9 @@ int interphase_load_table(const char *path, char *detail, size_t detail_len);
 /**
  * Load the tabulated R-curve of the fracture-mechanics damage law, used where the R-curve
  * selector (PROPS[nm + 1]) is 3 (what UEXTERNALDB does with INTERPHASE_RCURVE in Abaqus). The
- * file holds rows "D G_cI G_cII" (D strictly increasing in [0, 1], at least two rows, toughness
- * > 0 in N/mm; `#` comments and blank lines allowed). Until one is loaded, such an update
+ * file holds rows "D G_cI G_cII" (D strictly increasing in [0, 1], consecutive D at least 1e-9
+ * apart, at least two rows, toughnesses in [1e-20, 1e20] N/mm; `#` comments and blank lines
+ * allowed). Until one is loaded, such an update
  * returns INTERPHASE_STATUS_RCURVE_NOT_LOADED.
  *
  * NOT thread-safe: it writes library-wide data. Call it once, from one thread, before any thread

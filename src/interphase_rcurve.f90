@@ -3,13 +3,15 @@
 !> file) into `protected` data, and evaluated by pure code.
 !>
 !> File format: plain text, `#` comments and blank lines allowed; one row per point,
-!> `D G_cI G_cII` with D = a/b strictly increasing in [0, 1] (at least two rows) and the
-!> toughnesses > 0 in N/mm (energy per unit crack area, as measured; the eq-20 release rate G is twice it;
+!> `D G_cI G_cII` with D = a/b strictly increasing in [0, 1] (at least two rows, consecutive D at
+!> least 1e-9 apart) and the toughnesses in [1e-20, 1e20] N/mm, the window of the PROPS
+!> toughness (energy per unit crack area, as measured; the eq-20 release rate G is twice it;
 !> docs/theory.md). Between the rows a monotone cubic (Fritsch-Carlson) interpolates, so the
 !> R-curve keeps the shape of the data; outside the rows it is an error, never an extrapolation.
 module interphase_rcurve
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
+   use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_real_text, only: real_text
    use interphase_status, only: message_path, separation_text, STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
@@ -22,6 +24,12 @@ module interphase_rcurve
    private
    public :: load_rcurve, tabulated_rcurve, rcurve_source, rcurve_loaded, rcurve_covers, rcurve_coverage, &
       rcurve_overrun
+
+   !> Smallest difference of consecutive rows' D. With toughnesses in the PROPS window
+   !> [1e-20, 1e20] N/mm it keeps the interpolant's divided differences below about 1e29 N/mm
+   !> and its cubic coefficients below 1e48 (no overflow in the spline or the fracture law's
+   !> derivatives); 1e-9 b is far below any measured crack length.
+   real(dp), parameter :: D_SPACING_MIN = 1.0e-9_dp
 
    real(dp), allocatable, protected :: rcurve_knots(:)          !! D of the rows
    real(dp), allocatable, protected :: rcurve_coef(:, :, :)     !! monotone cubic, 2 columns
@@ -107,6 +115,15 @@ contains
                call fail(STATUS_RCURVE_NEGATIVE, 'toughness must be > 0 N/mm: '//clip_text(line(first:)))
                return
             end if
+            ! the window of the PROPS toughness G_c (the fracture law divides by G_c**2)
+            do field = 2, 3
+               if (v(field) < PROPS_VALUE_MIN .or. v(field) > PROPS_VALUE_MAX) then
+                  call fail(STATUS_RCURVE_BAD_RANGE, trim(merge('G_cI ', 'G_cII', field == 2))//' = '// &
+                     clip_text(line(starts(field):ends(field)))//' lies outside [1e-20, 1e20] N/mm (as the '// &
+                     'PROPS toughness): '//clip_text(line(first:)))
+                  return
+               end if
+            end do
             if (v(1) < 0.0_dp .or. v(1) > 1.0_dp) then
                call fail(STATUS_RCURVE_BAD_RANGE, 'D must lie in [0, 1]: '//clip_text(line(first:)))
                return
@@ -114,6 +131,12 @@ contains
             if (n > 0) then
                if (.not. (v(1) > rows(1, n))) then
                   call fail(STATUS_RCURVE_BAD_RANGE, 'D does not increase: '//clip_text(line(first:)))
+                  return
+               end if
+               if (v(1) - rows(1, n) < D_SPACING_MIN) then
+                  call fail(STATUS_RCURVE_BAD_RANGE, 'D = '//clip_text(line(starts(1):ends(1)))// &
+                     " lies closer than 1e-9 to the previous row's D = "//real_text(rows(1, n))// &
+                     ' (rows must be at least 1e-9 apart): '//clip_text(line(first:)))
                   return
                end if
             end if
