@@ -20,6 +20,7 @@
 module interphase_rve_table
    use interphase_finite, only: is_finite
    use interphase_logarithm, only: ln_positive
+   use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text, es_field
    use interphase_spline, only: SPLINE_NOT_A_KNOT
@@ -266,37 +267,37 @@ contains
                eq = first + eq - 1
                select case (line(first:eq - 1))
                case ('b')
-                  call header_number('b', line(eq + 3:), b, have_b)
+                  call header_number('b', line(eq + 3:), 'mm', b, have_b)
                   if (status /= STATUS_OK) return
                case ('h')
-                  call header_number('h', line(eq + 3:), h, have_h)
+                  call header_number('h', line(eq + 3:), 'mm', h, have_h)
                   if (status /= STATUS_OK) return
                case ('a_Tf_limit')
                   call header_real('a_Tf_limit', line(eq + 3:), -huge(1.0_dp), 0.0_dp, .true., a_tf_limit, have_limit)
                   if (status /= STATUS_OK) return
                case ('E_m')
-                  call header_number('E_m', line(eq + 3:), elastic(1), have_elastic(1))
+                  call header_number('E_m', line(eq + 3:), 'MPa', elastic(1), have_elastic(1))
                   if (status /= STATUS_OK) return
                case ('nu_m')
                   call header_real('nu_m', line(eq + 3:), -1.0_dp, 0.5_dp, .false., elastic(2), have_elastic(2))
                   if (status /= STATUS_OK) return
                case ('E_b')
-                  call header_number('E_b', line(eq + 3:), elastic(3), have_elastic(3))
+                  call header_number('E_b', line(eq + 3:), 'MPa', elastic(3), have_elastic(3))
                   if (status /= STATUS_OK) return
                case ('nu_b')
                   call header_real('nu_b', line(eq + 3:), -1.0_dp, 0.5_dp, .false., elastic(4), have_elastic(4))
                   if (status /= STATUS_OK) return
                case ('h_m')
-                  call header_number('h_m', line(eq + 3:), layers(1), have_layers(1))
+                  call header_number('h_m', line(eq + 3:), 'mm', layers(1), have_layers(1))
                   if (status /= STATUS_OK) return
                case ('h_b')
-                  call header_number('h_b', line(eq + 3:), layers(2), have_layers(2))
+                  call header_number('h_b', line(eq + 3:), 'mm', layers(2), have_layers(2))
                   if (status /= STATUS_OK) return
                case ('Chat_TT')
-                  call header_number('Chat_TT', line(eq + 3:), chat(1), have_chat(1))
+                  call header_number('Chat_TT', line(eq + 3:), 'MPa', chat(1), have_chat(1))
                   if (status /= STATUS_OK) return
                case ('Chat_NN')
-                  call header_number('Chat_NN', line(eq + 3:), chat(2), have_chat(2))
+                  call header_number('Chat_NN', line(eq + 3:), 'MPa', chat(2), have_chat(2))
                   if (status /= STATUS_OK) return
                case ('format')
                   if (have_format) then
@@ -445,9 +446,12 @@ contains
          end do
       end function column_name
 
-      !> A header value: one positive finite number, the key given once.
-      subroutine header_number(key, field, value, found)
+      !> A header length or modulus: one positive number in the window of the PROPS values,
+      !> [1e-20, 1e20] in its unit (the short-crack limit and the intact-laminate identities
+      !> divide by them), the key given once.
+      subroutine header_number(key, field, unit, value, found)
          character(len=*), intent(in) :: key, field
+         character(len=*), intent(in) :: unit         !! the value's unit, for the message
          real(dp), intent(out) :: value
          logical, intent(inout) :: found
          logical :: ok_number
@@ -461,6 +465,11 @@ contains
          if (.not. ok_number) then
             call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))// &
                '" is not one positive number')
+            return
+         end if
+         if (value < PROPS_VALUE_MIN .or. value > PROPS_VALUE_MAX) then
+            call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))// &
+               '" lies outside [1e-20, 1e20] '//unit)
             return
          end if
          found = .true.
