@@ -169,6 +169,11 @@ contains
             first = verify(line, ' '//achar(9))
             if (first == 0) cycle read_lines
             if (line(first:first) == '#') then
+               ! a tab in a header or comment line is a blank, as in the rest of the readers
+               ! (`# Chat_TT<TAB>= 1` is the key Chat_TT)
+               do j = first + 1, len(line)
+                  if (line(j:j) == achar(9)) line(j:j) = ' '
+               end do
                first = first + verify(line(first + 1:)//'x', ' '//achar(9))
                if (have_columns) then
                   ! comments after the header; a second "# columns:" line is refused (one of the two
