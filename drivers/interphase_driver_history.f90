@@ -540,6 +540,9 @@ contains
       if (ok) return
       if (index(why, 'finite') > 0) then
          message = "'"//clip_text(word)//"' is not a finite number "//trim(why(len('not finite ') + 1:))
+      else if (index(why, 'out of range') > 0) then
+         ! (a nonzero literal below the smallest normal double)
+         message = "'"//clip_text(word)//"' is "//trim(why)
       else
          message = "cannot parse '"//clip_text(word)//"' as a number"
       end if

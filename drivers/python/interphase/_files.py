@@ -183,6 +183,8 @@ def _number(text, where):
         return value
     if "finite" in why:
         raise ValueError(f"{where}: '{_clip(text)}' is not a finite number {why[len('not finite '):]}")
+    if "out of range" in why:
+        raise ValueError(f"{where}: '{_clip(text)}' is {why}")
     raise ValueError(f"{where}: cannot parse '{_clip(text)}' as a number")
 
 
