@@ -24,7 +24,7 @@ module interphase_driver_history
    use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, to_lower, &
       text_file_type, open_line_file, close_text_file
    use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES
-   use interphase_params, only: SEPARATION_MAX
+   use interphase_params, only: SEPARATION_MAX, HOST_VALUE_MAX
    use interphase_finite, only: difference_is_finite
    implicit none
    private
@@ -203,10 +203,17 @@ contains
          controls = .false.
          if (named_columns > 0) controls(:ncolumns - 1) = named(:ncolumns - 1)
          ! a separation beyond the range the update admits (|s_i| <= SEPARATION_MAX) would fail only
-         ! in the UMAT, in the middle of the replay
+         ! in the UMAT, in the middle of the replay; an imposed traction beyond the UMAT's bound on
+         ! STRESS (HOST_VALUE_MAX) would overflow the mixed control's steps between the rows
          do i = 2, ncolumns
-            if (controls(i - 1)) cycle
-            if (abs(values(i)) > SEPARATION_MAX) then
+            if (controls(i - 1)) then
+               if (abs(values(i)) > HOST_VALUE_MAX) then
+                  message = where//'column '//int_to_string(i)//': traction '//real_to_string(values(i))// &
+                     ' MPa is beyond the range the replay admits, |Sigma| <= '//real_to_string(HOST_VALUE_MAX)//' MPa'
+                  call close_text_file(unit)
+                  return
+               end if
+            else if (abs(values(i)) > SEPARATION_MAX) then
                message = where//'column '//int_to_string(i)//': separation '//real_to_string(values(i))// &
                   ' mm is beyond the range the update admits, |s| <= '//real_to_string(SEPARATION_MAX)//' mm'
                call close_text_file(unit)

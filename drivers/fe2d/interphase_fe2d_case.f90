@@ -8,6 +8,7 @@ module interphase_fe2d_case
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
    use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
+   use interphase_finite, only: difference_is_finite
    use interphase_text_input, only: tried_path, parse_real
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
@@ -532,11 +533,26 @@ contains
             end if
          end do
          if (n == 0) first_line = line_number
+         if (abs(values(2)) > PROPS_VALUE_MAX) then
+            ! (the window of the case's lengths: beyond it the assembly's products overflow)
+            message = shown//':'//int_to_string(line_number)//': column 2: u_shear '//real_to_string(values(2))// &
+               ' mm is beyond |u_shear| <= 1e20 mm'
+            call close_text_file(unit)
+            return
+         end if
          if (n > 0) then
             if (.not. (values(1) > t(n))) then
                message = shown//':'//int_to_string(line_number)//': time '// &
                   real_to_string(values(1))//' is not greater than the previous time '// &
                   real_to_string(t(n))
+               call close_text_file(unit)
+               return
+            end if
+            ! (the replay interpolates within the step: the step must be a number)
+            if (.not. difference_is_finite(values(1), t(n))) then
+               message = shown//':'//int_to_string(line_number)//': time '//real_to_string(values(1))// &
+                  ': the time step from the previous time '//real_to_string(t(n))//' is not finite (beyond '// &
+                  'the largest double)'
                call close_text_file(unit)
                return
             end if

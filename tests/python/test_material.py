@@ -776,6 +776,7 @@ DRIVER_CASES = {
     # history rows beyond the update's range: a time step that is not finite, |s| > 1e20 mm
     "time_step_not_finite": ("'h.txt'", "'h.txt'", "-1e308 0 0\n1e308 0 0.001\n"),
     "separation_beyond_range": ("'h.txt'", "'h.txt'", "0 0 0\n1 -2e20 0.01\n"),
+    "traction_beyond_range": ("'h.txt'", "'h.txt'", "# columns: t s_T Sigma_N\n0 0 -1e308\n1 0 1e308\n"),
     # a nonzero number below the smallest normal double (read as 0 or a subnormal before): refused
     "mu_underflow": ("mu = 0.75", "mu = 1e-400", None),
     "mu_subnormal": ("mu = 0.75", "mu = 1d-310", None),

@@ -23,6 +23,8 @@ MAX_LINE_LEN = 65536
 ENTRY_LEN = 1024
 #: the largest |separation| of a history (mm), as the update admits (interphase_params' SEPARATION_MAX)
 SEPARATION_MAX = 1.0e20
+#: the largest |imposed traction| of a history (MPa): the UMAT's bound on STRESS (HOST_VALUE_MAX)
+TRACTION_MAX = 1.0e150
 # the driver reads a regular file in chunks of this many bytes (interphase_text_input's CHUNK_LEN):
 # which of the two limits a line passes first is told chunk by chunk
 _CHUNK = 4096
@@ -355,6 +357,9 @@ def read_history(path, control=False):
         controls = named[1] if named is not None else [False] * (len(words) - 1)
         # (the driver's checks: a separation beyond the update's range, a time step not finite)
         for i, value in enumerate(row[1:], 2):
+            if controls[i - 2] and abs(value) > TRACTION_MAX:
+                raise ValueError(f"{where}: column {i}: traction {_real_text(value)} MPa is beyond the range the "
+                                 f"replay admits, |Sigma| <= {_real_text(TRACTION_MAX)} MPa")
             if not controls[i - 2] and abs(value) > SEPARATION_MAX:
                 raise ValueError(f"{where}: column {i}: separation {_real_text(value)} mm is beyond the range the "
                                  f"update admits, |s| <= {_real_text(SEPARATION_MAX)} mm")
