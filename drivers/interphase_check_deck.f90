@@ -29,7 +29,7 @@ program interphase_check_deck
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count
    use interphase_driver_cli, only: get_argument, exit_program, print_version
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      tried_path, clip_text, parse_real, TEXT_LINE, TEXT_END
+      tried_path, clip_text, parse_real, text_before, TEXT_LINE, TEXT_END
    use interphase_driver_text, only: int_to_string, real_to_string
    implicit none
    !> The smallest contact band width chi that keeps the stored energy convex at every D of the
@@ -226,9 +226,9 @@ contains
                end if
                line = trim(line)//' '//trim(held)
             end do
-            keyword_text = adjustl(before_comma(line(2:)))
+            keyword_text = adjustl(text_before(line(2:), ','))
             ! the keyword, an abbreviation read as the keyword it abbreviates
-            keyword = resolve_name(upper_compact(before_comma(line(2:))), [KEYWORDS_READ, KEYWORDS_BESIDE], ambiguous, &
+            keyword = resolve_name(upper_compact(text_before(line(2:), ',')), [KEYWORDS_READ, KEYWORDS_BESIDE], ambiguous, &
                '*')
             if (len(ambiguous) > 0) then
                call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' could be '// &
@@ -249,7 +249,7 @@ contains
             end if
             ! a parameter given twice on a keyword line: which one counts is not for us to guess
             if (len_trim(repeated) > 0) then
-               call record_failure(path//':'//int_to_string(lineno)//': *'//trim(before_comma(line(2:)))//': parameter '// &
+               call record_failure(path//':'//int_to_string(lineno)//': *'//trim(text_before(line(2:), ','))//': parameter '// &
                   trim(repeated)//' given twice: "'//clip_text(trim(line))//'"', nfail)
             end if
             select case (trim(keyword))
@@ -632,19 +632,6 @@ contains
       write (output_unit, '(a)') text
       nfail = nfail + 1
    end subroutine record_failure
-
-   !> The part of s before its first comma.
-   pure function before_comma(s) result(head)
-      character(len=*), intent(in) :: s
-      character(len=:), allocatable :: head
-      integer :: i
-      i = index(s, ',')
-      if (i == 0) then
-         head = s
-      else
-         head = s(1:i - 1)
-      end if
-   end function before_comma
 
    !> Upper case without blanks (Abaqus ignores blanks and case in keywords and parameters).
    pure function upper_compact(s) result(t)

@@ -13,7 +13,7 @@ module interphase_text_input
    implicit none
    private
    public :: text_file_type, open_text_file, read_text_line, close_text_file, parse_real, &
-      is_real_literal, tried_path, clip_text, to_lower
+      is_real_literal, tried_path, clip_text, to_lower, text_before
 
    !> Longest line a reader takes (characters, without the newline).
    integer, parameter, public :: MAX_LINE_LEN = 65536
@@ -316,7 +316,7 @@ contains
          why = 'not finite (out of range)'
          return
       end if
-      if (abs(value) < tiny(value) .and. verify(mantissa_of(field(first:last)), '+-0.') > 0) then
+      if (abs(value) < tiny(value) .and. verify(text_before(field(first:last), 'eEdD'), '+-0.') > 0) then
          ! a nonzero literal read as 0 or as a subnormal
          value = 0.0_dp
          why = UNDERFLOW_WHY
@@ -437,18 +437,19 @@ contains
       vanishes = exponent_too_long(literal(mark + 1:)) .and. verify(literal(1:mark - 1), '+-0.') > 0
    end function vanishes
 
-   !> The mantissa of a real literal: the text before its exponent letter (all of it without one).
-   pure function mantissa_of(literal) result(mantissa)
-      character(len=*), intent(in) :: literal
-      character(len=:), allocatable :: mantissa
+   !> The part of `text` before its first character of `set` (all of it without one): a real
+   !> literal's mantissa (set 'eEdD'), a keyword line's keyword (set ',').
+   pure function text_before(text, set) result(head)
+      character(len=*), intent(in) :: text, set
+      character(len=:), allocatable :: head
       integer :: mark
-      mark = scan(literal, 'eEdD')
+      mark = scan(text, set)
       if (mark == 0) then
-         mantissa = literal
+         head = text
       else
-         mantissa = literal(1:mark - 1)
+         head = text(1:mark - 1)
       end if
-   end function mantissa_of
+   end function text_before
 
    !> At most the first 60 characters of `text`, with '...' when cut, and a control character
    !> other than a tab as '?' (for messages).
