@@ -15,6 +15,16 @@ module interphase_finite
    public :: is_finite, is_finite_nonnegative, is_within, all_within, difference_is_finite, binary64_bits, EXPONENT_MASK, &
       MAGNITUDE_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
 
+   !> Admissible magnitudes of the dimensional PROPS (s0, sf in mm; K in MPa/mm; G_c in N/mm) and
+   !> the largest friction coefficient (interphase_params): every product the update forms of up
+   !> to eight such factors (the squares of s/s0 in the damage law, alpha^4 in its derivatives,
+   !> energies K s^2, g = G/(2 G_c)) then stays between 1e-160 and 1e160, normal numbers far from
+   !> overflow and underflow, so that no build and no adapter can round a result differently
+   !> into Inf, NaN or zero (docs/abaqus.md, 'Admissible ranges'). The table and R-curve readers
+   !> bound their lengths, moduli and toughnesses by the same window.
+   real(dp), parameter, public :: PROPS_VALUE_MIN = 1.0e-20_dp
+   real(dp), parameter, public :: PROPS_VALUE_MAX = 1.0e20_dp
+
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
    integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
    !> All bits but the sign: iand(bits of x, MAGNITUDE_MASK) are the bits of |x|.

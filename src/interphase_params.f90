@@ -3,7 +3,7 @@
 !> symbol, the value and the admissible range; nothing is clamped.
 module interphase_params
    use, intrinsic :: iso_fortran_env, only: int64
-   use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
+   use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
@@ -25,14 +25,9 @@ module interphase_params
    ! (for the UMAT, which includes decode_props' source: interphase_decode_props.inc)
    public :: check_constants, decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS
 
-   !> Admissible magnitudes of the dimensional PROPS (s0, sf in mm; K in MPa/mm; G_c in N/mm) and
-   !> the largest friction coefficient: every product the update forms of up to eight such
-   !> factors (the squares of s/s0 in the damage law, alpha^4 in its derivatives, energies
-   !> K s^2, g = G/(2 G_c)) then stays between 1e-160 and 1e160, normal numbers far from
-   !> overflow and underflow, so that no build and no adapter can round a result differently
-   !> into Inf, NaN or zero (docs/abaqus.md, 'Admissible ranges').
-   real(dp), parameter, public :: PROPS_VALUE_MIN = 1.0e-20_dp
-   real(dp), parameter, public :: PROPS_VALUE_MAX = 1.0e20_dp
+   ! PROPS_VALUE_MIN, PROPS_VALUE_MAX: the admissible magnitudes of the dimensional PROPS
+   ! (interphase_finite, where the table readers, built before this module, take them too)
+   public :: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    !> Largest admissible separation component |s_i| (mm) at the end of an increment; larger
    !> ones are STATUS_SEPARATION_OUT_OF_RANGE (the increment is cut back).
    real(dp), parameter, public :: SEPARATION_MAX = 1.0e20_dp

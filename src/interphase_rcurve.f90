@@ -9,9 +9,8 @@
 !> docs/theory.md). Between the rows a monotone cubic (Fritsch-Carlson) interpolates, so the
 !> R-curve keeps the shape of the data; outside the rows it is an error, never an extrapolation.
 module interphase_rcurve
-   use interphase_finite, only: is_finite
+   use interphase_finite, only: is_finite, PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_kinds, only: dp
-   use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_real_text, only: real_text
    use interphase_status, only: message_path, separation_text, STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &

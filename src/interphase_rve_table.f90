@@ -18,9 +18,8 @@
 !> instead declare `interpolation_variable = D` (knots in ascending D), e.g. a table of
 !> coefficients that are polynomials in D, such as the simplified model's.
 module interphase_rve_table
-   use interphase_finite, only: is_finite
+   use interphase_finite, only: is_finite, PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_logarithm, only: ln_positive
-   use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text, es_field
    use interphase_spline, only: SPLINE_NOT_A_KNOT
