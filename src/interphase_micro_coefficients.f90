@@ -76,17 +76,35 @@ contains
       integer, intent(out) :: status
       !> what `micro_second_derivatives` needs for the second derivatives at D
       type(table_curvature_type), intent(out), optional :: curvature
+      type(table_curvature_type) :: unused_curvature
+      if (.not. present(dcoef_dd)) then
+         ! the values alone (the same numbers, the same statuses)
+         call micro_values(table, d, coef, status)
+         return
+      end if
+      ! (the guided lookup called directly, on arrays of explicit shape, with or without what the
+      ! second derivatives are formed from: no optional argument reaches the hot path, which
+      ! a compiler that does not inline table_coefficients would test at every call)
       if (table == TABLE_CUSTOM_CODE) then
          if (.not. allocated(custom_coef)) then
             status = STATUS_TABLE_NOT_LOADED
             return
          end if
-         call table_coefficients(custom_variable, custom_knots, custom_coef, d, coef, dcoef_dd, status, &
-            curvature, custom_guide, custom_guide_scale, custom_guide_steps)
+         if (present(curvature)) then
+            call guided_coefficients(custom_variable, size(custom_knots), custom_knots, custom_coef, size(custom_guide), &
+               custom_guide, custom_guide_scale, custom_guide_steps, d, .true., coef, dcoef_dd, curvature, status)
+         else
+            call guided_coefficients(custom_variable, size(custom_knots), custom_knots, custom_coef, size(custom_guide), &
+               custom_guide, custom_guide_scale, custom_guide_steps, d, .false., coef, dcoef_dd, unused_curvature, status)
+         end if
+      else if (present(curvature)) then
+         call guided_coefficients(DEFAULT_TABLE_VARIABLE, size(DEFAULT_TABLE_KNOTS), DEFAULT_TABLE_KNOTS, &
+            DEFAULT_TABLE_COEF, size(DEFAULT_TABLE_GUIDE), DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, &
+            DEFAULT_TABLE_GUIDE_STEPS, d, .true., coef, dcoef_dd, curvature, status)
       else
-         call table_coefficients(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, d, &
-            coef, dcoef_dd, status, curvature, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, &
-            DEFAULT_TABLE_GUIDE_STEPS)
+         call guided_coefficients(DEFAULT_TABLE_VARIABLE, size(DEFAULT_TABLE_KNOTS), DEFAULT_TABLE_KNOTS, &
+            DEFAULT_TABLE_COEF, size(DEFAULT_TABLE_GUIDE), DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, &
+            DEFAULT_TABLE_GUIDE_STEPS, d, .false., coef, dcoef_dd, unused_curvature, status)
       end if
    end subroutine micro_coefficients
 
@@ -116,63 +134,112 @@ contains
       real(dp), intent(in), optional :: guide_scale
       integer, intent(in), optional :: guide_steps
 
-      real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS), unused_d2v(N_COEFFICIENTS)
-      real(dp) :: tf, dtf, dcf
+      real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS)
+      type(coefficient_set_type) :: unused_dcoef
+      type(table_curvature_type) :: unused_curvature
       integer :: interval
 
+      if (present(guide)) then
+         if (.not. present(dcoef_dd)) then
+            ! the values alone: table_values (the same guide, the same Horner form, so the same
+            ! numbers)
+            if (d > 0.0_dp .and. d < D_MIN_CRACK) then
+               status = STATUS_BAD_COEFFICIENTS
+               return
+            end if
+            call table_values(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, &
+               guide_steps, d, coef, status)
+         else if (present(curvature)) then
+            call guided_coefficients(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, &
+               guide_steps, d, .true., coef, dcoef_dd, curvature, status)
+         else
+            call guided_coefficients(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, &
+               guide_steps, d, .false., coef, dcoef_dd, unused_curvature, status)
+         end if
+         return
+      end if
       if (d > 0.0_dp .and. d < D_MIN_CRACK) then
          status = STATUS_BAD_COEFFICIENTS
          return
       end if
-      if (present(guide) .and. .not. present(dcoef_dd)) then
-         ! the values alone: table_values (the same guide, the same Horner form, so the same
-         ! numbers)
-         call table_values(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, &
-            d, coef, status)
-         return
-      end if
+      ! without a guide: cubic_locate's binary search, then cubic_eval's Horner form (the same
+      ! numbers as the guided lookup's)
       call crack_variable(variable, d, x, dx_dd, d2x_dd2)
-      ! the columns' values v, and their derivatives in x, then in D (dv); with `curvature` the
-      ! second derivatives in x and what turns them into D's, kept for micro_second_derivatives
-      if (present(guide) .and. present(curvature)) then
-         call guided_cubics(size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, x, &
-            .true., v, curvature%dv_x, curvature%d2v_x, status)
-         if (status /= STATUS_OK) return
+      call cubic_locate(knots, x, interval, status)
+      if (status /= STATUS_OK) return
+      if (present(curvature)) then
+         call cubic_eval(knots, coef_table, interval, x, v, curvature%dv_x, curvature%d2v_x)
          curvature%dx_dd = dx_dd
          curvature%d2x_dd2 = d2x_dd2
          dv = curvature%dv_x*dx_dd
-      else if (present(guide)) then
-         call guided_cubics(size(knots), knots, coef_table, size(guide), guide, guide_scale, guide_steps, x, &
-            .false., v, dv, unused_d2v, status)
-         if (status /= STATUS_OK) return
-         dv = dv*dx_dd
       else
-         call cubic_locate(knots, x, interval, status)
-         if (status /= STATUS_OK) return
-         if (present(curvature)) then
-            call cubic_eval(knots, coef_table, interval, x, v, curvature%dv_x, curvature%d2v_x)
-            curvature%dx_dd = dx_dd
-            curvature%d2x_dd2 = d2x_dd2
-            dv = curvature%dv_x*dx_dd
-         else
-            call cubic_eval(knots, coef_table, interval, x, v, dv)
-            dv = dv*dx_dd
-         end if
+         call cubic_eval(knots, coef_table, interval, x, v, dv)
+         dv = dv*dx_dd
       end if
-      ! T^f = v/D, T^f' = (v' - T^f)/D with v = D T^f (T^f'': micro_second_derivatives)
+      if (present(dcoef_dd)) then
+         call form_sets(d, v, dv, coef, dcoef_dd)
+      else
+         call form_sets(d, v, dv, coef, unused_dcoef)
+      end if
+   end subroutine table_coefficients
+
+   !> table_coefficients' guided lookup with first derivatives, on arrays of explicit shape (no
+   !> descriptors, no optional arguments): the interval from the knots' guide, every column's
+   !> cubic with its derivative in x (guided_cubics), the sets at D (form_sets) and, with
+   !> `with_curvature`, what micro_second_derivatives forms the second derivatives from (else
+   !> `curvature` is left undefined).
+   pure subroutine guided_coefficients(variable, n_knots, knots, coef_table, n_guide, guide, guide_scale, guide_steps, &
+         d, with_curvature, coef, dcoef_dd, curvature, status)
+      integer, intent(in) :: variable                        !! VARIABLE_* of the knots
+      integer, intent(in) :: n_knots                         !! knots (>= 2)
+      real(dp), intent(in) :: knots(n_knots)                 !! knots, ascending
+      real(dp), intent(in) :: coef_table(N_COEFFICIENTS, 0:3, n_knots - 1)   !! as table_coefficients'
+      integer, intent(in) :: n_guide                         !! cells of the guide
+      integer, intent(in) :: guide(n_guide)
+      real(dp), intent(in) :: guide_scale
+      integer, intent(in) :: guide_steps
+      real(dp), intent(in) :: d                              !! damage D = a/b
+      logical, intent(in) :: with_curvature
+      type(coefficient_set_type), intent(out) :: coef, dcoef_dd
+      type(table_curvature_type), intent(out) :: curvature
+      integer, intent(out) :: status
+      real(dp) :: x, dx_dd, d2x_dd2, v(N_COEFFICIENTS), dv(N_COEFFICIENTS)
+      if (d > 0.0_dp .and. d < D_MIN_CRACK) then
+         status = STATUS_BAD_COEFFICIENTS
+         return
+      end if
+      call crack_variable(variable, d, x, dx_dd, d2x_dd2)
+      ! the columns' values v, and their derivatives in x (kept), then in D (dv)
+      call guided_cubics(n_knots, knots, coef_table, n_guide, guide, guide_scale, guide_steps, x, with_curvature, v, &
+         curvature%dv_x, curvature%d2v_x, status)
+      if (status /= STATUS_OK) return
+      if (with_curvature) then
+         curvature%dx_dd = dx_dd
+         curvature%d2x_dd2 = d2x_dd2
+      end if
+      dv = curvature%dv_x*dx_dd
+      call form_sets(d, v, dv, coef, dcoef_dd)
+   end subroutine guided_coefficients
+
+   !> The coefficient set at D and its D-derivatives from the interpolated columns' values v and
+   !> D-derivatives dv: T^f = v/D, T^f' = (v' - T^f)/D with v = D T^f (-huge and 0 at D = 0;
+   !> T^f'': micro_second_derivatives), C^f_T from the reciprocity relation (reciprocal_cf) and
+   !> C^f_T' = -(K' m + K m') for C^f_T = -K m, K = tc_t, m = D ufbar (at D = 1, where the other
+   !> columns' derivatives are 0 by convention, the product rule's -K ufbar: no caller asks for
+   !> derivatives there).
+   pure subroutine form_sets(d, v, dv, coef, dcoef_dd)
+      real(dp), intent(in) :: d
+      real(dp), intent(in) :: v(N_COEFFICIENTS), dv(N_COEFFICIENTS)
+      type(coefficient_set_type), intent(out) :: coef, dcoef_dd
+      real(dp) :: tf, dtf, dcf
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
-      ! C^f_T from the reciprocity relation (reciprocal_cf), not from a spline of its own
       coef = as_set(v, tf, reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR)))
-      if (.not. present(dcoef_dd)) return
       dtf = 0.0_dp
       if (d > 0.0_dp) dtf = (dv(IC_DTF) - tf)/d
-      ! C^f_T = -K m with K = tc_t and m = D ufbar: C^f' = -(K' m + K m') (dv in D here; at
-      ! D = 1, where the other columns' derivatives are 0 by convention, this is the product
-      ! rule's -K ufbar: no caller asks for derivatives there)
       dcf = -(dv(IC_TC_T)*(d*v(IC_UFBAR)) + v(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)))
       dcoef_dd = as_set(dv, dtf, dcf)
-   end subroutine table_coefficients
+   end subroutine form_sets
 
    ! the second derivatives from what table_coefficients kept (one source, included in
    ! interphase_fracture too, where the search's evaluation inlines it)
