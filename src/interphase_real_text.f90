@@ -43,6 +43,9 @@ contains
             write (edit, '(a,i0,a)') '(g0.', d, ')'
             write (buffer, edit, iostat=ios) value
             if (ios /= 0) exit
+            ! (a value near huge() rounded to few digits can lie beyond it, 0.2E+309: not read
+            ! back, which would overflow and trap under -ffpe-trap=overflow)
+            if (beyond_huge(buffer)) cycle
             read (buffer, *, iostat=ios) back
             if (ios /= 0) exit
             if (transfer(back, 0_int64) == transfer(value, 0_int64)) exit
@@ -60,6 +63,22 @@ contains
          if (text(1:2) == '-.') text = '-0'//text(2:)
       end if
    end function real_text
+
+   !> Whether the g0 text of a finite double (a mantissa 0.ddd with exponent E+309 at most: the
+   !> value rounded to its digits) lies beyond huge(1.0_dp) = 0.17976931348623157E+309.
+   pure logical function beyond_huge(text)
+      character(len=*), intent(in) :: text
+      character(len=*), parameter :: HUGE_DIGITS = '17976931348623157'
+      character(len=len(HUGE_DIGITS)) :: digits
+      integer :: point, mark
+      beyond_huge = .false.
+      mark = index(text, 'E+309')
+      if (mark == 0) return
+      point = index(text, '.')
+      if (point == 0 .or. point >= mark) return
+      digits = text(point + 1:mark - 1)           ! (padded with blanks, which sort below digits)
+      beyond_huge = digits > HUGE_DIGITS
+   end function beyond_huge
 
    !> The value in an `es<width>.<decimals>` field, right-justified to `width`, with a
    !> non-finite value as NaN, Infinity or -Infinity (asterisks when even that does not fit).
