@@ -6,9 +6,10 @@
 !> or .false.`). A group or an entry that the program does not read is refused, with the list of
 !> those it reads (`&material: sf_tt (line 6) is not an entry of &material; its entries: ...`).
 !> A string longer than the variable that receives it is refused (the read would cut it short),
-!> and so is a string that holds '&' or '$': gfortran's namelist read, looking for a group, takes
-!> either for the start of one wherever it is, inside quotes too, and would read a group written
-!> inside a string of an earlier group in place of the real one.
+!> and so is a string that holds '&' or '$' followed by the name of a group the program reads:
+!> gfortran's namelist read, looking for a group, takes `&name` for its start wherever it is,
+!> inside quotes too, and would read a group written inside a string of an earlier group in
+!> place of the real one (`R&D`, `a$b.txt` are read as they are).
 module interphase_driver_namelist
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
@@ -19,6 +20,9 @@ module interphase_driver_namelist
    private
    public :: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
+
+   !> The characters of a Fortran name (a group's, an entry's).
+   character(len=*), parameter :: NAME_CHARACTERS = 'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_'
 
    !> Kinds of entry values.
    integer, parameter :: KIND_REAL = 1, KIND_INTEGER = 2, KIND_LOGICAL = 3, KIND_STRING = 4
@@ -285,11 +289,13 @@ contains
             return
          end if
          ! (a string's closing quote is in column i: its opening one in column i - len(text) + 1)
-         marker = scan(text, '&$')
-         if (quoted == KIND_STRING .and. marker > 0) then
-            call fail('&'//group//': '//name//' = '//clip_text(text)//' holds "'//text(marker:marker)// &
-               '" (column '//int_to_string(i - len(text) + marker)//'), which Fortran''s namelist read '// &
-               'takes for the start of a group even inside quotes: a string value cannot hold "&" or "$"')
+         marker = 0
+         if (quoted == KIND_STRING) marker = group_marker(text)
+         if (marker > 0) then
+            call fail('&'//group//': '//name//' = '//clip_text(text)//' holds "'//text(marker:marker + &
+               len(marked_group(text, marker)))//'" (column '//int_to_string(i - len(text) + marker)// &
+               '), which Fortran''s namelist read takes for the start of that group even inside quotes: a '// &
+               'string value cannot hold "&" or "$" followed by the name of a group')
             return
          end if
          nvalues = nvalues + 1
@@ -408,6 +414,39 @@ contains
             list = list//trim(known(j)%name(len(g) + 2:))
          end do
       end function group_entries
+
+      !> The column in `text` of the first '&' or '$' that the namelist read, searching the file
+      !> for a group, would take for that group's start: followed by the name of a group of
+      !> `known` (any case) that no name character continues; 0 if none (`R&D`, `a$b` are safe).
+      integer function group_marker(text) result(at)
+         character(len=*), intent(in) :: text
+         integer :: k
+         at = 0
+         do k = 1, len(text)
+            if (text(k:k) /= '&' .and. text(k:k) /= '$') cycle
+            if (len(marked_group(text, k)) > 0) then
+               at = k
+               return
+            end if
+         end do
+      end function group_marker
+
+      !> The group of `known` whose name follows the marker at text(k:k) ('' if none).
+      function marked_group(text, k) result(g)
+         character(len=*), intent(in) :: text
+         integer, intent(in) :: k
+         character(len=:), allocatable :: g
+         integer :: last
+         g = ''
+         last = k
+         do while (last < len(text))
+            if (verify(text(last + 1:last + 1), NAME_CHARACTERS) /= 0) exit
+            last = last + 1
+         end do
+         if (last == k) return
+         if (len(group_entries(to_lower(text(k + 1:last)))) == 0) return
+         g = text(k + 1:last)
+      end function marked_group
 
       !> The groups of `known`, in order of first appearance ('&material, &loading').
       function known_groups() result(list)

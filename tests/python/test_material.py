@@ -770,6 +770,8 @@ DRIVER_CASES = {
     # start of a group inside quotes too), a string longer than the driver's ENTRY_LEN (bytes)
     "group_in_string": ("'h.csv'", "'d&material model=\"micromechanical\" mu=0.1 /o.csv'", None),
     "dollar_in_string": ("'h.txt'", "'h$material.txt'", None),
+    # a marker not followed by a group's name is read as it is (the driver runs the case)
+    "marker_not_a_group": ("'h.csv'", "'R&D-a$b-&materials.csv'", None),
     "model_too_long": ("'simplified'", "'simplified" + " " * 1100 + "junk'", None),
     "output_of_entry_len": ("'h.csv'", "'h.csv" + " " * 1019 + "'", None),
     "output_one_byte_too_long": ("'h.csv'", "'h.csv" + "x" * 1018 + "\u00e9'", None),

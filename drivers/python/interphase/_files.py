@@ -436,6 +436,12 @@ def _typed(kind, quoted, text, where):
     return _unquoted(text)
 
 
+#: '&' or '$' and the name after it (a Fortran name: letters, digits, underscores)
+_GROUP_MARKER = re.compile(r"[&$]([A-Za-z0-9_]+)")
+#: a line that opens a group: blanks, '&' and the group's name
+_GROUP_OPENER = re.compile(r"[ \t]*&([A-Za-z0-9_]+)")
+
+
 def _namelist_entries(path, known=None):
     """{group: {entry: (value, line)}} of a namelist file, read as strictly as the
     driver's pre-check reads it (drivers/interphase_driver_namelist.f90): one group of each name,
@@ -447,6 +453,13 @@ def _namelist_entries(path, known=None):
     groups = {}
     group, name, values, entry_line, number = None, None, [], 0, 0
     after_comma = False     # the last token was a comma (an empty value follows a second one)
+    # the groups a '&name' inside a string could be taken for: those read (known), else those the
+    # file opens
+    if known is not None:
+        group_names = set(known)
+    else:
+        group_names = {_lower(m.group(1)) for line in _text_lines(path)
+                       for m in [_GROUP_OPENER.match(line)] if m is not None} - {"end"}
 
     def fail(text):
         raise ValueError(f"{path}:{number}: {text}")
@@ -469,14 +482,16 @@ def _namelist_entries(path, known=None):
     def add(quoted, text, column=0):
         if name is None:
             fail(f"&{group}: a value without an entry name: {_clip(text)}")
-        # gfortran's namelist read, looking for a group, takes '&' or '$' for its start inside quotes
-        # too (the driver's add_value): column, in bytes, of the string's opening quote
-        marker = next((k for k, ch in enumerate(text) if ch in "&$"), None) if quoted else None
-        if marker is not None:
-            at = column + len(text[:marker].encode("utf-8", "surrogateescape"))
-            fail(f'&{group}: {name} = {_clip(text)} holds "{text[marker]}" (column {at}), which Fortran\'s '
-                 'namelist read takes for the start of a group even inside quotes: a string value cannot hold '
-                 '"&" or "$"')
+        # gfortran's namelist read, looking for a group, takes '&name' or '$name' for its start inside
+        # quotes too (the driver's add_value, group_marker): column, in bytes, of the string's
+        # opening quote
+        marked = next((m for m in _GROUP_MARKER.finditer(text) if _lower(m.group(1)) in group_names),
+                      None) if quoted else None
+        if marked is not None:
+            at = column + len(text[:marked.start()].encode("utf-8", "surrogateescape"))
+            fail(f'&{group}: {name} = {_clip(text)} holds "{marked.group(0)}" (column {at}), which Fortran\'s '
+                 'namelist read takes for the start of that group even inside quotes: a string value cannot hold '
+                 '"&" or "$" followed by the name of a group')
         values.append((quoted, text))
 
     for number, line in enumerate(_text_lines(path), 1):
