@@ -169,7 +169,7 @@ int interphase_update_dt(const double *props, int nprops, int ntens, const doubl
  * @param ntens              2 (2-D) or 3 (3-D)
  * @param nrows              rows of the path, the start included (>= 1)
  * @param separation         @p nrows * @p ntens doubles: the separation at each row (mm)
- * @param time               @p nrows doubles (s), finite and not decreasing (else
+ * @param time               @p nrows doubles (s), finite, not decreasing and with finite steps (else
  *                           INTERPHASE_STATUS_BAD_TIME_INCREMENT at the first row that breaks it,
  *                           whatever the material), or NULL (no time increment: a material with
  *                           viscous regularisation is then refused, as by interphase_update)

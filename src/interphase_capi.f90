@@ -274,11 +274,12 @@ contains
       if (.not. (all(is_within(separation(1:n), SEPARATION_MAX)) .and. all(is_within(traction(1:n), HOST_VALUE_MAX)) &
             .and. is_within(stored_energy(1), HOST_VALUE_MAX) .and. is_within(dissipated_energy(1), HOST_VALUE_MAX))) then
          code = STATUS_BAD_HOST_INPUT
-         message = 'row 0: separation (mm)'//trim(es_fields(separation(1:n), 11, 3))//', traction (MPa)'// &
-            trim(es_fields(traction(1:n), 11, 3))//', stored and dissipated energy (N/mm)'// &
-            trim(es_fields([stored_energy(1), dissipated_energy(1)], 11, 3))//': the starting values must be '// &
-            'finite, the separation within'//es_field(SEPARATION_MAX, 8, 1)//' mm, the rest within'// &
-            es_field(HOST_VALUE_MAX, 8, 1)
+         ! (fields of width decimals + 9: a blank before each, three-digit exponents too)
+         message = 'row 0: separation (mm)'//trim(es_fields(separation(1:n), 12, 3))//', traction (MPa)'// &
+            trim(es_fields(traction(1:n), 12, 3))//', stored and dissipated energy (N/mm)'// &
+            trim(es_fields([stored_energy(1), dissipated_energy(1)], 12, 3))//': the starting values must be '// &
+            'finite, the separation within '//trim(adjustl(es_field(SEPARATION_MAX, 8, 1)))//' mm, the rest '// &
+            'within '//trim(adjustl(es_field(HOST_VALUE_MAX, 9, 1)))
          call finish()
          return
       end if

@@ -132,7 +132,8 @@ contains
                   call fail(STATUS_RCURVE_BAD_RANGE, 'D does not increase: '//clip_text(line(first:)))
                   return
                end if
-               if (v(1) - rows(1, n) < D_SPACING_MIN) then
+               ! (with the rounding of the rows' D as read: rows written 1e-9 apart pass)
+               if (v(1) - rows(1, n) < D_SPACING_MIN*(1.0_dp - 1.0e-6_dp)) then
                   call fail(STATUS_RCURVE_BAD_RANGE, 'D = '//clip_text(line(starts(1):ends(1)))// &
                      " lies closer than 1e-9 to the previous row's D = "//real_text(rows(1, n))// &
                      ' (rows must be at least 1e-9 apart): '//clip_text(line(first:)))

@@ -465,6 +465,12 @@ contains
             return
          end if
          call parse_real(field, value, ok_number, why_number)
+         if (.not. ok_number .and. index(why_number, 'out of range') > 0) then
+            ! (a literal beyond the doubles' range, or below the smallest normal one: said so)
+            call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))//'" is '// &
+               trim(why_number))
+            return
+         end if
          if (ok_number) ok_number = value > 0.0_dp
          if (.not. ok_number) then
             call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))// &
@@ -490,15 +496,20 @@ contains
          logical :: ok_number
          character(len=32) :: why_number
          character(len=40) :: range
-         integer :: ios2
          if (found) then
             call fail(STATUS_TABLE_BAD_HEADER, 'key "'//key//'" given twice')
             return
          end if
          call parse_real(field, value, ok_number, why_number)
+         if (.not. ok_number .and. index(why_number, 'out of range') > 0) then
+            call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))//'" is '// &
+               trim(why_number))
+            return
+         end if
          if (ok_number) ok_number = value > lower .and. (value < upper .or. (closed_above .and. .not. value > upper))
          if (.not. ok_number) then
-            write (range, '(a,es9.2,a,es9.2,a)', iostat=ios2) '(', lower, ', ', upper, merge(']', ')', closed_above)
+            range = '('//trim(adjustl(es_field(lower, 10, 2)))//', '//trim(adjustl(es_field(upper, 10, 2)))// &
+               merge(']', ')', closed_above)
             call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))// &
                '" is not one number in '//trim(range))
             return

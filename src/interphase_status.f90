@@ -2,6 +2,7 @@
 !> status that the caller (an adapter, the driver) turns into a cut-back, a host error or an exit.
 module interphase_status
    use interphase_kinds, only: dp
+   use interphase_real_text, only: es_fields
    implicit none
    private
    public :: status_message, severity_label, file_loader, message_path, separation_text
@@ -203,12 +204,10 @@ contains
    pure function separation_text(s) result(text)
       real(dp), intent(in) :: s(:)      !! the separation (mm), 2 or 3 components
       character(len=:), allocatable :: text
-      character(len=36) :: values
-      integer :: ios
-      write (values, '(3es12.4)', iostat=ios) s(1:min(3, size(s)))
+      ! (es_fields: a three-digit exponent keeps its E, 1.2346E+301, where es12.4 drops it)
       text = 's_N, s_T'
       if (size(s) == 3) text = 's_N, s_T1, s_T2'
-      text = text//' (mm) '//trim(values)
+      text = text//' (mm) '//trim(es_fields(s(1:min(3, size(s))), 12, 4))
    end function separation_text
 
 end module interphase_status
