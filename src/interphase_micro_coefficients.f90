@@ -139,14 +139,14 @@ contains
       type(table_curvature_type) :: unused_curvature
       integer :: interval
 
+      if (d > 0.0_dp .and. d < D_MIN_CRACK) then
+         status = STATUS_BAD_COEFFICIENTS
+         return
+      end if
       if (present(guide)) then
          if (.not. present(dcoef_dd)) then
             ! the values alone: table_values (the same guide, the same Horner form, so the same
             ! numbers)
-            if (d > 0.0_dp .and. d < D_MIN_CRACK) then
-               status = STATUS_BAD_COEFFICIENTS
-               return
-            end if
             call table_values(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, &
                guide_steps, d, coef, status)
          else if (present(curvature)) then
@@ -156,10 +156,6 @@ contains
             call guided_coefficients(variable, size(knots), knots, coef_table, size(guide), guide, guide_scale, &
                guide_steps, d, .false., coef, dcoef_dd, unused_curvature, status)
          end if
-         return
-      end if
-      if (d > 0.0_dp .and. d < D_MIN_CRACK) then
-         status = STATUS_BAD_COEFFICIENTS
          return
       end if
       ! without a guide: cubic_locate's binary search, then cubic_eval's Horner form (the same

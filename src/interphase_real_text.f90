@@ -12,7 +12,11 @@ module interphase_real_text
    implicit none
    private
 
-   public :: real_text, es_field, es_fields
+   public :: real_text, es_field, es_fields, literal_overflows, exponent_too_long
+
+   !> Digits of an exponent (leading zeros not counted) beyond which a literal is out of range
+   !> whatever its mantissa (10**6 > any line's digits).
+   integer, parameter :: MAX_EXPONENT_DIGITS = 6
 
 contains
 
@@ -45,7 +49,7 @@ contains
             if (ios /= 0) exit
             ! (a value near huge() rounded to few digits can lie beyond it, 0.2E+309: not read
             ! back, which would overflow and trap under -ffpe-trap=overflow)
-            if (beyond_huge(buffer)) cycle
+            if (literal_overflows(trim(adjustl(buffer)))) cycle
             read (buffer, *, iostat=ios) back
             if (ios /= 0) exit
             if (transfer(back, 0_int64) == transfer(value, 0_int64)) exit
@@ -63,22 +67,6 @@ contains
          if (text(1:2) == '-.') text = '-0'//text(2:)
       end if
    end function real_text
-
-   !> Whether the g0 text of a finite double (a mantissa 0.ddd with exponent E+309 at most: the
-   !> value rounded to its digits) lies beyond huge(1.0_dp) = 0.17976931348623157E+309.
-   pure logical function beyond_huge(text)
-      character(len=*), intent(in) :: text
-      character(len=*), parameter :: HUGE_DIGITS = '17976931348623157'
-      character(len=len(HUGE_DIGITS)) :: digits
-      integer :: point, mark
-      beyond_huge = .false.
-      mark = index(text, 'E+309')
-      if (mark == 0) return
-      point = index(text, '.')
-      if (point == 0 .or. point >= mark) return
-      digits = text(point + 1:mark - 1)           ! (padded with blanks, which sort below digits)
-      beyond_huge = digits > HUGE_DIGITS
-   end function beyond_huge
 
    !> The value in an `es<width>.<decimals>` field, right-justified to `width`, with a
    !> non-finite value as NaN, Infinity or -Infinity (asterisks when even that does not fit).
@@ -149,5 +137,68 @@ contains
          text = '-Infinity'
       end if
    end function non_finite_text
+
+   !> Whether a real literal (interphase_text_input's is_real_literal) lies beyond huge(1.0_dp),
+   !> decided from its digits and exponent, so that it is never read (reading it would raise an
+   !> overflow, which traps under -ffpe-trap=overflow): the number readers' test, and real_text's
+   !> for its own shorter texts of a value near huge().
+   pure logical function literal_overflows(literal) result(overflows)
+      character(len=*), intent(in) :: literal
+      character(len=*), parameter :: HUGE_DIGITS = '17976931348623157'   ! huge(1.0_dp) = 0.1797...e309
+      integer, parameter :: HUGE_MAGNITUDE = 309
+      character(len=len(HUGE_DIGITS)) :: digits
+      integer :: i, n, magnitude, exponent, mark, ndigits, ios
+      logical :: before_point, significant
+      n = len(literal)
+      mark = scan(literal, 'eEdD')
+      exponent = 0
+      if (mark > 0) then
+         if (exponent_too_long(literal(mark + 1:))) then
+            overflows = literal(mark + 1:mark + 1) /= '-' .and. verify(literal(1:mark - 1), '+-0.') > 0
+            return
+         end if
+         read (literal(mark + 1:), *, iostat=ios) exponent
+         n = mark - 1
+      end if
+      digits = repeat('0', len(digits))
+      ndigits = 0
+      magnitude = 0
+      before_point = .true.
+      significant = .false.
+      do i = 1, n
+         if (literal(i:i) == '.') then
+            before_point = .false.
+         else if (literal(i:i) >= '0' .and. literal(i:i) <= '9') then
+            if (literal(i:i) /= '0') significant = .true.
+            if (significant) then
+               if (before_point) magnitude = magnitude + 1
+               if (ndigits < len(digits)) then
+                  ndigits = ndigits + 1
+                  digits(ndigits:ndigits) = literal(i:i)
+               end if
+            else if (.not. before_point) then
+               magnitude = magnitude - 1
+            end if
+         end if
+      end do
+      overflows = .false.
+      if (.not. significant) return
+      magnitude = magnitude + exponent
+      overflows = magnitude > HUGE_MAGNITUDE .or. (magnitude == HUGE_MAGNITUDE .and. digits > HUGE_DIGITS)
+   end function literal_overflows
+
+   !> Whether the exponent of a real literal (the text after its letter: sign and digits) has
+   !> more than MAX_EXPONENT_DIGITS digits, its leading zeros not counted (e+0000001 has one),
+   !> so that its magnitude (at least 10**MAX_EXPONENT_DIGITS) lies beyond what any line's
+   !> mantissa could make up for (a line holds at most 65536 characters): the literal is out of
+   !> range unless its digits are all zero.
+   pure logical function exponent_too_long(exponent_text)
+      character(len=*), intent(in) :: exponent_text
+      integer :: first_significant
+      first_significant = verify(exponent_text, '+-0')
+      exponent_too_long = .false.
+      if (first_significant == 0) return           ! all zeros: the exponent is 0
+      exponent_too_long = len(exponent_text) - first_significant + 1 > MAX_EXPONENT_DIGITS
+   end function exponent_too_long
 
 end module interphase_real_text

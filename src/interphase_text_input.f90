@@ -10,6 +10,7 @@ module interphase_text_input
    use, intrinsic :: iso_c_binding, only: c_char, c_null_char, c_size_t, c_ptr, c_associated
    use interphase_finite, only: is_finite
    use interphase_kinds, only: dp
+   use interphase_real_text, only: literal_overflows, exponent_too_long
    implicit none
    private
    public :: text_file_type, open_text_file, read_text_line, close_text_file, parse_real, &
@@ -27,9 +28,6 @@ module interphase_text_input
 
    !> Why parse_real refuses a nonzero literal whose magnitude is below tiny(1.0_dp).
    character(len=*), parameter :: UNDERFLOW_WHY = 'out of range (|x| < 2.2e-308)'
-   !> Digits of an exponent (leading zeros not counted) beyond which a literal is out of range
-   !> whatever its mantissa (10**6 > MAX_LINE_LEN digits).
-   integer, parameter :: MAX_EXPONENT_DIGITS = 6
 
    !> Bytes read from the file at once (its size permitting).
    integer, parameter :: CHUNK_LEN = 4096
@@ -301,7 +299,7 @@ contains
          if (is_nonfinite_word(field(first:last))) why = 'not finite (NaN or Inf)'
          return
       end if
-      if (overflows(field(first:last))) then
+      if (literal_overflows(field(first:last))) then
          why = 'not finite (out of range)'
          return
       end if
@@ -362,67 +360,7 @@ contains
       end block
    end function tried_path
 
-   !> Whether a real literal (is_real_literal) lies beyond huge(1.0_dp), decided from its digits
-   !> and exponent, so that it is never read (reading it would raise an overflow, which traps
-   !> under -ffpe-trap=overflow).
-   pure logical function overflows(literal)
-      character(len=*), intent(in) :: literal
-      character(len=*), parameter :: HUGE_DIGITS = '17976931348623157'   ! huge(1.0_dp) = 0.1797...e309
-      integer, parameter :: HUGE_MAGNITUDE = 309
-      character(len=len(HUGE_DIGITS)) :: digits
-      integer :: i, n, magnitude, exponent, mark, ndigits, ios
-      logical :: before_point, significant
-      n = len(literal)
-      mark = scan(literal, 'eEdD')
-      exponent = 0
-      if (mark > 0) then
-         if (exponent_too_long(literal(mark + 1:))) then
-            overflows = literal(mark + 1:mark + 1) /= '-' .and. verify(literal(1:mark - 1), '+-0.') > 0
-            return
-         end if
-         read (literal(mark + 1:), *, iostat=ios) exponent
-         n = mark - 1
-      end if
-      digits = repeat('0', len(digits))
-      ndigits = 0
-      magnitude = 0
-      before_point = .true.
-      significant = .false.
-      do i = 1, n
-         if (literal(i:i) == '.') then
-            before_point = .false.
-         else if (literal(i:i) >= '0' .and. literal(i:i) <= '9') then
-            if (literal(i:i) /= '0') significant = .true.
-            if (significant) then
-               if (before_point) magnitude = magnitude + 1
-               if (ndigits < len(digits)) then
-                  ndigits = ndigits + 1
-                  digits(ndigits:ndigits) = literal(i:i)
-               end if
-            else if (.not. before_point) then
-               magnitude = magnitude - 1
-            end if
-         end if
-      end do
-      overflows = .false.
-      if (.not. significant) return
-      magnitude = magnitude + exponent
-      overflows = magnitude > HUGE_MAGNITUDE .or. (magnitude == HUGE_MAGNITUDE .and. digits > HUGE_DIGITS)
-   end function overflows
 
-   !> Whether the exponent of a real literal (the text after its letter: sign and digits) has
-   !> more than MAX_EXPONENT_DIGITS digits, its leading zeros not counted (e+0000001 has one),
-   !> so that its magnitude (at least 10**MAX_EXPONENT_DIGITS) lies beyond what any line's
-   !> mantissa could make up for (MAX_LINE_LEN digits): the literal is out of range unless its
-   !> digits are all zero.
-   pure logical function exponent_too_long(exponent_text)
-      character(len=*), intent(in) :: exponent_text
-      integer :: first_significant
-      first_significant = verify(exponent_text, '+-0')
-      exponent_too_long = .false.
-      if (first_significant == 0) return           ! all zeros: the exponent is 0
-      exponent_too_long = len(exponent_text) - first_significant + 1 > MAX_EXPONENT_DIGITS
-   end function exponent_too_long
 
    !> Whether a real literal (is_real_literal) with a nonzero digit has a negative exponent too
    !> long to read (exponent_too_long): its value is below tiny(1.0_dp), decided without reading
