@@ -27,10 +27,10 @@ module interphase_block
    use interphase_kinds, only: dp
    use interphase_finite, only: MAGNITUDE_MASK
    use interphase_params, only: law_params_type, SEPARATION_MAX, DENSITY_MIN, DENSITY_MAX, HOST_VALUE_MAX, &
-      HOST_INCREMENT_MAX
+      HOST_INCREMENT_MAX, SLIP_ONSET_ROUNDOFF
    use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, &
       MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT
-   use interphase_micro_coefficients, only: micro_block_coefficients
+   use interphase_micro_coefficients, only: micro_block_coefficients, micro_block_ufbar
    implicit none
    private
    public :: block_update, simplified_block_update, micromechanical_block_update, density_counts, block_supports, &
@@ -112,7 +112,7 @@ contains
       logical :: ok_w(SUB)
       real(dp) :: inv_kf, s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
       real(dp) :: d_hat, d_k, num, den, kn_open, kt_open, kk_n, kk_t, cf_t, sigma, tau1, tau2
-      real(dp) :: tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed
+      real(dp) :: phi_roundoff, tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed
       real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
       real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed
       integer(int64) :: nfailed_count
@@ -258,7 +258,9 @@ contains
 
                sigma = params%k_n*s_n_k
                phi = params%mu*sigma + tau_norm
-               slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+               ! (respond's round-off of phi, with T^c_T = K_T)
+               phi_roundoff = SLIP_ONSET_ROUNDOFF*(abs(params%mu*sigma) + abs(params%k_t*st1))
+               slipping = phi > phi_roundoff .and. tau_norm > 0.0_dp
                dgamma = phi*inv_kf
                lam1_closed = merge(lam1_k + dgamma*dir1, lam1_k, slipping)
                tn_closed = kk_n*s_n_k
@@ -318,7 +320,8 @@ contains
                ! closed crack: trial stick state (eq 43), return mapping (eqs 44-48)
                sigma = params%k_n*s_n_k
                phi = params%mu*sigma + tau_norm
-               slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+               phi_roundoff = SLIP_ONSET_ROUNDOFF*(abs(params%mu*sigma) + (abs(params%k_t*st1) + abs(params%k_t*st2)))
+               slipping = phi > phi_roundoff .and. tau_norm > 0.0_dp
                dgamma = phi*inv_kf
                lam1_closed = merge(lam1_k + dgamma*dir1, lam1_k, slipping)
                lam2_closed = merge(lam2_k + dgamma*dir2, lam2_k, slipping)
@@ -380,7 +383,7 @@ contains
       logical :: ok_w(SUB)
       real(dp) :: s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
       real(dp) :: d_hat, d_k, num, den, kk_n, kk_t, cf_t, tf_k, kf, ufbar_k, sigma, tau1, tau2
-      real(dp) :: tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed, ratio
+      real(dp) :: phi_roundoff, tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed, ratio
       real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
       real(dp) :: lam1_open, lam2_open, regime_if_open, regime_if_closed
       integer(int64) :: nfailed_count, ngrow, nup
@@ -473,10 +476,9 @@ contains
          end if
 
          ! ---- where the crack grew under slip (GROWTH_FIXED_PI): m(D_n) = D_n ufbar(D_n) from the
-         ! table at the old damage (slip_measure), for the trial slip lambda_n m(D_n)/m(D)
+         ! table at the old damage (slip_measure; ufbar alone), for the trial slip lambda_n m(D_n)/m(D)
          if (conserve .and. nup > 0) then
-            call micro_block_coefficients(params%table, m, d_old(c0:c0 + m - 1), ck_n, ck_t, ckc_n, ckc_t, &
-               cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar, failc)
+            call micro_block_ufbar(params%table, m, d_old(c0:c0 + m - 1), cufbar, failc)
             do i = 1, m
                k = c0 + i - 1
                grown = d_w(i) > d_old(k)
@@ -526,7 +528,8 @@ contains
                dir1 = sign(1.0_dp, tau1)
                sigma = csc_n(i)*s_n_k
                phi = params%mu*sigma + tau_norm
-               slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+               phi_roundoff = SLIP_ONSET_ROUNDOFF*(abs(params%mu*sigma) + abs(ctc_t(i)*st1))
+               slipping = phi > phi_roundoff .and. tau_norm > 0.0_dp
                dgamma = phi*(1.0_dp/max(kf, tiny(1.0_dp)))
                lam1_closed = merge(lam1_k + dgamma*dir1, lam1_k, slipping)
                tn_closed = kk_n*s_n_k
@@ -582,7 +585,8 @@ contains
                dir2 = tau2*inv_norm
                sigma = csc_n(i)*s_n_k
                phi = params%mu*sigma + tau_norm
-               slipping = phi > 0.0_dp .and. tau_norm > 0.0_dp
+               phi_roundoff = SLIP_ONSET_ROUNDOFF*(abs(params%mu*sigma) + (abs(ctc_t(i)*st1) + abs(ctc_t(i)*st2)))
+               slipping = phi > phi_roundoff .and. tau_norm > 0.0_dp
                dgamma = phi*(1.0_dp/max(kf, tiny(1.0_dp)))
                lam1_closed = merge(lam1_k + dgamma*dir1, lam1_k, slipping)
                lam2_closed = merge(lam2_k + dgamma*dir2, lam2_k, slipping)
@@ -621,23 +625,19 @@ contains
    !> The densities of a block in one branch-free pass: nbad values outside [DENSITY_MIN,
    !> DENSITY_MAX] (bit patterns: no exception for NaN; negative numbers have the sign bit and
    !> lie below; the window keeps the energies per unit mass and their products with the density
-   !> finite), and ndiff values whose bit pattern differs from rho(1) (0: one density).
-   pure subroutine density_counts(n, rho, nbad, ndiff)
+   !> finite).
+   pure subroutine density_counts(n, rho, nbad)
       integer, intent(in) :: n
       real(dp), intent(in) :: rho(n)
-      integer, intent(out) :: nbad, ndiff
-      integer(int64) :: b, b1, nbad_bits, ndiff_bits
+      integer, intent(out) :: nbad
+      integer(int64) :: b, nbad_bits
       integer :: k
-      b1 = transfer(rho(1), 0_int64)
       nbad_bits = 0
-      ndiff_bits = 0
       do k = 1, n
          b = transfer(rho(k), 0_int64)
          nbad_bits = nbad_bits + merge(0_int64, 1_int64, b >= DENSITY_MIN_BITS .and. b <= DENSITY_MAX_BITS)
-         ndiff_bits = ndiff_bits + merge(1_int64, 0_int64, b /= b1)
       end do
       nbad = int(nbad_bits)
-      ndiff = int(ndiff_bits)
    end subroutine density_counts
 
    !> The energies per unit mass at the end of the increment of a block's points (Abaqus/Explicit's
@@ -650,15 +650,15 @@ contains
    !> zeros) where its incoming stress, e_int,n or e_inel,n exceeds HOST_VALUE_MAX in magnitude,
    !> or a separation increment HOST_INCREMENT_MAX (bit patterns: NaN and Inf count, without an
    !> exception). In 2-D (nt = 1) the third columns are checked but do not enter the energies
-   !> (pass the second columns again: the pass reads them either way). `uniform`: every rho(k) has the
-   !> bits of rho(1) (density_counts' ndiff = 0), so that one division serves the block.
-   pure subroutine block_energies(n, nt, thickness, rho, uniform, so_n, so_t1, so_t2, ds_n, ds_t1, ds_t2, &
+   !> (pass the second columns again: the pass reads them either way). rho t and 1/(rho t) are formed
+   !> at every point: with one division for a block of one density (a branch on it, or a selection,
+   !> kept gfortran 12 from vectorising the loop: docs/performance.md) the loop ran scalar.
+   pure subroutine block_energies(n, nt, thickness, rho, so_n, so_t1, so_t2, ds_n, ds_t1, ds_t2, &
          t_n, t_t1, t_t2, psi, ei_old, ep_old, ei_new, ep_new, nbad)
       integer, intent(in) :: n                       !! number of points
       integer, intent(in) :: nt                      !! tangential components: 1 (2-D) or 2 (3-D)
       real(dp), intent(in) :: thickness              !! constitutive thickness t (mm)
       real(dp), intent(in) :: rho(n)                 !! density (tonne/mm^3), within [DENSITY_MIN, DENSITY_MAX]
-      logical, intent(in) :: uniform                 !! one density in the block
       real(dp), intent(in) :: so_n(n), so_t1(n), so_t2(n)   !! tractions at the start (MPa)
       real(dp), intent(in) :: ds_n(n), ds_t1(n), ds_t2(n)   !! separation increments (mm)
       real(dp), intent(in) :: t_n(n), t_t1(n), t_t2(n)      !! tractions at the end (MPa)
@@ -667,15 +667,13 @@ contains
       real(dp), intent(out) :: ei_new(n), ep_new(n)  !! e_int and e_inel (per unit mass)
       integer, intent(out) :: nbad                   !! points with host values out of range
 
-      real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei, ep, work, rho_t, inv_rho, rho_t_uniform, inv_rho_uniform
+      real(dp) :: so1, so2, so3, ds1, ds2, ds3, ei, ep, work, rho_t, inv_rho
       real(dp) :: psi_old, energy_inelas
       integer(int64) :: nbad_count, big_value, big_increment
       logical :: ok
       integer :: k
 
       nbad_count = 0
-      rho_t_uniform = rho(1)*thickness
-      inv_rho_uniform = 1.0_dp/rho_t_uniform
       do k = 1, n
          so1 = so_n(k)
          so2 = so_t1(k)
@@ -702,13 +700,8 @@ contains
          ! (the third term selected, not branched on: a branch stops the vectorisation)
          work = (so1 + t_n(k))*ds1 + (so2 + t_t1(k))*ds2
          work = merge(work + (so3 + t_t2(k))*ds3, work, nt == 2)
-         if (uniform) then
-            rho_t = rho_t_uniform
-            inv_rho = inv_rho_uniform
-         else
-            rho_t = rho(k)*thickness
-            inv_rho = 1.0_dp/rho_t
-         end if
+         rho_t = rho(k)*thickness
+         inv_rho = 1.0_dp/rho_t
          psi_old = (ei - ep)*rho_t
          energy_inelas = ep + (0.5_dp*work - (psi(k) - psi_old))*inv_rho
          ep_new(k) = energy_inelas

@@ -21,7 +21,7 @@
 !> without which the energy balance fails (docs/theory.md).
 module interphase_fracture
    use interphase_kinds, only: dp
-   use interphase_params, only: law_params_type
+   use interphase_params, only: law_params_type, SLIP_ONSET_ROUNDOFF
    use interphase_enums, only: RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, GROWTH_FIXED_PI, &
       MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_STAGGER_NOT_CONVERGED, STATUS_BAD_COEFFICIENTS, &

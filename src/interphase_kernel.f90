@@ -11,7 +11,8 @@
 !>   mean crack opening dbar_n s_N > 0: open crack, t = k s, crack faces free, the slip
 !>   follows the mean tangential jump: lambda = dbar_t s_T / ufbar.
 !>   otherwise closed: trial crack stresses sigma = sc_n s_N, tau = tc_t s_T + T^f lambda_n,
-!>   phi = mu sigma + |tau| (eq 43); phi <= 0: stick; phi > 0: slip, return mapping along
+!>   phi = mu sigma + |tau| (eq 43); phi <= 0 (or within its round-off, SLIP_ONSET_ROUNDOFF):
+!>   stick; phi > 0: slip, return mapping along
 !>   tau_trial (eqs 44-48): lambda = lambda_n + (phi/(-T^f)) tau/|tau|.
 !>   t_N = (k_n + kc_n) s_N, t_T = (k_t + kc_t) s_T + C^f_T lambda.
 !> The damage:
@@ -29,7 +30,7 @@ module interphase_kernel
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_finite, only: is_finite, is_finite_nonnegative, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, MAGNITUDE_MASK
    use interphase_kinds, only: dp
-   use interphase_params, only: law_params_type, SEPARATION_MAX
+   use interphase_params, only: law_params_type, SEPARATION_MAX, SLIP_ONSET_ROUNDOFF
    use interphase_enums, only: DAMAGE_DISPLACEMENT, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE, &
       REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_NONFINITE_SEPARATION, STATUS_BAD_TIME_INCREMENT, &

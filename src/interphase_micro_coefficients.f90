@@ -27,7 +27,7 @@ module interphase_micro_coefficients
    private
    public :: micro_coefficients, micro_values, micro_ufbar, load_custom_table, custom_table_source, table_coefficients, &
       custom_table_loaded, check_interpolant, default_table_data, micro_block_coefficients, table_curvature_type, &
-      micro_second_derivatives
+      micro_second_derivatives, micro_block_ufbar
 
    !> What a table evaluation with derivatives keeps so that the second derivatives d2/dD2 of its
    !> set can be formed later, and only where they are used (`micro_second_derivatives`): the
@@ -40,6 +40,10 @@ module interphase_micro_coefficients
       real(dp) :: dx_dd                  !! dx/dD (-)
       real(dp) :: d2x_dd2                !! d2x/dD2 (-)
    end type table_curvature_type
+
+   !> Points per chunk of the block evaluations (fixed-size working arrays: a run-time-sized
+   !> automatic array would be allocated on the heap at every call).
+   integer, parameter :: BLOCK_CHUNK = 64
 
    !> Points per interval between two rows at which `check_interpolant` evaluates the interpolant.
    integer, parameter :: INTERPOLANT_SAMPLES = 16
@@ -413,24 +417,14 @@ contains
       real(dp), intent(in) :: d(n)                           !! damage D = a/b (-)
       real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
       real(dp), intent(out) :: fail(n)                       !! 1 where the point update fails on the table, else 0
-      integer :: i, n_eval
-      integer(int64) :: ndiff
-      real(dp) :: d1, sign1
+      integer :: n_eval
       if (table == TABLE_CUSTOM_CODE .and. .not. allocated(custom_coef)) then
          fail = 1.0_dp
          k_n = 0.0_dp; k_t = 0.0_dp; kc_n = 0.0_dp; kc_t = 0.0_dp; dbar_n = 0.0_dp; dbar_t = 0.0_dp
          tc_t = 0.0_dp; sc_n = 0.0_dp; cf_t = 0.0_dp; tf = -huge(1.0_dp); ufbar = 1.0_dp
          return
       end if
-      ! one value of D (bit for bit: equal numbers of the same sign, NaN counted as different)?
-      d1 = d(1)
-      sign1 = sign(1.0_dp, d1)
-      ndiff = 0
-      do i = 1, n
-         ndiff = ndiff + merge(0_int64, 1_int64, abs(d(i) - d1) <= 0.0_dp .and. sign(1.0_dp, d(i)) >= sign1 &
-            .and. sign(1.0_dp, d(i)) <= sign1)
-      end do
-      n_eval = merge(1, n, ndiff == 0)
+      n_eval = merge(1, n, one_damage(n, d))
       if (table == TABLE_CUSTOM_CODE) then
          call block_values(custom_variable, custom_knots, custom_coef, custom_guide, custom_guide_scale, &
             custom_guide_steps, n_eval, d, k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, fail)
@@ -455,8 +449,7 @@ contains
       end if
    end subroutine micro_block_coefficients
 
-   !> `micro_block_coefficients` on given interpolation data, CHUNK points at a time (fixed-size
-   !> working arrays: a run-time-sized automatic array would be allocated on the heap at every call).
+   !> `micro_block_coefficients` on given interpolation data, BLOCK_CHUNK points at a time.
    pure subroutine block_values(variable, knots, coef_table, guide, guide_scale, guide_steps, n, d, k_n, k_t, &
          kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, fail)
       integer, intent(in) :: variable
@@ -469,48 +462,12 @@ contains
       real(dp), intent(in) :: d(n)
       real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
       real(dp), intent(out) :: fail(n)
-      integer, parameter :: CHUNK = 64
-      real(dp) :: x(CHUNK), t(CHUNK), y(CHUNK), v(N_COEFFICIENTS, CHUNK), x_k, t_i, x_lo, x_hi
-      integer :: lo(CHUNK), nk, step, cand, i, j, k, ncells, c0, m
-      nk = size(knots)
-      ncells = size(guide)
-      x_lo = knots(1)
-      x_hi = knots(nk)
-      do c0 = 1, n, CHUNK
-         m = min(CHUNK, n - c0 + 1)
-         ! the interpolation variable (crack_variable: x = D, or w = 1/(1 - ln(1 - D)), 0 at D = 1),
-         ! with crack_variable's logarithm (ln_positive: the same bits in scalar and vector code)
-         if (variable == VARIABLE_DAMAGE) then
-            x(1:m) = d(c0:c0 + m - 1)
-         else
-            ! (the argument is 1 - D for every D < 1; at D = 1, where x = 0, it stays > 0)
-            do i = 1, m
-               y(i) = 1.0_dp - min(d(c0 + i - 1), 1.0_dp - 0.5_dp*epsilon(1.0_dp))
-            end do
-            call ln_positive_block(m, y, x)
-            do i = 1, m
-               x(i) = merge(1.0_dp/(1.0_dp - x(i)), 0.0_dp, d(c0 + i - 1) < 1.0_dp)
-            end do
-         end if
-         do i = 1, m
-            k = c0 + i - 1
-            fail(k) = merge(0.0_dp, 1.0_dp, .not. (d(k) > 0.0_dp .and. d(k) < D_MIN_CRACK) .and. x(i) >= x_lo &
-               .and. x(i) <= x_hi)
-         end do
-         ! the interval: the largest lo in 1..nk-1 with knots(lo) <= x (cubic_locate's interval; at
-         ! x = knots(nk), nk - 1), from the interval guide: the guide's interval of x's cell
-         ! (guide_cell, of x clamped to the knots: where the point fails x may lie outside), then
-         ! guide_steps forward comparisons (guide_locate)
-         do i = 1, m
-            x_k = min(max(x(i), x_lo), x_hi)
-            lo(i) = guide(min(ncells, max(1, int((x_k - x_lo)*guide_scale) + 1)))
-         end do
-         do step = 1, guide_steps
-            do i = 1, m
-               cand = min(lo(i) + 1, nk - 1)
-               lo(i) = merge(cand, lo(i), x(i) >= knots(cand))
-            end do
-         end do
+      real(dp) :: x(BLOCK_CHUNK), t(BLOCK_CHUNK), v(N_COEFFICIENTS, BLOCK_CHUNK), t_i
+      integer :: lo(BLOCK_CHUNK), i, j, k, c0, m
+      do c0 = 1, n, BLOCK_CHUNK
+         m = min(BLOCK_CHUNK, n - c0 + 1)
+         call block_locate(variable, knots, guide, guide_scale, guide_steps, m, d(c0:c0 + m - 1), x, lo, &
+            fail(c0:c0 + m - 1))
          ! the columns of one point together (cubic_eval's Horner form): a point's coefficients on
          ! its interval are contiguous in the data (column fastest), so the compiler evaluates the
          ! columns as a few short vectors each power, where a loop over the points would gather
@@ -545,6 +502,142 @@ contains
          end do
       end do
    end subroutine block_values
+
+   !> ufbar(D) alone at n damages D(1:n), with the failure flags of `micro_block_coefficients`:
+   !> each value bit for bit what `micro_ufbar` returns at that D (the same interval and Horner
+   !> form), fail(i) = 1 where it fails. For the block update's trial slip of a growing crack
+   !> (m(D_n) = D_n ufbar(D_n)), which needs this one column at the old damage. A block of one
+   !> damage is evaluated once, as in `micro_block_coefficients`.
+   pure subroutine micro_block_ufbar(table, n, d, ufbar, fail)
+      integer, intent(in) :: table                           !! TABLE_*_CODE of interphase_layout
+      integer, intent(in) :: n                               !! number of points (>= 1)
+      real(dp), intent(in) :: d(n)                           !! damage D = a/b (-), finite in [0, 1]
+      real(dp), intent(out) :: ufbar(n)                      !! ufbar(D) (-)
+      real(dp), intent(out) :: fail(n)                       !! 1 where micro_ufbar fails, else 0
+      integer :: n_eval
+      if (table == TABLE_CUSTOM_CODE .and. .not. allocated(custom_coef)) then
+         fail = 1.0_dp
+         ufbar = 1.0_dp
+         return
+      end if
+      n_eval = merge(1, n, one_damage(n, d))
+      if (table == TABLE_CUSTOM_CODE) then
+         call block_ufbar(custom_variable, custom_knots, custom_coef, custom_guide, custom_guide_scale, &
+            custom_guide_steps, n_eval, d, ufbar, fail)
+      else
+         call block_ufbar(DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_GUIDE, &
+            DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS, n_eval, d, ufbar, fail)
+      end if
+      if (n_eval < n) then
+         ufbar(2:n) = ufbar(1)
+         fail(2:n) = fail(1)
+      end if
+   end subroutine micro_block_ufbar
+
+   !> `micro_block_ufbar` on given interpolation data, BLOCK_CHUNK points at a time.
+   pure subroutine block_ufbar(variable, knots, coef_table, guide, guide_scale, guide_steps, n, d, ufbar, fail)
+      integer, intent(in) :: variable
+      real(dp), contiguous, intent(in) :: knots(:)
+      real(dp), contiguous, intent(in) :: coef_table(:, 0:, :)
+      integer, intent(in) :: guide(:)                        !! the knots' interval guide (guide_build)
+      real(dp), intent(in) :: guide_scale
+      integer, intent(in) :: guide_steps
+      integer, intent(in) :: n
+      real(dp), intent(in) :: d(n)
+      real(dp), intent(out) :: ufbar(n), fail(n)
+      real(dp) :: x(BLOCK_CHUNK), t_i
+      integer :: lo(BLOCK_CHUNK), i, c0, m
+      do c0 = 1, n, BLOCK_CHUNK
+         m = min(BLOCK_CHUNK, n - c0 + 1)
+         call block_locate(variable, knots, guide, guide_scale, guide_steps, m, d(c0:c0 + m - 1), x, lo, &
+            fail(c0:c0 + m - 1))
+         ! (table_ufbar's Horner form)
+         do i = 1, m
+            t_i = x(i) - knots(lo(i))
+            ufbar(c0 + i - 1) = coef_table(IC_UFBAR, 0, lo(i)) + t_i*(coef_table(IC_UFBAR, 1, lo(i)) &
+               + t_i*(coef_table(IC_UFBAR, 2, lo(i)) + t_i*coef_table(IC_UFBAR, 3, lo(i))))
+         end do
+      end do
+   end subroutine block_ufbar
+
+   !> For m <= BLOCK_CHUNK damages D(1:m): the interpolation variable x (crack_variable: x = D, or
+   !> w = 1/(1 - ln(1 - D)), 0 at D = 1, with crack_variable's logarithm: ln_positive gives the
+   !> same bits in scalar and vector code), the interval lo of x among the knots (the guided
+   !> interval of interphase_guided_interval.inc, which ends where cubic_locate's search does),
+   !> and fail = 1 where the point evaluation fails (0 < D < D_MIN_CRACK, x outside the knots),
+   !> else 0. One source for the block evaluations of the set and of ufbar alone.
+   pure subroutine block_locate(variable, knots, guide, guide_scale, guide_steps, m, d, x, lo, fail)
+      integer, intent(in) :: variable
+      real(dp), contiguous, intent(in) :: knots(:)
+      integer, intent(in) :: guide(:)
+      real(dp), intent(in) :: guide_scale
+      integer, intent(in) :: guide_steps
+      integer, intent(in) :: m
+      real(dp), intent(in) :: d(m)
+      real(dp), intent(out) :: x(BLOCK_CHUNK)
+      integer, intent(out) :: lo(BLOCK_CHUNK)
+      real(dp), intent(out) :: fail(m)
+      real(dp) :: y(BLOCK_CHUNK), x_k, x_lo, x_hi
+      integer :: nk, step, cand, i, ncells
+      logical :: inside
+      nk = size(knots)
+      ncells = size(guide)
+      x_lo = knots(1)
+      x_hi = knots(nk)
+      if (variable == VARIABLE_DAMAGE) then
+         x(1:m) = d
+      else
+         ! (the argument is 1 - D for every D < 1; at D = 1, where x = 0, it stays > 0)
+         do i = 1, m
+            y(i) = 1.0_dp - min(d(i), 1.0_dp - 0.5_dp*epsilon(1.0_dp))
+         end do
+         call ln_positive_block(m, y, x)
+         do i = 1, m
+            x(i) = merge(1.0_dp/(1.0_dp - x(i)), 0.0_dp, d(i) < 1.0_dp)
+         end do
+      end if
+      ! (x compared at every point, the two conditions combined after: written as one short-circuit
+      ! condition, gfortran loaded x only where D passed its test and compared the lanes of the
+      ! others unloaded, which can raise an exception under -fno-trapping-math)
+      do i = 1, m
+         x_k = x(i)
+         inside = x_k >= x_lo .and. x_k <= x_hi
+         fail(i) = merge(0.0_dp, 1.0_dp, inside .and. .not. (d(i) > 0.0_dp .and. d(i) < D_MIN_CRACK))
+      end do
+      ! the interval: the largest lo in 1..nk-1 with knots(lo) <= x (cubic_locate's interval; at
+      ! x = knots(nk), nk - 1), from the interval guide: the guide's interval of x's cell
+      ! (guide_cell, of x clamped to the knots: where the point fails x may lie outside), then
+      ! guide_steps forward comparisons (guide_locate)
+      do i = 1, m
+         x_k = min(max(x(i), x_lo), x_hi)
+         lo(i) = guide(min(ncells, max(1, int((x_k - x_lo)*guide_scale) + 1)))
+      end do
+      do step = 1, guide_steps
+         do i = 1, m
+            cand = min(lo(i) + 1, nk - 1)
+            lo(i) = merge(cand, lo(i), x(i) >= knots(cand))
+         end do
+      end do
+   end subroutine block_locate
+
+   !> Whether the n damages D(1:n) are one value bit for bit (equal numbers of the same sign, NaN
+   !> counted as different): then a block evaluation of the table is made once and copied, which
+   !> gives the same bits, since each value depends on D alone.
+   pure logical function one_damage(n, d)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: d(n)
+      integer(int64) :: ndiff
+      real(dp) :: d1, sign1
+      integer :: i
+      d1 = d(1)
+      sign1 = sign(1.0_dp, d1)
+      ndiff = 0
+      do i = 1, n
+         ndiff = ndiff + merge(0_int64, 1_int64, abs(d(i) - d1) <= 0.0_dp .and. sign(1.0_dp, d(i)) >= sign1 &
+            .and. sign(1.0_dp, d(i)) <= sign1)
+      end do
+      one_damage = ndiff == 0
+   end function one_damage
 
    !> The interpolated columns (IC_* order) as a coefficient set, with T^f and C^f_T given apart.
    pure function as_set(v, tf, cf_t) result(c)

@@ -3,7 +3,7 @@
 !> slip with its sensitivities, and the stored energy. Used by the update for both damage laws.
 module interphase_response
    use interphase_kinds, only: dp
-   use interphase_params, only: law_params_type
+   use interphase_params, only: law_params_type, SLIP_ONSET_ROUNDOFF
    use interphase_enums, only: REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP, GROWTH_FIXED_PI, MODEL_MICROMECHANICAL
    use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS

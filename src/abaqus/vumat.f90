@@ -108,7 +108,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    real(dp) :: traction(3), tangent(3, 3), psi_first
    logical :: blocked, packaging, viscous, bad_state
    integer :: nsv   !! STATEV slots of the state (state_slots)
-   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, ndiff, status, nfailed, first_failed, first_status, nbad_energy
+   integer :: ntens, nt, km, k, k0, k1, n, j, nbad, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    integer :: ios
    character(len=MESSAGE_LEN) :: message, first_message
@@ -200,10 +200,10 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          k1 = k0 + n - 1
          ! densities and incoming states of the chunk: one branch-free pass each, the culprit
          ! searched for only on error (then the whole block is held, the chunks before too)
-         call density_counts(n, density(k0:k1), nbad, ndiff)
+         call density_counts(n, density(k0:k1), nbad)
          if (nbad > 0) then
             do km = k0, k1
-               call density_counts(1, density(km:km), nbad, ndiff)
+               call density_counts(1, density(km:km), nbad)
                if (nbad > 0) exit
             end do
             write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
@@ -374,10 +374,9 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          end if
 
          ! the energies per unit mass, with the check of the host's values (block_energies: one
-         ! vectorised pass without branches; 1/(rho T0) once for the chunk when its density is
-         ! uniform, the usual case)
+         ! vectorised pass without branches)
          ! (column ntens is the third in 3-D, the second again in 2-D, where it only is checked)
-         call block_energies(n, nt, THICKNESS, density(k0:k1), ndiff == 0, stressold(k0:k1, 1), &
+         call block_energies(n, nt, THICKNESS, density(k0:k1), stressold(k0:k1, 1), &
             stressold(k0:k1, 2), stressold(k0:k1, ntens), ds(1:n, 1), ds(1:n, 2), ds(1:n, ntens), &
             stressnew(k0:k1, 1), stressnew(k0:k1, 2), stressnew(k0:k1, ntens), psi(1:n), enerinternold(k0:k1), &
             enerinelasold(k0:k1), enerinternnew(k0:k1), enerinelasnew(k0:k1), nbad_energy)
