@@ -13,7 +13,8 @@ jobs=$(nproc 2>/dev/null || echo 2)
 
 bash "$here/tools/ensure-packages.sh" gnuplot
 cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$build" -j "$jobs" --target interphase-point interphase-calibrate
+# (interphase-check-deck too: README.md names it among the programs this command provides)
+cmake --build "$build" -j "$jobs" --target interphase-point interphase-calibrate interphase-check-deck
 mkdir -p "$out"
 for case in "$here"/drivers/cases/*.nml "$here"/drivers/cases/micro/*.nml "$here"/drivers/cases/fracture/*.nml; do
   echo "== $(basename "$case")"

@@ -785,6 +785,10 @@ DRIVER_CASES = {
     "mu_exponent_zeros": ("mu = 0.75", "mu = 0.75e0000000", None),
     "history_underflow": ("'h.txt'", "'h.txt'", "0 0 0\n1 0 1e-400\n"),
     "history_exponent_zeros": ("'h.txt'", "'h.txt'", "0 0 0\n1 0 0.01E+000000000\n"),
+    # files that cannot be used: named as the driver names them (its absolute path; the entry)
+    "history_missing": ("history = 'h.txt'", "history = 'missing.txt'", None),
+    "rcurve_file_refused": ("damage_law = 'displacement'", "damage_law = 'fracture', d0 = 0.05, rcurve = 'tabulated', "
+                            "rcurve_file = 'h.txt'", None),
 }
 
 
@@ -802,7 +806,7 @@ def test_read_case_refuses_what_the_driver_refuses(point_driver, tmp_path, monke
         interphase.read_case("case.nml")
         return
     expected = next(line for line in lines if line.startswith("interphase-point: error: "))
-    with pytest.raises((ValueError, TypeError)) as caught:
+    with pytest.raises((ValueError, TypeError, OSError)) as caught:
         interphase.read_case("case.nml")
     error = caught.value
     got = error.detail if isinstance(error, interphase.InterphaseError) else str(error)

@@ -56,14 +56,22 @@ def _clip(text):
     return raw.decode("utf-8", errors="surrogateescape")
 
 
-def _text_lines(path):
+def _text_lines(path, what=None):
     """The lines of a text file, read as the driver reads it (interphase_text_input): bytes as
     they are (UTF-8, with any other byte kept as a surrogate, so a comment in another encoding is
     read and a path named in the file opens the file of those bytes), one trailing carriage return
     dropped; a line longer than MAX_LINE_LEN bytes (a trailing carriage return counted, a comment
     too), a file larger than MAX_FILE_BYTES (/dev/zero included) and a UTF-8 byte-order mark are
-    refused: ValueError 'path:line: cannot read the line: why', the driver's message."""
-    with open(path, "rb") as f:
+    refused: ValueError 'path:line: cannot read the line: why', the driver's message. A file that
+    cannot be opened raises the OSError of open(), with the driver's message when `what` names the
+    file ('history file': 'absolute path: cannot open the history file: reason')."""
+    try:
+        f = open(path, "rb")
+    except OSError as error:
+        if what is None:
+            raise
+        raise type(error)(f"{os.path.abspath(path)}: cannot open the {what}: {error.strerror}") from None
+    with f:
         data = f.read(MAX_FILE_BYTES + _CHUNK)
     lines, start, number = [], 0, 0
     while start < len(data):
@@ -304,7 +312,7 @@ def read_history(path, control=False):
     """
     rows, flags, lines = [], [], []
     named, names_line, first_line = None, 0, 0
-    for number, line in enumerate(_text_lines(path), 1):
+    for number, line in enumerate(_text_lines(path, "history file"), 1):
         where = f"{path}:{number}"
         if "\r" in line:   # (the one before the newline is dropped: old Mac line ends)
             column = line.encode("utf-8", "surrogateescape").index(b"\r") + 1      # (in bytes, as the driver counts)
@@ -732,7 +740,14 @@ def read_case(path):
         raise InterphaseError(error.status, _at_entry(path, "material", f"{entry}: {error.detail}", lines)) from None
 
     time, value, control = read_history(os.path.join(base, history), control=True)
-    # the table and the R-curve, loaded and checked (as the driver does before the replay)
-    material.update(np.zeros(2), dt=0.0)
+    # the table and the R-curve, loaded and checked (as the driver does before the replay), a
+    # refusal named with the case file and the entry that names the file, as the driver names it
+    try:
+        material.update(np.zeros(2), dt=0.0)
+    except InterphaseError as error:
+        entry = {"table": "table", "rcurve": "rcurve_file"}.get(getattr(error, "file_kind", None))
+        if entry is None:
+            raise
+        raise InterphaseError(error.status, f"{path}: &material: {entry}: {error.reason}: {error.detail}") from None
     return Case(material, time, value, increments, output, control=control, traction_tolerance=float(tolerance),
                 output_every=output_every, tangent_check=float(tangent_check), tangent_step=float(tangent_step))

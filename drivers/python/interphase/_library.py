@@ -156,7 +156,9 @@ def _load_file(kind, loader, path):
     _loaded[kind] = None                                          # (after a failed load the next use tries again)
     status = loader(os.fsencode(path), detail, DETAIL_LEN)      # (the bytes of the name, any encoding)
     if status != _status.STATUS_OK:
-        raise InterphaseError(status, text_of(detail))
+        error = InterphaseError(status, text_of(detail))
+        error.file_kind = kind          # (which file: read_case names its entry)
+        raise error
     _loaded[kind] = (signature, digest)
 
 
