@@ -420,7 +420,8 @@ contains
       if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
       if (section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') &
          call record_failure(where//': RESPONSE='//trim(section%response)//' but interphase is a traction-separation '// &
-            'law: RESPONSE=TRACTION SEPARATION (or CONTINUUM with the layer thickness option, docs/abaqus.md)', nfail)
+            'law: RESPONSE=TRACTION SEPARATION, or CONTINUUM (its strains are the separations over the constitutive '// &
+            'thickness T0: give the layer thickness option t = T0, docs/abaqus.md)', nfail)
       m = 0
       do k = 1, size(materials)
          if (materials(k)%name == section%material) m = k
@@ -535,6 +536,9 @@ contains
             else if (mat%depvar < depvar_needed) then
                why = ''
                if (depvar_needed == NSTATV_VISCOUS .and. .not. explicit) why = ' (the viscous damage takes STATEV(5))'
+               ! (the VUMAT's own message says the same)
+               if (explicit) why = ' (since 2026-12 slots 6-9 hold the separations and the failure flag, '// &
+                  'docs/abaqus.md)'
                call record_failure(path//':'//int_to_string(mat%depvar_line)//': *DEPVAR of '//trim(mat%name)//': '// &
                   int_to_string(mat%depvar)//' but '//trim(solver)//' needs at least '//int_to_string(depvar_needed)// &
                   why, nfail)

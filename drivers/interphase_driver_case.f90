@@ -637,7 +637,8 @@ contains
 
    !> One line naming the material of PROPS for consoles and plot titles: model, damage law and
    !> key parameters, e.g. 'simplified model, displacement law: mu = 0.75, s0_N = 0.00044 mm,
-   !> ..., K_N = 482.7 MPa/mm'. PROPS that do not decode give the model code only.
+   !> ..., K_N = 482.7 MPa/mm' (the fracture law: D0 and the R-curve; the options that are not
+   !> their default). PROPS that do not decode give the model code only.
    function material_summary(props) result(text)
       real(dp), intent(in) :: props(:)            !! PROPS (interphase_layout)
       character(len=:), allocatable :: text
@@ -668,9 +669,24 @@ contains
       text = text//': mu = '//short(p%mu)//', s0_N = '//short(p%s0_n)//', sf_N = '//short(p%sf_n)// &
          ', s0_T = '//short(p%s0_t)//', sf_T = '//short(p%sf_t)//' mm'
       if (p%model == MODEL_SIMPLIFIED) text = text//', K_N = '//short(p%k_n)//', K_T = '//short(p%k_t)//' MPa/mm'
-      if (p%damage_law == DAMAGE_FRACTURE) text = text//', D0 = '//short(p%d0)
+      if (p%damage_law == DAMAGE_FRACTURE) then
+         text = text//', D0 = '//short(p%d0)
+         select case (p%rcurve)
+         case (RCURVE_CONSTANT)
+            text = text//', G_cI = '//short(p%gc_i)//', G_cII = '//short(p%gc_ii)//' N/mm'
+         case (RCURVE_EQUIVALENT)
+            text = text//', equivalent R-curve'
+         case (RCURVE_TABULATED)
+            text = text//', tabulated R-curve'
+         end select
+      end if
       if (p%viscosity > 0.0_dp) text = text//', eta = '//short(p%viscosity)//' s'
-      if (p%contact_band > 0.0_dp) text = text//', chi = '//short(p%contact_band)
+      ! (the options that change the response, where they are not the default; the contact band
+      ! changes nothing in the simplified model, which has no closing jump: not named there)
+      if (p%contact_band > 0.0_dp .and. p%model == MODEL_MICROMECHANICAL) text = text//', chi = '//short(p%contact_band)
+      if (p%growth_slip == GROWTH_FIXED_LAMBDA) text = text//', growth_slip fixed-lambda'
+      if (p%stiffness == STIFFNESS_SYMMETRIC) text = text//', stiffness symmetric'
+      if (p%stiffness == STIFFNESS_FIXED_DAMAGE) text = text//', stiffness fixed-damage'
    contains
       !> Four significant digits, plain for 1e-5 <= |value| < 1e6 (0.00044, 482.7), else 1.234E-07.
       function short(value) result(t)
