@@ -13,7 +13,8 @@
 !>   otherwise closed: trial crack stresses sigma = sc_n s_N, tau = tc_t s_T + T^f lambda_n,
 !>   phi = mu sigma + |tau| (eq 43); phi <= 0 (or within its round-off, SLIP_ONSET_ROUNDOFF):
 !>   stick; phi > 0: slip, return mapping along
-!>   tau_trial (eqs 44-48): lambda = lambda_n + (phi/(-T^f)) tau/|tau|.
+!>   tau_trial (eqs 44-48): lambda = lambda_n + (phi/(-T^f)) tau/|tau| (and a second step that
+!>   takes tau at that slip onto the cone to round-off).
 !>   t_N = (k_n + kc_n) s_N, t_T = (k_t + kc_t) s_T + C^f_T lambda.
 !> The damage:
 !>   displacement-driven law (eqs 13-18, 39): D = max(D_n, min(1, D^(s))), independent of

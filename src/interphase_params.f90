@@ -35,11 +35,13 @@ module interphase_params
    !> the slip the law itself produces stays of the order of the separations.
    real(dp), parameter, public :: SLIP_MAX = 1.0e30_dp
    !> Relative size of the round-off in the Coulomb function phi = mu sigma + |tau_trial| (eq 43):
-   !> a closed crack slips where phi > SLIP_ONSET_ROUNDOFF (|mu sigma| + |T^c_T s_T|_1). Below it the
-   !> sign of phi is round-off: at an increment without change after a slip, phi, returned to 0,
-   !> is formed again from terms of the size of |mu sigma|, and where a crack closes at the slip
-   !> lambda = s_T the terms of tau_trial cancel (both of the size of |T^c_T s_T|); the sign then
-   !> decided between slip and stick, and so the tangent, by chance (docs/theory.md, 'Slip onset').
+   !> a closed crack slips where phi > SLIP_ONSET_ROUNDOFF (|mu sigma| + |T^c_T s_T|_1). Below it
+   !> the sign of phi is round-off: at an increment without change after a slip, phi, returned to
+   !> 0, is formed again (the return mapping's second step keeps the slip's own rounding at the
+   !> size of the new slip), and where a crack closes at the slip lambda = s_T the terms of
+   !> tau_trial cancel; |T^f lambda| <= |tau| + |T^c_T s_T| is covered where phi is near 0. The
+   !> sign then decided between slip and stick, and so the tangent, by chance (docs/theory.md,
+   !> 'Slip onset').
    real(dp), parameter, public :: SLIP_ONSET_ROUNDOFF = 64.0_dp*epsilon(1.0_dp)
    !> Largest admissible magnitudes of what a host passes in besides the separation (adapters):
    !> HOST_VALUE_MAX for the UMAT's incoming STRESS (MPa), SSE and SPD (N/mm) and the VUMAT's
