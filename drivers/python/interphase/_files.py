@@ -748,6 +748,9 @@ def read_case(path):
         entry = {"table": "table", "rcurve": "rcurve_file"}.get(getattr(error, "file_kind", None))
         if entry is None:
             raise
-        raise InterphaseError(error.status, f"{path}: &material: {entry}: {error.reason}: {error.detail}") from None
+        # (detail: the driver's line; the text: the status named once, as for any InterphaseError)
+        wrapped = InterphaseError(error.status, f"{path}: &material: {entry}: {error.reason}: {error.detail}")
+        wrapped.args = (f"{path}: &material: {entry}: {error}",)
+        raise wrapped from None
     return Case(material, time, value, increments, output, control=control, traction_tolerance=float(tolerance),
                 output_every=output_every, tangent_check=float(tangent_check), tangent_step=float(tangent_step))
