@@ -391,7 +391,7 @@ contains
       real(dp), dimension(SUB) :: ck_n, ck_t, ckc_n, ckc_t, cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar
       logical :: ok_w(SUB)
       real(dp) :: s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
-      real(dp) :: d_hat, d_k, num, den, kk_n, kk_t, cf_t, tf_k, kf, ufbar_k, sigma, tau1, tau2
+      real(dp) :: d_hat, d_k, num, den, kk_n, kk_t, cf_t, tf_k, kf, inv_kf, ufbar_k, sigma, tau1, tau2
       real(dp) :: lam1_step, lam2_step, tau1_end, tau2_end
       real(dp) :: phi_roundoff, tau_norm, phi, inv_norm, dir1, dir2, dgamma, lam1_closed, lam2_closed, ratio
       real(dp) :: psi_open, psi_closed, tn_open, tn_closed, tt1_open, tt1_closed, tt2_open, tt2_closed
@@ -540,12 +540,12 @@ contains
                phi = params%mu*sigma + tau_norm
                phi_roundoff = SLIP_ONSET_ROUNDOFF*(abs(params%mu*sigma) + abs(ctc_t(i)*st1))
                slipping = phi > phi_roundoff .and. tau_norm > 0.0_dp
-               dgamma = phi*(1.0_dp/max(kf, tiny(1.0_dp)))
+               inv_kf = 1.0_dp/max(kf, tiny(1.0_dp))
+               dgamma = phi*inv_kf
                ! (respond's second step, from tau at the first step's slip)
                lam1_step = lam1_k + dgamma*dir1
                tau1_end = ctc_t(i)*st1 + tf_k*lam1_step
-               lam1_closed = merge(lam1_step + (tau1_end + (params%mu*sigma)*dir1)*(1.0_dp/max(kf, tiny(1.0_dp))), &
-                  lam1_k, slipping)
+               lam1_closed = merge(lam1_step + (tau1_end + (params%mu*sigma)*dir1)*inv_kf, lam1_k, slipping)
                tn_closed = kk_n*s_n_k
                tt1_closed = kk_t*st1 + cf_t*lam1_closed
                psi_closed = 0.5_dp*(tn_closed*s_n_k + (tt1_closed*st1 + 0.0_dp)) &
@@ -601,16 +601,15 @@ contains
                phi = params%mu*sigma + tau_norm
                phi_roundoff = SLIP_ONSET_ROUNDOFF*(abs(params%mu*sigma) + (abs(ctc_t(i)*st1) + abs(ctc_t(i)*st2)))
                slipping = phi > phi_roundoff .and. tau_norm > 0.0_dp
-               dgamma = phi*(1.0_dp/max(kf, tiny(1.0_dp)))
+               inv_kf = 1.0_dp/max(kf, tiny(1.0_dp))
+               dgamma = phi*inv_kf
                ! (respond's second step, from tau at the first step's slip)
                lam1_step = lam1_k + dgamma*dir1
                lam2_step = lam2_k + dgamma*dir2
                tau1_end = ctc_t(i)*st1 + tf_k*lam1_step
                tau2_end = ctc_t(i)*st2 + tf_k*lam2_step
-               lam1_closed = merge(lam1_step + (tau1_end + (params%mu*sigma)*dir1)*(1.0_dp/max(kf, tiny(1.0_dp))), &
-                  lam1_k, slipping)
-               lam2_closed = merge(lam2_step + (tau2_end + (params%mu*sigma)*dir2)*(1.0_dp/max(kf, tiny(1.0_dp))), &
-                  lam2_k, slipping)
+               lam1_closed = merge(lam1_step + (tau1_end + (params%mu*sigma)*dir1)*inv_kf, lam1_k, slipping)
+               lam2_closed = merge(lam2_step + (tau2_end + (params%mu*sigma)*dir2)*inv_kf, lam2_k, slipping)
                tn_closed = kk_n*s_n_k
                tt1_closed = kk_t*st1 + cf_t*lam1_closed
                tt2_closed = kk_t*st2 + cf_t*lam2_closed

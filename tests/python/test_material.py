@@ -816,6 +816,17 @@ def test_read_case_refuses_what_the_driver_refuses(point_driver, tmp_path, monke
         assert str(error).count(error.reason) == 1 and error.name in str(error)
 
 
+def test_read_case_names_a_missing_case_file_as_the_driver_does(point_driver, tmp_path, monkeypatch):
+    """A case file that cannot be opened: the driver's message (its absolute path), the OSError of
+    open() kept as the exception's type."""
+    monkeypatch.chdir(tmp_path)
+    done = subprocess.run([point_driver, "missing.nml", "--no-plot"], capture_output=True)
+    expected = next(line for line in done.stderr.decode().split("\n") if line.startswith("interphase-point: error: "))
+    with pytest.raises(FileNotFoundError) as caught:
+        interphase.read_case("missing.nml")
+    assert done.returncode != 0 and str(caught.value) == expected[len("interphase-point: error: "):]
+
+
 def test_run_refuses_a_time_step_beyond_the_largest_double():
     """Finite times whose difference is not (the replay interpolates the time within a step):
     the library refuses them (STATUS_BAD_HISTORY), naming the time and the one before it."""

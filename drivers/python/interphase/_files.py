@@ -461,12 +461,13 @@ def _namelist_entries(path, known=None):
     groups = {}
     group, name, values, entry_line, number = None, None, [], 0, 0
     after_comma = False     # the last token was a comma (an empty value follows a second one)
+    lines = _text_lines(path, "case file")
     # the groups a '&name' inside a string could be taken for: those read (known), else those the
     # file opens
     if known is not None:
         group_names = set(known)
     else:
-        group_names = {_lower(m.group(1)) for line in _text_lines(path)
+        group_names = {_lower(m.group(1)) for line in lines
                        for m in [_GROUP_OPENER.match(line)] if m is not None} - {"end"}
 
     def fail(text):
@@ -502,7 +503,7 @@ def _namelist_entries(path, known=None):
                  '"&" or "$" followed by the name of a group')
         values.append((quoted, text))
 
-    for number, line in enumerate(_text_lines(path), 1):
+    for number, line in enumerate(lines, 1):
         i, n = 0, len(line)
         text = line.split("!", 1)[0]     # (a comment's text is not read)
         bad = next((k for k, ch in enumerate(text) if ord(ch) < 32 and ch != "\t"), None)
