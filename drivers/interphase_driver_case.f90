@@ -713,7 +713,7 @@ contains
          else if (.not. abs(value) > 0.0_dp) then
             t = '0'
          else
-            write (buffer, '(es10.3)') value
+            write (buffer, '(es11.3e3)') value
             t = trim(adjustl(buffer))
          end if
       end function short

@@ -433,7 +433,7 @@ contains
       else if (output_every < 1) then
          write (message, '(a,i0,a)') 'output_every = ', output_every, ' must be at least 1'
       else if (.not. (traction_tolerance > 0.0_dp .and. ieee_is_finite(traction_tolerance))) then
-         write (message, '(a,es12.4,a)') 'traction_tolerance = ', traction_tolerance, &
+         write (message, '(a,es12.4e3,a)') 'traction_tolerance = ', traction_tolerance, &
             ' MPa must be a finite number > 0'
       else
          code = STATUS_OK
@@ -547,7 +547,7 @@ contains
       dt = time_new - point%time
       call interface_update(law%params, old, s(1:n), t(1:n), tangent, new, psi, status, dt)
       if (status == STATUS_BAD_TIME_INCREMENT) then
-         write (law%detail, '(a,es12.4,a)', iostat=ios) 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
+         write (law%detail, '(a,es12.4e3,a)', iostat=ios) 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
          fatal = .true.
          return
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then

@@ -621,7 +621,7 @@ contains
                beyond_peak_reason(failure, point%ntens)//'the largest |'//name//'| reached is '// &
                real_text(failure%peak(c), 6)//' MPa)'
          else if (failure%status == STATUS_MIXED_NOT_CONVERGED) then
-            write (long, '(a,1x,a,i0,a,es9.3,a,i0,a,es8.2,a,i0,a)', iostat=ios) times, &
+            write (long, '(a,1x,a,i0,a,es10.3e3,a,i0,a,es9.2e3,a,i0,a)', iostat=ios) times, &
                'no converged step even after ', MAX_HALVINGS, ' halvings of the sub-increment: Newton on the '// &
                'tangent left a traction residual of ', failure%residual, ' MPa after ', failure%iterations, &
                ' iteration(s) (traction tolerance ', tolerance, ' MPa, at most ', MAX_NEWTON, ')'

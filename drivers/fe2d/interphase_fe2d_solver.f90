@@ -617,9 +617,9 @@ contains
             write (line, '(a,i0,a,i0,a,es12.5,a,es11.4)') 'step ', current_step, ' increment ', &
                kinc, ' t = ', t_new, ' dt = ', dt
             write (options%log_unit, '(a)') trim(line)
-            write (line, '(a,i3,a,es10.3)') '    iteration', k, '  residual', rel
+            write (line, '(a,i3,a,es11.3e3)') '    iteration', k, '  residual', rel
          else
-            write (line, '(a,i3,a,es10.3,a,es10.3)') '    iteration', k, '  residual', rel, &
+            write (line, '(a,i3,a,es11.3e3,a,es11.3e3)') '    iteration', k, '  residual', rel, &
                '  correction', du_rel
             if (alpha < 1.0_dp) write (line, '(a,a,es9.2)') trim(line), '  line search ', alpha
          end if

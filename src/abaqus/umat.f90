@@ -155,7 +155,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       end if
       call update_point(params, old, nsep, s, traction, tangent, new, psi, status, dtime)
       if (status == STATUS_BAD_TIME_INCREMENT) then
-         write (message, '(a,es12.4,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
+         write (message, '(a,es12.4e3,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
          exit update
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then
          ! the R-curve file does not reach the damage this point needs: a setup error

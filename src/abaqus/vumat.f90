@@ -206,7 +206,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                call density_counts(1, density(km:km), nbad)
                if (nbad > 0) exit
             end do
-            write (message, '(a,i0,a,es12.5,a)') 'density at block point ', km, ' = ', density(km), &
+            write (message, '(a,i0,a,es13.5e3,a)') 'density at block point ', km, ' = ', density(km), &
                ': the VUMAT needs *Density > 0, within [1e-50, 1e50], on the material (its energies are per unit mass)'
             fatal_code = -1
             exit update
@@ -338,7 +338,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   s_point(1:ntens) = statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
                   call update_point(params, old, ntens, s_point, traction, tangent, new, psi_first, first_status, dt)
                end if
-               write (first_message, '(a,3es12.4)') 'separation (mm) ', &
+               write (first_message, '(a,3es13.4e3)') 'separation (mm) ', &
                   statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
             end if
             nfailed = nfailed + nbad
