@@ -24,7 +24,7 @@ module interphase_rve_table
    use interphase_real_text, only: real_text, es_field
    use interphase_spline, only: SPLINE_NOT_A_KNOT
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      parse_real, tried_path, clip_text, to_lower, TEXT_LINE, TEXT_END
+      parse_real, tried_path, clip_text, to_lower, TEXT_LINE, TEXT_END, path_problem
    use interphase_status, only: message_path, STATUS_OK, STATUS_TABLE_UNREADABLE, STATUS_TABLE_BAD_HEADER, &
       STATUS_TABLE_MISSING_COLUMN, STATUS_TABLE_MISSING_KEY, STATUS_TABLE_BAD_ROW, &
       STATUS_TABLE_NONFINITE, STATUS_TABLE_NOT_INCREASING, STATUS_TABLE_BAD_RANGE, &
@@ -136,6 +136,12 @@ contains
       status = STATUS_OK
       message = ''
       table%source = tried_path(path)
+      if (len(path_problem(path)) > 0) then
+         status = STATUS_TABLE_UNREADABLE
+         message = 'cannot open: '//path_problem(path)
+         if (len_trim(path) > 0) message = message_path(table%source)//': '//trim(message)
+         return
+      end if
       call open_text_file(path, file, ok, text)
       if (.not. ok) then
          status = STATUS_TABLE_UNREADABLE
