@@ -9,6 +9,7 @@
 module interphase_micro_coefficients
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
+   use interphase_real_text, only: es_field
    use interphase_logarithm, only: ln_positive, ln_positive_block
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
@@ -758,10 +759,13 @@ contains
          ! digits of D near a = b would hide)
          ! (the path shortened to leave the rest of the message its 145 characters; iostat: a
          ! message never stops the host)
-         write (message, '(a,a,a,a,es10.3,a,es10.3,a,es10.3,a,es10.3,a)', iostat=ios) &
+         ! (es_field: a three-digit exponent keeps its E, -1.205E+273, not -1.205+273)
+         write (message, '(a,a,a,a,a,a,a,a,a,a,a)', iostat=ios) &
             message_path(table%source, MESSAGE_LEN - 145), &
-            ': interpolant between rows: ', trim(bad_name), ' = ', bad_value, ' at 1 - D = ', 1.0_dp - bad_d, &
-            ' (a = b - ', (1.0_dp - bad_d)*table%b, ' mm, b = ', table%b, ' mm), not > 0: add rows there'
+            ': interpolant between rows: ', trim(bad_name), ' = ', trim(adjustl(es_field(bad_value, 11, 3))), &
+            ' at 1 - D = ', trim(adjustl(es_field(1.0_dp - bad_d, 11, 3))), &
+            ' (a = b - ', trim(adjustl(es_field((1.0_dp - bad_d)*table%b, 11, 3))), ' mm, b = ', &
+            trim(adjustl(es_field(table%b, 11, 3))), ' mm), not > 0: add rows there'
          return
       end if
       call guide_build(knots, guide, guide_scale, guide_steps)

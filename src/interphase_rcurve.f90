@@ -16,7 +16,7 @@ module interphase_rcurve
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_SPLINE_OUT_OF_RANGE, status_message
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END
+      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END, path_problem
    use interphase_spline, only: spline_type, spline_build, spline_export, cubic_locate, cubic_eval, &
       SPLINE_MONOTONE
    implicit none
@@ -58,6 +58,12 @@ contains
       status = STATUS_OK
       message = ''
       source = tried_path(path)
+      if (len(path_problem(path)) > 0) then
+         status = STATUS_RCURVE_UNREADABLE
+         message = 'cannot open: '//path_problem(path)
+         if (len_trim(path) > 0) message = message_path(source)//': '//trim(message)
+         return
+      end if
       call open_text_file(path, file, ok, text)
       if (.not. ok) then
          status = STATUS_RCURVE_UNREADABLE

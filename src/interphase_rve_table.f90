@@ -24,7 +24,7 @@ module interphase_rve_table
    use interphase_real_text, only: real_text, es_field
    use interphase_spline, only: SPLINE_NOT_A_KNOT
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      parse_real, tried_path, clip_text, to_lower, TEXT_LINE, TEXT_END
+      parse_real, tried_path, clip_text, to_lower, TEXT_LINE, TEXT_END, path_problem
    use interphase_status, only: message_path, STATUS_OK, STATUS_TABLE_UNREADABLE, STATUS_TABLE_BAD_HEADER, &
       STATUS_TABLE_MISSING_COLUMN, STATUS_TABLE_MISSING_KEY, STATUS_TABLE_BAD_ROW, &
       STATUS_TABLE_NONFINITE, STATUS_TABLE_NOT_INCREASING, STATUS_TABLE_BAD_RANGE, &
@@ -76,6 +76,11 @@ module interphase_rve_table
    !> (ii') <= 1.5e-12 (a = 0.05 mm, where C^f_T is 1e-3 of C_TT(0)/h), (iii') <= 1.3e-13.
    real(dp), parameter, public :: BETTI_TOL = 1.0e-10_dp
 
+   !> The largest magnitude of a table's value: a value beyond it is no RVE's (moduli and lengths
+   !> lie in [1e-20, 1e20]), and the identity checks and the spline multiply and divide the values,
+   !> which must not overflow (a T^f of -1.7e308 did, in the spline).
+   real(dp), parameter, public :: TABLE_VALUE_MAX = 1.0e100_dp
+
    !> A table as read from its file.
    type :: rve_table_type
       character(len=:), allocatable :: source     !! file it came from (for messages)
@@ -125,10 +130,18 @@ contains
       logical :: ok, have_columns, have_b, have_h, have_variable, have_limit, have_elastic(4), have_layers(2), &
          have_chat(2), have_format, known
       integer :: format_number
+      integer :: limit_line, elastic_line(4), layer_line(2)   !! the header lines of those keys
+      real(dp) :: from_elastic
 
       status = STATUS_OK
       message = ''
       table%source = tried_path(path)
+      if (len(path_problem(path)) > 0) then
+         status = STATUS_TABLE_UNREADABLE
+         message = 'cannot open: '//path_problem(path)
+         if (len_trim(path) > 0) message = message_path(table%source)//': '//trim(message)
+         return
+      end if
       call open_text_file(path, file, ok, text)
       if (.not. ok) then
          status = STATUS_TABLE_UNREADABLE
@@ -147,6 +160,9 @@ contains
       have_format = .false.
       format_number = 0
       a_tf_limit = 0.0_dp
+      limit_line = 0
+      elastic_line = 0
+      layer_line = 0
       elastic = 0.0_dp
       layers = 0.0_dp
       chat = 0.0_dp
@@ -277,26 +293,36 @@ contains
                   call header_number('h', line(eq + 3:), 'mm', h, have_h)
                   if (status /= STATUS_OK) return
                case ('a_Tf_limit')
-                  call header_real('a_Tf_limit', line(eq + 3:), -huge(1.0_dp), 0.0_dp, .true., a_tf_limit, have_limit)
+                  ! (a_Tf_limit = -E*/(4(1 - beta^2)) is a modulus: the window of the PROPS values, so
+                  ! that the interpolated D T^f, a_Tf_limit/b at a = 0, cannot overflow the spline)
+                  call header_real('a_Tf_limit', line(eq + 3:), -PROPS_VALUE_MAX, 0.0_dp, .true., a_tf_limit, &
+                     have_limit, closed_below=.true.)
                   if (status /= STATUS_OK) return
+                  limit_line = file%line_number
                case ('E_m')
                   call header_number('E_m', line(eq + 3:), 'MPa', elastic(1), have_elastic(1))
                   if (status /= STATUS_OK) return
+                  elastic_line(1) = file%line_number
                case ('nu_m')
                   call header_real('nu_m', line(eq + 3:), -1.0_dp, 0.5_dp, .false., elastic(2), have_elastic(2))
                   if (status /= STATUS_OK) return
+                  elastic_line(2) = file%line_number
                case ('E_b')
                   call header_number('E_b', line(eq + 3:), 'MPa', elastic(3), have_elastic(3))
                   if (status /= STATUS_OK) return
+                  elastic_line(3) = file%line_number
                case ('nu_b')
                   call header_real('nu_b', line(eq + 3:), -1.0_dp, 0.5_dp, .false., elastic(4), have_elastic(4))
                   if (status /= STATUS_OK) return
+                  elastic_line(4) = file%line_number
                case ('h_m')
                   call header_number('h_m', line(eq + 3:), 'mm', layers(1), have_layers(1))
                   if (status /= STATUS_OK) return
+                  layer_line(1) = file%line_number
                case ('h_b')
                   call header_number('h_b', line(eq + 3:), 'mm', layers(2), have_layers(2))
                   if (status /= STATUS_OK) return
+                  layer_line(2) = file%line_number
                case ('Chat_TT')
                   call header_number('Chat_TT', line(eq + 3:), 'MPa', chat(1), have_chat(1))
                   if (status /= STATUS_OK) return
@@ -374,6 +400,13 @@ contains
                   end if
                   return
                end if
+               if (abs(values(j)) > TABLE_VALUE_MAX) then
+                  write (text, '(a,i0,a)') 'column ', j, ' ('//trim(column_name(j))//') = "'// &
+                     clip_text(line(starts(j):ends(j)))//'" lies beyond 1e100 in magnitude, the window of '// &
+                     'a table''s values (tables/README.md)'
+                  call fail(STATUS_TABLE_BAD_ROW, trim(text))
+                  return
+               end if
             end do
          end associate
          nrows = nrows + 1
@@ -387,6 +420,31 @@ contains
       if (.not. have_columns) then
          call fail_file(STATUS_TABLE_MISSING_COLUMN, 'no "# columns:" line')
          return
+      end if
+      ! a key whose partner is missing would go unused: the layers' heights are checked against h
+      ! in pairs, and the elastic constants (the intact laminate at a = 0, the short-crack limit) in
+      ! fours
+      if (any(have_layers) .and. .not. all(have_layers)) then
+         call fail_partner(layer_line, [character(len=4) :: 'h_m', 'h_b'], have_layers, &
+            'h = h_m + h_b is checked with both')
+         return
+      end if
+      if (any(have_elastic) .and. .not. all(have_elastic)) then
+         call fail_partner(elastic_line, [character(len=4) :: 'E_m', 'nu_m', 'E_b', 'nu_b'], have_elastic, &
+            'the short-crack limit and the intact laminate at a = 0 follow from all four')
+         return
+      end if
+      if (have_limit .and. all(have_elastic)) then
+         ! both: they must agree (docs/rve.md, 'Short cracks'), or the header contradicts itself
+         from_elastic = short_crack_a_tf(elastic(1), elastic(2), elastic(3), elastic(4))
+         if (abs(a_tf_limit - from_elastic) > IDENTITY_TOL*abs(from_elastic)) then
+            write (text, '(a,i0,a,i0,a)') 'a_Tf_limit = '//trim(real_text(a_tf_limit))//' MPa contradicts the '// &
+               'header''s E_m, nu_m, E_b, nu_b (lines ', minval(elastic_line), '-', maxval(elastic_line), &
+               '), which give -E*/(4(1 - beta^2)) = '//trim(real_text(from_elastic))// &
+               ' MPa (docs/rve.md, ''Short cracks''; 1e-8 relative): drop the line or correct it'
+            call fail_at(limit_line, STATUS_TABLE_BAD_HEADER, trim(text))
+            return
+         end if
       end if
       if (.not. have_limit) then
          if (.not. all(have_elastic)) then
@@ -427,6 +485,42 @@ contains
             file%line_number, ': ', what
          call close_text_file(file)
       end subroutine fail
+
+      !> Set the status and the message 'file:at: text' (a line before the current one), and close
+      !> the file.
+      subroutine fail_at(at, code, what)
+         integer, intent(in) :: at
+         integer, intent(in) :: code
+         character(len=*), intent(in) :: what
+         integer :: ios
+         status = code
+         write (message, '(a,a,i0,a,a)', iostat=ios) message_path(table%source, MESSAGE_LEN - 16 - len(what)), ':', &
+            at, ': ', what
+         call close_text_file(file)
+      end subroutine fail_at
+
+      !> A key given without its partners: the message at the first key given names it and the
+      !> missing ones (STATUS_TABLE_MISSING_KEY).
+      subroutine fail_partner(key_line, keys, given, why)
+         integer, intent(in) :: key_line(:)          !! the line of each key (0 where not given)
+         character(len=*), intent(in) :: keys(:)     !! the keys of the group
+         logical, intent(in) :: given(:)             !! which of them the header gives
+         character(len=*), intent(in) :: why         !! what they are read for
+         character(len=:), allocatable :: have, lack
+         integer :: kk
+         have = ''
+         lack = ''
+         do kk = 1, size(keys)
+            if (given(kk)) then
+               have = have//merge(', ', '  ', len(have) > 0)//trim(keys(kk))
+            else
+               lack = lack//merge(', ', '  ', len(lack) > 0)//trim(keys(kk))
+            end if
+         end do
+         ! (the leading two characters of each list are blanks)
+         call fail_at(minval(key_line, mask=given), STATUS_TABLE_MISSING_KEY, 'the header gives '//have(3:)// &
+            ' but not '//lack(3:)//': '//why//', and without them the rest go unused (tables/README.md)')
+      end subroutine fail_partner
 
       !> Set the status and the message 'file: text' (no line), and close the file.
       subroutine fail_file(code, what)
@@ -485,14 +579,17 @@ contains
          found = .true.
       end subroutine header_number
 
-      !> A header number in (lower, upper), or (lower, upper] with `closed_above` (a_Tf_limit:
-      !> (-huge, 0]; Poisson's ratios: (-1, 0.5)), the key given once.
-      subroutine header_real(key, field, lower, upper, closed_above, value, found)
+      !> A header number in (lower, upper), or with `closed_above` (lower, upper], with
+      !> `closed_below` [lower, ... (a_Tf_limit: [-1e20, 0]; Poisson's ratios: (-1, 0.5)), the key
+      !> given once.
+      subroutine header_real(key, field, lower, upper, closed_above, value, found, closed_below)
          character(len=*), intent(in) :: key, field
          real(dp), intent(in) :: lower, upper
          logical, intent(in) :: closed_above
          real(dp), intent(out) :: value
          logical, intent(inout) :: found
+         logical, intent(in), optional :: closed_below   !! [lower, ...: lower itself allowed
+         logical :: with_lower
          logical :: ok_number
          character(len=32) :: why_number
          character(len=40) :: range
@@ -506,10 +603,13 @@ contains
                trim(why_number))
             return
          end if
-         if (ok_number) ok_number = value > lower .and. (value < upper .or. (closed_above .and. .not. value > upper))
+         with_lower = .false.
+         if (present(closed_below)) with_lower = closed_below
+         if (ok_number) ok_number = (value > lower .or. (with_lower .and. .not. value < lower)) .and. &
+            (value < upper .or. (closed_above .and. .not. value > upper))
          if (.not. ok_number) then
-            range = '('//trim(adjustl(es_field(lower, 10, 2)))//', '//trim(adjustl(es_field(upper, 10, 2)))// &
-               merge(']', ')', closed_above)
+            range = merge('[', '(', with_lower)//trim(adjustl(es_field(lower, 10, 2)))//', '// &
+               trim(adjustl(es_field(upper, 10, 2)))//merge(']', ')', closed_above)
             call fail(STATUS_TABLE_BAD_HEADER, key//' = "'//clip_text(trim(adjustl(field)))// &
                '" is not one number in '//trim(range))
             return
@@ -621,7 +721,7 @@ contains
       character(len=MESSAGE_LEN), intent(out) :: message
 
       real(dp) :: c0_t, c0_n, scale_c, scale_f, tol_i, term(3)
-      integer :: i, n, j, ios
+      integer :: i, n, j, k, ios
       integer, parameter :: ZERO_STIFF(6) = [COL_C_TN, COL_C_NT, COL_CC_TN, COL_CC_NT, COL_TC_N, COL_SC_T]
       integer, parameter :: ZERO_JUMP(2) = [COL_DBAR_TN, COL_DBAR_NT]
       integer, parameter :: ZERO_SLIP(2) = [COL_CF_N, COL_SF]
@@ -701,6 +801,24 @@ contains
                return
             end if
          end if
+         ! the a = 0 row's mean crack jumps: the limit a -> 0+ is 0 for a crack between two elastic
+         ! layers (a header with their elastic constants); a table of another model (no elastic
+         ! constants, e.g. the simplified model's, Dbar = h at every D) keeps them within the jump
+         ! of the split RVE, [0, h]. (C^c, C^f, S^f at a = 0 are 0 and T^c, S^c C(0) by the checks
+         ! below; T^f and ufbar there are not used as such: tables/README.md)
+         do j = 1, 2
+            k = merge(COL_DBAR_TT, COL_DBAR_NN, j == 1)
+            if (table%has_elastic) then
+               if (abs(r(1, k)) > IDENTITY_TOL*h) then
+                  call identity(1, trim(TABLE_COLUMNS(k))//' = 0 at a = 0 (limit a -> 0+)', r(1, k), status, &
+                     message, 0.0_dp, IDENTITY_TOL*h)
+                  return
+               end if
+            else if (r(1, k) < -IDENTITY_TOL*h .or. r(1, k) > h*(1.0_dp + IDENTITY_TOL)) then
+               call identity(1, '0 <= '//trim(TABLE_COLUMNS(k))//' <= h at a = 0', r(1, k), status, message)
+               return
+            end if
+         end do
          do i = 1, n
             if (abs(r(i, COL_D) - r(i, COL_A)/b) > 1.0e-12_dp) then
                call identity(i, 'D = a/b', r(i, COL_D), status, message)

@@ -14,7 +14,7 @@ module interphase_text_input
    implicit none
    private
    public :: text_file_type, open_text_file, read_text_line, close_text_file, parse_real, &
-      is_real_literal, tried_path, clip_text, to_lower, text_before
+      is_real_literal, tried_path, clip_text, to_lower, text_before, path_problem
 
    !> Longest line a reader takes (characters, without the newline).
    integer, parameter, public :: MAX_LINE_LEN = 65536
@@ -322,6 +322,28 @@ contains
       end if
       ok = .true.
    end subroutine parse_real
+
+   !> What is wrong with a file name given with its real length ('' when nothing): an empty or
+   !> blank one, or one that ends in a blank, which Fortran's `open` would drop (`'good.dat  '`
+   !> opened good.dat). The loaders' callers know the length: the C API, Python, the environment.
+   pure function path_problem(path) result(why)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: why
+      why = ''
+      if (len(path) == 0) then
+         why = 'the path is empty'
+      else if (len_trim(path) == 0) then
+         why = 'the path is blank ("'//clip_text(path)//'")'
+      else if (path(len(path):len(path)) == ' ') then
+         ! (its end shown: the blanks are what is wrong)
+         if (len(path) <= 60) then
+            why = clip_text(path)
+         else
+            why = '...'//clip_text(path(len(path) - 56:))
+         end if
+         why = 'the path "'//why//'" ends in a blank, which opening the file would drop: remove it'
+      end if
+   end function path_problem
 
    !> The path as it was tried: a relative path is shown after the current directory
    !> ('cases/x.dat' -> '/home/u/run/cases/x.dat'), so that a message says which file it was.

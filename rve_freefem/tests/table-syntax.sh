@@ -71,4 +71,32 @@ check "a key the loader reads after the columns line refused" fail "$work/late-k
 # h = h_m + h_b is checked whenever both layers are given, with or without E and nu (the loader too)
 grep -v '^# [En]' "$table" | sed 's/^# h = .*/# h = 40/' > "$work/h-no-elastic.dat"
 check "h not h_m + h_b refused without E and nu" fail "$work/h-no-elastic.dat" "the header's h = 40 mm is not h_m [+] h_b = 5 mm"
+# what the loader refuses and the reader took: a value that underflows (mawk compares "1e-400" as
+# a string), one beyond the 1e100 window, a key spelt like one the loader reads, a header number
+# out of its window, a_Tf_limit out of [-1e20, 0] or against the elastic constants, a key
+# without its partner
+data 3 4 1e-400 > "$work/under.dat"
+check "1e-400 (underflows to 0) refused" fail "$work/under.dat" 'field 4 is out of range [(][|]x[|] < 2.2e-308[)]: 1e-400'
+data 3 4 1e-310 > "$work/subnormal.dat"
+check "1e-310 (subnormal) refused" fail "$work/subnormal.dat" 'field 4 is out of range [(][|]x[|] < 2.2e-308[)]: 1e-310'
+data 3 4 0.000e-999 > "$work/zero.dat"
+check "0.000e-999 (a zero) accepted" pass "$work/zero.dat"
+data 3 21 -1.7e308 > "$work/tfhuge.dat"
+check "Tf = -1.7e308 (beyond 1e100) refused" fail "$work/tfhuge.dat" 'field 21 lies beyond 1e100 in magnitude'
+sed 's/^# h = 5$/&\n# B = 25/' "$table" > "$work/B.dat"
+check "key B (wrong case) refused" fail "$work/B.dat" 'unknown key "B": is it "b"'
+sed 's/^# h = 5$/&\n# fromat = x/' "$table" > "$work/fromat.dat"
+check "key fromat refused" fail "$work/fromat.dat" 'unknown key "fromat": is it "format"'
+sed 's/^# h = 5$/&\n# Chat_NT = 1/' "$table" > "$work/chatnt.dat"
+check "a provenance key one letter from a read one (Chat_NT) accepted" pass "$work/chatnt.dat"
+hdrset E_m 1e-21 > "$work/Em-tiny.dat"
+check "E_m = 1e-21 refused" fail "$work/Em-tiny.dat" 'E_m = "1e-21" lies outside [[]1e-20, 1e20[]]'
+sed 's/^# h = 5$/&\n# a_Tf_limit = -1e308/' "$table" > "$work/limit-huge.dat"
+check "a_Tf_limit = -1e308 refused" fail "$work/limit-huge.dat" 'a_Tf_limit = "-1e308" is not one number in [[]-1e20, 0[]]'
+sed 's/^# h = 5$/&\n# a_Tf_limit = -1/' "$table" > "$work/limit-wrong.dat"
+check "a_Tf_limit = -1 against E, nu refused" fail "$work/limit-wrong.dat" "a_Tf_limit = -1 contradicts the header's E_m, nu_m, E_b, nu_b, which give -554.63"
+grep -v '^# h_b = ' "$table" > "$work/no-hb.dat"
+check "h_m without h_b refused" fail "$work/no-hb.dat" 'the header gives h_m but not h_b'
+grep -v '^# E_b = ' "$table" > "$work/no-Eb.dat"
+check "E_m without E_b refused" fail "$work/no-Eb.dat" 'E_m, nu_m, E_b, nu_b but not E_b'
 exit $fail
