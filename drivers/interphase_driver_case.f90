@@ -612,6 +612,12 @@ contains
          message = where//'tangent_check must be a finite number >= 0 (0: no check), got '//real_to_string(tangent_check)
          return
       end if
+      if (tangent_check >= 1.0_dp) then
+         ! (the relative error max|FD - DDSDDE|/max|DDSDDE| of a tangent off by its own size is 1)
+         message = where//'tangent_check = '//real_to_string(tangent_check)//' would pass a tangent wrong by '// &
+            'its own size or more (a relative error >= 1): it must be < 1 (e.g. 1e-5; 0: no check)'
+         return
+      end if
       if (is_unset(tangent_step)) then
          tangent_step = DEFAULT_TANGENT_STEP
       else if (.not. tangent_check > 0.0_dp) then

@@ -101,6 +101,13 @@ program interphase_point
          ' steps (step '//real_to_string(run%tangent_step)//' mm; '//int_to_string(report%kink_steps)// &
          ' with a kink within the step, compared one-sided; '//int_to_string(report%unchecked_steps)// &
          ' not checked: a perturbed call failed); tolerance '//real_to_string(run%tangent_check)
+      if (report%checked_steps == 0) then
+         ! (every perturbed call failed: nothing was compared, and a check of nothing does not pass)
+         write (error_unit, '(a)') 'interphase-point: error: '//run%path//': the tangent check compared no '// &
+            'step: a perturbed call failed at every step ('//int_to_string(report%unchecked_steps)// &
+            ' not checked; tangent_step = '//real_to_string(run%tangent_step)//' mm)'
+         call exit_program(1)
+      end if
       if (report%worst_tangent_error > run%tangent_check) then
          write (error_unit, '(a)') 'interphase-point: error: '//run%path//': the tangent check failed: '// &
             'worst relative error '//real_to_string(report%worst_tangent_error)//' at t = '// &

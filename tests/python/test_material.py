@@ -3,11 +3,13 @@
 table and R-curve loading, and concurrent use from threads."""
 
 import ctypes
+import fractions
 import os
 import pathlib
 import re
 import subprocess
 import threading
+import warnings
 
 import numpy as np
 import pytest
@@ -364,6 +366,150 @@ def test_numeric_entries_must_be_numbers():
         interphase.Material(**dict(SIMPLIFIED, mu=10**400))
 
 
+REAL = "must hold real numbers \\(ints or floats\\), got "
+TWO_ROWS = np.array([[0.0, 0.0], [0.001, 0.0]])
+
+
+@pytest.mark.parametrize("call, message", [
+    # a complex number was cast to its real part (a ComplexWarning only), a date to a count of days,
+    # None to NaN (then reported as a separation that is not finite), a bool to 0/1, a string parsed
+    (lambda m: m.update(np.array([1e-3 + 1j, 0])), "Material.update: separation " + REAL + "complex numbers"),
+    (lambda m: m.update(np.array(["2000-01-01", "2000-01-02"], dtype="datetime64[D]")),
+     "Material.update: separation " + REAL + r"dates \(dtype datetime64\[D\]\)"),
+    (lambda m: m.update(np.array([1, 2], dtype="timedelta64[s]")), "separation " + REAL + "time spans"),
+    (lambda m: m.update(None), r"Material.update: separation " + REAL + r"None \(NoneType\)$"),
+    (lambda m: m.update(np.array([None, 0.0], dtype=object)), "separation " + REAL + r"None \(NoneType\) at index 0"),
+    (lambda m: m.update([0.001, "0"]), "separation " + REAL + "strings"),
+    (lambda m: m.update([0.001, True]), "separation " + REAL + "a bool at index 1$"),
+    (lambda m: m.run([[0, 0], (0.001, np.True_)]), "history " + REAL + r"a bool at index \(1, 1\)$"),
+    (lambda m: m.update([0.001, np.array(False)]), "separation " + REAL + "a bool at index 1$"),
+    (lambda m: m.update([True, False]), "separation " + REAL + "booleans"),
+    (lambda m: m.update([0.001, 0.0], [0, 0, 0, 1j]), "Material.update: state " + REAL + "complex numbers"),
+    (lambda m: m.run(np.array([[0, 0], [0.001 + 0.5j, 0]])), "Material.run: history " + REAL + "complex numbers"),
+    (lambda m: m.run(TWO_ROWS, np.array([0, 1 + 1j])), "Material.run: time " + REAL + "complex numbers"),
+    (lambda m: m.run(TWO_ROWS, np.array(["2000-01-01", "2000-01-02"], dtype="datetime64[D]")),
+     "Material.run: time " + REAL + "dates"),
+    (lambda m: m.run(TWO_ROWS, [0.0, None]), "Material.run: time " + REAL + r"None \(NoneType\) at index 1"),
+    (lambda m: m.run([[0, 0], [0.001, None]]), r"Material.run: history " + REAL + r"None \(NoneType\) at index \(1, 1\)"),
+    (lambda m: m.run(TWO_ROWS, control=np.array([0.0, 1.0])), "Material.run: control must hold booleans"),
+    (lambda m: m.run(TWO_ROWS, control=[True, None]), "Material.run: control must hold booleans"),
+    (lambda m: interphase.Material.from_props([str(p) for p in m.props]),
+     "Material.from_props: PROPS " + REAL + "strings"),
+    (lambda m: interphase.Material.from_props([True] * m.props.size), "Material.from_props: PROPS " + REAL + "booleans"),
+    (lambda m: interphase.Material.from_props(m.props.astype(complex)),
+     "Material.from_props: PROPS " + REAL + "complex numbers"),
+    (lambda m: interphase.Material.from_props(list(m.props[:-1]) + [None]),
+     "Material.from_props: PROPS " + REAL + r"None \(NoneType\) at index 8"),
+])
+def test_array_arguments_hold_real_numbers(call, message):
+    """Every array argument (separation, state, history, time, control, PROPS) takes what Material's
+    numeric keywords take: real numbers (ints and floats), booleans for control; anything numpy would
+    convert in silence or with a mere warning is a TypeError naming the argument, raised before any
+    conversion (no ComplexWarning)."""
+    m = interphase.Material(**SIMPLIFIED)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(TypeError, match=message):
+            call(m)
+
+
+def test_array_arguments_take_ints_and_floats():
+    m = interphase.Material(**SIMPLIFIED)
+    reference = m.update([2.0**-10, 0.0]).traction
+    for separation in (np.array([2.0**-10, 0], dtype=np.float32), [2.0**-10, 0], (2.0**-10, np.int8(0)),
+                       np.array([2.0**-10, 0], dtype=object), [fractions.Fraction(1, 1024), 0]):
+        assert np.array_equal(m.update(separation).traction, reference)
+    assert np.array_equal(m.run(TWO_ROWS, np.array([0, 1], dtype=np.uint8)).traction, m.run(TWO_ROWS).traction)
+    same = interphase.Material.from_props([int(p) if p == int(p) else p for p in m.props.tolist()])
+    assert np.array_equal(same.props, m.props)
+    with pytest.raises(ValueError, match="Material.run: history holds a number beyond the range of a double"):
+        m.run([[0, 0], [10**400, 0]])
+
+
+@pytest.mark.parametrize("props, shape", [(np.ones((3, 3)), "(3, 3)"), (1.0, "()"), ([[1.0, 1.0]], "(1, 2)")])
+def test_props_must_be_one_dimensional(props, shape):
+    with pytest.raises(ValueError, match=re.escape(f"Material.from_props: PROPS must be one-dimensional, got shape {shape}")):
+        interphase.Material.from_props(props)
+
+
+@pytest.mark.parametrize("entries, error, message", [
+    (dict(MICRO, table="x\0y"), ValueError, r"Material: table = 'x\\x00y' holds a null character"),
+    (dict(MICRO, table=5), TypeError, r"Material: table must be a path \(str, bytes or os.PathLike\), got 5 \(int\)"),
+    (dict(MICRO, table=b"x\0y"), ValueError, r"Material: table = b'x\\x00y' holds a null character"),
+    (dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated", rcurve_file=5), TypeError,
+     r"Material: rcurve_file must be a path \(str, bytes or os.PathLike\), got 5 \(int\)"),
+    (dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated", rcurve_file="r\0.txt"), ValueError,
+     r"Material: rcurve_file = 'r\\x00.txt' holds a null character"),
+    (dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="equivalent", rcurve_file=5), TypeError,
+     r"Material: rcurve_file must be a path"),
+])
+def test_paths_that_are_no_file_names_are_named(entries, error, message):
+    """A table or R-curve path that is not text, or holds a null character: the entry named, not
+    os.fspath's or os.stat's bare message."""
+    with pytest.raises(error, match=message):
+        interphase.Material(**entries)
+
+
+def test_loaders_name_a_path_that_is_no_file_name():
+    with pytest.raises(TypeError, match=r"load_table: path must be a path .*got 5 \(int\)"):
+        interphase.load_table(5)
+    with pytest.raises(ValueError, match=r"load_rcurve: path = 'a\\x00b' holds a null character"):
+        interphase.load_rcurve("a\0b")
+
+
+def test_tangent_check_names_a_result_of_another_material():
+    """A result of another material fails the row comparison at once: said so (which PROPS differs),
+    not "run the history with output_every=1" (the run did); output_every > 1 is named as such."""
+    m = interphase.Material(**SIMPLIFIED)
+    other = interphase.Material(**dict(SIMPLIFIED, k_n=400.0))
+    history = [[0.0, 0.0], [0.001, 0.0005]]
+    r = other.run(history, increments=5)
+    with pytest.raises(ValueError, match=re.escape("Material.tangent_check: the result is the run of another material "
+                                                   "(its PROPS(8) = 400.0, this material's 482.6974267968057): "
+                                                   "check it with the material that ran it")):
+        m.tangent_check(r, 1e-5)
+    assert other.tangent_check(r, 1e-5).passed
+    # the same entries make the same material: its results are checked
+    assert interphase.Material(**dict(SIMPLIFIED, k_n=400.0)).tangent_check(r, 1e-5).passed
+    fracture = interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="equivalent"))
+    with pytest.raises(ValueError, match=r"another material \(13 PROPS, this material 9\)"):
+        m.tangent_check(fracture.run(history, increments=5), 1e-5)
+    # a run that kept one step in 3 over a path where the skipped steps count (friction after a reversal)
+    path = [[0.0, 0.0], [0.0, 0.01], [-0.001, -0.01]]
+    with pytest.raises(ValueError, match=r"row \d+ .*is not the update of row \d+'s state: the run kept one step in 3 "
+                                         r"\(output_every=3\), and the steps it skipped count: run the history with "
+                                         r"output_every=1"):
+        m.tangent_check(m.run(path, increments=30, output_every=3), 1e-5)
+    # a Result made by hand (no material known) whose rows are not this material's
+    bare = interphase.Result(r.time, r.separation, r.traction, r.state, r.stored_energy, r.dissipated_energy)
+    with pytest.raises(ValueError, match="row 1 .*is not the update of row 0's state: pass a result of this "
+                                         "material's run made with output_every=1"):
+        m.tangent_check(bare, 1e-5)
+
+
+def test_tangent_check_tolerance_below_one_and_no_step_compared():
+    """A tolerance of 1 or more passes a tangent wrong by its own size: refused. A check where every
+    perturbed update failed (a step beyond the separations the update admits) compared nothing: not
+    passed, with the driver's words."""
+    m = interphase.Material(**SIMPLIFIED)
+    r = m.run([[0.0, 0.0], [0.01, 0.0]], increments=4)
+    for tolerance in (1.0, 1e300):
+        with pytest.raises(ValueError, match="tolerance = .* would pass a tangent wrong by its own size or more "
+                                             r"\(a relative error >= 1\): it must be < 1"):
+            m.tangent_check(r, tolerance)
+    assert m.tangent_check(r, 0.999).passed
+    check = m.tangent_check(r, 1e-5, step=1e300)
+    assert (check.checked, check.unchecked, check.passed) == (0, 4, False)
+    assert check.failure == ("the tangent check compared no step: a perturbed call failed at every step (4 not "
+                             "checked; tangent_step = 0.1E+301 mm)")
+    assert m.tangent_check(r, 1e-5).failure is None
+    one_row = interphase.Result(r.time[:1], r.separation[:1], r.traction[:1], r.state[:1], r.stored_energy[:1],
+                                r.dissipated_energy[:1])
+    check = m.tangent_check(one_row, 1e-5)
+    assert not check.passed and check.failure == ("the tangent check compared no step: the result has no step after "
+                                                  "its first row")
+
+
 def test_threads_give_the_numbers_of_one():
     """The C entry points keep no state: threads running at once get the serial numbers."""
     m = interphase.Material(**MICRO)
@@ -431,7 +577,8 @@ def test_mixed_control_errors_carry_the_library_status():
     assert caught.value.status == interphase.STATUS_BAD_HISTORY
     with pytest.raises(ValueError, match="control must have shape"):
         m.run([[0.0, 0.0], [0.1, 0.0]], control=[True, False, False])
-    with pytest.raises(ValueError, match="booleans"):
+    with pytest.raises(TypeError, match=re.escape("Material.run: control must hold booleans (true: traction-controlled), "
+                                                  "got values (dtype int64)")):
         m.run([[0.0, 0.0], [0.1, 0.0]], control=[1, 0])
 
 
@@ -659,6 +806,10 @@ def test_words_are_split_at_blanks_and_tabs_only(tmp_path):
 
 @pytest.mark.parametrize("entries, message", [
     ("tangent_check = -1", "7: &loading: tangent_check must be a finite number >= 0 (0: no check), got -1.0"),
+    ("tangent_check = 1", "7: &loading: tangent_check = 1.0 would pass a tangent wrong by its own size or more (a "
+                          "relative error >= 1): it must be < 1 (e.g. 1e-5; 0: no check)"),
+    ("tangent_check = 1e300", "7: &loading: tangent_check = 0.1E+301 would pass a tangent wrong by its own size or "
+                              "more (a relative error >= 1): it must be < 1 (e.g. 1e-5; 0: no check)"),
     ("tangent_check = 1e-5\n  tangent_step = 0",
      "8: &loading: tangent_step must be a finite number > 0 (mm), got 0.0"),
     ("tangent_check = 1e-5\n  tangent_step = -1e-8",
@@ -711,8 +862,8 @@ def test_reals_in_messages_are_written_as_the_driver_writes_them():
     (dict(output_every=2**32), ValueError, "output_every = 4294967296 is too large"),
     (dict(traction_tolerance="1e-12"), TypeError, "traction_tolerance must be a number"),
     (dict(history=[[0.0, 0.0]]), ValueError, "history must have at least 2 rows .*, got 1"),
-    (dict(history=[["0", "0"], ["0.01", "0"]]), TypeError, "history must hold numbers"),
-    (dict(time=["0", "1"]), TypeError, "time must hold numbers"),
+    (dict(history=[["0", "0"], ["0.01", "0"]]), TypeError, "history must hold real numbers"),
+    (dict(time=["0", "1"]), TypeError, "time must hold real numbers"),
 ])
 def test_run_refuses_what_it_would_convert(arguments, error, message):
     """Counts are integers (a numpy integer too), at least 1, a C int; no bool, float or string is
@@ -750,6 +901,9 @@ DRIVER_CASES = {
     "nbsp_in_history": ("'h.txt'", "'h.txt'", "0 0 0\n1 0 0.01\u00a0\n"),
     "one_row": ("'h.txt'", "'h.txt'", "0 0 0\n"),
     "tangent_check": ("increments = 20", "increments = 20, tangent_check = -1", None),
+    "tangent_check_one": ("increments = 20", "increments = 20, tangent_check = 1", None),
+    "tangent_check_huge": ("increments = 20", "increments = 20, tangent_check = 1e300", None),
+    "tangent_check_below_one": ("increments = 20", "increments = 20, tangent_check = 0.999", None),
     "tangent_step_zero": ("increments = 20", "increments = 20, tangent_check = 1e-5, tangent_step = 0", None),
     "tangent_step_negative": ("increments = 20", "increments = 20\n  tangent_check = 1e-5, tangent_step = -1e-8",
                               None),

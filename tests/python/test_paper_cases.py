@@ -268,3 +268,21 @@ def test_tangent_check_finds_a_wrong_tangent(source_dir, tmp_path):
     c = interphase.read_case(case)
     with pytest.raises(ValueError, match="no tangent check"):
         c.check_tangent(c.run())
+
+
+def test_a_tangent_check_that_compared_no_step_fails_as_the_drivers(point_driver, source_dir, tmp_path):
+    """tangent_step = 1e300: every perturbed call leaves the separations the update admits and
+    fails, so nothing is compared. The driver exits with status 1 (it passed, "over 0 steps") and
+    Material.tangent_check does not pass, with the driver's words."""
+    case = tangent_case(source_dir, tmp_path, "h1I.txt", ", tangent_step = 1e300")
+    done = subprocess.run([point_driver, str(case), "--output-dir", str(tmp_path), "--no-plot"],
+                          capture_output=True, text=True)
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert "over 0 steps" in done.stdout
+    error = next(line for line in done.stderr.split("\n") if line.startswith("interphase-point: error: "))
+    c = interphase.read_case(case)
+    check = c.check_tangent(c.run())
+    assert not check.passed and (check.checked, check.unchecked) == (0, 200)
+    assert error == f"interphase-point: error: {case}: {check.failure}"
+    assert check.failure == ("the tangent check compared no step: a perturbed call failed at every step (200 not "
+                             "checked; tangent_step = 0.1E+301 mm)")

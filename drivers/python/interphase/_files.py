@@ -723,6 +723,10 @@ def read_case(path):
     tangent_check = loading.get("tangent_check", 0.0)
     if not (tangent_check >= 0.0 and np.isfinite(tangent_check)):
         refuse(f"tangent_check must be a finite number >= 0 (0: no check), got {_real_text(tangent_check)}")
+    if tangent_check >= 1.0:
+        # (the relative error max|FD - DDSDDE|/max|DDSDDE| of a tangent off by its own size is 1)
+        refuse(f"tangent_check = {_real_text(tangent_check)} would pass a tangent wrong by its own size or more (a "
+               "relative error >= 1): it must be < 1 (e.g. 1e-5; 0: no check)")
     tangent_step = loading.get("tangent_step", DEFAULT_TANGENT_STEP)
     if "tangent_step" in loading and not tangent_check > 0.0:
         # (the step of a check that is not made: refused, not ignored)

@@ -137,18 +137,29 @@ def _signature(path):
     return (path, st.st_mtime_ns, st.st_size, st.st_ino, st.st_dev, st.st_ctime_ns)
 
 
+def _path_text(name, value, who="Material"):
+    """The text of a path entry (os.fspath): a str, bytes or os.PathLike without a null
+    character (no file name holds one), else TypeError / ValueError naming the entry."""
+    if not isinstance(value, (str, bytes, os.PathLike)):
+        raise TypeError(f"{who}: {name} must be a path (str, bytes or os.PathLike), got {value!r} "
+                        f"({type(value).__name__})")
+    path = os.fspath(value)
+    if ("\0" if isinstance(path, str) else b"\0") in path:
+        raise ValueError(f"{who}: {name} = {value!r} holds a null character, which no file name can hold")
+    return path
+
+
 def load_table(path):
     """Load the custom RVE table (tables/README.md format) for the micromechanical model."""
-    _load_file("table", lib.interphase_load_table, path)
+    _load_file("table", lib.interphase_load_table, _path_text("path", path, "load_table"))
 
 
 def load_rcurve(path):
     """Load the tabulated R-curve ("D G_cI G_cII" rows) of the fracture-mechanics law."""
-    _load_file("rcurve", lib.interphase_load_rcurve, path)
+    _load_file("rcurve", lib.interphase_load_rcurve, _path_text("path", path, "load_rcurve"))
 
 
 def _load_file(kind, loader, path):
-    path = os.fspath(path)
     detail = detail_buffer()
     # (the signature and the digest before the read: an edit during it reloads)
     signature = _signature(path)

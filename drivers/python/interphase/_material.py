@@ -9,7 +9,7 @@ import ctypes
 import numpy as np
 
 from . import _status as st
-from ._library import lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded
+from ._library import lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded, _path_text
 
 # ---- the codes of the PROPS layout (src/interphase_enums.f90, docs/abaqus.md) --------------
 MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL = 1, 2
@@ -82,14 +82,59 @@ def _count(name, value, who, minimum=1):
     return value
 
 
+def _is_real(v):
+    """Whether `v` is one real number: an int or a float (Python's, numpy's, or another
+    numbers.Real such as a Fraction), not a bool."""
+    return isinstance(v, numbers.Real) and not isinstance(v, (bool, np.bool_))
+
+
+def _kind_text(dtype):
+    """What an array of `dtype` holds, in words, for a message."""
+    kind = {"b": "booleans", "c": "complex numbers", "U": "strings", "S": "strings (bytes)",
+            "M": "dates", "m": "time spans"}.get(dtype.kind, "values")
+    return f"{kind} (dtype {dtype})"
+
+
+def _bool_at(value, index=()):
+    """The index of the first bool in `value` and the lists and tuples it nests, None if none."""
+    if isinstance(value, (bool, np.bool_)):
+        return index
+    if isinstance(value, (list, tuple)):
+        for i, v in enumerate(value):
+            found = _bool_at(v, index + (i,))
+            if found is not None:
+                return found
+    elif isinstance(value, np.ndarray) and value.dtype.kind == "b":
+        return index
+    return None
+
+
 def _numbers(name, value, who):
-    """A float64 array of `value`, refusing strings and booleans (numpy would read '0.5' as 0.5 and
-    True as 1.0 in silence)."""
+    """A float64 array of `value`, which holds real numbers only: ints and floats (numpy's too).
+    Anything else raises TypeError naming the argument, where numpy would convert it in silence or
+    with a mere warning: a string ('0.5' read as 0.5), a bool (True as 1.0), a complex number (its
+    imaginary part dropped), a date or a time span (as a count of days or seconds), None (as NaN)
+    or another object."""
     a = np.asarray(value)
-    if a.dtype.kind in "USb" or (a.dtype.kind == "O" and any(
-            isinstance(v, (str, bytes, bool, np.bool_)) for v in a.ravel())):
-        raise TypeError(f"{who}: {name} must hold numbers, got {value!r}")
-    return np.asarray(a, dtype=np.float64)
+    if a.dtype.kind in "fiu":
+        # (a bool among numbers in a list, [0.001, True], comes out of numpy as a number)
+        index = None if isinstance(value, np.ndarray) else _bool_at(value)
+        if index is not None:
+            at = f" at index {index[0] if len(index) == 1 else index}" if index else ""
+            raise TypeError(f"{who}: {name} must hold real numbers (ints or floats), got a bool{at}")
+        return np.asarray(a, dtype=np.float64)
+    if a.dtype.kind != "O":
+        raise TypeError(f"{who}: {name} must hold real numbers (ints or floats), got {_kind_text(a.dtype)}")
+    for index, v in np.ndenumerate(a):
+        if not _is_real(v):
+            at = f" at index {index[0] if len(index) == 1 else index}" if index else ""
+            raise TypeError(f"{who}: {name} must hold real numbers (ints or floats), got {v!r} "
+                            f"({type(v).__name__}){at}")
+    try:
+        return np.asarray(a, dtype=np.float64)
+    except OverflowError:
+        # (an int beyond the double range, as _real names it)
+        raise ValueError(f"{who}: {name} holds a number beyond the range of a double (about 1.8e308)") from None
 
 
 def _ascii_lower(text):
@@ -106,10 +151,10 @@ def _word(value):
     return _ascii_lower(str(value).strip(" "))
 
 
-def _path(value, base=None):
-    """A path entry as the driver reads it: blanks around it dropped (`table = 'x.dat '`), taken in
-    the folder `base` when relative (None: the current folder)."""
-    path = os.fspath(value)
+def _path(name, value, base=None):
+    """A path entry `name` as the driver reads it: blanks around it dropped (`table = 'x.dat '`),
+    taken in the folder `base` when relative (None: the current folder)."""
+    path = _path_text(name, value)
     if isinstance(path, str):
         path = path.strip(" ")
     return os.path.abspath(path if base is None else os.path.join(os.fspath(base), path))
@@ -201,7 +246,7 @@ class Material:
                                       "'simplified' only (the micromechanical model takes its "
                                       "stiffness from the RVE table)")
             if "table" in e:
-                self.table_path = _path(e["table"], base)
+                self.table_path = _path("table", e["table"], base)
             props = [MODEL_MICROMECHANICAL, 0.0] + values + [TABLE_CUSTOM if self.table_path else TABLE_DEFAULT]
         else:
             raise InterphaseError(st.STATUS_BAD_MODEL, f"unknown model '{str(e['model']).strip(' ')}' "
@@ -235,14 +280,14 @@ class Material:
             if rcurve == RCURVE_TABULATED:
                 if "rcurve_file" not in e:
                     raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve = 'tabulated' needs the entry rcurve_file")
-                self.rcurve_path = _path(e["rcurve_file"], base)
+                self.rcurve_path = _path("rcurve_file", e["rcurve_file"], base)
             if rcurve != RCURVE_CONSTANT and ("g_ci" in e or "g_cii" in e):
                 raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" in e else st.STATUS_BAD_GC_II,
                                       "g_ci and g_cii are entries of rcurve = 'constant' only")
             if rcurve != RCURVE_TABULATED and "rcurve_file" in e:
                 raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve_file is an entry of rcurve = 'tabulated' only "
                                       f"(rcurve = '{_word(e['rcurve'])}' would not read "
-                                      f"'{str(os.fspath(e['rcurve_file'])).strip(' ')}')")
+                                      f"'{str(_path_text('rcurve_file', e['rcurve_file'])).strip(' ')}')")
             props += [_real("d0", e["d0"]), float(rcurve)] + gc
         else:
             raise InterphaseError(st.STATUS_BAD_DAMAGE_LAW, f"unknown damage_law '{str(e['damage_law']).strip(' ')}' "
@@ -283,10 +328,15 @@ class Material:
 
     @classmethod
     def from_props(cls, props):
-        """A material from a PROPS array (docs/abaqus.md), checked by the library."""
+        """A material from a PROPS array (docs/abaqus.md), checked by the library: a
+        one-dimensional array of real numbers (ints and floats; a string, a bool or a complex
+        number raises TypeError, another shape ValueError)."""
+        props = _numbers("PROPS", props, "Material.from_props")
+        if props.ndim != 1:
+            raise ValueError(f"Material.from_props: PROPS must be one-dimensional, got shape {props.shape}")
         self = cls.__new__(cls)
         self.entries = {}
-        self.props = np.array(props, dtype=np.float64)
+        self.props = props.copy()
         self.props.flags.writeable = False
         self.table_path = self.rcurve_path = None
         n = len(self.props)
@@ -317,7 +367,8 @@ class Material:
 
         Returns an Update (traction (MPa), tangent (MPa/mm, tangent[i, j] = d t_i/d s_j),
         state, stored_energy (N/mm)); `dt` (s) is the time increment, which viscous
-        regularisation needs. Raises InterphaseError on a failed update.
+        regularisation needs. Raises InterphaseError on a failed update; TypeError when the
+        separation or the state holds anything but real numbers (ints and floats).
         """
         self._prepare()
         s, s_p = _as_c(_numbers("separation", separation, "Material.update"))
@@ -365,8 +416,9 @@ class Material:
         (and at the end of every segment). The history has at least 2 rows (ValueError), as the
         driver's; the counts are integers (an int or a numpy integer: a bool, a float or a string
         raises TypeError, not rounded), increments at least 1 (ValueError), output_every at least 1
-        (InterphaseError, STATUS_BAD_HISTORY); the arrays and traction_tolerance hold numbers, not
-        strings or booleans (TypeError).
+        (InterphaseError, STATUS_BAD_HISTORY); history, time and traction_tolerance hold real
+        numbers (ints and floats: a string, a bool, a complex number, a date, None raises
+        TypeError), control booleans (TypeError).
 
         The point starts virgin at zero separation; a first row away from zero is reached first in
         `increments` steps at time[0] (not returned). A step that fails is halved and retried, up to
@@ -408,7 +460,8 @@ class Material:
         else:
             c = np.asarray(control)
             if c.dtype != np.bool_:
-                raise ValueError(f"control must hold booleans (true: traction-controlled), got {c.dtype}")
+                raise TypeError(f"Material.run: control must hold booleans (true: traction-controlled), got "
+                                f"{_kind_text(c.dtype)}")
             if c.shape not in ((n,), (nrows, n)):
                 raise ValueError(f"control must have shape ({n},) or ({nrows}, {n}), got {c.shape}")
             ctrl = np.ascontiguousarray(np.broadcast_to(c, (nrows, n)), dtype=np.intc)
@@ -443,7 +496,8 @@ class Material:
         result = None
         if k > 0:
             result = Result(out_t[:k].copy(), out_s[:k].copy(), out_tr[:k].copy(), out_state[:k].copy(),
-                            out_psi[:k].copy(), out_w[:k].copy(), None if out_k is None else out_k[:k].copy())
+                            out_psi[:k].copy(), out_w[:k].copy(), None if out_k is None else out_k[:k].copy(),
+                            material=self, output_every=output_every)
         if status != st.STATUS_OK:
             error = InterphaseError(status, text_of(detail))
             error.result = result
@@ -462,19 +516,30 @@ class Material:
         max|FD - tangent| / max|tangent| (the driver's CSV column tangent_error, the same numbers).
 
         The first row is not checked (the steps that reach it, when the history starts away from
-        zero, are not returned; the driver checks them too). Returns a TangentCheck. Raises
-        ValueError when a row is not the update of the previous row's state, bit for bit (a run
-        with output_every > 1 skips steps; where the law is path-independent over them, as in a
-        monotonic segment, the rows still are, and are checked as the larger increments they
-        are), or tolerance or step is not a finite number > 0.
+        zero, are not returned; the driver checks them too). Returns a TangentCheck; a check that
+        compared no step (every perturbed update failed, e.g. a step that takes the separation
+        beyond the range the update admits) has not passed, as the driver's fails. Raises
+        ValueError when the result is the run of another material (other PROPS, table or
+        R-curve file), when a row is not the update of the previous row's state, bit for bit (a
+        run with output_every > 1 skips steps; where the law is path-independent over them, as in
+        a monotonic segment, the rows still are, and are checked as the larger increments they
+        are), or when tolerance is not a finite number > 0 and < 1 (a relative error of 1 is a
+        tangent wrong by its own size) or step not a finite number > 0.
         """
         self._prepare()
         tolerance = _real("tolerance", tolerance, "Material.tangent_check")
         step = _real("step", step, "Material.tangent_check")
         if not (tolerance > 0.0 and math.isfinite(tolerance)):
             raise ValueError(f"Material.tangent_check: tolerance must be a finite number > 0, got {tolerance!r}")
+        if tolerance >= 1.0:
+            raise ValueError(f"Material.tangent_check: tolerance = {tolerance!r} would pass a tangent wrong by its "
+                             "own size or more (a relative error >= 1): it must be < 1 (e.g. 1e-5)")
         if not (step > 0.0 and math.isfinite(step)):
             raise ValueError(f"Material.tangent_check: step must be a finite number > 0 (mm), got {step!r}")
+        other = self._other_material(result)
+        if other is not None:
+            raise ValueError(f"Material.tangent_check: the result is the run of another material ({other}): "
+                             "check it with the material that ran it")
         nrows, n = result.separation.shape
         errors = np.full(nrows, np.nan)
         checked = kinks = unchecked = 0
@@ -484,8 +549,16 @@ class Material:
             dt = result.time[k] - result.time[k - 1]
             base = self.update(s, old, dt=dt)
             if not (np.array_equal(base.traction, result.traction[k]) and np.array_equal(base.state, result.state[k])):
+                every = getattr(result, "output_every", None)
+                if every is None:
+                    why = "pass a result of this material's run made with output_every=1"
+                elif every > 1:
+                    why = (f"the run kept one step in {every} (output_every={every}), and the steps it skipped "
+                           "count: run the history with output_every=1")
+                else:
+                    why = "the result's arrays are not those its run returned"
                 raise ValueError(f"Material.tangent_check: row {k} (t = {float(result.time[k])!r}) is not the update "
-                                 f"of row {k - 1}'s state: run the history with output_every=1")
+                                 f"of row {k - 1}'s state: {why}")
             tangent = base.tangent
             scale = float(np.max(np.abs(tangent)))
             column_error = np.zeros(n)
@@ -519,6 +592,24 @@ class Material:
         return TangentCheck(result.time, errors, tolerance, step, checked, kinks, unchecked)
 
 
+    def _other_material(self, result):
+        """How the material that ran `result` differs from this one (its PROPS, table or R-curve
+        file), or None: the same, or not known (a Result made by hand)."""
+        props = getattr(result, "props", None)
+        if props is None:
+            return None
+        if props.shape != self.props.shape or not np.array_equal(props.view(np.uint64), self.props.view(np.uint64)):
+            if props.shape != self.props.shape:
+                return f"{props.size} PROPS, this material {self.props.size}"
+            i = int(np.flatnonzero(props.view(np.uint64) != self.props.view(np.uint64))[0])
+            return f"its PROPS({i + 1}) = {float(props[i])!r}, this material's {float(self.props[i])!r}"
+        for what, theirs, mine in (("table", result.table_path, self.table_path),
+                                   ("rcurve_file", result.rcurve_path, self.rcurve_path)):
+            if theirs != mine:
+                return f"its {what} {theirs!r}, this material's {mine!r}"
+        return None
+
+
 class Update:
     """The result of Material.update: traction, tangent, state, stored_energy."""
 
@@ -540,7 +631,9 @@ class TangentCheck:
     the tangent at that step, NaN for the first row and for a step whose perturbed update failed),
     worst and worst_time (the largest error and its row's time; 0 and NaN when none was checked),
     checked, kinks (steps compared one-sided) and unchecked (steps not checked), tolerance and step,
-    and passed (worst <= tolerance), as interphase-point's summary line reports them."""
+    as interphase-point's summary line reports them; passed (at least one step compared, and worst
+    <= tolerance) and, when it has not, failure: why, in the driver's words (a check that compared
+    no step fails: every perturbed update failed, or there was no step)."""
 
     def __init__(self, time, errors, tolerance, step, checked, kinks, unchecked):
         self.errors, self.tolerance, self.step = errors, tolerance, step
@@ -551,7 +644,18 @@ class TangentCheck:
             self.worst, self.worst_time = float(errors[k]), float(time[k])
         else:
             self.worst, self.worst_time = 0.0, math.nan
-        self.passed = self.worst <= tolerance
+        self.passed = checked > 0 and self.worst <= tolerance
+        from ._files import _real_text          # (the driver's writing of reals; _files imports this module)
+        if checked == 0 and unchecked > 0:
+            self.failure = (f"the tangent check compared no step: a perturbed call failed at every step ({unchecked} "
+                            f"not checked; tangent_step = {_real_text(step)} mm)")
+        elif checked == 0:
+            self.failure = "the tangent check compared no step: the result has no step after its first row"
+        elif not self.passed:
+            self.failure = (f"the tangent check failed: worst relative error {_real_text(self.worst)} at t = "
+                            f"{_real_text(self.worst_time)} is above the tolerance {_real_text(tolerance)}")
+        else:
+            self.failure = None
 
     def __repr__(self):
         return (f"TangentCheck(worst={self.worst!r} at t = {self.worst_time!r}, checked={self.checked}, "
@@ -565,11 +669,18 @@ class Result:
     time (nrows), separation and traction (nrows, ntens; normal first, mm and MPa), damage
     (nrows), slip (nrows, ntens - 1; mm), regime (nrows, codes; regime_names their names),
     stored_energy and dissipated_energy (nrows; N/mm: the UMAT's SSE and SPD), state (nrows,
-    nstate) and, when asked for, tangent (nrows, ntens, ntens; MPa/mm; NaN at the start).
+    nstate) and, when asked for, tangent (nrows, ntens, ntens; MPa/mm; NaN at the start). props,
+    table_path, rcurve_path and output_every say which material's run made it and how (None for a
+    Result made by hand from arrays): Material.tangent_check refuses another material's.
     """
 
-    def __init__(self, time, separation, traction, state, stored_energy, dissipated_energy, tangent=None):
+    def __init__(self, time, separation, traction, state, stored_energy, dissipated_energy, tangent=None,
+                 material=None, output_every=None):
         self.time, self.separation, self.traction, self.state = time, separation, traction, state
+        self.props = None if material is None else material.props
+        self.table_path = None if material is None else material.table_path
+        self.rcurve_path = None if material is None else material.rcurve_path
+        self.output_every = output_every
         self.stored_energy, self.dissipated_energy, self.tangent = stored_energy, dissipated_energy, tangent
         self.ntens = separation.shape[1]
         self.damage = state[:, 0]
