@@ -63,8 +63,9 @@ fi
 if [ "$check_only" = 0 ]; then
   command -v FreeFem++ >/dev/null 2>&1 || die 3 "FreeFem++ not found: install the Debian package freefem++"
 fi
-case "$jobs" in ''|*[!0-9]*) die 2 "--jobs must be a positive integer" ;; esac
-[ "$jobs" -ge 1 ] || die 2 "--jobs must be >= 1"
+case "$jobs" in ''|*[!0-9]*) die 2 "--jobs = '$jobs' must be a positive integer" ;; esac
+[ "${#jobs}" -le 4 ] || die 2 "--jobs = $jobs is too large: at most 9999 parallel FreeFEM runs"
+[ "$((10#$jobs))" -ge 1 ] || die 2 "--jobs = $jobs must be >= 1"
 
 # ---------------------------------------------------------------- read and check the parameters
 # prints "key<TAB>value" lines; fails on syntax errors and unknown keys.  A carriage return at
@@ -99,6 +100,9 @@ numcode() {
   printf '%s\n' "$1" | awk '{
     if ($0 !~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][+-]?[0-9]+)?$/) exit 1
     v = $0 + 0; if (sprintf("%g", v) ~ /inf|nan/) exit 2
+    # a literal whose digits are not all zero but that reads as 0 underflowed (1e-400)
+    m = $0; sub(/[eE].*/, "", m)
+    if (v == 0 && m ~ /[1-9]/) exit 3
     if (v < 0) v = -v
     if (v != 0 && (v > 1e100 || v < 1e-100)) exit 3
     exit 0 }'
@@ -110,7 +114,10 @@ checknum() {
     0) ;;
     2) die 2 "$1 = '$2' is not a finite number (beyond the range of a double)" ;;
     3) die 2 "$1 = '$2' is out of range: a non-zero value must lie between 1e-100 and 1e100 in magnitude" ;;
-    *) die 2 "$1 = '$2' is not a number" ;;
+    *) case "$2" in
+         *[0-9][dDqQ][+-]*[0-9]*|*[0-9][dDqQ][0-9]*) die 2 "$1 = '$2' is not a number here: write the exponent with e (FreeFEM reads no d or q exponent)" ;;
+       esac
+       die 2 "$1 = '$2' is not a number" ;;
   esac
 }
 # checklist WHAT LIST: every word a number (checknum); an empty list is refused

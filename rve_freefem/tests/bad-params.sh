@@ -37,6 +37,10 @@ case_ syntax          "expected key = value"           '$a h_m 2'
 case_ ligament_tiny   "too short for this mesh"        's/^a_over_b_list = .*/a_over_b_list = 0.5 0.999999/'
 case_ E_infinite      "'E_m' = '1e400' is not a finite number" 's/^E_m = .*/E_m = 1e400/'
 case_ E_huge          "'E_b' = '1e200' is out of range"  's/^E_b = .*/E_b = 1e200/'
+case_ E_underflow     "'E_m' = '1e-400' is out of range" 's/^E_m = .*/E_m = 1e-400/'
+case_ nu_underflow    "'nu_m' = '-1e-400' is out of range" 's/^nu_m = .*/nu_m = -1e-400/'
+case_ list_underflow  "a_over_b_list: value = '1e-400' is out of range" 's/^a_over_b_list = .*/a_over_b_list = 1e-400 0.5/'
+case_ d_exponent      "'hmax' = '1d0' is not a number here: write the exponent with e" 's/^hmax = .*/hmax = 1d0/'
 case_ list_empty      "a_over_b_list is empty"         's/^a_over_b_list = .*/a_over_b_list =/'
 case_ three_rows      "a_over_b_uniform = 0.1 0.1 5: 1 distinct .* 3 rows, but it needs at least 4" 's/^a_over_b_list = .*/a_over_b_uniform = 0.1 0.1 5/'
 case_ grow_one        "grow = 1, ftip = 0.05, .* at a = 0.05 mm the mesh would need 10000 elements along the interface" 's/^grow = .*/grow = 1/; $a a_list_mm = 0.05'
@@ -47,6 +51,15 @@ printf '%s\n' "$good" > "$work/good.params"
 bash "$here/make-table.sh" --a-over-b "0.3" "$work/good.params" "$work/x.dat" > "$work/aob.out" 2>&1
 rc=$?
 if [ $rc -eq 2 ] && grep -q -- '--a-over-b "0.3": 1 distinct .* 3 rows' "$work/aob.out" && [ ! -e "$work/x.dat" ]; then echo "ok   a_over_b_one_value: exit $rc"; else echo "FAIL a_over_b_one_value (exit $rc)"; cat "$work/aob.out"; fail=1; fi
+# option values: an underflowing --refine, --jobs beyond the shell's integers (--check: no FreeFEM run)
+for opt in "--refine 1e-400|--refine = '1e-400' is out of range" \
+           "--jobs 99999999999999999999|--jobs = 99999999999999999999 is too large" \
+           "--jobs 0|--jobs = 0 must be >= 1"; do
+  args=${opt%%|*}; pat=${opt#*|}
+  bash "$here/make-table.sh" --check $args "$work/good.params" > "$work/opt.out" 2>&1
+  rc=$?
+  if [ $rc -eq 2 ] && grep -q -- "$pat" "$work/opt.out"; then echo "ok   $args: exit 2"; else echo "FAIL $args (exit $rc)"; cat "$work/opt.out"; fail=1; fi
+done
 # Windows line ends: the same file is good (--check: the parameters only, no FreeFEM run)
 printf '%s\n' "$good" | sed 's/$/\r/' > "$work/crlf.params"
 bash "$here/make-table.sh" --check "$work/crlf.params" > "$work/crlf.out" 2>&1
