@@ -32,7 +32,8 @@ program bench_umat
    use interphase_params, only: law_params_type, to_props
    use interphase_abaqus_interfaces, only: umat
    use interphase_driver_version, only: INTERPHASE_VERSION
-   use interphase_driver_cli, only: exit_program
+   use interphase_driver_cli, only: exit_program, get_argument, refuse_extra_arguments
+   use interphase_driver_text, only: int_to_string
    implicit none
 
    !> Number of history segments of the mixed-mode history.
@@ -51,13 +52,22 @@ program bench_umat
    real(dp) :: checksum
    integer :: calls_per_run, runs, increments, ntens, run, only_case, npoints
    integer(int64) :: count_rate
-   character(len=32) :: argument
+   character(len=:), allocatable :: argument, message
+   integer :: nargs, k
    character(len=*), parameter :: ROW_FORMAT = '(a20, a12, i6, i12, i6, 2f16.1, es24.15)'
 
    calls_per_run = 1000000
    runs = 5
-   if (command_argument_count() >= 1) then
-      call get_command_argument(1, argument)
+   only_case = 0
+   npoints = 1
+   nargs = command_argument_count()
+   if (nargs >= 1) then
+      call get_argument(1, argument)
+      if (argument == '-h' .or. argument == '--help' .or. argument == '--version') then
+         ! (they stand alone: an argument beside them would be ignored)
+         message = refuse_extra_arguments()
+         if (len(message) > 0) call fail(message)
+      end if
       if (argument == '-h' .or. argument == '--help') then
          write (*, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS [CASE [POINTS]]]]', &
             '       interphase-bench --help | --version', &
@@ -69,27 +79,29 @@ program bench_umat
          write (*, '(a)') 'interphase-bench (interphase) '//INTERPHASE_VERSION
          call exit_program(0)
       end if
-      calls_per_run = parse_positive(argument, 'CALLS_PER_RUN')
    end if
-   if (command_argument_count() >= 2) then
-      call get_command_argument(2, argument)
-      runs = parse_positive(argument, 'RUNS')
+   if (nargs > 4) then
+      message = ''
+      do k = 5, nargs
+         call get_argument(k, argument)
+         message = message//" '"//argument//"'"
+      end do
+      call fail('at most 4 arguments (CALLS_PER_RUN RUNS CASE POINTS), got '//int_to_string(nargs)// &
+         '; the extra ones:'//message, usage=.true.)
    end if
-   only_case = 0
-   if (command_argument_count() >= 3) then
-      call get_command_argument(3, argument)
-      only_case = parse_positive(argument, 'CASE')
-      if (only_case > 8) then
-         write (error_unit, '(a)') 'interphase-bench: error: CASE must be 1..8'
-         error stop 1
-      end if
+   if (nargs >= 1) calls_per_run = positive_argument(1, 'CALLS_PER_RUN')
+   if (nargs >= 2) runs = positive_argument(2, 'RUNS')
+   if (nargs >= 3) then
+      only_case = positive_argument(3, 'CASE')
+      if (only_case > 8) call fail('CASE (argument 3) must be 1..8, got '//int_to_string(only_case), usage=.true.)
    end if
-   npoints = 1
-   if (command_argument_count() >= 4) then
-      call get_command_argument(4, argument)
-      npoints = parse_positive(argument, 'POINTS')
-   end if
+   if (nargs >= 4) npoints = positive_argument(4, 'POINTS')
    increments = max(1, calls_per_run/(NSEGMENTS*npoints))
+   ! a run makes NSEGMENTS x POINTS x increments calls: said when that is not CALLS_PER_RUN
+   if (NSEGMENTS*npoints*increments /= calls_per_run) write (error_unit, '(a)') 'interphase-bench: note: '// &
+      'CALLS_PER_RUN = '//int_to_string(calls_per_run)//' is not a multiple of '//int_to_string(NSEGMENTS)// &
+      ' segments x '//int_to_string(npoints)//' point(s): each run makes '// &
+      int_to_string(NSEGMENTS*npoints*increments)//' calls ('//int_to_string(increments)//' increment(s) per segment)'
 
 
    call system_clock(count_rate=count_rate)
@@ -344,7 +356,7 @@ contains
       if (pnewdt < 1.0_dp) then
          write (error_unit, '(a, g0)') 'interphase-bench: error: umat asked for a cut-back at t = ', &
             time
-         error stop 1
+         call exit_program(1)
       end if
    end subroutine check
 
@@ -373,23 +385,32 @@ contains
       end if
    end function median
 
-   !> A positive integer from a command-line argument, or stop with a message.
-   integer function parse_positive(text, name)
-      character(len=*), intent(in) :: text        !! the argument
+   !> Command-line argument `position` as a positive integer: the whole argument one, digits only
+   !> (no sign, no exponent), at most 9 of them; else the program ends with a message naming it.
+   integer function positive_argument(position, name) result(value)
+      integer, intent(in) :: position             !! argument number
       character(len=*), intent(in) :: name        !! its name for the message
+      character(len=:), allocatable :: text
       integer :: ios
+      call get_argument(position, text)
+      value = 0
+      ios = 1
+      if (len(text) >= 1 .and. len(text) <= 9) then
+         if (verify(text, '0123456789') == 0) read (text, '(i9)', iostat=ios) value
+      end if
+      if (ios /= 0 .or. value < 1) call fail(name//' (argument '//int_to_string(position)//') must be a whole '// &
+         "number from 1 to 999999999 (digits only), got '"//text//"'", usage=.true.)
+   end function positive_argument
 
-      read (text, *, iostat=ios) parse_positive
-      if (ios /= 0 .or. verify(trim(text), '0123456789') /= 0) then
-         write (error_unit, '(a)') 'interphase-bench: error: '//name//" must be a positive "// &
-            "integer, got '"//trim(text)//"'"
-         write (error_unit, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS [CASE [POINTS]]]]'
-         error stop 1
+   !> Print the message (and the usage line) to standard error and end with exit status 1.
+   subroutine fail(text, usage)
+      character(len=*), intent(in) :: text        !! what went wrong
+      logical, intent(in), optional :: usage      !! also print the usage line
+      write (error_unit, '(a)') 'interphase-bench: error: '//text
+      if (present(usage)) then
+         if (usage) write (error_unit, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS [CASE [POINTS]]]]'
       end if
-      if (parse_positive < 1) then
-         write (error_unit, '(a)') 'interphase-bench: error: '//name//' must be at least 1'
-         error stop 1
-      end if
-   end function parse_positive
+      call exit_program(1)
+   end subroutine fail
 
 end program bench_umat

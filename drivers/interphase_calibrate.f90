@@ -26,7 +26,9 @@ program interphase_calibrate
    use interphase_driver_text, only: int_to_string, real_to_string
    use interphase_params, only: law_params_type, from_props
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
-   use interphase_driver_cli, only: get_argument, exit_program, print_version
+   use interphase_driver_cli, only: get_argument, exit_program, print_version, refuse_extra_arguments, &
+      refuse_special_output, is_directory, open_failure, OPEN_MESSAGE_LEN
+   use interphase_driver_text, only: directory_of
    implicit none
 
    !> Where the slope at the start of a test is taken: this fraction of s0 (of sf, were it smaller) (-)
@@ -36,6 +38,7 @@ program interphase_calibrate
    type(law_params_type) :: params
    character(len=:), allocatable :: case_path, write_path, message, argument
    character(len=MESSAGE_LEN) :: why
+   character(len=OPEN_MESSAGE_LEN) :: open_message
    integer :: increments, i, nargs, unit, ios, status
    logical :: ok, increments_given
    real(dp) :: g_i, g_ii, k_n, k_t, peak_n, peak_t, s_peak_n, s_peak_t, s0_n, s0_t
@@ -45,6 +48,9 @@ program interphase_calibrate
    case_path = ''
    write_path = ''
    nargs = command_argument_count()
+   ! --help and --version stand alone: an argument beside them would be ignored
+   message = refuse_extra_arguments()
+   if (len(message) > 0) call fail(message)
    i = 0
    do while (i < nargs)
       i = i + 1
@@ -60,6 +66,7 @@ program interphase_calibrate
          ! an option given twice: which one counts is not guessed
          if (increments_given) call fail('--increments given twice')
          increments_given = .true.
+         if (i == nargs) call fail('--increments needs a whole number from 10 to 999999999')
          i = i + 1
          call get_argument(i, argument)
          ! a whole number of at most 9 digits, at least 10
@@ -71,9 +78,14 @@ program interphase_calibrate
          if (increments < 10) call fail('--increments needs at least 10, got '//argument)
       case ('--write')
          if (len(write_path) > 0) call fail('--write given twice')
+         if (i == nargs) call fail('--write needs a file name')
          i = i + 1
          call get_argument(i, write_path)
          if (len(write_path) == 0) call fail('--write needs a file name')
+         if (write_path(1:1) == '-') call fail('--write needs a file name, got '''//write_path//''', which '// &
+            'begins with ''-'' like an option (a file named so: write ./'//write_path//')')
+      case ('')
+         call fail('argument '//int_to_string(i)//' is empty (an empty case file name)')
       case default
          if (argument(1:1) == '-') call fail('unknown option '//argument)
          if (len(case_path) > 0) call fail('one case file only: '//case_path//' and '//argument//' given')
@@ -90,10 +102,17 @@ program interphase_calibrate
    ! read, and --write may not replace its history)
    call read_case(case_path, run, ok, message, material_only=.true.)
    if (.not. ok) call fail(message)
-   ! --write must not replace an input (the paths resolved and compared: drivers/README.md)
+   ! --write must not replace an input (the paths resolved and compared: drivers/README.md), and is
+   ! a regular file in a folder that exists: checked before the calibration runs
    if (len(write_path) > 0) then
       if (writes_an_input(run, write_path)) &
          call fail('--write '//write_path//' is an input of this run: name another file')
+      message = refuse_special_output(write_path, '--write '//write_path)
+      if (len(message) > 0) call fail(message)
+      if (len(directory_of(write_path)) > 0) then
+         if (.not. is_directory(directory_of(write_path))) call fail('--write '//write_path//': the folder '// &
+            directory_of(write_path)//' does not exist (or is not a folder): create it first')
+      end if
    end if
    if (nint(run%props(PROP_MODEL)) /= MODEL_MICROMECHANICAL) &
       call fail(case_path//": the case must use model = 'micromechanical'")
@@ -125,8 +144,8 @@ program interphase_calibrate
       call fail('no simplified model matches: the calibrated s0 is not below sf (G > 1/2 K sf^2)')
 
    if (len(write_path) > 0) then
-      open (newunit=unit, file=write_path, status='replace', action='write', iostat=ios, iomsg=why)
-      if (ios /= 0) call fail('cannot write '//write_path//': '//trim(why))
+      open (newunit=unit, file=write_path, status='replace', action='write', iostat=ios, iomsg=open_message)
+      if (ios /= 0) call fail(open_failure('--write', write_path, open_message))
       write (unit, '(a)') '! Simplified model calibrated by interphase-calibrate on '//case_path
       write (unit, '(a)') '! (same K, sf and fracture energies as the micromechanical model; table '// &
          custom_table_source(nint(run%props(PROP_TABLE)))//')'

@@ -90,6 +90,9 @@ module interphase_driver_case
       character(len=:), allocatable :: history_path
       !> CSV output path as written in the case file (resolved later against --output-dir).
       character(len=:), allocatable :: output
+      !> 'path:line: &loading: output = '...'' (the entry's line where the file gives it), to
+      !> begin the messages that refuse the output
+      character(len=:), allocatable :: output_entry
       !> Number of equal sub-increments per history segment (>= 1).
       integer :: increments = 0
       !> Whether a PNG of the traction-separation curves is wanted.
@@ -202,6 +205,8 @@ contains
          return
       end if
       call check_material_props(path, 'material', run%props, ok, message, lines)
+      if (allocated(run%output)) &
+         run%output_entry = with_entry_line(path//': &loading: output = '''//run%output//'''', path, lines)
    end subroutine read_case
 
    !> The material's constants as the UMAT decodes them, checked when a case file is read (so that
@@ -397,8 +402,9 @@ contains
             table_path = join_path(base_dir, trim(adjustl(e%table)))
          end if
       case default
-         message = where//"unknown model '"//trim(adjustl(e%model))// &
-            "' (available: 'simplified', 'micromechanical')"
+         ! (the entry's name first: the message then gets its line)
+         message = where//"model '"//trim(adjustl(e%model))// &
+            "' is unknown (available: 'simplified', 'micromechanical')"
          return
       end select
       select case (law)
@@ -461,8 +467,8 @@ contains
             return
          end if
       case default
-         message = where//"unknown damage_law '"//trim(adjustl(e%damage_law))// &
-            "' (available: 'displacement', 'fracture')"
+         message = where//"damage_law '"//trim(adjustl(e%damage_law))// &
+            "' is unknown (available: 'displacement', 'fracture')"
          return
       end select
 

@@ -10,7 +10,8 @@ module interphase_driver_cli
    private
    public :: run_arguments_type, parse_run_arguments, get_argument, make_directory, gnuplot_available, &
       run_gnuplot, exit_program, rename_file, remove_file, file_exists, print_version, is_special_file, &
-      refuse_special_output
+      refuse_special_output, open_failure, OPEN_MESSAGE_LEN, is_directory, refuse_extra_arguments, &
+      check_output_folder
 
    interface
       !> C's exit(): ends the program with a status and no "STOP" line or backtrace.
@@ -28,6 +29,11 @@ module interphase_driver_cli
          import :: c_int, c_char
          character(kind=c_char), intent(in) :: path(*)
       end function c_is_special_file
+      !> 1 when the path names an existing directory (interphase_driver_posix.c).
+      integer(c_int) function c_is_directory(path) bind(c, name='interphase_driver_is_directory')
+         import :: c_int, c_char
+         character(kind=c_char), intent(in) :: path(*)
+      end function c_is_directory
       !> C's remove().
       integer(c_int) function c_remove(path) bind(c, name='remove')
          import :: c_int, c_char
@@ -44,6 +50,10 @@ module interphase_driver_cli
       logical :: version = .false.                   !! --version given
    end type run_arguments_type
 
+   !> Length of an `iomsg` buffer for `open_failure`: the compiler's message holds the path, and
+   !> the reason after it must not be cut.
+   integer, parameter :: OPEN_MESSAGE_LEN = 16384
+
 contains
 
    !> Parse the command line; on failure `ok` is false and `message` says why.
@@ -59,6 +69,9 @@ contains
       args%case_path = ''
       args%output_dir = ''
       nargs = command_argument_count()
+      ! --help and --version stand alone: an argument beside them would be ignored
+      message = refuse_extra_arguments()
+      if (len(message) > 0) return
       i = 0
       do while (i < nargs)
          i = i + 1
@@ -71,6 +84,9 @@ contains
          case ('--version')
             args%version = .true.
             ok = .true.
+            return
+         case ('')
+            message = 'argument '//int_to_string(i)//' is empty (an empty case file or folder name)'
             return
          case ('--no-plot')
             if (args%no_plot) then
@@ -90,10 +106,8 @@ contains
             end if
             i = i + 1
             call get_argument(i, args%output_dir)
-            if (len(args%output_dir) == 0) then
-               message = '--output-dir needs a non-empty directory'
-               return
-            end if
+            message = check_output_folder('--output-dir', args%output_dir)
+            if (len(message) > 0) return
          case default
             if (len(argument) > 0) then
                if (argument(1:1) == '-') then
@@ -114,6 +128,53 @@ contains
       end if
       ok = .true.
    end subroutine parse_run_arguments
+
+   !> '' when the command line is not `--help`, `-h` or `--version` with other arguments beside
+   !> it; else the message that refuses them, naming them (they would be ignored).
+   function refuse_extra_arguments() result(message)
+      character(len=:), allocatable :: message
+      character(len=:), allocatable :: argument, option, others
+      integer :: i, nargs
+      message = ''
+      option = ''
+      others = ''
+      nargs = command_argument_count()
+      do i = 1, nargs
+         call get_argument(i, argument)
+         if (len(option) == 0 .and. (argument == '-h' .or. argument == '--help' .or. argument == '--version')) then
+            option = argument
+         else
+            if (len(others) > 0) others = others//' '
+            others = others//''''//argument//''''
+         end if
+      end do
+      if (len(option) > 0 .and. len(others) > 0) message = option//' stands alone, but other arguments are '// &
+         'given: '//others
+   end function refuse_extra_arguments
+
+   !> '' when `folder`, the value of the option `option`, can name an output folder; else why not:
+   !> empty, an option (beginning with '-': write ./-name for a folder named so), or an existing
+   !> file that is not a folder. A folder that does not exist yet is fine (it is created).
+   function check_output_folder(option, folder) result(message)
+      character(len=*), intent(in) :: option      !! '--output-dir'
+      character(len=*), intent(in) :: folder      !! its value
+      character(len=:), allocatable :: message
+      message = ''
+      if (len(folder) == 0) then
+         message = option//' needs a non-empty directory'
+      else if (folder(1:1) == '-') then
+         message = option//' needs a directory, got '''//folder//''', which begins with ''-'' like an option '// &
+            '(a folder named so: write ./'//folder//')'
+      else if (file_exists(folder) .and. .not. is_directory(folder)) then
+         message = option//' '//folder//' is not a folder (a file of that name exists)'
+      end if
+   end function check_output_folder
+
+   !> Whether `path` names an existing directory (symbolic links followed).
+   logical function is_directory(path)
+      character(len=*), intent(in) :: path
+      is_directory = c_is_directory(path//c_null_char) /= 0
+   end function is_directory
 
    !> Command-line argument number n, of any length.
    subroutine get_argument(n, value)
@@ -139,7 +200,8 @@ contains
       if (len(directory) == 0) return
       exitstat = 0
       cmdmsg = ''
-      call execute_command_line('mkdir -p '//shell_quote(directory), exitstat=exitstat, &
+      ! ('--': a folder whose name begins with '-' is not read as an option)
+      call execute_command_line('mkdir -p -- '//shell_quote(directory), exitstat=exitstat, &
          cmdstat=cmdstat, cmdmsg=cmdmsg)
       if (cmdstat /= 0) then
          ok = .false.
@@ -230,6 +292,30 @@ contains
          '(a device such as /dev/null, a directory or a pipe): each output is written as a regular file '// &
          'in its place; name a file'
    end function refuse_special_output
+
+   !> The message of a failed `open` of `path` for writing: 'cannot write WHAT: REASON: PATH', the
+   !> reason first (a path of hundreds of characters does not hide it). `iomsg` is the open's
+   !> message (OPEN_MESSAGE_LEN long); where it quotes the path ("Cannot open file 'PATH': why")
+   !> the reason is the text after it, else the whole message.
+   function open_failure(what, path, iomsg) result(message)
+      character(len=*), intent(in) :: what       !! the file's role: 'the CSV file'
+      character(len=*), intent(in) :: path       !! the file
+      character(len=*), intent(in) :: iomsg      !! the open's message
+      character(len=:), allocatable :: message
+      character(len=:), allocatable :: reason
+      integer :: k
+      reason = trim(iomsg)
+      k = index(reason, ''''//path//'''')
+      if (k > 0) then
+         reason = adjustl(reason(k + len(path) + 2:))
+         if (len(reason) > 0) then
+            if (reason(1:1) == ':') reason = adjustl(reason(2:))
+         end if
+         reason = trim(reason)
+         if (len(reason) == 0) reason = trim(iomsg(:k - 1))
+      end if
+      message = 'cannot write '//what//': '//reason//': '//path
+   end function open_failure
 
    !> Remove a file if it exists (nothing happens otherwise).
    subroutine remove_file(path)

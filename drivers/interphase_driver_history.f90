@@ -28,7 +28,7 @@ module interphase_driver_history
    use interphase_finite, only: difference_is_finite
    implicit none
    private
-   public :: history_type, read_history
+   public :: history_type, read_history, carriage_return_message, parse_number
 
    !> A prescribed separation history.
    type :: history_type
@@ -111,10 +111,9 @@ contains
          end if
          ! a carriage return inside the line (the one before the newline is dropped): the file's
          ! lines end in a carriage return alone (old Mac), and the whole file reads as one line
-         i = index(line, achar(13))
-         if (i > 0) then
-            message = where//'a carriage return inside the line (column '//int_to_string(i)//'): a carriage '// &
-               'return alone ends lines on old Macs; save the file with Unix or Windows line ends'
+         message = carriage_return_message(line)
+         if (len(message) > 0) then
+            message = where//message
             call close_text_file(unit)
             return
          end if
@@ -533,6 +532,21 @@ contains
       history%traction(1, history%nrows) = traction_then_normal(n)
       history%traction(2:n, history%nrows) = traction_then_normal(1:n - 1)
    end subroutine append_row
+
+   !> '' for a line without a carriage return, else the message (without file and line) that
+   !> refuses it, naming its column: a carriage return inside a line (the one before the newline
+   !> is dropped by the reader) means the file's lines end in a carriage return alone (old Mac),
+   !> and the whole file reads as one line. The histories of interphase-point and interphase-fe2d
+   !> refuse it alike.
+   pure function carriage_return_message(line) result(message)
+      character(len=*), intent(in) :: line        !! one line as read
+      character(len=:), allocatable :: message
+      integer :: i
+      message = ''
+      i = index(line, achar(13))
+      if (i > 0) message = 'a carriage return inside the line (column '//int_to_string(i)//'): a carriage '// &
+         'return alone ends lines on old Macs; save the file with Unix or Windows line ends'
+   end function carriage_return_message
 
    !> Parse one number: the whole word one real literal (interphase_text_input: digits, sign,
    !> point, exponent with its letter e/d; not `1-2`, `2*0.5`, `,`), finite.

@@ -145,9 +145,17 @@ contains
          end if
          n = len(line)
          ! a control character inside a line (a carriage return of old Mac line ends, inside a
-         ! quoted name) is dropped or misread by the namelist read: refused
+         ! quoted name) is dropped or misread by the namelist read: refused, up to the '!' that
+         ! starts a comment (a '!' inside quotes is the string's: the scan goes on)
+         quote = ' '
          do i = 1, n
-            if (line(i:i) == '!') exit                   ! (a comment's text is not read)
+            if (quote /= ' ') then
+               if (line(i:i) == quote) quote = ' '      ! (a doubled quote closes and reopens)
+            else if (line(i:i) == '''' .or. line(i:i) == '"') then
+               quote = line(i:i)
+            else if (line(i:i) == '!') then
+               exit                                      ! (a comment's text is not read)
+            end if
             if (iachar(line(i:i)) < 32 .and. line(i:i) /= achar(9)) then
                call fail('a control character (code '//int_to_string(iachar(line(i:i)))//') in column '// &
                   int_to_string(i)//': only blanks and tabs may separate the text (a carriage return '// &

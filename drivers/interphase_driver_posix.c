@@ -11,3 +11,11 @@ int interphase_driver_is_special_file(const char *path)
     if (stat(path, &st) != 0) return 0;
     return S_ISREG(st.st_mode) ? 0 : 1;
 }
+
+/* 1 when `path` names an existing directory (symbolic links followed), 0 otherwise. */
+int interphase_driver_is_directory(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) != 0) return 0;
+    return S_ISDIR(st.st_mode) ? 1 : 0;
+}

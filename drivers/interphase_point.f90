@@ -16,7 +16,8 @@ program interphase_point
    use interphase_kinds, only: dp
    use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary, writes_an_input
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
-      gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output, remove_file
+      gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output, remove_file, &
+      open_failure, OPEN_MESSAGE_LEN
    use interphase_driver_history, only: history_type, read_history
    use interphase_driver_output, only: csv_header, write_plot_script
    use interphase_driver_replay, only: replay_history, replay_report_type
@@ -32,7 +33,7 @@ program interphase_point
    type(history_type) :: history
    logical :: no_plot, ok
    integer :: unit, ios, nrows
-   character(len=512) :: iomsg
+   character(len=OPEN_MESSAGE_LEN) :: open_message
 
    ! ---- command line ----
    call parse_run_arguments(cli, ok, message)
@@ -71,8 +72,8 @@ program interphase_point
    ! the rows go to CSV.part, renamed to CSV at the end: a failed run leaves a previous CSV as it was
    part_path = csv_path//'.part'
    open (newunit=unit, file=part_path, status='replace', action='write', form='formatted', &
-      iostat=ios, iomsg=iomsg)
-   if (ios /= 0) call fail(part_path//': cannot write the CSV file: '//trim(iomsg))
+      iostat=ios, iomsg=open_message)
+   if (ios /= 0) call fail(open_failure('the CSV file', part_path, open_message))
    write (unit, '(a)') csv_header(history%ntens, tangent_error=run%tangent_check > 0.0_dp)
    call replay_history(run, history, unit, nrows, ok, message, report, &
       replay_path=join_path(directory_of(csv_path), stem_of(csv_path)//'.replay.nml'))
@@ -190,9 +191,8 @@ contains
       character(len=*), intent(in) :: written
       character(len=:), allocatable :: refusal
       if (writes_an_input(run, written)) &
-         call fail(case_path//': &loading: output = '''//run%output//''' would write '//written// &
-         ', which is an input of this run: name another file')
-      refusal = refuse_special_output(written, case_path//': &loading: output = '''//run%output//'''')
+         call fail(run%output_entry//' would write '//written//', which is an input of this run: name another file')
+      refusal = refuse_special_output(written, run%output_entry)
       if (len(refusal) > 0) call fail(refusal)
    end subroutine refuse
 

@@ -18,7 +18,8 @@ program interphase_fe2d
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
    use interphase_driver_case, only: load_start_up_data, material_summary
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
-      gnuplot_available, run_gnuplot, exit_program, print_version, rename_file, refuse_special_output
+      gnuplot_available, run_gnuplot, exit_program, print_version, rename_file, refuse_special_output, &
+      open_failure, OPEN_MESSAGE_LEN
    use interphase_fe2d_mesh, only: fe2d_mesh_type, build_mesh
    use interphase_fe2d_solver, only: fe2d_options_type, fe2d_result_type, run_analysis, &
       CSV_COLUMNS, COL_SHEAR, COL_NORMAL, COL_STEP
@@ -35,7 +36,7 @@ program interphase_fe2d
    type(fe2d_result_type) :: result
    logical :: no_plot, ok
    integer :: ios, peak
-   character(len=512) :: iomsg
+   character(len=OPEN_MESSAGE_LEN) :: iomsg
 
    call parse_run_arguments(cli, ok, message)
    if (cli%help) then
@@ -62,16 +63,15 @@ program interphase_fe2d
 
    csv_path = join_path(output_dir, run%output)
    ! (before the run: an output that is a device would be replaced by the rename at its end)
-   message = refuse_special_output(csv_path, case_path//': &loading: output = '''//run%output//'''')
-   if (len(message) == 0) message = refuse_special_output(csv_path//'.part', case_path//': &loading: output = '''// &
-      run%output//'''')
+   message = refuse_special_output(csv_path, run%output_entry)
+   if (len(message) == 0) message = refuse_special_output(csv_path//'.part', run%output_entry)
    if (len(message) > 0) call fail(message)
    call make_directory(directory_of(csv_path), ok, message)
    if (.not. ok) call fail(message)
    log_path = join_path(directory_of(csv_path), stem_of(csv_path)//'.log')
    open (newunit=options%log_unit, file=log_path, status='replace', action='write', &
       iostat=ios, iomsg=iomsg)
-   if (ios /= 0) call fail(log_path//': cannot write the log: '//trim(iomsg))
+   if (ios /= 0) call fail(open_failure('the log', log_path, iomsg))
    options%log = .true.
    options%progress = .true.
    options%name = run%name

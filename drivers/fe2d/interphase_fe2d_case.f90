@@ -9,11 +9,12 @@ module interphase_fe2d_case
    use interphase_kinds, only: dp
    use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_finite, only: difference_is_finite
-   use interphase_text_input, only: tried_path, parse_real
+   use interphase_text_input, only: tried_path, clip_text
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
+   use interphase_driver_history, only: carriage_return_message, parse_number
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words, text_file_type, open_line_file, close_text_file
    implicit none
@@ -64,6 +65,9 @@ module interphase_fe2d_case
       integer :: max_iterations = 15                   !! Newton iterations before a cut-back
       real(dp) :: min_increment = 1.0e-6_dp            !! smallest increment / nominal one
       character(len=:), allocatable :: output          !! CSV path (relative to --output-dir)
+      !> 'path:line: &loading: output = '...'' (the entry's line where the file gives it), to
+      !> begin the messages that refuse the output
+      character(len=:), allocatable :: output_entry
       logical :: plot = .true.                         !! PNG wanted
       !> assemble only the symmetric part of DDSDDE (as CalculiX does, and Abaqus without
       !> UNSYMM): `&loading assembly = 'symmetric'`; default 'unsymmetric'
@@ -120,6 +124,7 @@ contains
       ! a check after the namelist read names its entry's line too
       if (.not. ok) message = with_entry_line(message, path, lines)
       if (ok) call check_material_props(path, 'joint', run%props, ok, message, lines)
+      if (ok) run%output_entry = with_entry_line(path//': &loading: output = '''//run%output//'''', path, lines)
       if (ok) call read_shear_history(run%history_path, run%history_t, run%history_u, ok, message)
    end subroutine read_fe2d_case
 
@@ -377,7 +382,7 @@ contains
          run%output = trim(adjustl(output))
       end if
       run%plot = plot
-      select case (trim(adjustl(assembly)))
+      select case (to_lower(trim(adjustl(assembly))))   ! (any case, as the other words)
       case ('unsymmetric')
          run%symmetric_assembly = .false.
       case ('symmetric')
@@ -444,8 +449,9 @@ contains
 
    !> Read a shear history: two columns `t u_shear` (mm), `#` comments and blank lines allowed,
    !> time strictly increasing, at least two rows, first u_shear 0 (the precompression step
-   !> ends at u = 0). Each field is one real literal as a whole (interphase_text_input's
-   !> parse_real, as interphase-point reads its histories). A `# columns:` line (interphase-point's
+   !> ends at u = 0). Each field is one real literal as a whole (interphase-point's parse_number,
+   !> its messages clipping the field to 60 characters with control characters masked); a
+   !> carriage return inside a line is refused as interphase-point refuses it. A `# columns:` line (interphase-point's
    !> mixed control, which this host does not have) is refused rather than read as a comment.
    !> Errors name the file (as tried) and line.
    subroutine read_shear_history(path, t, u, ok, message)
@@ -459,8 +465,7 @@ contains
       integer :: ios, line_number, n, k
       type(text_file_type) :: unit
       character(len=512) :: iomsg
-      character(len=32) :: why
-      character(len=:), allocatable :: shown, comment
+      character(len=:), allocatable :: shown, comment, where
       real(dp) :: values(2)
       real(dp), allocatable :: grow(:)
       integer :: first_line
@@ -480,12 +485,20 @@ contains
       do
          call read_line(unit, line, ios, iomsg)
          if (ios == iostat_end) exit
+         line_number = line_number + 1
+         where = shown//':'//int_to_string(line_number)//': '
          if (ios /= 0) then
-            message = shown//': read error: '//trim(iomsg)
+            message = where//'cannot read the line: '//trim(iomsg)
             call close_text_file(unit)
             return
          end if
-         line_number = line_number + 1
+         ! (interphase-point's history reader's check and message)
+         message = carriage_return_message(line)
+         if (len(message) > 0) then
+            message = where//message
+            call close_text_file(unit)
+            return
+         end if
          k = index(line, '#')
          if (k > 0) then
             ! a "# columns:" line (or one spelt like it) names interphase-point's mixed-control
@@ -498,7 +511,7 @@ contains
             if (len(comment) >= 6) then
                if (comment(1:6) == 'column' .and. index(comment, ':') > 0 .and. &
                   verify(comment(7:index(comment, ':') - 1), 's ') == 0) then
-                  message = shown//':'//int_to_string(line_number)//': "#'//line(k + 1:)//'": interphase-fe2d''s '// &
+                  message = where//'"#'//clip_text(line(k + 1:))//'": interphase-fe2d''s '// &
                      'history has the two columns t u_shear (mm, a displacement) and no "# columns:" line '// &
                      '(imposed tractions are interphase-point''s mixed control)'
                   call close_text_file(unit)
@@ -516,18 +529,10 @@ contains
             return
          end if
          do k = 1, 2
-            call parse_real(line(starts(k):ends(k)), values(k), parsed, why)
+            ! (interphase-point's parser and messages: the field clipped, control characters masked)
+            call parse_number(line(starts(k):ends(k)), values(k), parsed, message)
             if (.not. parsed) then
-               if (index(why, 'finite') > 0) then
-                  message = shown//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
-                     ": '"//line(starts(k):ends(k))//"' is not a finite number"
-               else if (index(why, 'out of range') > 0) then
-                  message = shown//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
-                     ": '"//line(starts(k):ends(k))//"' is "//trim(why)
-               else
-                  message = shown//':'//int_to_string(line_number)//': column '//int_to_string(k)// &
-                     ": cannot parse '"//line(starts(k):ends(k))//"' as a number"
-               end if
+               message = where//'column '//int_to_string(k)//': '//message
                call close_text_file(unit)
                return
             end if

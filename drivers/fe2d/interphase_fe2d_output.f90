@@ -2,6 +2,7 @@
 module interphase_fe2d_output
    use interphase_kinds, only: dp
    use interphase_driver_text, only: real_to_csv, int_to_string, gnuplot_quote
+   use interphase_driver_cli, only: open_failure, OPEN_MESSAGE_LEN
    implicit none
    private
    public :: write_curve_csv, write_curve_plot_script
@@ -19,12 +20,12 @@ contains
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
       character(len=:), allocatable :: line
       integer :: unit, ios, r, c
-      character(len=512) :: iomsg
+      character(len=OPEN_MESSAGE_LEN) :: iomsg
 
       ok = .false.
       open (newunit=unit, file=path, status='replace', action='write', iostat=ios, iomsg=iomsg)
       if (ios /= 0) then
-         message = path//': cannot write the CSV file: '//trim(iomsg)
+         message = open_failure('the CSV file', path, iomsg)
          return
       end if
       write (unit, '(a)') header

@@ -41,8 +41,8 @@ def test_props_are_the_umat_layout():
     (dict(mu=-1.0), interphase.STATUS_BAD_MU, "PROPS(3) mu = -1.00000E+000 is out of range"),
     (dict(k_t=float("nan")), interphase.STATUS_BAD_K_T, "PROPS(9)"),
     (dict(s0_t=0.0), interphase.STATUS_BAD_S0_T, "PROPS(6)"),
-    (dict(model="spring"), interphase.STATUS_BAD_MODEL, "unknown model 'spring'"),
-    (dict(damage_law="plastic"), interphase.STATUS_BAD_DAMAGE_LAW, "unknown damage_law 'plastic'"),
+    (dict(model="spring"), interphase.STATUS_BAD_MODEL, "model 'spring' is unknown"),
+    (dict(damage_law="plastic"), interphase.STATUS_BAD_DAMAGE_LAW, "damage_law 'plastic' is unknown"),
     (dict(stiffness="secant"), interphase.STATUS_BAD_OPTION,
      "stiffness must be 'consistent' (the default), 'symmetric' or 'fixed-damage', got 'secant'"),
     (dict(growth_slip="free"), interphase.STATUS_BAD_OPTION, "growth_slip must be 'fixed-pi' (the default) or"),
@@ -314,6 +314,9 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
         "control": (good.replace("mu = 0.75", "mu = 0.75\r  s0_n = 0.00044"),
                     r"control.nml:\d+: a control character \(code 13\) in column 12"),
         "empty2": (good.replace("mu = 0.75", "mu = 0.75,,"), r"&material: mu has an empty value \(a comma after"),
+        # a '!' inside quotes starts no comment: the control character after it is refused too
+        "bang": (good.replace("output = 'h1I.csv'", "output = 'o!\x01.csv'"),
+                 r"bang.nml:\d+: a control character \(code 1\) in column 15"),
         # a constant the PROPS check refuses: named with its entry's line, as by interphase-point
         "range": (good.replace("mu = 0.75", "mu = -0.75"),
                   rf"range.nml:{mu_line}: &material: mu: PROPS\(3\) mu = -7.50000E-001 is out of range"),
@@ -322,6 +325,7 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
                          r"tangent_step.nml:\d+: &loading: tangent_step is an entry of the tangent check only"),
     }
     assert "mu = 0.75" in good and "sf_t" in good and "&loading" in good and "increments = " in good
+    assert "output = 'h1I.csv'" in good
     for name, (text, message) in cases.items():
         path = tmp_path / f"{name}.nml"
         path.write_text(text)
@@ -796,9 +800,10 @@ def test_words_are_split_at_blanks_and_tabs_only(tmp_path):
     path = write_case(tmp_path, CASE.replace("'simplified'", "'simplified\u00a0'"))
     with pytest.raises(interphase.InterphaseError) as caught:
         interphase.read_case(path)
-    assert caught.value.detail == (f"{path}: &material: unknown model 'simplified\u00a0' (available: 'simplified', "
+    # (the entry's line named, as interphase-point names it)
+    assert caught.value.detail == (f"{path}:2: &material: model 'simplified\u00a0' is unknown (available: 'simplified', "
                                    "'micromechanical')")
-    with pytest.raises(interphase.InterphaseError, match="unknown model 'simplified\t'"):
+    with pytest.raises(interphase.InterphaseError, match="model 'simplified\t' is unknown"):
         interphase.Material(**dict(SIMPLIFIED, model="simplified\t"))
     with pytest.raises(interphase.InterphaseError, match="stiffness must be"):
         interphase.Material(**dict(SIMPLIFIED, stiffness="symmetric\u00a0"))

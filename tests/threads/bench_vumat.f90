@@ -16,7 +16,16 @@ program bench_vumat
    use interphase_kinds, only: dp
    use interphase_layout, only: NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, NSTATV_VUMAT
    use interphase_abaqus_interfaces, only: vumat
+   use, intrinsic :: iso_c_binding, only: c_int
    implicit none
+
+   interface
+      !> C's exit(): ends the program with a status and no "ERROR STOP" line or backtrace.
+      subroutine c_exit(status) bind(c, name='exit')
+         import :: c_int
+         integer(c_int), value :: status
+      end subroutine c_exit
+   end interface
 
    !> Block sizes measured (136 is Abaqus/Explicit's usual vector length).
    integer, parameter :: NBLOCK_SIZES(3) = [1, 136, 4096]
@@ -40,12 +49,17 @@ program bench_vumat
    only_case = 0
    nrepeat_used = NREPEAT
    nblock_first = 1
+   if (command_argument_count() > 2) then
+      write (error_unit, '(a,i0,a)') 'interphase-bench-vumat: at most 2 arguments (points case), got ', &
+         command_argument_count(), '; usage: interphase-bench-vumat [points [case]]'
+      call stop_with(2)
+   end if
    if (command_argument_count() >= 1) npoints = positive_argument(1, 'points')
    if (command_argument_count() >= 2) then
       only_case = positive_argument(2, 'case')
       if (only_case > 4) then
          write (error_unit, '(a)') 'interphase-bench-vumat: case must be 1..4'
-         error stop 2
+         call stop_with(2)
       end if
       nrepeat_used = 1
       nblock_first = size(NBLOCK_SIZES)
@@ -73,9 +87,17 @@ contains
       if (value < 1) then
          write (error_unit, '(a)') 'interphase-bench-vumat: '//name//' must be a positive integer, not '''// &
             trim(text)//''''
-         error stop 2
+         call stop_with(2)
       end if
    end function positive_argument
+
+   !> End with exit status `status` after flushing the output, without a backtrace.
+   subroutine stop_with(status)
+      integer, intent(in) :: status
+      flush (output_unit)
+      flush (error_unit)
+      call c_exit(int(status, c_int))
+   end subroutine stop_with
 
    subroutine run_case(title, nshr, props)
       character(len=*), intent(in) :: title

@@ -46,6 +46,21 @@ def _lower(text):
 _ASCII_LOWER = str.maketrans("ABCDEFGHIJKLMNOPQRSTUVWXYZ", "abcdefghijklmnopqrstuvwxyz")
 
 
+def _before_comment(line):
+    """`line` up to the '!' that starts a comment: a '!' inside quotes is the string's (the driver's
+    control-character scan in check_namelist_file)."""
+    quote = None
+    for k, ch in enumerate(line):
+        if quote is not None:
+            if ch == quote:
+                quote = None        # (a doubled quote closes and reopens)
+        elif ch in "'\"":
+            quote = ch
+        elif ch == "!":
+            return line[:k]
+    return line
+
+
 def _clip(text):
     """At most the first 60 bytes of `text`, with '...' when cut, and a control character other
     than a tab as '?' (the driver's clip_text, for messages)."""
@@ -505,7 +520,7 @@ def _namelist_entries(path, known=None):
 
     for number, line in enumerate(lines, 1):
         i, n = 0, len(line)
-        text = line.split("!", 1)[0]     # (a comment's text is not read)
+        text = _before_comment(line)     # (a comment's text is not read; a '!' inside quotes is the string's)
         bad = next((k for k, ch in enumerate(text) if ord(ch) < 32 and ch != "\t"), None)
         if bad is not None:
             fail(f"a control character (code {ord(line[bad])}) in column {bad + 1}: only blanks and tabs may "

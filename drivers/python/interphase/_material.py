@@ -249,7 +249,7 @@ class Material:
                 self.table_path = _path("table", e["table"], base)
             props = [MODEL_MICROMECHANICAL, 0.0] + values + [TABLE_CUSTOM if self.table_path else TABLE_DEFAULT]
         else:
-            raise InterphaseError(st.STATUS_BAD_MODEL, f"unknown model '{str(e['model']).strip(' ')}' "
+            raise InterphaseError(st.STATUS_BAD_MODEL, f"model '{str(e['model']).strip(' ')}' is unknown "
                                   "(available: 'simplified', 'micromechanical')")
         fracture_only = ("d0", "rcurve", "rcurve_file", "g_ci", "g_cii")
         if law == "displacement":
@@ -290,8 +290,8 @@ class Material:
                                       f"'{str(_path_text('rcurve_file', e['rcurve_file'])).strip(' ')}')")
             props += [_real("d0", e["d0"]), float(rcurve)] + gc
         else:
-            raise InterphaseError(st.STATUS_BAD_DAMAGE_LAW, f"unknown damage_law '{str(e['damage_law']).strip(' ')}' "
-                                  "(available: 'displacement', 'fracture')")
+            raise InterphaseError(st.STATUS_BAD_DAMAGE_LAW, f"damage_law '{str(e['damage_law']).strip(' ')}' is "
+                                  "unknown (available: 'displacement', 'fracture')")
         # the option constants, written up to the last one not at its default (to_props)
         options = [
             float(_keyword("growth_slip", e.get("growth_slip"), {"fixed-pi": GROWTH_FIXED_PI,
