@@ -48,9 +48,10 @@ module interphase_driver_replay
    use interphase_driver_host, only: reset_fatal_message, fatal_message_reported, last_fatal_message
    use interphase_replay_file, only: write_replay_group
    use interphase_text_input, only: tried_path
-   use interphase_status, only: STATUS_OK, STATUS_BEYOND_PEAK
+   use interphase_status, only: STATUS_OK, STATUS_BEYOND_PEAK, STATUS_SEPARATION_OUT_OF_RANGE
    use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
-      component_name, beyond_peak_reason, MAX_HALVINGS, MAX_NEWTON, FAILURE_NONE, FAILURE_OUTPUT, FAILURE_FATAL
+      component_name, beyond_peak_reason, beyond_range_reason, range_traction_component, MAX_HALVINGS, MAX_NEWTON, &
+      FAILURE_NONE, FAILURE_OUTPUT, FAILURE_FATAL
    implicit none
    private
    public :: replay_history, MAX_HALVINGS, MAX_NEWTON, point_state_type, new_point, call_umat, &
@@ -204,6 +205,17 @@ contains
                   values_text(last%separation(:ntens), separations)//', '// &
                   values_text(last%traction(:ntens), tractions)//', D = '// &
                   real_to_string(last%state(SV_DAMAGE))//')'
+               return
+            end if
+            if (failure%status == STATUS_SEPARATION_OUT_OF_RANGE .and. failure%component > 0) then
+               ! (an imposed compression has no peak: contact carries any; what it may need is a
+               ! separation beyond the range the UMAT admits)
+               i = range_traction_component(failure, ntens)
+               text = text//'no solution from t = '//real_to_string(last%time)//' to t = '// &
+                  real_to_string(failure%time_to)//': the imposed traction '//component_name(i, .true., ntens)// &
+                  ' = '//real_to_string(failure%target(i))//' MPa '//beyond_range_reason(failure, ntens)// &
+                  '; last converged state: '//values_text(last%separation(:ntens), separations)//', '// &
+                  values_text(last%traction(:ntens), tractions)//', D = '//real_to_string(last%state(SV_DAMAGE))
                return
             end if
             text = text//'no converged step from t = '//real_to_string(last%time)//' to t = '// &

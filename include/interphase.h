@@ -81,6 +81,8 @@ extern "C" {
 #define INTERPHASE_STATUS_MIXED_NOT_CONVERGED 29         /**< imposed traction not met (Newton), even in halved steps */
 #define INTERPHASE_STATUS_BAD_HISTORY 30                 /**< history (times, controls) or replay setting not admissible */
 #define INTERPHASE_STATUS_OUTPUT_FULL 31                 /**< output arrays too short: call again with more rows */
+/* arguments of the C entry points */
+#define INTERPHASE_STATUS_NULL_ARGUMENT 32               /**< a required pointer argument is NULL (detail names it) */
 /* interpolation tables: construction, then evaluation */
 #define INTERPHASE_STATUS_SPLINE_TOO_FEW_POINTS 40       /**< too few table points */
 #define INTERPHASE_STATUS_SPLINE_BAD_SHAPE 41            /**< table values do not match the knots */
@@ -106,9 +108,10 @@ extern "C" {
 /* R-curve files (interphase_load_rcurve) */
 #define INTERPHASE_STATUS_RCURVE_UNREADABLE 60           /**< R-curve file cannot be opened or read */
 #define INTERPHASE_STATUS_RCURVE_MALFORMED 61            /**< line is not "D G_cI G_cII" */
-#define INTERPHASE_STATUS_RCURVE_NEGATIVE 62             /**< toughness not positive */
+#define INTERPHASE_STATUS_RCURVE_NEGATIVE 62             /**< toughness not positive (see also 65) */
 #define INTERPHASE_STATUS_RCURVE_BAD_RANGE 63            /**< D not increasing in [0, 1], or too few rows */
 #define INTERPHASE_STATUS_RCURVE_OUT_OF_RANGE 64         /**< tabulated R-curve does not cover D0 or the D reached */
+#define INTERPHASE_STATUS_RCURVE_BAD_TOUGHNESS 65        /**< toughness > 0 but outside [1e-20, 1e20] N/mm */
 
 /**
  * Update one interface point: traction, consistent tangent, new state and stored energy at
@@ -130,9 +133,11 @@ extern "C" {
  * @param stored_energy  out: recoverable energy per unit area (N/mm)
  * @param detail         out, may be NULL: on failure, a NUL-terminated message naming the bad
  *                       value (e.g. "PROPS(5) sf_N = 1.00000E-04 is out of range: ...")
- * @param detail_len     size of @p detail in bytes (257 holds any message: at most 256 characters)
+ * @param detail_len     size of @p detail in bytes (257 holds any message: at most 256 characters;
+ *                       every value is read as the size_t it is, SIZE_MAX too)
  * @return INTERPHASE_STATUS_OK (0), or a status code; on failure traction, tangent, state_new
- *         and stored_energy are left untouched. Admissible ranges (docs/abaqus.md, 'Admissible
+ *         and stored_energy are left untouched. Every pointer but @p detail must not be NULL: a
+ *         NULL one is INTERPHASE_STATUS_NULL_ARGUMENT, @p detail naming it ("state_old is NULL: ..."). Admissible ranges (docs/abaqus.md, 'Admissible
  *         ranges'): the lengths s0, sf, the stiffnesses K and the toughnesses G_c of PROPS in
  *         [1e-20, 1e20] (mm, MPa/mm, N/mm), mu in [0, 1e20], the slip in state_old within
  *         |lambda_i| <= 1e30 mm; inside them every output is finite and the same in every build.
@@ -189,7 +194,10 @@ int interphase_update_dt(const double *props, int nprops, int ntens, const doubl
  *         it on are untouched; a host may retry that step in smaller ones); the checks of row 0
  *         are those of interphase_update on its inputs (INTERPHASE_STATUS_BAD_STATE,
  *         INTERPHASE_STATUS_BAD_HOST_INPUT for a separation, traction or energy out of range);
- *         @p nrows = 0 gives INTERPHASE_STATUS_BAD_HISTORY, as in interphase_run_history.
+ *         @p nrows = 0, or one too large for any array (2^63 / 72 or more, SIZE_MAX included:
+ *         named as the unsigned value it is), gives INTERPHASE_STATUS_BAD_HISTORY, as in
+ *         interphase_run_history; a NULL @p props, @p separation, @p traction, @p state,
+ *         @p stored_energy or @p dissipated_energy INTERPHASE_STATUS_NULL_ARGUMENT, naming it.
  */
 int interphase_run(const double *props, int nprops, int ntens, size_t nrows, const double *separation,
                    const double *time, double *traction, double *tangent, double *state,
@@ -248,8 +256,15 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  *                              imposed values or the update's detail)
  * @param detail_len            size of @p detail in bytes (257 holds any message)
  * @return INTERPHASE_STATUS_OK; a material status as interphase_update;
- *         INTERPHASE_STATUS_BAD_HISTORY (nrows 0, times, a value that is not finite, controls,
- *         increments, output_every, traction_tolerance: checked before any update);
+ *         INTERPHASE_STATUS_NULL_ARGUMENT (a NULL @p props, @p time or @p value, named);
+ *         INTERPHASE_STATUS_BAD_HISTORY (nrows 0, nrows or capacity too large for any array
+ *         (2^63 / 72 or more, SIZE_MAX included: named as the unsigned value), times, a value
+ *         that is not finite or an imposed traction beyond 1e150 MPa, controls, increments,
+ *         output_every, traction_tolerance: checked before any update);
+ *         INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE (before any update: a separation of the
+ *         history beyond 1e20 mm, naming its row and component; during the replay: an imposed
+ *         traction, a compression as a rule, that needs a separation beyond 1e20 mm: compression
+ *         has no peak);
  *         INTERPHASE_STATUS_BEYOND_PEAK (an imposed traction is raised beyond the largest the
  *         point reached, or is met only on a flat tangent, where the point carries no more load
  *         in its direction or its separation is undetermined: no solution), INTERPHASE_STATUS_MIXED_NOT_CONVERGED
@@ -299,8 +314,9 @@ int interphase_load_table(const char *path, char *detail, size_t detail_len);
  * @param detail      out, may be NULL: on failure, a NUL-terminated message naming the file, the
  *                    line and the failed check
  * @param detail_len  size of @p detail in bytes (257 holds any message: at most 256 characters)
- * @return INTERPHASE_STATUS_OK (0), or INTERPHASE_STATUS_RCURVE_* (60-63) or
- *         INTERPHASE_STATUS_SPLINE_* (40-48); on failure the R-curve loaded before (if any) stays.
+ * @return INTERPHASE_STATUS_OK (0), or INTERPHASE_STATUS_RCURVE_* (60-63; 65, a toughness outside
+ *         [1e-20, 1e20] N/mm) or INTERPHASE_STATUS_SPLINE_* (40-48); on failure the R-curve
+ *         loaded before (if any) stays.
  */
 int interphase_load_rcurve(const char *path, char *detail, size_t detail_len);
 

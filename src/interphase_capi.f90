@@ -21,7 +21,7 @@ module interphase_capi
    use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
       STATUS_TABLE_UNREADABLE, STATUS_RCURVE_UNREADABLE, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
-      STATUS_RCURVE_OUT_OF_RANGE, STATUS_BAD_TIME_INCREMENT, status_message, file_loader
+      STATUS_RCURVE_OUT_OF_RANGE, STATUS_BAD_TIME_INCREMENT, STATUS_NULL_ARGUMENT, status_message, file_loader
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve, rcurve_overrun
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count, SEPARATION_MAX, HOST_VALUE_MAX
@@ -30,7 +30,7 @@ module interphase_capi
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update, update_point
    use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
-      describe_failure, FAILURE_OUTPUT
+      describe_failure, component_name, FAILURE_OUTPUT
    use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL, separation_text, STATUS_NONFINITE_SEPARATION, &
       STATUS_SEPARATION_OUT_OF_RANGE
    implicit none
@@ -61,6 +61,10 @@ module interphase_capi
 
    !> Longest path (bytes, without the NUL) the loaders accept from C.
    integer, parameter :: MAX_PATH_LEN = 4096
+   !> Most rows (nrows, capacity) the replays accept: an array of more rows of ntens*ntens
+   !> doubles (72 bytes in 3-D) would not fit in 2**63 bytes. A size_t of 2**63 or more reads as
+   !> a negative integer(c_size_t) here: it is refused too, shown as the unsigned value (size_text).
+   integer(c_size_t), parameter :: MAX_ROWS = huge(0_c_size_t)/72
 
 contains
 
@@ -70,18 +74,19 @@ contains
    !> Returns STATUS_OK (0) or a status code; on a non-zero status the outputs are untouched and,
    !> when `detail` is not NULL, it receives the detailed message (which value, which range; for a
    !> table or R-curve not loaded, which loader to call; for an R-curve that does not cover D0 or
-   !> the damage reached, the file, its range and the D).
+   !> the damage reached, the file, its range and the D). A NULL array is STATUS_NULL_ARGUMENT,
+   !> the detail naming it.
    function interphase_update_c(props, nprops, ntens, state_old, separation, traction, tangent, &
          state_new, stored_energy, detail, detail_len) result(status) bind(C, name="interphase_update")
       integer(c_int), value, intent(in) :: nprops          !! number of PROPS (docs/abaqus.md)
-      real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
+      type(c_ptr), value, intent(in) :: props              !! nprops doubles: PROPS, docs/abaqus.md
       integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
-      real(c_double), intent(in) :: state_old(*)           !! NSTATV_REQUIRED doubles (state_slots)
-      real(c_double), intent(in) :: separation(*)          !! ntens doubles (mm)
-      real(c_double), intent(inout) :: traction(*)         !! ntens doubles (MPa)
-      real(c_double), intent(inout) :: tangent(*)          !! ntens*ntens doubles, row-major (MPa/mm)
-      real(c_double), intent(inout) :: state_new(*)        !! NSTATV_REQUIRED doubles (state_slots)
-      real(c_double), intent(inout) :: stored_energy       !! stored energy per unit area (N/mm)
+      type(c_ptr), value, intent(in) :: state_old          !! NSTATV_REQUIRED doubles (state_slots)
+      type(c_ptr), value, intent(in) :: separation         !! ntens doubles (mm)
+      type(c_ptr), value, intent(in) :: traction           !! out: ntens doubles (MPa)
+      type(c_ptr), value, intent(in) :: tangent            !! out: ntens*ntens doubles, row-major (MPa/mm)
+      type(c_ptr), value, intent(in) :: state_new          !! out: NSTATV_REQUIRED doubles (state_slots)
+      type(c_ptr), value, intent(in) :: stored_energy      !! out: one double, stored energy per unit area (N/mm)
       type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
       integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
       integer(c_int) :: status
@@ -97,15 +102,15 @@ contains
    function interphase_update_dt_c(props, nprops, ntens, state_old, separation, dt, traction, tangent, &
          state_new, stored_energy, detail, detail_len) result(status) bind(C, name="interphase_update_dt")
       integer(c_int), value, intent(in) :: nprops          !! number of PROPS (docs/abaqus.md)
-      real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
+      type(c_ptr), value, intent(in) :: props              !! nprops doubles: PROPS, docs/abaqus.md
       integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
-      real(c_double), intent(in) :: state_old(*)           !! state_slots(params) doubles
-      real(c_double), intent(in) :: separation(*)          !! ntens doubles (mm)
+      type(c_ptr), value, intent(in) :: state_old          !! state_slots(params) doubles
+      type(c_ptr), value, intent(in) :: separation         !! ntens doubles (mm)
       real(c_double), value, intent(in) :: dt              !! time increment (s)
-      real(c_double), intent(inout) :: traction(*)         !! ntens doubles (MPa)
-      real(c_double), intent(inout) :: tangent(*)          !! ntens*ntens doubles, row-major (MPa/mm)
-      real(c_double), intent(inout) :: state_new(*)        !! state_slots(params) doubles
-      real(c_double), intent(inout) :: stored_energy       !! stored energy per unit area (N/mm)
+      type(c_ptr), value, intent(in) :: traction           !! out: ntens doubles (MPa)
+      type(c_ptr), value, intent(in) :: tangent            !! out: ntens*ntens doubles, row-major (MPa/mm)
+      type(c_ptr), value, intent(in) :: state_new          !! out: state_slots(params) doubles
+      type(c_ptr), value, intent(in) :: stored_energy      !! out: one double, stored energy per unit area (N/mm)
       type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
       integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
       integer(c_int) :: status
@@ -115,22 +120,19 @@ contains
 
    !> The update behind both C entry points; `dt` absent: interphase_update (no time increment,
    !> which a material with viscous regularisation refuses).
-   function capi_update(props, nprops, ntens, state_old, separation, traction, tangent, &
-         state_new, stored_energy, detail, detail_len, dt) result(status)
+   function capi_update(props_c, nprops, ntens, state_old_c, separation_c, traction_c, tangent_c, &
+         state_new_c, stored_energy_c, detail, detail_len, dt) result(status)
       integer(c_int), intent(in) :: nprops
-      real(c_double), intent(in) :: props(*)
+      type(c_ptr), intent(in) :: props_c, state_old_c, separation_c, traction_c, tangent_c, state_new_c, &
+         stored_energy_c                                   !! the C arrays (NULL refused)
       integer(c_int), intent(in) :: ntens
-      real(c_double), intent(in) :: state_old(*)
-      real(c_double), intent(in) :: separation(*)
-      real(c_double), intent(inout) :: traction(*)
-      real(c_double), intent(inout) :: tangent(*)
-      real(c_double), intent(inout) :: state_new(*)
-      real(c_double), intent(inout) :: stored_energy
       type(c_ptr), intent(in) :: detail
       integer(c_size_t), intent(in) :: detail_len
       real(c_double), intent(in), optional :: dt
       integer(c_int) :: status
 
+      real(c_double), pointer :: props(:), state_old(:), separation(:), traction(:), tangent(:), state_new(:), &
+         stored_energy
       type(law_params_type) :: params
       type(interface_state_type) :: old, new
       real(dp) :: s(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS)
@@ -139,6 +141,15 @@ contains
       character(len=MESSAGE_LEN) :: message
 
       message = ''
+      ! every array is dereferenced: a NULL one is named, not followed
+      call refuse_null([props_c, state_old_c, separation_c, traction_c, tangent_c, state_new_c, stored_energy_c], &
+         [character(len=13) :: 'props', 'state_old', 'separation', 'traction', 'tangent', 'state_new', &
+         'stored_energy'], code, message)
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      call c_f_pointer(props_c, props, [max(nprops, 0_c_int)])
       call decode_material(props, nprops, ntens, 'the C API', params, code, message)
       if (code /= STATUS_OK) then
          call finish()
@@ -147,6 +158,8 @@ contains
       n = ntens
       viscous = params%viscosity > 0.0_dp
       nsv = state_slots(params)
+      call c_f_pointer(state_old_c, state_old, [nsv])
+      call c_f_pointer(separation_c, separation, [n])
       call state_unpack(state_old(1:nsv), n, old, code, message, viscous)
       if (code /= STATUS_OK) then
          call finish()
@@ -180,6 +193,10 @@ contains
          return
       end if
 
+      call c_f_pointer(traction_c, traction, [n])
+      call c_f_pointer(tangent_c, tangent, [n*n])
+      call c_f_pointer(state_new_c, state_new, [nsv])
+      call c_f_pointer(stored_energy_c, stored_energy)
       traction(1:n) = t(1:n)
       do i = 1, n
          do j = 1, n
@@ -219,17 +236,17 @@ contains
    function interphase_run_c(props, nprops, ntens, nrows, separation, time, traction, tangent, state, &
          stored_energy, dissipated_energy, rows_done, detail, detail_len) result(status) &
          bind(C, name="interphase_run")
-      real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
+      type(c_ptr), value, intent(in) :: props              !! nprops doubles: PROPS, docs/abaqus.md
       integer(c_int), value, intent(in) :: nprops          !! number of PROPS
       integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
       integer(c_size_t), value, intent(in) :: nrows        !! rows of the path, the start included (>= 1)
-      real(c_double), intent(in) :: separation(*)          !! nrows*ntens (mm)
+      type(c_ptr), value, intent(in) :: separation         !! nrows*ntens doubles (mm)
       type(c_ptr), value, intent(in) :: time               !! nrows doubles (s) or NULL
-      real(c_double), intent(inout) :: traction(*)         !! nrows*ntens (MPa); row 0 given
+      type(c_ptr), value, intent(in) :: traction           !! nrows*ntens doubles (MPa); row 0 given
       type(c_ptr), value, intent(in) :: tangent            !! nrows*ntens*ntens doubles or NULL
-      real(c_double), intent(inout) :: state(*)            !! nrows*state_slots; row 0 given
-      real(c_double), intent(inout) :: stored_energy(*)    !! nrows (N/mm); [0] given
-      real(c_double), intent(inout) :: dissipated_energy(*)   !! nrows (N/mm); [0] given
+      type(c_ptr), value, intent(in) :: state              !! nrows*state_slots doubles; row 0 given
+      type(c_ptr), value, intent(in) :: stored_energy      !! nrows doubles (N/mm); [0] given
+      type(c_ptr), value, intent(in) :: dissipated_energy  !! nrows doubles (N/mm); [0] given
       type(c_ptr), value, intent(in) :: rows_done          !! size_t out, or NULL
       type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
       integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
@@ -237,11 +254,12 @@ contains
 
       type(law_params_type) :: params
       type(interface_state_type) :: old, new
-      real(c_double), pointer :: times(:), tangents(:)
+      real(c_double), pointer :: props_f(:), separations(:), tractions(:), states(:), stored(:), dissipated(:), &
+         times(:), tangents(:)
       integer(c_size_t), pointer :: done
       real(dp) :: s(3), ds(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS), dt
-      integer(c_size_t) :: row, n_done
-      integer :: code, i, j, n, nsv, at, ios
+      integer(c_size_t) :: row, n_done, at
+      integer :: code, i, j, n, nsv, ios
       logical :: viscous, timed, dt_ok
       character(len=MESSAGE_LEN) :: message
       character(len=32) :: row_text
@@ -251,33 +269,54 @@ contains
       n = ntens
       timed = c_associated(time)
       nullify (times, tangents)
-      call decode_material(props, nprops, ntens, 'interphase_run', params, code, message)
+      ! every array that is not documented as 'or NULL' is dereferenced: a NULL one is named
+      call refuse_null([props, separation, traction, state, stored_energy, dissipated_energy], &
+         [character(len=17) :: 'props', 'separation', 'traction', 'state', 'stored_energy', 'dissipated_energy'], &
+         code, message)
       if (code /= STATUS_OK) then
          call finish()
          return
       end if
-      if (nrows < 1_c_size_t) then
+      call c_f_pointer(props, props_f, [max(nprops, 0_c_int)])
+      call decode_material(props_f, nprops, ntens, 'interphase_run', params, code, message)
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      if (nrows == 0_c_size_t) then
          code = STATUS_BAD_HISTORY
          message = 'nrows = 0: the path needs at least its starting row (row 0, the state to start from)'
          call finish()
          return
       end if
+      if (nrows < 0_c_size_t .or. nrows > MAX_ROWS) then
+         code = STATUS_BAD_HISTORY
+         message = 'nrows = '//size_text(nrows)//' is too large: no array holds so many rows (at most '// &
+            size_text(MAX_ROWS)//')'
+         call finish()
+         return
+      end if
       viscous = params%viscosity > 0.0_dp
       nsv = state_slots(params)
+      call c_f_pointer(separation, separations, [nrows*n])
+      call c_f_pointer(traction, tractions, [nrows*n])
+      call c_f_pointer(state, states, [nrows*nsv])
+      call c_f_pointer(stored_energy, stored, [nrows])
+      call c_f_pointer(dissipated_energy, dissipated, [nrows])
       ! the starting row, as the UMAT checks what a host passes in
-      call state_unpack(state(1:nsv), n, old, code, message, viscous)
+      call state_unpack(states(1:nsv), n, old, code, message, viscous)
       if (code /= STATUS_OK) then
          message = 'row 0: '//trim(message)
          call finish()
          return
       end if
-      if (.not. (all(is_within(separation(1:n), SEPARATION_MAX)) .and. all(is_within(traction(1:n), HOST_VALUE_MAX)) &
-            .and. is_within(stored_energy(1), HOST_VALUE_MAX) .and. is_within(dissipated_energy(1), HOST_VALUE_MAX))) then
+      if (.not. (all(is_within(separations(1:n), SEPARATION_MAX)) .and. all(is_within(tractions(1:n), HOST_VALUE_MAX)) &
+            .and. is_within(stored(1), HOST_VALUE_MAX) .and. is_within(dissipated(1), HOST_VALUE_MAX))) then
          code = STATUS_BAD_HOST_INPUT
          ! (fields of width decimals + 9: a blank before each, three-digit exponents too)
-         message = 'row 0: separation (mm)'//trim(es_fields(separation(1:n), 12, 3))//', traction (MPa)'// &
-            trim(es_fields(traction(1:n), 12, 3))//', stored and dissipated energy (N/mm)'// &
-            trim(es_fields([stored_energy(1), dissipated_energy(1)], 12, 3))//': the starting values must be '// &
+         message = 'row 0: separation (mm)'//trim(es_fields(separations(1:n), 12, 3))//', traction (MPa)'// &
+            trim(es_fields(tractions(1:n), 12, 3))//', stored and dissipated energy (N/mm)'// &
+            trim(es_fields([stored(1), dissipated(1)], 12, 3))//': the starting values must be '// &
             'finite, the separation within '//trim(adjustl(es_field(SEPARATION_MAX, 8, 1)))//' mm, the rest '// &
             'within '//trim(adjustl(es_field(HOST_VALUE_MAX, 9, 1)))
          call finish()
@@ -287,10 +326,10 @@ contains
       if (c_associated(tangent)) call c_f_pointer(tangent, tangents, [nrows*int(n*n, c_size_t)])
       n_done = 1
       do row = 2, nrows
-         at = int((row - 1)*n)                 ! offset of this row in the ntens-wide arrays
+         at = (row - 1)*n                 ! offset of this row in the ntens-wide arrays
          ! the UMAT's increment: DSTRAN = s[i] - s[i-1], the separation STRAN + DSTRAN
-         ds(1:n) = separation(at + 1:at + n) - separation(at - n + 1:at)
-         s(1:n) = separation(at - n + 1:at) + ds(1:n)
+         ds(1:n) = separations(at + 1:at + n) - separations(at - n + 1:at)
+         s(1:n) = separations(at - n + 1:at) + ds(1:n)
          if (timed) then
             ! the times finite, their step finite (a step beyond the largest double is not
             ! formed) and not negative, whatever the material (only viscous regularisation reads
@@ -321,26 +360,26 @@ contains
                   'viscosity option): pass the times (time is NULL)'
             else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
                write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
-                  rcurve_overrun(50, max(old%d, params%d0), separation(at + 1:at + n))
+                  rcurve_overrun(50, max(old%d, params%d0), separations(at + 1:at + n))
             else
                write (message, '(a,i0,a,a)', iostat=ios) 'row ', row - 1, ': ', &
-                  separation_failure(code, separation(at + 1:at + n))
+                  separation_failure(code, separations(at + 1:at + n))
             end if
             call finish()
             return
          end if
-         traction(at + 1:at + n) = t(1:n)
+         tractions(at + 1:at + n) = t(1:n)
          if (associated(tangents)) then
             do i = 1, n
                do j = 1, n
-                  tangents(int(at*n) + (i - 1)*n + j) = k(i, j)
+                  tangents(at*n + (i - 1)*n + j) = k(i, j)
                end do
             end do
          end if
          ! the state through its STATEV slots, as the UMAT carries it from one increment to the next
-         sv(1:nsv) = state((row - 2)*nsv + 1:(row - 1)*nsv)
+         sv(1:nsv) = states((row - 2)*nsv + 1:(row - 1)*nsv)
          call state_pack(new, sv(1:nsv), viscous)
-         state((row - 1)*nsv + 1:row*nsv) = sv(1:nsv)
+         states((row - 1)*nsv + 1:row*nsv) = sv(1:nsv)
          call state_unpack(sv(1:nsv), n, old, code, message, viscous)
          if (code /= STATUS_OK) then
             write (row_text, '(a,i0,a)') 'row ', row - 1, ': '
@@ -348,9 +387,9 @@ contains
             call finish()
             return
          end if
-         stored_energy(row) = psi
-         dissipated_energy(row) = dissipated_energy(row - 1) + 0.5_dp*sum((traction(at - n + 1:at) + t(1:n))*ds(1:n)) &
-            - (psi - stored_energy(row - 1))
+         stored(row) = psi
+         dissipated(row) = dissipated(row - 1) + 0.5_dp*sum((tractions(at - n + 1:at) + t(1:n))*ds(1:n)) &
+            - (psi - stored(row - 1))
          n_done = row
       end do
       code = STATUS_OK
@@ -387,7 +426,7 @@ contains
          traction_tolerance, output_every, capacity, out_time, out_separation, out_traction, out_state, &
          out_stored_energy, out_dissipated_energy, out_tangent, rows_done, detail, detail_len) result(status) &
          bind(C, name="interphase_run_history")
-      real(c_double), intent(in) :: props(*)               !! PROPS, docs/abaqus.md
+      type(c_ptr), value, intent(in) :: props              !! nprops doubles: PROPS, docs/abaqus.md
       integer(c_int), value, intent(in) :: nprops          !! number of PROPS
       integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
       integer(c_size_t), value, intent(in) :: nrows        !! rows of the history (>= 1)
@@ -408,7 +447,7 @@ contains
       type(capi_law_type) :: law
       type(path_point_type) :: point
       type(path_failure_type) :: failure
-      real(c_double), pointer :: times(:), values(:, :)
+      real(c_double), pointer :: props_f(:), times(:), values(:, :)
       integer(c_int), pointer :: controls(:, :)
       logical, allocatable :: traction_control(:, :)
       integer(c_size_t), pointer :: done
@@ -418,16 +457,27 @@ contains
 
       message = ''
       n = ntens
-      call decode_material(props, nprops, ntens, 'interphase_run_history', law%params, code, message)
+      ! the arrays that are not documented as 'or NULL': a NULL one is named, not followed
+      call refuse_null([props, time, value], [character(len=5) :: 'props', 'time', 'value'], code, message)
+      if (code /= STATUS_OK) then
+         call finish()
+         return
+      end if
+      call c_f_pointer(props, props_f, [max(nprops, 0_c_int)])
+      call decode_material(props_f, nprops, ntens, 'interphase_run_history', law%params, code, message)
       if (code /= STATUS_OK) then
          call finish()
          return
       end if
       code = STATUS_BAD_HISTORY
-      if (nrows < 1_c_size_t) then
+      if (nrows == 0_c_size_t) then
          message = 'nrows = 0: the history needs at least one row'
-      else if (.not. (c_associated(time) .and. c_associated(value))) then
-         message = 'time and value must not be NULL'
+      else if (nrows < 0_c_size_t .or. nrows > MAX_ROWS) then
+         message = 'nrows = '//size_text(nrows)//' is too large: no array holds so many rows (at most '// &
+            size_text(MAX_ROWS)//')'
+      else if (capacity < 0_c_size_t .or. capacity > MAX_ROWS) then
+         message = 'capacity = '//size_text(capacity)//' rows is too large: no array holds so many rows (at most '// &
+            size_text(MAX_ROWS)//')'
       else if (increments < 1) then
          write (message, '(a,i0,a)') 'increments = ', increments, ' must be at least 1'
       else if (output_every < 1) then
@@ -482,6 +532,34 @@ contains
          call finish()
          return
       end if
+      ! as the driver's history reader: a separation beyond the range the update admits would fail
+      ! only in the middle of the replay, after halvings, at an interpolated value; an imposed
+      ! traction beyond the UMAT's bound on STRESS would overflow the steps between the rows
+      do row = 1, nrows
+         do i = 1, n
+            if (traction_control(i, row)) then
+               if (abs(values(i, row)) > HOST_VALUE_MAX) then
+                  code = STATUS_BAD_HISTORY
+                  write (message, '(a,i0,a,i0,a,i0,a)', iostat=ios) 'value[', (row - 1)*n + i - 1, '] (row ', &
+                     row - 1, ', component ', i - 1, ': '
+                  message = trim(message)//' '//component_name(i, .true., n)//') = '//real_text(values(i, row))// &
+                     ' MPa is beyond the range the replay admits, |Sigma| <= '// &
+                     trim(adjustl(es_field(HOST_VALUE_MAX, 9, 1)))//' MPa'
+               end if
+            else if (abs(values(i, row)) > SEPARATION_MAX) then
+               code = STATUS_SEPARATION_OUT_OF_RANGE
+               write (message, '(a,i0,a,i0,a,i0,a)', iostat=ios) 'value[', (row - 1)*n + i - 1, '] (row ', &
+                  row - 1, ', component ', i - 1, ': '
+               message = trim(message)//' '//component_name(i, .false., n)//') = '//real_text(values(i, row))// &
+                  ' mm is beyond the range the update admits, |s| <= '//trim(adjustl(es_field(SEPARATION_MAX, 8, 1)))// &
+                  ' mm'
+            end if
+            if (code /= STATUS_OK) then
+               call finish()
+               return
+            end if
+         end do
+      end do
 
       law%viscous = law%params%viscosity > 0.0_dp
       law%nsv = state_slots(law%params)
@@ -730,7 +808,9 @@ contains
       end select
    end function separation_failure
 
-   !> Copy `text` into the C buffer `buf` of `len` bytes, truncated, NUL-terminated.
+   !> Copy `text` into the C buffer `buf` of `len` bytes, truncated, NUL-terminated (nothing for a
+   !> NULL `buf` or `len` 0). `len` is a C size_t: one of 2**63 or more (negative here) holds any
+   !> text.
    subroutine copy_to_c(text, buf, len)
       character(len=*), intent(in) :: text
       type(c_ptr), intent(in) :: buf
@@ -738,14 +818,54 @@ contains
       character(kind=c_char), pointer :: chars(:)
       integer :: i, n
       if (.not. c_associated(buf)) return
-      if (len < 1_c_size_t) return
-      n = int(min(int(len_trim(text), c_size_t), len - 1_c_size_t))
+      if (len == 0_c_size_t) return
+      n = len_trim(text)
+      if (len > 0_c_size_t) n = int(min(int(n, c_size_t), len - 1_c_size_t))
       call c_f_pointer(buf, chars, [n + 1])
       do i = 1, n
          chars(i) = text(i:i)
       end do
       chars(n + 1) = c_null_char
    end subroutine copy_to_c
+
+   !> The decimal text of a C size_t held in `n` (integer(c_size_t) is signed: a size_t of 2**63
+   !> or more is negative here, and is written as the unsigned value C passed).
+   pure function size_text(n) result(text)
+      integer(c_size_t), intent(in) :: n
+      character(len=:), allocatable :: text
+      character(len=24) :: buffer
+      integer(c_size_t) :: half, quotient
+      integer :: digit
+      if (n >= 0_c_size_t) then
+         write (buffer, '(i0)') n
+      else
+         ! u = n + 2**64 = 2 half + bit, half = u/2 < 2**63; u/10 = half/5, the last digit
+         ! 2 (half mod 5) + bit (no signed overflow on the way)
+         half = ishft(n, -1)
+         quotient = half/5_c_size_t
+         digit = int(2_c_size_t*(half - 5_c_size_t*quotient) + iand(n, 1_c_size_t))
+         write (buffer, '(i0,i1)') quotient, digit
+      end if
+      text = trim(buffer)
+   end function size_text
+
+   !> STATUS_NULL_ARGUMENT and a message naming the first NULL of `pointers` (names: theirs, in
+   !> the C prototype's words), or STATUS_OK.
+   subroutine refuse_null(pointers, names, code, message)
+      type(c_ptr), intent(in) :: pointers(:)
+      character(len=*), intent(in) :: names(:)
+      integer, intent(out) :: code
+      character(len=MESSAGE_LEN), intent(inout) :: message
+      integer :: i
+      code = STATUS_OK
+      do i = 1, size(pointers)
+         if (.not. c_associated(pointers(i))) then
+            code = STATUS_NULL_ARGUMENT
+            message = trim(names(i))//' is NULL: it must point to the array the header describes'
+            return
+         end if
+      end do
+   end subroutine refuse_null
 
    !> What every C entry point checks of its material before an update: nprops and ntens, PROPS
    !> (the library's decoder; the UMAT's own options refused, naming `entry`), and the data a

@@ -33,7 +33,11 @@
 !> Newton may pass through such states; it may not stop there. An open crack with a flat normal
 !> stiffness under an imposed compression (s_N > 0, Sigma_N < 0 imposed) is taken to its closure
 !> point s_N = 0 in one iteration, from where Newton goes on in contact (`newton_step`). A step that still fails after the
-!> halvings on such a state is STATUS_BEYOND_PEAK too, with failure%flat. An update failure that the update marks as
+!> halvings on such a state is STATUS_BEYOND_PEAK too, with failure%flat. A compression imposed on
+!> the normal component has no peak (contact carries any): a step whose Newton iterate still
+!> leaves the separation range the updates admit (|s_i| <= SEPARATION_MAX, 1e20 mm) after the
+!> halvings is STATUS_SEPARATION_OUT_OF_RANGE, the imposed traction needing a separation beyond it
+!> (failure%component, failure%iterate). An update failure that the update marks as
 !> fatal (a setup error found during the run: no smaller step can cure it) ends the replay at
 !> once.
 !>
@@ -42,13 +46,15 @@
 module interphase_mixed_control
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use interphase_kinds, only: dp
-   use interphase_real_text, only: real_text
+   use interphase_real_text, only: real_text, es_field
    use interphase_layout, only: NSTATV_VISCOUS
-   use interphase_status, only: STATUS_OK, STATUS_BEYOND_PEAK, STATUS_MIXED_NOT_CONVERGED, MESSAGE_LEN
+   use interphase_status, only: STATUS_OK, STATUS_BEYOND_PEAK, STATUS_MIXED_NOT_CONVERGED, MESSAGE_LEN, &
+      STATUS_SEPARATION_OUT_OF_RANGE
+   use interphase_params, only: SEPARATION_MAX
    implicit none
    private
    public :: path_point_type, point_law_type, path_failure_type, replay_history_path, virgin_point, solve_small, &
-      describe_failure, component_name, beyond_peak_reason
+      describe_failure, component_name, beyond_peak_reason, beyond_range_reason, range_traction_component
 
    !> Largest number of halvings of one sub-increment before the replay gives up.
    integer, parameter, public :: MAX_HALVINGS = 10
@@ -101,6 +107,9 @@ module interphase_mixed_control
       !> the last attempt met the imposed traction(s) only on a flat tangent (FLAT_STIFFNESS):
       !> with STATUS_BEYOND_PEAK, the point no longer carries load in failure%component
       logical :: flat = .false.
+      !> STATUS_SEPARATION_OUT_OF_RANGE (in failure%component): the separation of the last
+      !> attempt's Newton iterate there, beyond SEPARATION_MAX (mm)
+      real(dp) :: iterate = 0.0_dp
    end type path_failure_type
 
    !> A material point's update and what to do with each converged step: extended by each caller.
@@ -266,7 +275,8 @@ contains
          real(dp) :: done, step, attempt, theta, time_new, residual
          ! fixed sizes, the first ntens used: no allocation per step
          real(dp) :: target(3), tangent(3, 3)
-         integer :: halvings, iterations, status, flat_component
+         integer :: halvings, iterations, status, flat_component, range_component
+         real(dp) :: range_separation
          logical :: converged, fatal
 
          success = .false.
@@ -290,17 +300,18 @@ contains
                time_new = time_a + theta*(time_b - time_a)
             end if
             call solve_step(law, point, target(:ntens), controls, time_new, tolerance, stiffness_scale, trial, &
-               tangent(:ntens, :ntens), converged, status, fatal, residual, iterations, flat_component)
+               tangent(:ntens, :ntens), converged, status, fatal, residual, iterations, flat_component, &
+               range_component, range_separation)
             if (.not. converged) then
                if (status /= STATUS_OK .and. fatal) then
                   call record_failure(failure, FAILURE_FATAL, status, time_new, target(:ntens), controls, residual, &
-                     iterations, point, 0)
+                     iterations, point, 0, 0, 0.0_dp)
                   return
                end if
                halvings = halvings + 1
                if (halvings > MAX_HALVINGS) then
                   call record_failure(failure, FAILURE_HALVINGS, status, time_new, target(:ntens), controls, residual, &
-                     iterations, point, flat_component)
+                     iterations, point, flat_component, range_component, range_separation)
                   return
                end if
                step = 0.5_dp*step
@@ -332,13 +343,17 @@ contains
    !> Record the failure of the step to `target` at `time_new` from `point`: its status is the
    !> update's, or, for a mixed-control step still failing after the halvings, STATUS_BEYOND_PEAK
    !> (an imposed traction raised beyond the largest one reached, or met only on a flat tangent:
-   !> `flat_component` > 0, has no solution) or STATUS_MIXED_NOT_CONVERGED (Newton failed, no
-   !> update did).
+   !> `flat_component` > 0, has no solution; an imposed compression on the normal component never
+   !> is: contact carries any), STATUS_SEPARATION_OUT_OF_RANGE (the last attempt's Newton iterate
+   !> left |s_i| <= SEPARATION_MAX in `range_component`: the imposed traction needs a separation
+   !> beyond the range) or STATUS_MIXED_NOT_CONVERGED (Newton failed, no update did).
    pure subroutine record_failure(failure, kind, update_status, time_new, target, controls, residual, &
-         iterations, point, flat_component)
+         iterations, point, flat_component, range_component, range_separation)
       type(path_failure_type), intent(inout) :: failure
       integer, intent(in) :: kind, update_status, iterations
       integer, intent(in) :: flat_component     !! the flat component of the last attempt, or 0
+      integer, intent(in) :: range_component    !! the component out of range in the last attempt, or 0
+      real(dp), intent(in) :: range_separation  !! its separation there (mm)
       real(dp), intent(in) :: time_new, target(:), residual
       logical, intent(in) :: controls(:)
       type(path_point_type), intent(in) :: point
@@ -362,12 +377,20 @@ contains
       end if
       do c = 1, ntens
          if (.not. controls(c)) cycle
+         ! (a compression, Sigma_N < 0, has no peak: the closed crack's contact carries any)
+         if (c == 1 .and. target(c) < 0.0_dp) cycle
          if (abs(target(c)) > failure%peak(c) .and. target(c)*point%traction(c) >= 0.0_dp) then
             failure%component = c
             failure%status = STATUS_BEYOND_PEAK
             return
          end if
       end do
+      if (range_component > 0) then
+         failure%component = range_component
+         failure%iterate = range_separation
+         failure%status = STATUS_SEPARATION_OUT_OF_RANGE
+         return
+      end if
       if (update_status == STATUS_OK) failure%status = STATUS_MIXED_NOT_CONVERGED
    end subroutine record_failure
 
@@ -377,9 +400,10 @@ contains
    !> exceed FLAT_STIFFNESS times the larger of `stiffness_scale` and that state's largest
    !> |tangent entry| (else no convergence, and `flat_component` names the flat one). `converged`
    !> false: a smaller step is needed (`status` the failed update's, or STATUS_OK when Newton
-   !> failed).
+   !> failed; `range_component` > 0 where the failed update was at an iterate beyond
+   !> SEPARATION_MAX in that component).
    subroutine solve_step(law, point, target, controls, time_new, tolerance, stiffness_scale, trial, tangent, &
-         converged, status, fatal, residual, iterations, flat_component)
+         converged, status, fatal, residual, iterations, flat_component, range_component, range_separation)
       class(point_law_type), intent(inout) :: law
       type(path_point_type), intent(in) :: point   !! the last converged state
       real(dp), intent(in) :: target(:)           !! separation (mm) or traction (MPa) per component
@@ -400,6 +424,10 @@ contains
       !> diagonal entry; any, when the block is singular through its coupling) whose target is
       !> not zero; else 0
       integer, intent(out) :: flat_component
+      !> where the last update failed at an iterate beyond SEPARATION_MAX: the first such
+      !> component, else 0; and the iterate's separation there (mm)
+      integer, intent(out) :: range_component
+      real(dp), intent(out) :: range_separation
       ! fixed sizes, the first ntens (nfree) used: no allocation per iteration
       real(dp) :: s(3), r(3), delta(3), block(3, 3), flat_bound
       integer :: free(3)
@@ -414,6 +442,8 @@ contains
       residual = 0.0_dp
       iterations = 0
       flat_component = 0
+      range_component = 0
+      range_separation = 0.0_dp
       s(:ntens) = point%separation(:ntens)
       where (.not. controls) s(:ntens) = target
       nfree = 0
@@ -426,7 +456,16 @@ contains
          trial = point
          call law%step(trial, s(:ntens), time_new, tangent, status, fatal)
          iterations = iterations + 1
-         if (status /= STATUS_OK) return
+         if (status /= STATUS_OK) then
+            do i = 1, ntens
+               if (abs(s(i)) > SEPARATION_MAX) then
+                  range_component = i
+                  range_separation = s(i)
+                  exit
+               end if
+            end do
+            return
+         end if
          if (nfree == 0) exit
          r(:nfree) = trial%traction(free(:nfree)) - target(free(:nfree))
          residual = maxval(abs(r(:nfree)))
@@ -595,6 +634,33 @@ contains
          'point carries no more load in '//name//', or its separation there is undetermined ('
    end function beyond_peak_reason
 
+   !> Why a STATUS_SEPARATION_OUT_OF_RANGE step has no solution, as the messages word it after
+   !> 'the imposed traction X = ... MPa ' (the component named in it may be another one where
+   !> the coupling moved it): the separation needed, the range and Newton's iterate.
+   pure function beyond_range_reason(failure, ntens) result(text)
+      type(path_failure_type), intent(in) :: failure
+      integer, intent(in) :: ntens                !! 2 or 3
+      character(len=:), allocatable :: text
+      character(len=:), allocatable :: name
+      name = component_name(failure%component, .false., ntens)
+      text = 'needs a separation beyond the admissible range |'//name//'| <= '//trim(adjustl(es_field(SEPARATION_MAX, 8, 1)))// &
+         ' mm (SEPARATION_MAX; Newton''s iterate '//name//' = '//real_text(failure%iterate, 6)//' mm)'
+   end function beyond_range_reason
+
+   !> The imposed traction that a STATUS_SEPARATION_OUT_OF_RANGE message names: the component out
+   !> of range where it is traction-controlled, else the first traction-controlled one.
+   pure function range_traction_component(failure, ntens) result(c)
+      type(path_failure_type), intent(in) :: failure
+      integer, intent(in) :: ntens
+      integer :: c
+      c = failure%component
+      if (failure%controls(c)) return
+      do c = 1, ntens
+         if (failure%controls(c)) return
+      end do
+      c = failure%component
+   end function range_traction_component
+
    !> The library's message of a failed replay (at most MESSAGE_LEN characters): the step's
    !> times, then why; `update_detail` is the failed update's own message ('' for none).
    pure function describe_failure(failure, point, tolerance, update_detail) result(text)
@@ -620,6 +686,11 @@ contains
             long = times//' the imposed traction '//name//' = '//real_text(failure%target(c), 6)//' MPa is '// &
                beyond_peak_reason(failure, point%ntens)//'the largest |'//name//'| reached is '// &
                real_text(failure%peak(c), 6)//' MPa)'
+         else if (failure%status == STATUS_SEPARATION_OUT_OF_RANGE .and. failure%component > 0) then
+            c = range_traction_component(failure, point%ntens)
+            name = component_name(c, .true., point%ntens)
+            long = times//' the imposed traction '//name//' = '//real_text(failure%target(c), 6)//' MPa '// &
+               beyond_range_reason(failure, point%ntens)
          else if (failure%status == STATUS_MIXED_NOT_CONVERGED) then
             write (long, '(a,1x,a,i0,a,es10.3e3,a,i0,a,es9.2e3,a,i0,a)', iostat=ios) times, &
                'no converged step even after ', MAX_HALVINGS, ' halvings of the sub-increment: Newton on the '// &

@@ -13,7 +13,7 @@ module interphase_rcurve
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
    use interphase_status, only: message_path, separation_text, STATUS_OK, STATUS_RCURVE_UNREADABLE, STATUS_RCURVE_MALFORMED, &
-      STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
+      STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_BAD_TOUGHNESS, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_SPLINE_OUT_OF_RANGE, status_message
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
       parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END, path_problem
@@ -123,7 +123,7 @@ contains
             ! the window of the PROPS toughness G_c (the fracture law divides by G_c**2)
             do field = 2, 3
                if (v(field) < PROPS_VALUE_MIN .or. v(field) > PROPS_VALUE_MAX) then
-                  call fail(STATUS_RCURVE_BAD_RANGE, trim(merge('G_cI ', 'G_cII', field == 2))//' = '// &
+                  call fail(STATUS_RCURVE_BAD_TOUGHNESS, trim(merge('G_cI ', 'G_cII', field == 2))//' = '// &
                      clip_text(line(starts(field):ends(field)))//' lies outside [1e-20, 1e20] N/mm (as the '// &
                      'PROPS toughness): '//clip_text(line(first:)))
                   return

@@ -45,6 +45,8 @@ module interphase_status
    integer, parameter, public :: STATUS_MIXED_NOT_CONVERGED = 29
    integer, parameter, public :: STATUS_BAD_HISTORY = 30
    integer, parameter, public :: STATUS_OUTPUT_FULL = 31
+   ! ---- arguments of the C entry points (interphase_capi) ----
+   integer, parameter, public :: STATUS_NULL_ARGUMENT = 32
    ! ---- interpolation tables (interphase_spline): construction, then evaluation ----
    integer, parameter, public :: STATUS_SPLINE_TOO_FEW_POINTS = 40
    integer, parameter, public :: STATUS_SPLINE_BAD_SHAPE = 41
@@ -75,6 +77,8 @@ module interphase_status
    integer, parameter, public :: STATUS_RCURVE_NEGATIVE = 62
    integer, parameter, public :: STATUS_RCURVE_BAD_RANGE = 63
    integer, parameter, public :: STATUS_RCURVE_OUT_OF_RANGE = 64
+   !> (a toughness > 0 outside the window of the PROPS toughness, [1e-20, 1e20] N/mm)
+   integer, parameter, public :: STATUS_RCURVE_BAD_TOUGHNESS = 65
 
    !> Severity of a host message: information, warning (the increment is cut back), fatal.
    integer, parameter, public :: SEVERITY_INFO = 1
@@ -129,6 +133,7 @@ contains
       case (STATUS_RCURVE_NEGATIVE);       message = 'R-curve toughness not positive'
       case (STATUS_RCURVE_BAD_RANGE);      message = 'R-curve D values not strictly increasing within [0, 1], or too few'
       case (STATUS_RCURVE_OUT_OF_RANGE);   message = 'tabulated R-curve does not cover the damage reached (or D0)'
+      case (STATUS_RCURVE_BAD_TOUGHNESS);  message = 'R-curve toughness outside [1e-20, 1e20] N/mm'
       case (STATUS_NONFINITE_SEPARATION);  message = 'separation is not finite (NaN or Inf)'
       case (STATUS_SEPARATION_OUT_OF_RANGE); message = 'separation outside the admissible range |s_i| <= 1e20 mm'
       case (STATUS_BAD_HOST_INPUT);        message = 'incoming stress or energy from the host not finite, '// &
@@ -140,6 +145,7 @@ contains
          'converge, even in halved steps'
       case (STATUS_BAD_HISTORY);           message = 'loading history or replay setting not admissible'
       case (STATUS_OUTPUT_FULL);           message = 'output arrays too short for the rows of the replay'
+      case (STATUS_NULL_ARGUMENT);         message = 'a required pointer argument is NULL'
       case (STATUS_BAD_COEFFICIENTS);      message = 'coefficient set not admissible at this damage'
       case (STATUS_SPLINE_TOO_FEW_POINTS); message = 'too few table points for the interpolation method'
       case (STATUS_SPLINE_BAD_SHAPE);      message = 'table values do not match the knots (rows) or have no column'

@@ -34,6 +34,7 @@
 #define _GNU_SOURCE
 #include <fenv.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -286,7 +287,8 @@ static void test_failures(void) {
       INTERPHASE_STATUS_TABLE_MISSING_KEY, INTERPHASE_STATUS_TABLE_BAD_ROW, INTERPHASE_STATUS_TABLE_NONFINITE,
       INTERPHASE_STATUS_TABLE_NOT_INCREASING, INTERPHASE_STATUS_TABLE_BAD_RANGE, INTERPHASE_STATUS_TABLE_IDENTITY,
       INTERPHASE_STATUS_TABLE_NOT_LOADED, INTERPHASE_STATUS_RCURVE_UNREADABLE, INTERPHASE_STATUS_RCURVE_MALFORMED,
-      INTERPHASE_STATUS_RCURVE_NEGATIVE, INTERPHASE_STATUS_RCURVE_BAD_RANGE, INTERPHASE_STATUS_RCURVE_OUT_OF_RANGE};
+      INTERPHASE_STATUS_RCURVE_NEGATIVE, INTERPHASE_STATUS_RCURVE_BAD_RANGE, INTERPHASE_STATUS_RCURVE_OUT_OF_RANGE,
+      INTERPHASE_STATUS_NULL_ARGUMENT, INTERPHASE_STATUS_RCURVE_BAD_TOUGHNESS};
   for (size_t i = 0; i < sizeof codes / sizeof codes[0]; ++i) {
     interphase_status_message(codes[i], msg, sizeof msg);
     CHECK(strcmp(msg, "unknown status code") != 0, "status %d has no message", codes[i]);
@@ -462,6 +464,19 @@ static void test_load_rcurve(void) {
   expect_load_failure(interphase_load_rcurve, "negative_rcurve.txt", INTERPHASE_STATUS_RCURVE_NEGATIVE,
                       "negative_rcurve.txt:2:");
   expect_load_failure(interphase_load_rcurve, NULL, INTERPHASE_STATUS_RCURVE_UNREADABLE, "path is NULL");
+  /* a toughness outside [1e-20, 1e20] N/mm: a status of its own, whose text says so (it was 63, "D
+     values not strictly increasing") */
+  write_file("huge_gc_rcurve.txt", "0 1e21 0.0085\n1 0.005 0.0085\n");
+  expect_load_failure(interphase_load_rcurve, "huge_gc_rcurve.txt", INTERPHASE_STATUS_RCURVE_BAD_TOUGHNESS,
+                      "huge_gc_rcurve.txt:1: G_cI = 1e21 lies outside [1e-20, 1e20] N/mm");
+  write_file("tiny_gc_rcurve.txt", "0 0.005 1e-21\n1 0.005 0.0085\n");
+  expect_load_failure(interphase_load_rcurve, "tiny_gc_rcurve.txt", INTERPHASE_STATUS_RCURVE_BAD_TOUGHNESS,
+                      "tiny_gc_rcurve.txt:1: G_cII = 1e-21 lies outside [1e-20, 1e20] N/mm");
+  {
+    char reason[128];
+    interphase_status_message(INTERPHASE_STATUS_RCURVE_BAD_TOUGHNESS, reason, sizeof reason);
+    CHECK(strcmp(reason, "R-curve toughness outside [1e-20, 1e20] N/mm") == 0, "status 65: \"%s\"", reason);
+  }
 
   /* a constant tabulated R-curve: the constant R-curve's response */
   char text[256];
@@ -755,6 +770,33 @@ static void test_run_history(const char *csv_path) {
   CHECK(status == INTERPHASE_STATUS_BEYOND_PEAK && strstr(detail, "is met only on a flat tangent in Sigma_N") && done == 51,
         "tension on the fully damaged open crack: status %d, %zu rows: %s", status, done, detail);
 
+  /* an imposed compression has no peak: one that needs a separation beyond 1e20 mm is
+   * INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE, naming the range (it was "beyond the peak ... the
+   * largest |Sigma_N| reached is 0.00000 MPa") */
+  const double crush[4] = {0, 0, -1e30, 0};
+  const int normal_only[4] = {1, 0, 1, 0};
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, t3, crush, normal_only, 10, 1e-12, 1, 200,
+                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE && done == 1 && strstr(detail, "beyond the peak") == NULL &&
+            strstr(detail, "the imposed traction Sigma_N = -0.976563E+26 MPa needs a separation beyond the admissible "
+                           "range |s_N| <= 1.0E+20 mm") != NULL,
+        "compression needing s_N beyond 1e20 mm: status %d, %zu rows: %s", status, done, detail);
+  /* a separation beyond 1e20 mm in the history: refused before any update, naming row, component
+   * and value (it ran, halved and named an interpolated value) */
+  const double far_slip[6] = {0, 0, 0, 1e21, 0, 0};
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, far_slip, NULL, 10, 1e-12, 1, ROWS,
+                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE && done == 0 &&
+            strstr(detail, "value[3] (row 1, component 1: s_T) = 0.1E+22 mm is beyond the range the update admits") != NULL,
+        "s_T = 1e21 mm in the history: status %d, %zu rows: %s", status, done, detail);
+  /* an imposed traction beyond 1e150 MPa, as the driver's reader refuses it */
+  const double huge_pull[4] = {0, 0, 1e200, 0};
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, t3, huge_pull, normal_only, 10, 1e-12, 1,
+                                  ROWS, NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 &&
+            strstr(detail, "value[2] (row 1, component 0: Sigma_N) = 0.1E+201 MPa is beyond the range the replay admits") != NULL,
+        "Sigma_N = 1e200 MPa in the history: status %d, %zu rows: %s", status, done, detail);
+
   /* a bad history, arrays that are too short */
   const double nan_value[6] = {0, 0, 0, NAN, 0, 0};
   status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, nan_value, NULL, 10, 1e-12, 1, ROWS,
@@ -780,6 +822,109 @@ static void test_run_history(const char *csv_path) {
   printf("interphase_run_history: the driver's %zu rows; mixed control, beyond the peak, bad input\n", n);
 }
 
+/* 7. Arguments: every array an entry point dereferences, when NULL, gives
+ * INTERPHASE_STATUS_NULL_ARGUMENT and a detail naming it (no crash, also with a NULL detail); a
+ * size_t of 2^63 or more is read as the unsigned value it is (refused as too large, named), and
+ * a detail of that length is written. */
+static void expect_null(int status, const char *detail, const char *name, const char *call) {
+  char want[64];
+  snprintf(want, sizeof want, "%s is NULL", name);
+  CHECK(status == INTERPHASE_STATUS_NULL_ARGUMENT && strncmp(detail, want, strlen(want)) == 0,
+        "%s with %s NULL: status %d, \"%s\"", call, name, status, detail);
+}
+
+static void test_arguments(void) {
+  double props[INTERPHASE_NPROPS_SIMPLIFIED];
+  paper_props(props);
+  const double state[INTERPHASE_NSTATE] = {0.0}, s[2] = {0.001, 0.0005};
+  double t[2], k[4], st[INTERPHASE_NSTATE], psi;
+  char detail[257];
+  const char *names[7] = {"props", "state_old", "separation", "traction", "tangent", "state_new", "stored_energy"};
+  for (int which = 0; which < 7; ++which) {
+    const double *a[7] = {props, state, s, t, k, st, &psi};
+    a[which] = NULL;
+    strcpy(detail, "untouched");
+    int status = interphase_update(a[0], INTERPHASE_NPROPS_SIMPLIFIED, 2, a[1], a[2], (double *)a[3], (double *)a[4],
+                                   (double *)a[5], (double *)a[6], detail, sizeof detail);
+    expect_null(status, detail, names[which], "interphase_update");
+    status = interphase_update(a[0], INTERPHASE_NPROPS_SIMPLIFIED, 2, a[1], a[2], (double *)a[3], (double *)a[4],
+                               (double *)a[5], (double *)a[6], NULL, 0);
+    CHECK(status == INTERPHASE_STATUS_NULL_ARGUMENT, "interphase_update, %s NULL, no detail: %d", names[which], status);
+    strcpy(detail, "untouched");
+    status = interphase_update_dt(a[0], INTERPHASE_NPROPS_SIMPLIFIED, 2, a[1], a[2], 0.1, (double *)a[3],
+                                  (double *)a[4], (double *)a[5], (double *)a[6], detail, sizeof detail);
+    expect_null(status, detail, names[which], "interphase_update_dt");
+  }
+
+  /* interphase_run: its arrays (time, tangent and rows_done may be NULL) */
+  double sep[4] = {0.0, 0.0, 0.001, 0.0}, tim[2] = {0.0, 1.0}, tra[4] = {0.0}, sta[2 * INTERPHASE_NSTATE] = {0.0},
+         ps[2] = {0.0}, wd[2] = {0.0};
+  size_t done = 99;
+  const char *run_names[6] = {"props", "separation", "traction", "state", "stored_energy", "dissipated_energy"};
+  for (int which = 0; which < 6; ++which) {
+    double *a[6] = {props, sep, tra, sta, ps, wd};
+    a[which] = NULL;
+    strcpy(detail, "untouched");
+    int status = interphase_run(a[0], INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, a[1], tim, a[2], NULL, a[3], a[4], a[5],
+                                &done, detail, sizeof detail);
+    expect_null(status, detail, run_names[which], "interphase_run");
+    CHECK(done == 0, "interphase_run, %s NULL: rows_done %zu", run_names[which], done);
+    status = interphase_run(a[0], INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, a[1], NULL, a[2], NULL, a[3], a[4], a[5], NULL,
+                            NULL, 0);
+    CHECK(status == INTERPHASE_STATUS_NULL_ARGUMENT, "interphase_run, %s NULL, no detail: %d", run_names[which],
+          status);
+  }
+  int status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, sep, NULL, tra, NULL, sta, ps, wd, &done,
+                              detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == 2, "interphase_run with every array: status %d: %s", status, detail);
+
+  /* interphase_run_history: props, time and value (the rest may be NULL) */
+  const double hv[4] = {0.0, 0.0, 0.001, 0.0};
+  const char *history_names[3] = {"props", "time", "value"};
+  for (int which = 0; which < 3; ++which) {
+    const double *a[3] = {props, tim, hv};
+    a[which] = NULL;
+    strcpy(detail, "untouched");
+    status = interphase_run_history(a[0], INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, a[1], a[2], NULL, 2, 1e-12, 1, 10, NULL,
+                                    NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+    expect_null(status, detail, history_names[which], "interphase_run_history");
+    status = interphase_run_history(a[0], INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, a[1], a[2], NULL, 2, 1e-12, 1, 10, NULL,
+                                    NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, 0);
+    CHECK(status == INTERPHASE_STATUS_NULL_ARGUMENT, "interphase_run_history, %s NULL, no detail: %d",
+          history_names[which], status);
+  }
+
+  /* sizes of 2^63 and more: the unsigned value, refused as too large */
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, SIZE_MAX, sep, tim, tra, NULL, sta, ps, wd, &done,
+                          detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 &&
+            strstr(detail, "nrows = 18446744073709551615 is too large") != NULL,
+        "interphase_run, nrows = SIZE_MAX: status %d: %s", status, detail);
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, (size_t)1 << 63, sep, tim, tra, NULL, sta, ps, wd,
+                          &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && strstr(detail, "nrows = 9223372036854775808 is too large") != NULL,
+        "interphase_run, nrows = 2^63: status %d: %s", status, detail);
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, SIZE_MAX, tim, hv, NULL, 2, 1e-12, 1, 10,
+                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 &&
+            strstr(detail, "nrows = 18446744073709551615 is too large") != NULL,
+        "interphase_run_history, nrows = SIZE_MAX: status %d: %s", status, detail);
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 2, tim, hv, NULL, 2, 1e-12, 1, SIZE_MAX,
+                                  NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 &&
+            strstr(detail, "capacity = 18446744073709551615 rows is too large") != NULL,
+        "interphase_run_history, capacity = SIZE_MAX: status %d: %s", status, detail);
+  /* a detail of length SIZE_MAX is written (the message and its NUL) */
+  strcpy(detail, "the previous message");
+  status = interphase_update(props, 8, 2, state, s, t, k, st, &psi, detail, SIZE_MAX);
+  CHECK(status == INTERPHASE_STATUS_BAD_NPROPS && strstr(detail, "previous") == NULL && strlen(detail) > 0,
+        "detail_len = SIZE_MAX: status %d, \"%s\"", status, detail);
+  char msg[64] = "xxxx";
+  size_t len = interphase_status_message(INTERPHASE_STATUS_OK, msg, SIZE_MAX);
+  CHECK(len == strlen("success") && strcmp(msg, "success") == 0, "status message, len = SIZE_MAX: \"%s\"", msg);
+  printf("arguments: NULL arrays named, sizes of 2^63 and more read unsigned\n");
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--load") == 0) {
     test_load_table(argv[2], argv[3]);
@@ -789,6 +934,7 @@ int main(int argc, char **argv) {
     test_failures();
     test_run(argv[1]);
     test_run_history(argv[1]);
+    test_arguments();
   } else {
     fprintf(stderr, "usage: %s <tests/driver/reference/mixed.csv>\n"
                     "       %s --load <tables/paper.dat> <tables/paper-resolution.dat>\n", argv[0], argv[0]);

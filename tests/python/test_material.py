@@ -138,11 +138,13 @@ def test_run_starts_away_from_zero_after_a_preload():
     assert r.traction[0][0] == pytest.approx(-0.005 * K_N)
 
 
-def test_run_gives_up_after_the_halvings():
+def test_run_refuses_a_separation_beyond_the_range_before_any_update():
+    # (it ran, and gave up after 10 halvings at an interpolated separation)
     m = interphase.Material(**SIMPLIFIED)
-    with pytest.raises(interphase.InterphaseError, match="even after 10 halvings") as caught:
+    with pytest.raises(interphase.InterphaseError, match=re.escape("value[2] (row 1, component 0: s_N) = 0.2E+21 mm")) \
+            as caught:
         m.run([[0.0, 0.0], [2e20, 0.0]])
-    assert caught.value.status == interphase.STATUS_SEPARATION_OUT_OF_RANGE
+    assert caught.value.status == interphase.STATUS_SEPARATION_OUT_OF_RANGE and caught.value.result is None
 
 
 def test_run_input_checks():
@@ -584,6 +586,43 @@ def test_mixed_control_errors_carry_the_library_status():
     with pytest.raises(TypeError, match=re.escape("Material.run: control must hold booleans (true: traction-controlled), "
                                                   "got values (dtype int64)")):
         m.run([[0.0, 0.0], [0.1, 0.0]], control=[1, 0])
+
+
+def test_separations_beyond_the_range_are_named():
+    """An imposed compression has no peak: one whose contact needs a separation beyond 1e20 mm
+    raises STATUS_SEPARATION_OUT_OF_RANGE saying so (it said 'beyond the peak ... 0.00000 MPa');
+    a separation beyond 1e20 mm in the history is refused before any update, naming its row and
+    component (it ran, halved 10 times and named an interpolated value)."""
+    m = interphase.Material(**SIMPLIFIED)
+    with pytest.raises(interphase.InterphaseError) as caught:
+        m.run([[0, 0], [-1e30, 0]], control=[True, False])
+    error = caught.value
+    assert error.status == interphase.STATUS_SEPARATION_OUT_OF_RANGE, str(error)
+    assert "beyond the peak" not in error.detail
+    assert "needs a separation beyond the admissible range |s_N| <= 1.0E+20 mm" in error.detail
+    with pytest.raises(interphase.InterphaseError) as caught:
+        m.run([[0, 0], [0, 1e21], [0, 0]], increments=10)
+    error = caught.value
+    assert error.status == interphase.STATUS_SEPARATION_OUT_OF_RANGE and error.result is None
+    assert error.detail == ("value[3] (row 1, component 1: s_T) = 0.1E+22 mm is beyond the range the update "
+                            "admits, |s| <= 1.0E+20 mm")
+
+
+def test_an_rcurve_toughness_out_of_range_has_its_own_status(tmp_path):
+    """A toughness outside [1e-20, 1e20] N/mm: STATUS_RCURVE_BAD_TOUGHNESS, whose message says so
+    (it was 63, whose message speaks of D values)."""
+    for text, name in (("0 1e21 0.0085\n1 0.005 0.0085\n", "G_cI = 1e21"),
+                       ("0 0.005 1e-21\n1 0.005 0.0085\n", "G_cII = 1e-21")):
+        rcurve = tmp_path / "gc.txt"
+        rcurve.write_text(text)
+        with pytest.raises(interphase.InterphaseError) as caught:
+            interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
+                                       rcurve_file=rcurve))
+        error = caught.value
+        assert error.status == interphase.STATUS_RCURVE_BAD_TOUGHNESS
+        assert error.name == "STATUS_RCURVE_BAD_TOUGHNESS"
+        assert str(error).startswith("R-curve toughness outside [1e-20, 1e20] N/mm")
+        assert f"gc.txt:1: {name} lies outside [1e-20, 1e20] N/mm" in error.detail
 
 
 def test_a_fully_damaged_micromechanical_point_carries_no_more_load():

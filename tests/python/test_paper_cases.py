@@ -138,16 +138,18 @@ def assert_same_partial_csv(driver, case, tmp_path, status, words):
     return error
 
 
-def test_halvings_as_the_driver(point_driver, tmp_path):
-    """A sub-increment that fails is halved: a halved step converges (its row is written), the
-    rest fails until the tenth halving (Material.run, the driver's algorithm in the library). A
-    history file with such a separation (beyond 1e20 mm) is refused by both readers at its line."""
+def test_separations_beyond_the_range_as_the_driver(point_driver, tmp_path):
+    """A separation beyond 1e20 mm in a history is refused before any update, naming where it is:
+    by Material.run (the library's interphase_run_history; it used to run, halve the failing
+    sub-increment ten times and name an interpolated separation) and by both history readers at
+    its line."""
     m = interphase.Material(**dict(SIMPLIFIED, damage_law="displacement"))
-    with pytest.raises(interphase.InterphaseError, match="even after 10 halvings") as caught:
+    with pytest.raises(interphase.InterphaseError,
+                       match=re.escape("value[2] (row 1, component 0: s_N) = 0.2E+21 mm is beyond the range the "
+                                       "update admits")) as caught:
         m.run([[0.0, 0.0], [2e20, 0.0], [0.0, 0.0]], increments=3)
     error = caught.value
-    assert error.status == interphase.STATUS_SEPARATION_OUT_OF_RANGE
-    assert error.result.separation[-1, 0] == 1e20 and len(error.result) == 3
+    assert error.status == interphase.STATUS_SEPARATION_OUT_OF_RANGE and error.result is None
     (tmp_path / "beyond.txt").write_text("0 0 0\n1 0 2e20\n2 0 0\n")
     case = write_case(tmp_path, "beyond", tmp_path / "beyond.txt", dict(SIMPLIFIED, damage_law="displacement"),
                       increments=3)

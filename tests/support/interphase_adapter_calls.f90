@@ -128,8 +128,16 @@ contains
       character(len=*), intent(out) :: detail
       integer, parameter :: DETAIL_LEN = 512
       character(kind=c_char), target :: buffer(DETAIL_LEN)
-      real(dp) :: row_major(ntens*ntens)
+      ! (the C entry takes pointers: targets holding the arguments)
+      real(dp), target :: row_major(ntens*ntens), c_props(size(props)), c_old(NSTATV_REQUIRED), c_s(ntens), &
+         c_t(ntens), c_new(NSTATV_REQUIRED), c_psi
       integer :: i, j
+      c_props = props
+      c_old = state_old
+      c_s = separation
+      c_t = traction
+      c_new = state_new
+      c_psi = psi
       row_major = 0.0_dp
       do i = 1, ntens
          do j = 1, ntens
@@ -137,8 +145,11 @@ contains
          end do
       end do
       buffer = c_null_char
-      status = int(interphase_update_c(props, int(size(props), c_int), int(ntens, c_int), state_old, separation, &
-         traction, row_major, state_new, psi, c_loc(buffer), int(DETAIL_LEN, c_size_t)))
+      status = int(interphase_update_c(c_loc(c_props), int(size(props), c_int), int(ntens, c_int), c_loc(c_old), &
+         c_loc(c_s), c_loc(c_t), c_loc(row_major), c_loc(c_new), c_loc(c_psi), c_loc(buffer), int(DETAIL_LEN, c_size_t)))
+      traction = c_t
+      state_new = c_new
+      psi = c_psi
       do i = 1, ntens
          do j = 1, ntens
             tangent(i, j) = row_major((i - 1)*ntens + j)

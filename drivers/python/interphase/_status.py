@@ -34,6 +34,7 @@ STATUS_BEYOND_PEAK = 28  # an imposed traction beyond the peak the material can 
 STATUS_MIXED_NOT_CONVERGED = 29  # imposed traction not met (Newton), even in halved steps
 STATUS_BAD_HISTORY = 30  # history (times, controls) or replay setting not admissible
 STATUS_OUTPUT_FULL = 31  # output arrays too short: call again with more rows
+STATUS_NULL_ARGUMENT = 32  # a required pointer argument is NULL (detail names it)
 STATUS_SPLINE_TOO_FEW_POINTS = 40  # too few table points
 STATUS_SPLINE_BAD_SHAPE = 41  # table values do not match the knots
 STATUS_SPLINE_BAD_METHOD = 42  # unknown interpolation method
@@ -56,9 +57,10 @@ STATUS_TABLE_NOT_LOADED = 59  # custom RVE table selected, none loaded
 STATUS_TABLE_INTERPOLANT = 49  # RVE table's interpolant inadmissible between two rows
 STATUS_RCURVE_UNREADABLE = 60  # R-curve file cannot be opened or read
 STATUS_RCURVE_MALFORMED = 61  # line is not "D G_cI G_cII"
-STATUS_RCURVE_NEGATIVE = 62  # toughness not positive
+STATUS_RCURVE_NEGATIVE = 62  # toughness not positive (see also 65)
 STATUS_RCURVE_BAD_RANGE = 63  # D not increasing in [0, 1], or too few rows
 STATUS_RCURVE_OUT_OF_RANGE = 64  # tabulated R-curve does not cover D0 or the D reached
+STATUS_RCURVE_BAD_TOUGHNESS = 65  # toughness > 0 but outside [1e-20, 1e20] N/mm
 
 #: every status code by name
 STATUS_CODES = {name: value for name, value in globals().items() if name.startswith("STATUS_")}
