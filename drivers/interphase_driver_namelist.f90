@@ -1,7 +1,8 @@
 !> A strict pre-check of a namelist case file, before Fortran's namelist read takes it: the file
 !> is read with bounded lines (interphase_text_input's limits), and refused when a group comes
 !> twice, when an entry of a group comes twice, or when an entry's value is not of its kind: one
-!> real literal, one integer, one logical (.true./.false.) or one quoted string. Messages name
+!> real literal, one integer, one logical (.true./.false.) or one quoted string (an array entry:
+!> one to its size of them, each checked, each named by its place). Messages name
 !> the file, the line, the group and the entry (`&loading: plot = 'yes' (line 9) is not .true.
 !> or .false.`). A group or an entry that the program does not read is refused, with the list of
 !> those it reads (`&material: sf_tt (line 6) is not an entry of &material; its entries: ...`).
@@ -28,17 +29,21 @@ module interphase_driver_namelist
    integer, parameter :: KIND_REAL = 1, KIND_INTEGER = 2, KIND_LOGICAL = 3, KIND_STRING = 4
 
    !> One known entry: 'group.name' (lower case), its kind and, for a string, the length of the
-   !> variable that receives it (a longer value is refused: 0 refuses every string).
+   !> variable that receives it (a longer value is refused: 0 refuses every string); for an array,
+   !> the most values it takes (its size; 1: a scalar, which takes exactly one).
    type :: entry_kind_type
       character(len=64) :: name = ''
       integer :: kind = 0
       integer :: length = 0
+      integer :: count = 1
    end type entry_kind_type
 
-   !> Where an entry of a case file was given: 'group.name' (lower case) and its line.
+   !> Where an entry of a case file was given: 'group.name' (lower case), its line and how many
+   !> values it was given.
    type :: entry_line_type
       character(len=64) :: name = ''
       integer :: line = 0
+      integer :: values = 0
    end type entry_line_type
 
    !> A token of the file: its text (lower-cased for names), its line, and what it is.
@@ -92,14 +97,22 @@ contains
 
    !> Check `path` against `known` (entries of every group the program reads). ok = .false. with
    !> `message` ('path:line: &group: ...') on the first problem.
-   subroutine check_namelist_file(path, known, ok, message, lines)
+   subroutine check_namelist_file(path, known, ok, message, lines, file_kind)
       character(len=*), intent(in) :: path
       type(entry_kind_type), intent(in) :: known(:)
       logical, intent(out) :: ok
       character(len=:), allocatable, intent(out) :: message
-      !> where each entry given was (for the messages of later checks: `with_entry_line`)
+      !> where each entry given was and its number of values (for the checks after the read:
+      !> `with_entry_line`)
       type(entry_line_type), allocatable, intent(out), optional :: lines(:)
-      character(len=:), allocatable :: line, group, seen_groups, seen_entries, name, value
+      !> what the file is, for the messages (default 'case file')
+      character(len=*), intent(in), optional :: file_kind
+      character(len=:), allocatable :: line, group, seen_groups, seen_entries, name, value, what
+      !> the values of the current entry (its first max_count), each ended by a newline, and
+      !> their kinds (KIND_STRING for a quoted string, else 0)
+      character(len=:), allocatable :: values_given
+      integer, allocatable :: kinds_given(:)
+      integer :: max_count
       character(len=512) :: iomsg
       integer :: ios, line_number, i, n, first, k, entry_line, nvalues, value_kind
       type(text_file_type) :: unit
@@ -111,10 +124,16 @@ contains
       logical :: after_comma
 
       ok = .false.
+      what = 'case file'
+      if (present(file_kind)) what = file_kind
+      max_count = 1
+      if (size(known) > 0) max_count = max(1, maxval(known%count))
+      allocate (kinds_given(max_count))
+      values_given = ''
       if (present(lines)) allocate (lines(0))
       call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
-         message = path//': cannot open the case file: '//trim(iomsg)
+         message = path//': cannot open the '//what//': '//trim(iomsg)
          return
       end if
       in_group = .false.
@@ -180,12 +199,12 @@ contains
                   i = scan_word_end(line, first)
                   group = to_lower(line(first:i - 1))
                   if (len(group_entries(group)) == 0) then
-                     call fail('&'//clip_text(group)//' is not a group of this case file; its groups: '// &
+                     call fail('&'//clip_text(group)//' is not a group of this '//what//'; its groups: '// &
                         known_groups())
                      return
                   end if
                   if (index(seen_groups, ' '//group//' ') > 0) then
-                     call fail('&'//group//' given twice: a case file has one group of each name')
+                     call fail('&'//group//' given twice: a '//what//' has one group of each name')
                      return
                   end if
                   seen_groups = seen_groups//group//' '
@@ -256,7 +275,7 @@ contains
                         in_entry = .true.
                         entry_line = line_number
                         nvalues = 0
-                        value = ''
+                        values_given = ''
                         i = k + 1
                         cycle
                      end if
@@ -307,14 +326,16 @@ contains
             return
          end if
          nvalues = nvalues + 1
-         value = text
-         value_kind = quoted
+         if (nvalues <= max_count) then
+            values_given = values_given//text//achar(10)
+            kinds_given(nvalues) = quoted
+         end if
       end subroutine add_value
 
       !> Check the entry just ended against its kind; false (message set) when it is wrong.
       logical function finish_entry() result(good)
-         integer :: j, kind, length
-         character(len=:), allocatable :: lower, where
+         integer :: j, kind, length, count, start, past
+         character(len=:), allocatable :: lower, where, shown
          real(dp) :: number
          character(len=32) :: why
          good = .true.
@@ -322,12 +343,15 @@ contains
          in_entry = .false.
          kind = 0
          length = 0
+         count = 1
          do j = 1, size(known)
             if (trim(known(j)%name) == group//'.'//name) then
                kind = known(j)%kind
                length = known(j)%length
+               count = known(j)%count
             end if
          end do
+         if (present(lines)) lines(size(lines))%values = nvalues
          where = path//':'//int_to_string(entry_line)//': &'//group//': '//name
          if (kind == 0) then
             good = .false.
@@ -336,45 +360,61 @@ contains
             call close_text_file(unit)
             return
          end if
-         if (nvalues /= 1) then
+         if (count == 1 .and. nvalues /= 1) then
             good = .false.
             message = where//' needs one value, got '//int_to_string(nvalues)
             call close_text_file(unit)
             return
-         end if
-         lower = to_lower(value)
-         select case (kind)
-         case (KIND_REAL)
-            ! one real literal, and a finite double (1e400 is not)
+         else if (nvalues < 1 .or. nvalues > count) then
             good = .false.
-            why = 'not a number'
-            if (value_kind == 0) call parse_real(value, number, good, why)
-            if (.not. good) message = where//' = '//clip_text(value)//' is '//trim(why)
-         case (KIND_INTEGER)
-            good = value_kind == 0 .and. len(value) > 0
-            if (good) good = verify(value(merge(2, 1, scan(value(1:1), '+-') > 0):), '0123456789') == 0 &
-               .and. len(value) > merge(1, 0, scan(value(1:1), '+-') > 0)
-            if (.not. good) then
-               message = where//' = '//clip_text(value)//' is not an integer'
-            else if (significant_digits(value) > 9) then
+            message = where//' takes 1 to '//int_to_string(count)//' values, got '//int_to_string(nvalues)
+            call close_text_file(unit)
+            return
+         end if
+         start = 1
+         do j = 1, nvalues
+            past = start + index(values_given(start:), achar(10)) - 1
+            value = values_given(start:past - 1)
+            value_kind = kinds_given(j)
+            start = past + 1
+            ! (an array's value named by its place: 'props = 1e400 (value 3)')
+            shown = clip_text(value)
+            if (count > 1) shown = shown//' (value '//int_to_string(j)//')'
+            lower = to_lower(value)
+            select case (kind)
+            case (KIND_REAL)
+               ! one real literal, and a finite double (1e400 is not)
                good = .false.
-               message = where//' = '//clip_text(value)//' is too large: an integer of at most 9 digits'
-            end if
-         case (KIND_LOGICAL)
-            good = value_kind == 0 .and. (lower == '.true.' .or. lower == '.false.' .or. lower == 't' &
-               .or. lower == 'f' .or. lower == '.t.' .or. lower == '.f.')
-            if (.not. good) message = where//' = '//clip_text(value)//' is not .true. or .false.'
-         case (KIND_STRING)
-            good = value_kind == KIND_STRING
-            if (.not. good) then
-               message = where//' = '//clip_text(value)//' is not a quoted string'
-            else if (unquoted_length(value) > length) then
-               good = .false.
-               message = where//' = '//clip_text(value)//' is '//int_to_string(unquoted_length(value))// &
-                  ' characters long: this entry takes at most '//int_to_string(length)//' (a longer one '// &
-                  'would be cut short)'
-            end if
-         end select
+               why = 'not a number'
+               if (value_kind == 0) call parse_real(value, number, good, why)
+               if (.not. good) message = where//' = '//shown//' is '//trim(why)
+            case (KIND_INTEGER)
+               good = value_kind == 0 .and. len(value) > 0
+               if (good) good = verify(value(merge(2, 1, scan(value(1:1), '+-') > 0):), '0123456789') == 0 &
+                  .and. len(value) > merge(1, 0, scan(value(1:1), '+-') > 0)
+               if (.not. good) then
+                  message = where//' = '//shown//' is not an integer'
+               else if (significant_digits(value) > 9) then
+                  good = .false.
+                  message = where//' = '//shown//' is too large: an integer of at most 9 digits'
+               end if
+            case (KIND_LOGICAL)
+               good = value_kind == 0 .and. (lower == '.true.' .or. lower == '.false.' .or. lower == 't' &
+                  .or. lower == 'f' .or. lower == '.t.' .or. lower == '.f.')
+               if (.not. good) message = where//' = '//shown//' is not .true. or .false.'
+            case (KIND_STRING)
+               good = value_kind == KIND_STRING
+               if (.not. good) then
+                  message = where//' = '//shown//' is not a quoted string'
+               else if (unquoted_length(value) > length) then
+                  good = .false.
+                  message = where//' = '//shown//' is '//int_to_string(unquoted_length(value))// &
+                     ' characters long: this entry takes at most '//int_to_string(length)//' (a longer one '// &
+                     'would be cut short)'
+               end if
+            end select
+            if (.not. good) exit
+         end do
          if (.not. good) call close_text_file(unit)
       end function finish_entry
 

@@ -237,17 +237,26 @@ contains
       subroutine write_failed_call()
          type(point_state_type) :: point
          integer :: unit, ios
+         character(len=256) :: iomsg
          if (.not. (present(replay_path) .and. failure%update_status /= STATUS_OK)) return
          point = driver_point(last)
-         open (newunit=unit, file=replay_path, status='replace', action='write', iostat=ios)
-         if (ios /= 0) return
+         iomsg = ''
+         open (newunit=unit, file=replay_path, status='replace', action='write', iostat=ios, iomsg=iomsg)
+         if (ios /= 0) then
+            message = message//'; the failed UMAT call could not be written to '//replay_path//': '//trim(iomsg)
+            return
+         end if
          call write_replay_group(unit, 'interphase-point', message, run%props, point%statev, point%stress, &
             point%sse, point%spd, point%separation, law%failed_s(:ntens) - point%separation, [point%time, point%time], &
             law%failed_time - point%time, 1, 1, point%kinc + 1, ios, table_file=absolute(run%table_path), &
             rcurve_file=absolute(run%rcurve_path))
          close (unit)
-         if (ios == 0) message = message//'; the failed UMAT call is in '//replay_path// &
-            ' (interphase-point '//replay_path//' repeats it)'
+         if (ios == 0) then
+            message = message//'; the failed UMAT call is in '//replay_path// &
+               ' (interphase-point '//replay_path//' repeats it)'
+         else
+            message = message//'; the failed UMAT call could not be written to '//replay_path
+         end if
       end subroutine write_failed_call
 
       !> A path as the absolute path tried ('' stays '').

@@ -32,9 +32,10 @@ contains
 
    !> Write the replay file of a failed call if INTERPHASE_REPLAY_DIR names a folder; `written`
    !> is its path ('' when none was written: no variable, the file could not be created, or
-   !> REPLAY_MAX_COPIES files of its name exist).
+   !> REPLAY_MAX_COPIES files of its name exist), and `why` says why none was written where the
+   !> variable is set ('' otherwise).
    subroutine write_replay(source, message, props, statev, stress, sse, spd, stran, dstran, time, &
-         dtime, noel, npt, kinc, written, ndi, nshr)
+         dtime, noel, npt, kinc, written, ndi, nshr, why)
       character(len=*), intent(in) :: source       !! 'umat' or 'vumat'
       character(len=*), intent(in) :: message      !! why the call failed
       real(dp), intent(in) :: props(:), statev(:)  !! PROPS, the incoming STATEV
@@ -45,14 +46,18 @@ contains
       integer, intent(in) :: noel, npt, kinc       !! element, point, increment
       character(len=:), allocatable, intent(out) :: written
       integer, intent(in), optional :: ndi, nshr  !! the host's NDI, NSHR (default 1, NTENS - 1)
-      character(len=:), allocatable :: folder, path
+      character(len=:), allocatable, intent(out), optional :: why
+      character(len=:), allocatable :: folder, given, path
       character(len=64) :: name
       character(len=8) :: copy
+      character(len=256) :: iomsg
       integer :: unit, ios, n
       logical :: exists
 
       written = ''
+      if (present(why)) why = ''
       if (.not. environment(REPLAY_VARIABLE, folder)) return
+      given = folder
       write (name, '(a,a,a,i0,a,i0,a,i0)') 'interphase-replay-', source, '-e', noel, '-p', npt, '-k', kinc
       if (folder(len(folder):len(folder)) /= '/') folder = folder//'/'
       do n = 1, REPLAY_MAX_COPIES
@@ -63,19 +68,34 @@ contains
          ! one: flang 19's run time deletes the existing file when an OPEN with status 'new' fails.)
          inquire (file=path, exist=exists)
          if (exists) then
-            if (n == REPLAY_MAX_COPIES) return
+            if (n == REPLAY_MAX_COPIES) then
+               if (present(why)) then
+                  write (copy, '(a,i0)') '-', REPLAY_MAX_COPIES
+                  why = trim(name)//'.nml and its copies up to '//trim(copy)//' exist already in '// &
+                     REPLAY_VARIABLE//' = '//given
+               end if
+               return
+            end if
             cycle
          end if
          ! status 'new': a call that takes the same name at the same instant (another thread) makes
          ! this open fail, and this call writes none, rather than both writing one file
-         open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=ios)
+         iomsg = ''
+         open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=ios, iomsg=iomsg)
          if (ios == 0) exit
-         return                      ! no folder, not writable, or the name taken just now
+         ! no folder, not writable, or the name taken just now
+         if (present(why)) why = 'cannot create '//trim(name)//trim(copy)//'.nml in '//REPLAY_VARIABLE//' = '// &
+            given//': '//trim(iomsg)
+         return
       end do
       call write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, dstran, &
          time, dtime, noel, npt, kinc, ios, ndi=ndi, nshr=nshr)
       close (unit)
-      if (ios == 0) written = path
+      if (ios == 0) then
+         written = path
+      else if (present(why)) then
+         why = 'cannot write '//path//' (in '//REPLAY_VARIABLE//')'
+      end if
    end subroutine write_replay
 
    !> Write the `&replay` group on an open unit (`ios` /= 0 when a write failed).

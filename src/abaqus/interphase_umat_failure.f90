@@ -21,7 +21,7 @@ contains
    !> is PNEWDT_CUTBACK unless a smaller positive one is there already. With the CalculiX host
    !> option DDSDDE is set to zero (ccx passes it uninitialised and stores it even from a call that
    !> asks for a cut-back). With INTERPHASE_REPLAY_DIR set, the call's inputs go to a replay file
-   !> first (its path is named).
+   !> first (its path is named, or why none could be written).
    subroutine umat_fail(code, severity, message, calculix, pnewdt, ddsdde, cmname, noel, npt, kinc, &
          props, statev, stress, sse, spd, stran, dstran, time, dtime, ndi, nshr)
       integer, intent(in) :: code, severity            !! STATUS_* and SEVERITY_* codes
@@ -32,15 +32,21 @@ contains
       integer, intent(in) :: noel, npt, kinc, ndi, nshr
       real(dp), intent(in) :: props(:), statev(:), stress(:), sse, spd, stran(:), dstran(:), time(2), dtime
       character(len=2*MESSAGE_LEN) :: full
-      character(len=:), allocatable :: replay
+      character(len=:), allocatable :: replay, why, note
       if (.not. (pnewdt > 0.0_dp .and. pnewdt <= PNEWDT_CUTBACK)) pnewdt = PNEWDT_CUTBACK
       if (calculix) ddsdde = 0.0_dp
       write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
          ': ', status_message(code), ': ', trim(message)
       call write_replay('umat', trim(full), props, statev, stress, sse, spd, stran, dstran, time, dtime, &
-         noel, npt, kinc, replay, ndi, nshr)
-      if (len(replay) > 0) full = trim(full)//' (replay file: '//replay//')'
-      call interphase_host_message(severity, trim(full))
+         noel, npt, kinc, replay, ndi, nshr, why)
+      ! (the replay file's note after the message, whole: no fixed length cuts the path short)
+      note = ''
+      if (len(replay) > 0) then
+         note = ' (replay file: '//replay//')'
+      else if (len(why) > 0) then
+         note = ' (no replay file: '//why//')'
+      end if
+      call interphase_host_message(severity, trim(full)//note)
    end subroutine umat_fail
 
 end module interphase_umat_failure

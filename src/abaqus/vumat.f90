@@ -417,7 +417,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       if (nfailed > 0) then
          block
             character(len=2*MESSAGE_LEN) :: full
-            character(len=:), allocatable :: replay
+            character(len=:), allocatable :: replay, why, note
             real(dp) :: sep_old(3), dsep(3), rho_first
             integer :: kinc     !! the increment's number for the replay file's name, totalTime/dt
             write (full, '(a,a,i0,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
@@ -441,9 +441,14 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             call write_replay('vumat', trim(full), props, stateold(first_failed, 1:NSTATV_SHARED), &
                stressold(first_failed, :), (enerinternold(first_failed) - enerinelasold(first_failed))*rho_first, &
                enerinelasold(first_failed)*rho_first, sep_old(1:ntens), dsep(1:ntens), [steptime, totaltime], dt, &
-               first_failed, 0, kinc, replay)
-            if (len(replay) > 0) full = trim(full)//' (replay file: '//replay//')'
-            call interphase_host_message(SEVERITY_WARNING, trim(full))
+               first_failed, 0, kinc, replay, why=why)
+            note = ''
+            if (len(replay) > 0) then
+               note = ' (replay file: '//replay//')'
+            else if (len(why) > 0) then
+               note = ' (no replay file: '//why//')'
+            end if
+            call interphase_host_message(SEVERITY_WARNING, trim(full)//note)
          end block
       end if
       return
