@@ -13,10 +13,16 @@
 !> *DENSITY > 0 for Abaqus/Explicit. It reads keywords (a keyword line that ends in a comma
 !> continued on the next; keywords, parameters and values abbreviated as Abaqus allows) and their
 !> data lines only (no *INCLUDE, no parts/assemblies
-!> resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) and prints one line per cohesive section, and a note when the
-!> material needs a file loaded at start-up (a custom RVE table, a tabulated R-curve: the run
-!> then needs the environment variable and the start-of-analysis hook, which a deck cannot
-!> show); the exit status is 0 when every check passes, 1 otherwise, 2 when a file cannot be read.
+!> resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) as
+!> Abaqus reads them: an empty data field is 0 (not skipped), a label in double quotes is taken
+!> as written; what Abaqus refuses in the lines it reads is a failed check (a line over 256
+!> characters, more than 8 constants on a *USER MATERIAL data line, a parameter *USER MATERIAL
+!> does not have, *MATERIAL without NAME=, *COHESIVE SECTION without ELSET= or MATERIAL=), and
+!> a section whose own or material's lines fail is not said to be ok. It prints one line per
+!> cohesive section, and a note when the material needs a file loaded at start-up (a custom RVE
+!> table, a tabulated R-curve: the run then needs the environment variable and the
+!> start-of-analysis hook, which a deck cannot show); the exit status is 0 when every check
+!> passes, 1 otherwise, 2 when a file cannot be read.
 program interphase_check_deck
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_kinds, only: dp
@@ -36,12 +42,20 @@ program interphase_check_deck
    !> built-in table (docs/theory.md, 'The contact band').
    real(dp), parameter :: CHI_MIN_BUILT_IN = 0.55_dp
 
-   !> Longest deck line read (Abaqus allows 256 characters).
-   integer, parameter :: LINE_LEN = 1024
-   !> Most constants of one *USER MATERIAL.
-   integer, parameter :: MAX_CONSTANTS = 64
    !> Length of a keyword's or a parameter's name (upper case, blanks removed).
    integer, parameter :: NAME_LEN = 40
+   !> Longest deck line read (a longer one is not read: exit status 2).
+   integer, parameter :: LINE_LEN = 1024
+   !> Longest keyword or data line Abaqus reads (its input syntax rules: 256 characters,
+   !> blanks included); a longer one, up to LINE_LEN, is a failed check.
+   integer, parameter :: ABAQUS_LINE_LEN = 256
+   !> Most constants on one *USER MATERIAL data line (Abaqus Keywords Guide: eight per line).
+   integer, parameter :: CONSTANTS_PER_LINE = 8
+   !> The parameters of *USER MATERIAL (Abaqus Keywords Guide): any other one is refused.
+   character(len=NAME_LEN), parameter :: USER_MATERIAL_PARAMETERS(5) = [character(len=NAME_LEN) :: 'CONSTANTS', &
+      'EFFMOD', 'HYBRIDFORMULATION', 'TYPE', 'UNSYMM']
+   !> Most constants of one *USER MATERIAL.
+   integer, parameter :: MAX_CONSTANTS = 64
 
    !> The keywords this check reads (upper case, blanks removed, as Abaqus compares them). Abaqus
    !> takes a keyword, a parameter and most parameter values abbreviated to any start that no
@@ -78,11 +92,19 @@ program interphase_check_deck
       logical :: bad_constant = .false.        !! a field of its *USER MATERIAL data is not a number
       character(len=512) :: bad_data = ''      !! the first such field of its data, as reported
       real(dp) :: constants(MAX_CONSTANTS) = 0.0_dp
+      integer :: constant_line(MAX_CONSTANTS) = 0       !! the data line of each constant
+      integer :: constant_field(MAX_CONSTANTS) = 0      !! its field on that line
+      logical :: constant_empty(MAX_CONSTANTS) = .false. !! an empty field (Abaqus reads 0)
+      logical :: line_overflow = .false.       !! a data line with more than 8 constants (reported)
+      integer :: refused = 0                   !! failed checks on its own lines (reported as read)
       logical :: unsymm = .false.
       integer :: depvar = -1                   !! *DEPVAR (-1: none)
       integer :: depvar_line = 0               !! line of *DEPVAR's count (0: none)
       logical :: depvar_bad = .false.          !! *DEPVAR given, but not a count (reported)
+      logical :: depvar_empty = .false.        !! *DEPVAR's count an empty field (Abaqus reads 0)
       real(dp) :: density = -1.0_dp            !! *DENSITY (-1: none)
+      integer :: density_line = 0              !! line of *DENSITY's value (0: none)
+      logical :: density_empty = .false.       !! *DENSITY's value an empty field (Abaqus reads 0)
       integer :: line = 0                      !! line of *MATERIAL
       character(len=16), allocatable :: options_seen(:)   !! *USER MATERIAL, *DEPVAR, *DENSITY so far
    end type material_type
@@ -92,7 +114,9 @@ program interphase_check_deck
       integer :: line = 0
       character(len=80) :: elset = '', material = '', response = '', thickness_mode = ''
       real(dp) :: thickness = -1.0_dp
+      logical :: thickness_empty = .false.     !! the thickness an empty field (Abaqus reads 0)
       character(len=512) :: bad_data = ''      !! a field of its data line that is not a number
+      integer :: refused = 0                   !! failed checks on its own lines (reported as read)
    end type section_type
 
    character(len=:), allocatable :: path
@@ -157,7 +181,7 @@ contains
       character(len=LINE_LEN) :: line
       !> a line read ahead (after a keyword line that ends in a comma) and its number
       character(len=LINE_LEN) :: held
-      integer :: held_lineno
+      integer :: held_lineno, held_length
       logical :: have_held
       character(len=MESSAGE_LEN) :: message
       character(len=80) :: keyword, field, repeated
@@ -168,8 +192,11 @@ contains
       character(len=32) :: bad_why             !! why it is not (parse_real)
       character(len=80), allocatable :: parameter_names(:)
       character(len=LINE_LEN), allocatable :: parameter_values(:)
-      real(dp) :: values(16)
-      integer :: ios, lineno, nvalues, k, current, data_lines, i, bad_field
+      real(dp) :: values(LINE_LEN + 1)
+      logical :: empty(LINE_LEN + 1)           !! which of values are empty fields (read as 0)
+      integer :: ios, lineno, nvalues, k, current, data_lines, i, bad_field, length
+      integer :: nfail_line                    !! nfail before the line (its failures are attributed)
+      character(len=:), allocatable :: label
       logical :: explicit, opened
       !> the first step procedure of each solver (line and keyword): one analysis runs one solver
       integer :: explicit_line, standard_line
@@ -198,17 +225,21 @@ contains
          if (have_held) then
             line = held
             lineno = held_lineno
+            length = held_length
             have_held = .false.
          else
-            if (.not. next_line(file, path, line, lineno, status)) exit
+            if (.not. next_line(file, path, line, lineno, status, length)) exit
          end if
          if (status /= 0) return
          if (len_trim(line) == 0 .or. line(1:min(2, len(line))) == '**') cycle
+         ! the failed checks of this line (and its continuations), for its material or section
+         nfail_line = nfail
+         if (length > ABAQUS_LINE_LEN) call record_failure(too_long(path, lineno, length), nfail)
          if (line(1:1) == '*') then
             ! a keyword line that ends in a comma continues on the next line (Abaqus' input syntax
             ! rules): the continuation's parameters join this line's
             do while (line(len_trim(line):len_trim(line)) == ',')
-               if (.not. next_line(file, path, held, held_lineno, status)) exit
+               if (.not. next_line(file, path, held, held_lineno, status, held_length)) exit
                if (status /= 0) return
                if (len_trim(held) == 0) cycle
                if (held(1:min(2, len(held))) == '**') cycle
@@ -217,6 +248,7 @@ contains
                   have_held = .true.
                   exit
                end if
+               if (held_length > ABAQUS_LINE_LEN) call record_failure(too_long(path, held_lineno, held_length), nfail)
                if (len_trim(line) + 1 + len_trim(held) > LINE_LEN) then
                   write (error_unit, '(a,i0,a,i0,a)') 'interphase-check-deck: '//tried_path(path)//':', held_lineno, &
                      ': keyword line with its continuations longer than ', LINE_LEN, ' characters'
@@ -241,6 +273,16 @@ contains
                call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//': '//ambiguous// &
                   ': Abaqus refuses an abbreviation that is not unique; spell the parameter out', nfail)
             end if
+            ! *USER MATERIAL takes its own parameters only: any other one Abaqus refuses
+            if (trim(keyword) == 'USERMATERIAL') then
+               do k = 1, size(parameter_names)
+                  if (.not. any(USER_MATERIAL_PARAMETERS == parameter_names(k))) then
+                     call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//': '// &
+                        trim(parameter_names(k))//' is not a parameter of *USER MATERIAL (CONSTANTS, EFFMOD, '// &
+                        'HYBRID FORMULATION, TYPE, UNSYMM): Abaqus refuses it', nfail)
+                  end if
+               end do
+            end if
             ! *USER MATERIAL, TYPE=THERMAL is a UMATHT's (heat transfer), not interphase's: its
             ! constants are neither decoded nor counted as the material's *USER MATERIAL
             if (trim(keyword) == 'USERMATERIAL') then
@@ -254,15 +296,22 @@ contains
             end if
             select case (trim(keyword))
             case ('MATERIAL')
-               do k = 1, size(materials)
-                  if (materials(k)%name == upper_compact(parameter_value(parameter_names, parameter_values, 'NAME'))) then
-                     call record_failure(path//':'//int_to_string(lineno)//': *MATERIAL, NAME='// &
-                        trim(materials(k)%name)//' defined a second time (first at line '// &
-                        int_to_string(materials(k)%line)//')', nfail)
-                  end if
-               end do
-               materials = [materials, material_type(name=upper_compact(parameter_value(parameter_names, &
-                  parameter_values, 'NAME')), line=lineno, &
+               label = label_value(parameter_value(parameter_names, parameter_values, 'NAME'))
+               if (len(label) == 0) then
+                  call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' without NAME=: '// &
+                     'Abaqus requires the material''s name (a section refers to it by MATERIAL=)', nfail)
+               else
+                  do k = 1, size(materials)
+                     if (materials(k)%name == label) then
+                        call record_failure(path//':'//int_to_string(lineno)//': *MATERIAL, NAME='// &
+                           trim(materials(k)%name)//' defined a second time (first at line '// &
+                           int_to_string(materials(k)%line)//')', nfail)
+                     end if
+                  end do
+               end if
+               ! (a material without a name is kept, that the options after it are not read as
+               ! another material's; no section can refer to it)
+               materials = [materials, material_type(name=label, line=lineno, &
                   options_seen=[character(len=16) ::])]
                current = size(materials)
             case ('USERMATERIAL', 'DEPVAR', 'DENSITY')
@@ -296,9 +345,17 @@ contains
                   end if
                end if
             case ('COHESIVESECTION')
+               ! ELSET= and MATERIAL= are required (Abaqus Keywords Guide); RESPONSE= is checked
+               ! with the section
+               do k = 1, 2
+                  field = trim(merge('ELSET   ', 'MATERIAL', k == 1))
+                  if (len(label_value(parameter_value(parameter_names, parameter_values, trim(field)))) == 0) &
+                     call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' without '// &
+                        trim(field)//'=: Abaqus requires it', nfail)
+               end do
                sections = [sections, section_type(line=lineno, &
-                  elset=upper_compact(parameter_value(parameter_names, parameter_values, 'ELSET')), &
-                  material=upper_compact(parameter_value(parameter_names, parameter_values, 'MATERIAL')), &
+                  elset=label_value(parameter_value(parameter_names, parameter_values, 'ELSET')), &
+                  material=label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL')), &
                   response=parameter_choice(parameter_names, parameter_values, 'RESPONSE', &
                      [character(len=NAME_LEN) :: 'TRACTIONSEPARATION', 'CONTINUUM', 'GASKET']), &
                   thickness_mode=parameter_choice(parameter_names, parameter_values, 'THICKNESS', &
@@ -322,11 +379,21 @@ contains
             case ('STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION')
                current = 0
             end select
+            call attribute_failures(nfail - nfail_line, keyword, current, materials, sections)
             cycle
          end if
          ! a data line of the current keyword
          data_lines = data_lines + 1
-         call parse_numbers(line, values, nvalues, bad_field, bad_item, bad_why)
+         call parse_numbers(line, values, empty, nvalues, bad_field, bad_item, bad_why)
+         ! at most eight constants on one *USER MATERIAL data line (Abaqus Keywords Guide)
+         if ((trim(keyword) == 'USERMATERIAL' .or. trim(keyword) == 'USERMATERIAL,THERMAL') .and. &
+             bad_field == 0 .and. nvalues > CONSTANTS_PER_LINE) then
+            call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' data line: '// &
+               int_to_string(nvalues)//' constants on one line, but Abaqus reads at most '// &
+               int_to_string(CONSTANTS_PER_LINE)//' per line: put the rest on the next line (fields are '// &
+               'separated by commas: a decimal comma splits a number in two; write 0.75, not 0,75)', nfail)
+            if (current > 0 .and. trim(keyword) == 'USERMATERIAL') materials(current)%line_overflow = .true.
+         end if
          select case (trim(keyword))
          case ('USERMATERIAL', 'DEPVAR', 'DENSITY', 'COHESIVESECTION')
             ! the data read here are numbers (every line of *USER MATERIAL, the first line of the
@@ -348,11 +415,17 @@ contains
          select case (trim(keyword))
          case ('USERMATERIAL')
             if (current > 0) then
-               do k = 1, nvalues
-                  materials(current)%nread = materials(current)%nread + 1
-                  if (materials(current)%nread <= MAX_CONSTANTS) &
-                     materials(current)%constants(materials(current)%nread) = values(k)
-               end do
+               associate (mat => materials(current))
+                  do k = 1, nvalues
+                     mat%nread = mat%nread + 1
+                     if (mat%nread <= MAX_CONSTANTS) then
+                        mat%constants(mat%nread) = values(k)
+                        mat%constant_line(mat%nread) = lineno
+                        mat%constant_field(mat%nread) = k
+                        mat%constant_empty(mat%nread) = empty(k)
+                     end if
+                  end do
+               end associate
             end if
          case ('DEPVAR')
             if (current > 0 .and. data_lines == 1) then
@@ -363,6 +436,7 @@ contains
                       .not. abs(values(1) - aint(values(1))) > 0.0_dp) then
                      materials(current)%depvar = nint(values(1))
                      materials(current)%depvar_line = lineno
+                     materials(current)%depvar_empty = empty(1)
                   else
                      materials(current)%depvar_bad = .true.
                      if (len_trim(materials(current)%bad_data) == 0) materials(current)%bad_data = &
@@ -372,10 +446,18 @@ contains
                end if
             end if
          case ('DENSITY')
-            if (current > 0 .and. data_lines == 1 .and. nvalues >= 1) materials(current)%density = values(1)
+            if (current > 0 .and. data_lines == 1 .and. nvalues >= 1) then
+               materials(current)%density = values(1)
+               materials(current)%density_line = lineno
+               materials(current)%density_empty = empty(1)
+            end if
          case ('COHESIVESECTION')
-            if (data_lines == 1 .and. nvalues >= 1) sections(size(sections))%thickness = values(1)
+            if (data_lines == 1 .and. nvalues >= 1) then
+               sections(size(sections))%thickness = values(1)
+               sections(size(sections))%thickness_empty = empty(1)
+            end if
          end select
+         call attribute_failures(nfail - nfail_line, keyword, current, materials, sections)
       end do
       call close_text_file(file)
 
@@ -408,8 +490,9 @@ contains
       type(law_params_type) :: params
       character(len=MESSAGE_LEN) :: message
       character(len=:), allocatable :: where, solver, summary, notes, hook, section_where, why
-      integer :: m, k, status, nfail_before, depvar_needed, normal, nm, nconstants
+      integer :: m, k, status, nfail_before, depvar_needed, normal, nm, nconstants, nempty
       logical :: decoded       !! the material's constants decode (params holds them)
+      logical :: refused       !! its own or its material's lines have failed checks (named as read)
       real(dp) :: t_layer
 
       nfail_before = nfail
@@ -423,9 +506,12 @@ contains
             'law: RESPONSE=TRACTION SEPARATION, or CONTINUUM (its strains are the separations over the constitutive '// &
             'thickness T0: give the layer thickness option t = T0, docs/abaqus.md)', nfail)
       m = 0
-      do k = 1, size(materials)
-         if (materials(k)%name == section%material) m = k
-      end do
+      ! (a section without MATERIAL= is named where it is read, and refers to no material)
+      if (len_trim(section%material) > 0) then
+         do k = 1, size(materials)
+            if (materials(k)%name == section%material) m = k
+         end do
+      end if
       summary = ''
       notes = ''
       ! the constitutive thickness T0 turns separations into the strains the UMAT gets
@@ -446,7 +532,9 @@ contains
       end if
       call check_thickness(section, section_where, t_layer, normal, notes, nfail)
       hook = trim(merge('VEXTERNALDB', 'UEXTERNALDB', explicit))
-      if (m == 0) then
+      if (len_trim(section%material) == 0) then
+         continue     ! named where the section is read
+      else if (m == 0) then
          call record_failure(where//': material '//trim(section%material)//' is not defined in this deck', nfail)
       else if (materials(m)%user_line == 0) then
          call record_failure(where//': material '//trim(section%material)//' has no *USER MATERIAL', nfail)
@@ -458,6 +546,8 @@ contains
             if (len_trim(mat%bad_data) > 0) call record_failure(trim(mat%bad_data), nfail)
             if (mat%bad_constant) then
                continue     ! its constants are not decoded: the field that is not a number is named above
+            else if (mat%line_overflow) then
+               continue     ! nor when a data line holds more than Abaqus reads (named where it is read)
             else if (mat%nconstants < 0 .and. len_trim(mat%constants_text) == 0) then
                if (mat%nread > 0) then
                   call record_failure(where//': no CONSTANTS= (Abaqus then takes 0) but '// &
@@ -470,13 +560,23 @@ contains
                call record_failure(where//': CONSTANTS='//trim(mat%constants_text)//' is not a whole number '// &
                   '(CONSTANTS= is the number of PROPS)', nfail)
             else if (mat%nconstants /= mat%nread) then
-               if (mat%nread > mat%nconstants) then
-                  call record_failure(where//': CONSTANTS='//int_to_string(mat%nconstants)//' but '// &
-                     int_to_string(mat%nread)//' values follow (fields are separated by commas: a decimal comma '// &
-                     'splits a number in two; write 0.75, not 0,75)', nfail)
+               nempty = count(mat%constant_empty(1:min(mat%nread, MAX_CONSTANTS)))
+               if (nempty > 0) then
+                  why = ' (an empty field is a value, 0 for Abaqus: '//empty_fields(mat, .false.)//')'
+               else if (mat%nread > mat%nconstants) then
+                  why = ' (fields are separated by commas: a decimal comma splits a number in two; write 0.75, not 0,75)'
                else
-                  call record_failure(where//': CONSTANTS='//int_to_string(mat%nconstants)//' but '// &
-                     int_to_string(mat%nread)//' values follow', nfail)
+                  why = ''
+               end if
+               call record_failure(where//': CONSTANTS='//int_to_string(mat%nconstants)//' but '// &
+                  int_to_string(mat%nread)//' values follow'//why, nfail)
+               ! the first CONSTANTS= values, which would be the PROPS: what the UMAT would say of
+               ! them when one is an empty field (read as 0)
+               if (nempty > 0 .and. mat%nread > mat%nconstants .and. mat%nconstants <= MAX_CONSTANTS) then
+                  call from_props(mat%constants(1:mat%nconstants), params, status, message)
+                  if (status /= STATUS_OK) call record_failure(where//': the first '//int_to_string(mat%nconstants)// &
+                     ' values as PROPS: '//trim(message)//empty_constant_note(mat, message), nfail)
+                  status = -1
                end if
             else if (mat%nread > MAX_CONSTANTS) then
                call record_failure(where//': '//int_to_string(mat%nread)//' constants: interphase takes far fewer '// &
@@ -496,7 +596,7 @@ contains
                   end if
                end if
                if (status /= STATUS_OK) then
-                  call record_failure(where//': '//trim(message), nfail)
+                  call record_failure(where//': '//trim(message)//empty_constant_note(mat, message), nfail)
                else
                   summary = trim(merge('simplified     ', 'micromechanical', params%model == MODEL_SIMPLIFIED))// &
                      ' model, '//trim(merge('displacement-driven', 'fracture-mechanics ', &
@@ -540,8 +640,8 @@ contains
                if (explicit) why = ' (since 2026-12 slots 6-9 hold the separations and the failure flag, '// &
                   'docs/abaqus.md)'
                call record_failure(path//':'//int_to_string(mat%depvar_line)//': *DEPVAR of '//trim(mat%name)//': '// &
-                  int_to_string(mat%depvar)//' but '//trim(solver)//' needs at least '//int_to_string(depvar_needed)// &
-                  why, nfail)
+                  int_to_string(mat%depvar)//empty_field_note(mat%depvar_empty)//' but '//trim(solver)// &
+                  ' needs at least '//int_to_string(depvar_needed)//why, nfail)
             end if
             if (.not. explicit .and. .not. mat%unsymm) then
                if (.not. decoded) then
@@ -552,15 +652,79 @@ contains
                      'add UNSYMM, or choose the stiffness option 2 (docs/abaqus.md)', nfail)
                end if
             end if
-            if (explicit .and. .not. (is_finite(mat%density) .and. mat%density > 0.0_dp)) &
-               call record_failure(where//': no *DENSITY > 0: the VUMAT energies are per unit mass', nfail)
+            if (explicit .and. .not. (is_finite(mat%density) .and. mat%density > 0.0_dp)) then
+               if (mat%density_line == 0) then
+                  call record_failure(where//': no *DENSITY > 0: the VUMAT energies are per unit mass', nfail)
+               else
+                  call record_failure(path//':'//int_to_string(mat%density_line)//': *DENSITY of '//trim(mat%name)// &
+                     ': '//real_to_string(mat%density)//empty_field_note(mat%density_empty)// &
+                     ' but the VUMAT needs a density > 0: its energies are per unit mass', nfail)
+               end if
+            end if
+            if (decoded .and. any(mat%constant_empty(1:min(mat%nread, MAX_CONSTANTS)))) &
+               notes = notes//'; note: '//empty_fields(mat, .true.)//' read as 0, as Abaqus reads an empty data field'
          end associate
       end if
-      if (nfail == nfail_before) then
+      ! failed checks on the section's or its material's own lines are named where they are read
+      refused = section%refused > 0
+      if (m > 0) refused = refused .or. materials(m)%refused > 0
+      if (nfail == nfail_before .and. .not. refused) then
          write (output_unit, '(a)') path//': ELSET='//trim(section%elset)//', material '// &
             trim(section%material)//', '//trim(solver)//': '//summary//': ok'//notes
       end if
    end subroutine check_section
+
+   !> For a decoder message that names PROPS(i) (its first 'PROPS('), where PROPS(i) is an empty
+   !> data field: ' (PROPS(i) is the empty field f of line L: Abaqus reads it as 0)'; '' otherwise.
+   function empty_constant_note(mat, message) result(note)
+      type(material_type), intent(in) :: mat
+      character(len=*), intent(in) :: message
+      character(len=:), allocatable :: note
+      integer :: at, close, i, ios
+      note = ''
+      at = index(message, 'PROPS(')
+      if (at == 0) return
+      close = index(message(at:), ')')
+      if (close <= 7) return
+      if (verify(message(at + 6:at + close - 2), '0123456789') /= 0 .or. close - 7 > 9) return
+      read (message(at + 6:at + close - 2), '(i9)', iostat=ios) i
+      if (ios /= 0) return
+      if (i < 1 .or. i > min(mat%nread, MAX_CONSTANTS)) return
+      if (.not. mat%constant_empty(i)) return
+      note = ' (PROPS('//int_to_string(i)//') is the empty field '//int_to_string(mat%constant_field(i))// &
+         ' of line '//int_to_string(mat%constant_line(i))//': Abaqus reads an empty data field as 0)'
+   end function empty_constant_note
+
+   !> ' (an empty field: Abaqus reads it as 0)' for a value read from an empty field; '' otherwise.
+   pure function empty_field_note(empty) result(note)
+      logical, intent(in) :: empty
+      character(len=:), allocatable :: note
+      note = ''
+      if (empty) note = ' (an empty field: Abaqus reads it as 0)'
+   end function empty_field_note
+
+   !> The material's constants given as empty fields: 'the empty field 4 of line 88' ('the empty
+   !> fields 3 of line 88 (PROPS(3)), 1 of line 89 (PROPS(9))' with `props`).
+   function empty_fields(mat, props) result(text)
+      type(material_type), intent(in) :: mat
+      logical, intent(in) :: props                   !! name the PROPS index of each
+      character(len=:), allocatable :: text
+      integer :: i, n
+      text = ''
+      n = 0
+      do i = 1, min(mat%nread, MAX_CONSTANTS)
+         if (.not. mat%constant_empty(i)) cycle
+         n = n + 1
+         if (n > 1) text = text//', '
+         text = text//int_to_string(mat%constant_field(i))//' of line '//int_to_string(mat%constant_line(i))
+         if (props) text = text//' (PROPS('//int_to_string(i)//'))'
+      end do
+      if (n > 1) then
+         text = 'the empty fields '//text
+      else
+         text = 'the empty field '//text
+      end if
+   end function empty_fields
 
    !> A cohesive section's constitutive thickness against its material's layer options (t = 0:
    !> the separation itself, T0 = 1; t > 0: T0 = t) and normal axis (0 on a cohesive element).
@@ -592,23 +756,26 @@ contains
          end if
       else if (.not. is_finite(section%thickness) .or. abs(section%thickness - t0) > 1.0e-12_dp*t0) then
          call record_failure(where//': constitutive thickness '//real_to_string(section%thickness)// &
-            ' but interphase needs '//rule, nfail)
+            empty_field_note(section%thickness_empty)//' but interphase needs '//rule, nfail)
       end if
    end subroutine check_thickness
 
-   !> The next line of the deck, left-adjusted, and its number; false at the end of the file. A
-   !> line that cannot be read, or is longer than LINE_LEN, is reported: status = 2, the file
-   !> closed, and the result true (the caller stops on the status).
-   logical function next_line(file, path, text, number, status)
+   !> The next line of the deck, left-adjusted, its number and its length as written (trailing
+   !> blanks not counted); false at the end of the file. A line that cannot be read, or is longer
+   !> than LINE_LEN, is reported: status = 2, the file closed, and the result true (the caller
+   !> stops on the status).
+   logical function next_line(file, path, text, number, status, length)
       type(text_file_type), intent(inout) :: file
       character(len=*), intent(in) :: path
       character(len=LINE_LEN), intent(out) :: text
       integer, intent(out) :: number
       integer, intent(inout) :: status
+      integer, intent(out) :: length
       character(len=MESSAGE_LEN) :: message
       integer :: outcome
       next_line = .false.
       text = ''
+      length = 0
       call read_text_line(file, outcome, message)
       number = file%line_number
       if (outcome == TEXT_END) return
@@ -627,7 +794,71 @@ contains
          return
       end if
       text = adjustl(file%buffer(1:file%length))
+      length = len_trim(file%buffer(1:file%length))
    end function next_line
+
+   !> The failed check of a keyword or data line longer than Abaqus reads.
+   function too_long(path, number, length) result(text)
+      character(len=*), intent(in) :: path
+      integer, intent(in) :: number              !! the line's number
+      integer, intent(in) :: length              !! its length (trailing blanks not counted)
+      character(len=:), allocatable :: text
+      text = path//':'//int_to_string(number)//': line of '//int_to_string(length)//' characters, but Abaqus '// &
+         'reads at most '//int_to_string(ABAQUS_LINE_LEN)//' (blanks included): split it (a keyword line after a '// &
+         'comma, a data line as its keyword allows)'
+   end function too_long
+
+   !> Count `n` failed checks of a line against what the line belongs to: the current material
+   !> (its *MATERIAL, *USER MATERIAL, *DEPVAR, *DENSITY lines) or the last cohesive section (its
+   !> keyword and data lines), whose line then says no 'ok'.
+   subroutine attribute_failures(n, keyword, current, materials, sections)
+      integer, intent(in) :: n
+      character(len=*), intent(in) :: keyword          !! the line's keyword, resolved
+      integer, intent(in) :: current                   !! the current material (0: none)
+      type(material_type), intent(inout) :: materials(:)
+      type(section_type), intent(inout) :: sections(:)
+      if (n <= 0) return
+      select case (trim(keyword))
+      case ('MATERIAL', 'USERMATERIAL', 'USERMATERIAL,THERMAL', 'DEPVAR', 'DENSITY')
+         if (current > 0) materials(current)%refused = materials(current)%refused + n
+      case ('COHESIVESECTION')
+         if (size(sections) > 0) sections(size(sections))%refused = sections(size(sections))%refused + n
+      end select
+   end subroutine attribute_failures
+
+   !> A label as Abaqus reads it (its input syntax rules): in double quotes, the text between
+   !> them, case and blanks kept; otherwise upper case, blanks removed.
+   pure function label_value(text) result(label)
+      character(len=*), intent(in) :: text           !! the parameter's value as written
+      character(len=:), allocatable :: label
+      integer :: n
+      label = trim(adjustl(text))
+      n = len(label)
+      if (n >= 2) then
+         if (label(1:1) == '"' .and. label(n:n) == '"') then
+            label = label(2:n - 1)
+            return
+         end if
+      end if
+      label = trim(upper_compact(label))
+   end function label_value
+
+   !> The position of the first comma of `text` outside double quotes (0: none).
+   pure integer function comma_outside_quotes(text) result(at)
+      character(len=*), intent(in) :: text
+      logical :: quoted
+      integer :: i
+      quoted = .false.
+      at = 0
+      do i = 1, len_trim(text)
+         if (text(i:i) == '"') then
+            quoted = .not. quoted
+         else if (text(i:i) == ',' .and. .not. quoted) then
+            at = i
+            return
+         end if
+      end do
+   end function comma_outside_quotes
 
    !> Print a failed check and count it.
    subroutine record_failure(text, nfail)
@@ -673,10 +904,10 @@ contains
       repeated = ''
       ambiguous = ''
       rest = line
-      i = index(rest, ',')
+      i = comma_outside_quotes(rest)
       do while (i > 0)
          rest = rest(i + 1:)
-         i = index(rest, ',')
+         i = comma_outside_quotes(rest)
          if (i > 0) then
             item = rest(1:i - 1)
          else
@@ -703,7 +934,7 @@ contains
       case ('MATERIAL')
          names = [character(len=NAME_LEN) :: 'NAME', 'RTEMP', 'SRATE']
       case ('USERMATERIAL')
-         names = [character(len=NAME_LEN) :: 'CONSTANTS', 'HYBRIDFORMULATION', 'TYPE', 'UNSYMM']
+         names = USER_MATERIAL_PARAMETERS
       case ('COHESIVESECTION')
          names = [character(len=NAME_LEN) :: 'CONTROLS', 'ELSET', 'MATERIAL', 'ORIENTATION', 'RESPONSE', &
             'STACKDIRECTION', 'THICKNESS']
@@ -787,14 +1018,16 @@ contains
       choice = resolve_name(upper_compact(parameter_value(names, values, name)), choices, ambiguous)
    end function parameter_choice
 
-   !> The numbers of a comma-separated data line (empty fields skipped, text fields stop).
-   subroutine parse_numbers(line, values, n, bad_field, bad_item, why)
+   !> The numbers of a comma-separated data line as Abaqus reads them: an empty field is 0
+   !> (flagged in `empty`); empty fields after the last one that is not are no values (a line
+   !> may end in a comma); a field that is not a number stops the values there.
+   subroutine parse_numbers(line, values, empty, n, bad_field, bad_item, why)
       character(len=*), intent(in) :: line
-      real(dp), intent(out) :: values(:)
-      integer, intent(out) :: n
-      !> the first comma-separated field (1-based, blank fields counted) that is not one finite
-      !> real literal (interphase_text_input's parse_real); 0 when all are (blank fields are
-      !> skipped, and the values stop there)
+      real(dp), intent(out) :: values(:)       !! at least len(line) + 1: one per field
+      logical, intent(out) :: empty(:)         !! (size(values)) the field is empty: its value is 0
+      integer, intent(out) :: n                !! the values read
+      !> the first comma-separated field (1-based, empty fields counted) that is not one finite
+      !> real literal (interphase_text_input's parse_real); 0 when all are (the values stop there)
       integer, intent(out) :: bad_field
       character(len=*), intent(out) :: bad_item  !! that field's text ('' when bad_field = 0)
       character(len=32), intent(out) :: why    !! parse_real's reason for bad_field
@@ -807,9 +1040,10 @@ contains
       bad_item = ''
       why = ''
       values = 0.0_dp
+      empty = .false.
       rest = line
       k = 0
-      do while (len_trim(rest) > 0 .and. n < size(values))
+      do while (len_trim(rest) > 0 .and. k < size(values))
          i = index(rest, ',')
          if (i > 0) then
             item = rest(1:i - 1)
@@ -819,15 +1053,20 @@ contains
             rest = ''
          end if
          k = k + 1
-         if (len_trim(item) == 0) cycle
+         if (len_trim(item) == 0) then
+            ! 0, as Abaqus reads it; a value only when a field that is not empty follows
+            empty(k) = .true.
+            cycle
+         end if
          call parse_real(item, x, ok, why)
          if (.not. ok) then
             bad_field = k
             bad_item = item
+            n = k - 1
             exit
          end if
-         n = n + 1
-         values(n) = x
+         values(k) = x
+         n = k
       end do
    end subroutine parse_numbers
 

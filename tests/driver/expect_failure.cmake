@@ -1,6 +1,7 @@
 # Run a command that must fail: exit status non-zero AND output (stdout + stderr) matching EXPECT.
 #   cmake -DPROGRAM=<exe> -DARGS="arg1|arg2|..." -DEXPECT=<regex> [-DWORKDIR=<dir>] -P expect_failure.cmake
 # -DMERGED=ON: standard output and error as one stream, in the order written.
+# -DREJECT=<regex>: the output must NOT match it either (a line that must not be printed).
 # ARGS is '|'-separated (a ';' would be split by add_test). Fails (message(FATAL_ERROR)) if the
 # command exits with status 0 or its output does not match EXPECT.
 foreach(var IN ITEMS PROGRAM EXPECT)
@@ -36,5 +37,8 @@ elseif(NOT status MATCHES "^[0-9]+$")
 endif()
 if(NOT all MATCHES "${EXPECT}")
   message(FATAL_ERROR "output does not match the expected message: ${EXPECT}")
+endif()
+if(DEFINED REJECT AND all MATCHES "${REJECT}")
+  message(FATAL_ERROR "output matches what it must not: ${REJECT}")
 endif()
 message(STATUS "ok: exit status ${status} and the expected message")
