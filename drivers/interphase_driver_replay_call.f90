@@ -95,7 +95,7 @@ contains
       namelist /replay/ source, failure, noel, npt, kinc, ntens, ndi, nshr, nprops, nstatv, props, statev, stress, sse, spd, &
          stran, dstran, time, dtime, table, rcurve
       type(entry_line_type), allocatable :: lines(:)
-      integer :: unit, ios, i, least_kinc
+      integer :: unit, ios, i
       character(len=512) :: iomsg
       character(len=:), allocatable :: name
 
@@ -139,12 +139,7 @@ contains
          end if
       end do
       select case (trim(source))
-      case ('vumat')
-         ! (the VUMAT's failed block point is noel, npt 0 (which a repeat through the UMAT passes on);
-         ! its increment totalTime/dt, 0 at t = 0)
-         least_kinc = 0
-      case ('umat', 'interphase-point')
-         least_kinc = 1
+      case ('vumat', 'umat', 'interphase-point')
       case default
          call refuse('source = '''//trim(source)//''' is not ''umat'', ''vumat'' or ''interphase-point'' '// &
             '(the writers of replay files)')
@@ -173,9 +168,11 @@ contains
          call refuse('npt = '//int_to_string(npt)//' is not an integration point number: 0 (a VUMAT''s) or more')
          return
       end if
-      if (kinc < least_kinc) then
-         call refuse('kinc = '//int_to_string(kinc)//' is not an increment number: '// &
-            int_to_string(least_kinc)//' or more')
+      ! (kinc 0: the VUMAT's failed block point has npt 0 and the increment totalTime/dt, 0 at
+      ! t = 0; a repeat of its file through the UMAT passes both on, and with INTERPHASE_REPLAY_DIR
+      ! set writes them into a 'umat' file, which must be readable too)
+      if (kinc < 0) then
+         call refuse('kinc = '//int_to_string(kinc)//' is not an increment number: 0 or more')
          return
       end if
       if (nprops < 1 .or. nprops > REPLAY_MAX_PROPS) then
