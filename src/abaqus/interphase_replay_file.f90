@@ -19,7 +19,7 @@ module interphase_replay_file
    use interphase_kinds, only: dp
    implicit none
    private
-   public :: write_replay, write_replay_group, REPLAY_VARIABLE, REPLAY_MAX_PROPS, REPLAY_MAX_STATEV
+   public :: write_replay, write_replay_group, replay_note, REPLAY_VARIABLE, REPLAY_MAX_PROPS, REPLAY_MAX_STATEV
 
    !> The environment variable naming the folder of the replay files.
    character(len=*), parameter :: REPLAY_VARIABLE = 'INTERPHASE_REPLAY_DIR'
@@ -97,6 +97,20 @@ contains
          why = 'cannot write '//path//' (in '//REPLAY_VARIABLE//')'
       end if
    end subroutine write_replay
+
+   !> The note a host message of a failed call ends with: ' (replay file: PATH)' where one was
+   !> written, ' (no replay file: WHY)' where INTERPHASE_REPLAY_DIR is set but none could be, else ''
+   !> (`written` and `why` as write_replay returns them).
+   pure function replay_note(written, why) result(note)
+      character(len=*), intent(in) :: written, why
+      character(len=:), allocatable :: note
+      note = ''
+      if (len(written) > 0) then
+         note = ' (replay file: '//written//')'
+      else if (len(why) > 0) then
+         note = ' (no replay file: '//why//')'
+      end if
+   end function replay_note
 
    !> Write the `&replay` group on an open unit (`ios` /= 0 when a write failed).
    subroutine write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, &

@@ -5,7 +5,7 @@ module interphase_umat_failure
    use interphase_kinds, only: dp
    use interphase_status, only: MESSAGE_LEN, status_message
    use interphase_abaqus_interfaces, only: interphase_host_message
-   use interphase_replay_file, only: write_replay
+   use interphase_replay_file, only: write_replay, replay_note
    implicit none
    private
    public :: umat_fail, PNEWDT_CUTBACK
@@ -32,7 +32,7 @@ contains
       integer, intent(in) :: noel, npt, kinc, ndi, nshr
       real(dp), intent(in) :: props(:), statev(:), stress(:), sse, spd, stran(:), dstran(:), time(2), dtime
       character(len=2*MESSAGE_LEN) :: full
-      character(len=:), allocatable :: replay, why, note
+      character(len=:), allocatable :: replay, why
       if (.not. (pnewdt > 0.0_dp .and. pnewdt <= PNEWDT_CUTBACK)) pnewdt = PNEWDT_CUTBACK
       if (calculix) ddsdde = 0.0_dp
       write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
@@ -40,13 +40,7 @@ contains
       call write_replay('umat', trim(full), props, statev, stress, sse, spd, stran, dstran, time, dtime, &
          noel, npt, kinc, replay, ndi, nshr, why)
       ! (the replay file's note after the message, whole: no fixed length cuts the path short)
-      note = ''
-      if (len(replay) > 0) then
-         note = ' (replay file: '//replay//')'
-      else if (len(why) > 0) then
-         note = ' (no replay file: '//why//')'
-      end if
-      call interphase_host_message(severity, trim(full)//note)
+      call interphase_host_message(severity, trim(full)//replay_note(replay, why))
    end subroutine umat_fail
 
 end module interphase_umat_failure

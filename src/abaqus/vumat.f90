@@ -60,7 +60,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_block, only: block_update, density_counts, block_supports, block_energies
    use interphase_rcurve, only: rcurve_overrun
    use interphase_abaqus_interfaces, only: interphase_host_message
-   use interphase_replay_file, only: write_replay
+   use interphase_replay_file, only: write_replay, replay_note
    implicit none
    integer, intent(in) :: nblock                    !! number of material points in this call
    integer, intent(in) :: ndir                      !! direct components: 1 (cohesive elements)
@@ -417,7 +417,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       if (nfailed > 0) then
          block
             character(len=2*MESSAGE_LEN) :: full
-            character(len=:), allocatable :: replay, why, note
+            character(len=:), allocatable :: replay, why
             real(dp) :: sep_old(3), dsep(3), rho_first
             integer :: kinc     !! the increment's number for the replay file's name, totalTime/dt
             write (full, '(a,a,i0,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
@@ -442,13 +442,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                stressold(first_failed, :), (enerinternold(first_failed) - enerinelasold(first_failed))*rho_first, &
                enerinelasold(first_failed)*rho_first, sep_old(1:ntens), dsep(1:ntens), [steptime, totaltime], dt, &
                first_failed, 0, kinc, replay, why=why)
-            note = ''
-            if (len(replay) > 0) then
-               note = ' (replay file: '//replay//')'
-            else if (len(why) > 0) then
-               note = ' (no replay file: '//why//')'
-            end if
-            call interphase_host_message(SEVERITY_WARNING, trim(full)//note)
+            call interphase_host_message(SEVERITY_WARNING, trim(full)//replay_note(replay, why))
          end block
       end if
       return
