@@ -64,7 +64,8 @@ module interphase_capi
    !> Most rows (nrows, capacity) the replays accept: an array of more rows of ntens*ntens
    !> doubles (72 bytes in 3-D) would not fit in 2**63 bytes. A size_t of 2**63 or more reads as
    !> a negative integer(c_size_t) here: it is refused too, shown as the unsigned value (size_text).
-   integer(c_size_t), parameter :: MAX_ROWS = huge(0_c_size_t)/72
+   ! (the largest multiple of 72 first: a division that truncates is a compiler warning)
+   integer(c_size_t), parameter :: MAX_ROWS = (huge(0_c_size_t) - mod(huge(0_c_size_t), 72_c_size_t))/72_c_size_t
 
 contains
 
