@@ -754,6 +754,11 @@ contains
             call record_failure(where//': THICKNESS='//trim(section%thickness_mode)//' but interphase needs '// &
                'THICKNESS=SPECIFIED with '//rule, nfail)
          end if
+      else if (section%thickness_empty .and. section%response == 'TRACTIONSEPARATION' .and. t_layer <= 0.0_dp) then
+         ! the field has a default, 1.0 for a traction-separation response (Abaqus Analysis User's
+         ! Guide, 'Defining the constitutive thickness'): an empty field takes it
+         notes = notes//'; note: the constitutive thickness is an empty field: Abaqus takes its default, 1.0, '// &
+            'for a traction-separation response (write 1. to make it plain)'
       else if (.not. is_finite(section%thickness) .or. abs(section%thickness - t0) > 1.0e-12_dp*t0) then
          call record_failure(where//': constitutive thickness '//real_to_string(section%thickness)// &
             empty_field_note(section%thickness_empty)//' but interphase needs '//rule, nfail)

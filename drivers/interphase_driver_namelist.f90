@@ -14,7 +14,7 @@
 module interphase_driver_namelist
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
-   use interphase_text_input, only: parse_real, clip_text, MAX_FILE_BYTES
+   use interphase_text_input, only: parse_real, clip_text, MAX_FILE_BYTES, UNDERFLOW_WHY
    use interphase_driver_text, only: int_to_string, to_lower, read_line, text_file_type, open_line_file, &
       close_text_file
    implicit none
@@ -97,7 +97,7 @@ contains
 
    !> Check `path` against `known` (entries of every group the program reads). ok = .false. with
    !> `message` ('path:line: &group: ...') on the first problem.
-   subroutine check_namelist_file(path, known, ok, message, lines, file_kind)
+   subroutine check_namelist_file(path, known, ok, message, lines, file_kind, subnormals)
       character(len=*), intent(in) :: path
       type(entry_kind_type), intent(in) :: known(:)
       logical, intent(out) :: ok
@@ -107,6 +107,9 @@ contains
       type(entry_line_type), allocatable, intent(out), optional :: lines(:)
       !> what the file is, for the messages (default 'case file')
       character(len=*), intent(in), optional :: file_kind
+      !> a real may be a subnormal (default no: a case file's nonzero value below 2.2e-308 is
+      !> refused; a replay file holds the host's values as the adapters wrote them, bit for bit)
+      logical, intent(in), optional :: subnormals
       character(len=:), allocatable :: line, group, seen_groups, seen_entries, name, value, what
       !> the values of the current entry (its first max_count), each ended by a newline, and
       !> their kinds (KIND_STRING for a quoted string, else 0)
@@ -387,6 +390,13 @@ contains
                good = .false.
                why = 'not a number'
                if (value_kind == 0) call parse_real(value, number, good, why)
+               if (.not. good .and. why == UNDERFLOW_WHY .and. present(subnormals)) then
+                  ! (a literal that reads as a nonzero subnormal; one that vanishes stays refused)
+                  if (subnormals) then
+                     read (value, *, iostat=ios) number
+                     good = ios == 0 .and. abs(number) > 0.0_dp
+                  end if
+               end if
                if (.not. good) message = where//' = '//shown//' is '//trim(why)
             case (KIND_INTEGER)
                good = value_kind == 0 .and. len(value) > 0

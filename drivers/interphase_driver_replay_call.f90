@@ -101,7 +101,7 @@ contains
 
       ok = .false.
       ! the case files' pre-check, with the entries of &replay
-      call check_namelist_file(path, REPLAY_ENTRIES, ok, message, lines, file_kind='replay file')
+      call check_namelist_file(path, REPLAY_ENTRIES, ok, message, lines, file_kind='replay file', subnormals=.true.)
       if (.not. ok) then
          if (index(message, path//': cannot open') == 1) message = tried_path(path)//message(len(path) + 1:)
          return

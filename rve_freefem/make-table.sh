@@ -64,8 +64,10 @@ if [ "$check_only" = 0 ]; then
   command -v FreeFem++ >/dev/null 2>&1 || die 3 "FreeFem++ not found: install the Debian package freefem++"
 fi
 case "$jobs" in ''|*[!0-9]*) die 2 "--jobs = '$jobs' must be a positive integer" ;; esac
+# (leading zeros dropped: 08 is 8, not an octal number, wherever the shell computes with it)
+while [ "${#jobs}" -gt 1 ] && [ "${jobs#0}" != "$jobs" ]; do jobs=${jobs#0}; done
 [ "${#jobs}" -le 4 ] || die 2 "--jobs = $jobs is too large: at most 9999 parallel FreeFEM runs"
-[ "$((10#$jobs))" -ge 1 ] || die 2 "--jobs = $jobs must be >= 1"
+[ "$jobs" -ge 1 ] || die 2 "--jobs = $jobs must be >= 1"
 
 # ---------------------------------------------------------------- read and check the parameters
 # prints "key<TAB>value" lines; fails on syntax errors and unknown keys.  A carriage return at

@@ -22,7 +22,8 @@
 # values the loader knows; b and h given; h = h_m + h_b (1e-12 h) where the layers are given; one "# columns:"
 # line naming the 23 columns of format 1 (and I_fNT, format 2), each once; every row as many
 # numbers, each 0 or of magnitude in [2.2250738585072014e-308, 1e100] (1e-400, 1e-310 refused), [sign](digits[.[digits]] | .digits)[(e|E|d|D)[sign]digits]; a strictly
-# ascending from 0 to b; at least 4 rows (the loader's not-a-knot spline).
+# ascending from 0 to b; at least 4 rows (the loader's not-a-knot spline); the a = 0 row's Dbar_TT
+# and Dbar_NN 0 (within 1e-8 h) with the elastic constants, else in [0, h].
 function abs(x) { return x < 0 ? -x : x }
 function isnumber(s) { return s ~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?$/ }
 # its value (a d/D exponent read as e); finite() is false beyond the range of a double
@@ -174,7 +175,7 @@ NF == 0 { next }
   }
   for (i = 1; i <= NF && i <= ncol; i++) if (pos[i] > 0) val[pos[i]] = x[i]
   if (n > 1 && !(val[1] > a_prev)) refuse("row " n " (line " NR "): a = " val[1] " does not exceed the previous a = " a_prev)
-  if (n == 1) a_first = val[1]
+  if (n == 1) { a_first = val[1]; dbar0["Dbar_TT"] = val[7]; dbar0["Dbar_NN"] = val[10]; dbar0_line = NR }
   a_prev = val[1]
   out = ""; for (j = 1; j <= (withI ? 24 : 23); j++) out = out (j > 1 ? " " : "") sprintf("%.17g", val[j])
   print out > dest
@@ -200,6 +201,17 @@ END {
     lim = short_crack_a_tf(numval(hdr["E_m"]), numval(hdr["nu_m"]), numval(hdr["E_b"]), numval(hdr["nu_b"]))
     if (abs(numval(hdr["a_Tf_limit"]) - lim) > 1e-8 * abs(lim))
       refuse("line " keyline["a_Tf_limit"] ": a_Tf_limit = " hdr["a_Tf_limit"] " contradicts the header's E_m, nu_m, E_b, nu_b, which give " sprintf("%.17g", lim))
+  }
+  # the a = 0 row's mean crack jumps, as the loader checks them: 0 (within 1e-8 h) for a crack
+  # between two elastic layers (the header's E_m, nu_m, E_b, nu_b), else within [0, h]
+  if (n >= 1 && ("h" in hdr) && header_number("h", hdr["h"], 0, "")) {
+    h = numval(hdr["h"])
+    for (k in dbar0) {
+      if (ne == 4 && abs(dbar0[k]) > 1e-8 * h)
+        refuse("line " dbar0_line ": " k " = " dbar0[k] " at a = 0, where the limit a -> 0+ is 0 (within 1e-8 h) for a crack between the header's elastic layers")
+      else if (ne != 4 && (dbar0[k] < -1e-8 * h || dbar0[k] > h * (1 + 1e-8)))
+        refuse("line " dbar0_line ": " k " = " dbar0[k] " at a = 0 lies outside [0, h = " h " mm]")
+    }
   }
   if (n < 4) refuse(n " rows: a table needs at least 4 (a = 0, a = b and 2 between; the loader's not-a-knot cubic spline)")
   else if (("b" in hdr) && header_number("b", hdr["b"], 0, "")) {

@@ -733,7 +733,6 @@ contains
       real(dp) :: guide_scale
       integer :: guide_steps
       character(len=32) :: bad_name
-      integer :: ios
 
       call read_rve_table(path, table, status, message)
       if (status /= STATUS_OK) return
@@ -757,15 +756,13 @@ contains
       if (status /= STATUS_OK) then
          ! (the path as tried: a relative one resolved; D with its ligament 1 - D, which four
          ! digits of D near a = b would hide)
-         ! (the path shortened to leave the rest of the message its 145 characters; iostat: a
-         ! message never stops the host)
+         ! (the path shortened to leave the rest of the message its 145 characters)
          ! (es_field: a three-digit exponent keeps its E, -1.205E+273, not -1.205+273)
-         write (message, '(a,a,a,a,a,a,a,a,a,a,a)', iostat=ios) &
-            message_path(table%source, MESSAGE_LEN - 145), &
-            ': interpolant between rows: ', trim(bad_name), ' = ', trim(adjustl(es_field(bad_value, 11, 3))), &
-            ' at 1 - D = ', trim(adjustl(es_field(1.0_dp - bad_d, 11, 3))), &
-            ' (a = b - ', trim(adjustl(es_field((1.0_dp - bad_d)*table%b, 11, 3))), ' mm, b = ', &
-            trim(adjustl(es_field(table%b, 11, 3))), ' mm), not > 0: add rows there'
+         message = message_path(table%source, MESSAGE_LEN - 145)// &
+            ': interpolant between rows: '//trim(bad_name)//' = '//trim(adjustl(es_field(bad_value, 11, 3)))// &
+            ' at 1 - D = '//trim(adjustl(es_field(1.0_dp - bad_d, 11, 3)))// &
+            ' (a = b - '//trim(adjustl(es_field((1.0_dp - bad_d)*table%b, 11, 3)))//' mm, b = '// &
+            trim(adjustl(es_field(table%b, 11, 3)))//' mm), not > 0: add rows there'
          return
       end if
       call guide_build(knots, guide, guide_scale, guide_steps)

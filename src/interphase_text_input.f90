@@ -27,7 +27,7 @@ module interphase_text_input
       TEXT_FILE_TOO_LARGE = 3, TEXT_READ_ERROR = 4
 
    !> Why parse_real refuses a nonzero literal whose magnitude is below tiny(1.0_dp).
-   character(len=*), parameter :: UNDERFLOW_WHY = 'out of range (|x| < 2.2e-308)'
+   character(len=*), parameter, public :: UNDERFLOW_WHY = 'out of range (|x| < 2.2e-308)'
 
    !> Bytes read from the file at once (its size permitting).
    integer, parameter :: CHUNK_LEN = 4096

@@ -60,6 +60,12 @@ for opt in "--refine 1e-400|--refine = '1e-400' is out of range" \
   rc=$?
   if [ $rc -eq 2 ] && grep -q -- "$pat" "$work/opt.out"; then echo "ok   $args: exit 2"; else echo "FAIL $args (exit $rc)"; cat "$work/opt.out"; fail=1; fi
 done
+# leading zeros: --jobs 00002 and 08 are 2 and 8
+for args in "--jobs 00002" "--jobs 08"; do
+  bash "$here/make-table.sh" --check $args "$work/good.params" > "$work/opt.out" 2>&1
+  rc=$?
+  if [ $rc -eq 0 ]; then echo "ok   $args: exit 0"; else echo "FAIL $args (exit $rc)"; cat "$work/opt.out"; fail=1; fi
+done
 # Windows line ends: the same file is good (--check: the parameters only, no FreeFEM run)
 printf '%s\n' "$good" | sed 's/$/\r/' > "$work/crlf.params"
 bash "$here/make-table.sh" --check "$work/crlf.params" > "$work/crlf.out" 2>&1

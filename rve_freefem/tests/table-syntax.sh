@@ -99,4 +99,9 @@ grep -v '^# h_b = ' "$table" > "$work/no-hb.dat"
 check "h_m without h_b refused" fail "$work/no-hb.dat" 'the header gives h_m but not h_b'
 grep -v '^# E_b = ' "$table" > "$work/no-Eb.dat"
 check "E_m without E_b refused" fail "$work/no-Eb.dat" 'E_m, nu_m, E_b, nu_b but not E_b'
+# the a = 0 row's Dbar: 0 within 1e-8 h with the header's elastic constants (the loader's check)
+data 1 10 3 > "$work/dbar0-three.dat"
+check "Dbar_NN = 3 at a = 0 refused" fail "$work/dbar0-three.dat" 'Dbar_NN = 3 at a = 0, where the limit a -> 0[+] is 0'
+data 1 7 1e-6 > "$work/dbar0-small.dat"
+check "Dbar_TT = 1e-6 at a = 0 refused (1e-8 h = 5e-8)" fail "$work/dbar0-small.dat" 'Dbar_TT = 1e-06 at a = 0'
 exit $fail

@@ -430,12 +430,13 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             dsep(1) = THICKNESS*straininc(first_failed, 1)
             dsep(2:ntens) = SHEAR_FACTOR*THICKNESS*straininc(first_failed, 2:ntens)
             rho_first = density(first_failed)*THICKNESS
-            ! (0 where dt is not a positive finite number, or the quotient would not be below 2e9:
-            ! no comparison with a NaN, no overflow; totalTime is finite, checked at the start)
+            ! (0 where dt is not a positive finite number, or the quotient would not be below
+            ! 999999999, the 9 digits a replay file's integers have: no comparison with a NaN, no
+            ! overflow; totalTime is finite, checked at the start)
             kinc = 0
             if (is_finite(dt)) then
                if (dt > 0.0_dp .and. totaltime >= 0.0_dp) then
-                  if (totaltime/2.0e9_dp < dt) kinc = nint(totaltime/dt)
+                  if (totaltime/999999999.0_dp < dt) kinc = nint(totaltime/dt)
                end if
             end if
             call write_replay('vumat', trim(full), props, stateold(first_failed, 1:NSTATV_SHARED), &
