@@ -217,6 +217,8 @@ contains
       standard_line = 0
       standard_keyword = ''
       keyword = ''
+      ! (set before the loop: gcc -O3 reports its length as maybe uninitialised otherwise)
+      label = ''
       current = 0
       data_lines = 0
       lineno = 0

@@ -165,8 +165,9 @@ contains
       else if (folder(1:1) == '-') then
          message = option//' needs a directory, got '''//folder//''', which begins with ''-'' like an option '// &
             '(a folder named so: write ./'//folder//')'
-      else if (file_exists(folder) .and. .not. is_directory(folder)) then
-         message = option//' '//folder//' is not a folder (a file of that name exists)'
+      else if (file_exists(folder)) then
+         ! (nested, not with .and.: is_directory is impure and must not be skipped)
+         if (.not. is_directory(folder)) message = option//' '//folder//' is not a folder (a file of that name exists)'
       end if
    end function check_output_folder
 
