@@ -32,7 +32,7 @@ program bench_umat
    use interphase_params, only: law_params_type, to_props
    use interphase_abaqus_interfaces, only: umat
    use interphase_driver_version, only: INTERPHASE_VERSION
-   use interphase_driver_cli, only: exit_program, get_argument, refuse_extra_arguments
+   use interphase_driver_cli, only: exit_program, get_argument, refuse_extra_arguments, digits_value
    use interphase_driver_text, only: int_to_string
    implicit none
 
@@ -62,12 +62,10 @@ program bench_umat
    npoints = 1
    nargs = command_argument_count()
    if (nargs >= 1) then
+      ! (--help and --version stand alone: an argument beside them would be ignored)
+      message = refuse_extra_arguments()
+      if (len(message) > 0) call fail(message)
       call get_argument(1, argument)
-      if (argument == '-h' .or. argument == '--help' .or. argument == '--version') then
-         ! (they stand alone: an argument beside them would be ignored)
-         message = refuse_extra_arguments()
-         if (len(message) > 0) call fail(message)
-      end if
       if (argument == '-h' .or. argument == '--help') then
          write (*, '(a)') 'usage: interphase-bench [CALLS_PER_RUN [RUNS [CASE [POINTS]]]]', &
             '       interphase-bench --help | --version', &
@@ -391,14 +389,9 @@ contains
       integer, intent(in) :: position             !! argument number
       character(len=*), intent(in) :: name        !! its name for the message
       character(len=:), allocatable :: text
-      integer :: ios
       call get_argument(position, text)
-      value = 0
-      ios = 1
-      if (len(text) >= 1 .and. len(text) <= 9) then
-         if (verify(text, '0123456789') == 0) read (text, '(i9)', iostat=ios) value
-      end if
-      if (ios /= 0 .or. value < 1) call fail(name//' (argument '//int_to_string(position)//') must be a whole '// &
+      value = digits_value(text)
+      if (value < 1) call fail(name//' (argument '//int_to_string(position)//') must be a whole '// &
          "number from 1 to 999999999 (digits only), got '"//text//"'", usage=.true.)
    end function positive_argument
 

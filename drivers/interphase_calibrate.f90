@@ -27,7 +27,7 @@ program interphase_calibrate
    use interphase_params, only: law_params_type, from_props
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_cli, only: get_argument, exit_program, print_version, refuse_extra_arguments, &
-      refuse_special_output, is_directory, open_failure, OPEN_MESSAGE_LEN
+      refuse_special_output, is_directory, open_failure, OPEN_MESSAGE_LEN, digits_value
    use interphase_driver_text, only: directory_of
    implicit none
 
@@ -70,11 +70,8 @@ program interphase_calibrate
          i = i + 1
          call get_argument(i, argument)
          ! a whole number of at most 9 digits, at least 10
-         ios = 1
-         if (len(argument) > 0 .and. len(argument) <= 9) then
-            if (verify(argument, '0123456789') == 0) read (argument, '(i9)', iostat=ios) increments
-         end if
-         if (ios /= 0) call fail("--increments needs a whole number from 10 to 999999999, got '"//argument//"'")
+         increments = digits_value(argument)
+         if (increments < 0) call fail("--increments needs a whole number from 10 to 999999999, got '"//argument//"'")
          if (increments < 10) call fail('--increments needs at least 10, got '//argument)
       case ('--write')
          if (len(write_path) > 0) call fail('--write given twice')

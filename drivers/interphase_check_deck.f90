@@ -577,7 +577,7 @@ contains
                if (nempty > 0 .and. mat%nread > mat%nconstants .and. mat%nconstants <= MAX_CONSTANTS) then
                   call from_props(mat%constants(1:mat%nconstants), params, status, message)
                   if (status /= STATUS_OK) call record_failure(where//': the first '//int_to_string(mat%nconstants)// &
-                     ' values as PROPS: '//trim(message)//empty_constant_note(mat, message), nfail)
+                     ' values as PROPS: '//trim(message)//empty_constants_note(mat), nfail)
                   status = -1
                end if
             else if (mat%nread > MAX_CONSTANTS) then
@@ -598,7 +598,7 @@ contains
                   end if
                end if
                if (status /= STATUS_OK) then
-                  call record_failure(where//': '//trim(message)//empty_constant_note(mat, message), nfail)
+                  call record_failure(where//': '//trim(message)//empty_constants_note(mat), nfail)
                else
                   summary = trim(merge('simplified     ', 'micromechanical', params%model == MODEL_SIMPLIFIED))// &
                      ' model, '//trim(merge('displacement-driven', 'fracture-mechanics ', &
@@ -676,26 +676,16 @@ contains
       end if
    end subroutine check_section
 
-   !> For a decoder message that names PROPS(i) (its first 'PROPS('), where PROPS(i) is an empty
-   !> data field: ' (PROPS(i) is the empty field f of line L: Abaqus reads it as 0)'; '' otherwise.
-   function empty_constant_note(mat, message) result(note)
+   !> ' (the empty field f of line L (PROPS(i)), ... read as 0, as Abaqus reads an empty data
+   !> field)' after a decoder's message when some of the material's constants were empty fields;
+   !> '' when none was.
+   function empty_constants_note(mat) result(note)
       type(material_type), intent(in) :: mat
-      character(len=*), intent(in) :: message
       character(len=:), allocatable :: note
-      integer :: at, close, i, ios
       note = ''
-      at = index(message, 'PROPS(')
-      if (at == 0) return
-      close = index(message(at:), ')')
-      if (close <= 7) return
-      if (verify(message(at + 6:at + close - 2), '0123456789') /= 0 .or. close - 7 > 9) return
-      read (message(at + 6:at + close - 2), '(i9)', iostat=ios) i
-      if (ios /= 0) return
-      if (i < 1 .or. i > min(mat%nread, MAX_CONSTANTS)) return
-      if (.not. mat%constant_empty(i)) return
-      note = ' (PROPS('//int_to_string(i)//') is the empty field '//int_to_string(mat%constant_field(i))// &
-         ' of line '//int_to_string(mat%constant_line(i))//': Abaqus reads an empty data field as 0)'
-   end function empty_constant_note
+      if (any(mat%constant_empty(1:min(mat%nread, MAX_CONSTANTS)))) &
+         note = ' ('//empty_fields(mat, .true.)//' read as 0, as Abaqus reads an empty data field)'
+   end function empty_constants_note
 
    !> ' (an empty field: Abaqus reads it as 0)' for a value read from an empty field; '' otherwise.
    pure function empty_field_note(empty) result(note)

@@ -11,7 +11,7 @@ module interphase_driver_cli
    public :: run_arguments_type, parse_run_arguments, get_argument, make_directory, gnuplot_available, &
       run_gnuplot, exit_program, rename_file, remove_file, file_exists, print_version, is_special_file, &
       refuse_special_output, open_failure, OPEN_MESSAGE_LEN, is_directory, refuse_extra_arguments, &
-      check_output_folder
+      check_output_folder, digits_value
 
    interface
       !> C's exit(): ends the program with a status and no "STOP" line or backtrace.
@@ -170,6 +170,18 @@ contains
          if (.not. is_directory(folder)) message = option//' '//folder//' is not a folder (a file of that name exists)'
       end if
    end function check_output_folder
+
+   !> The value of `text` when it is a whole number written with 1 to 9 digits (no sign, no
+   !> blank, no exponent: a command-line count read as a whole), else -1.
+   pure integer function digits_value(text) result(value)
+      character(len=*), intent(in) :: text
+      integer :: ios
+      value = -1
+      if (len(text) < 1 .or. len(text) > 9) return
+      if (verify(text, '0123456789') /= 0) return
+      read (text, '(i9)', iostat=ios) value
+      if (ios /= 0) value = -1
+   end function digits_value
 
    !> Whether `path` names an existing directory (symbolic links followed).
    logical function is_directory(path)
