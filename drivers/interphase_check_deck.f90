@@ -9,8 +9,9 @@
 !> with *USER MATERIAL whose constants decode as interphase PROPS (the library's own decoder:
 !> the same messages the UMAT would give at the first increment), *DEPVAR at least 4 (UMAT; 5 with
 !> viscous regularisation) or 9 (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for
-!> Abaqus/Standard with the consistent tangent (stiffness option 0) and a
-!> *DENSITY > 0 for Abaqus/Explicit. It reads keywords (a keyword line that ends in a comma
+!> Abaqus/Standard with the consistent tangent (stiffness option 0), a *DENSITY > 0 for
+!> Abaqus/Explicit, and no *DEPVAR, DELETE= among interphase's slots (which hold 0 at every intact
+!> point: Abaqus would delete it). It reads keywords (a keyword line that ends in a comma
 !> continued on the next; keywords, parameters and values abbreviated as Abaqus allows) and their
 !> data lines only (no *INCLUDE, no parts/assemblies
 !> resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) as
@@ -30,7 +31,8 @@ program interphase_check_deck
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
       RCURVE_EQUIVALENT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
-      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST
+      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
+      SV_FAILED
    use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count
    use interphase_driver_cli, only: get_argument, exit_program, print_version
@@ -102,6 +104,8 @@ program interphase_check_deck
       integer :: depvar_line = 0               !! line of *DEPVAR's count (0: none)
       logical :: depvar_bad = .false.          !! *DEPVAR given, but not a count (reported)
       logical :: depvar_empty = .false.        !! *DEPVAR's count an empty field (Abaqus reads 0)
+      character(len=80) :: delete_text = ''    !! *DEPVAR's DELETE= as written ('' when absent)
+      integer :: delete_line = 0               !! line of the *DEPVAR keyword with DELETE=
       real(dp) :: density = -1.0_dp            !! *DENSITY (-1: none)
       integer :: density_line = 0              !! line of *DENSITY's value (0: none)
       logical :: density_empty = .false.       !! *DENSITY's value an empty field (Abaqus reads 0)
@@ -163,7 +167,8 @@ contains
       write (unit, '(a)') 'usage: interphase-check-deck DECK.inp [MORE.inp ...]', &
          '       interphase-check-deck --help | --version', &
          '  Checks every *COHESIVE SECTION of an Abaqus deck that uses interphase: RESPONSE, THICKNESS,', &
-         '  *USER MATERIAL constants decoded as interphase PROPS, *DEPVAR, UNSYMM, *DENSITY (Explicit).', &
+         '  *USER MATERIAL constants decoded as interphase PROPS, *DEPVAR (and its DELETE=), UNSYMM,', &
+         '  *DENSITY (Explicit).', &
          '  *INCLUDE files are not read (each is named: check it on its own).', &
          '  Exit status: 0 all checks pass, 1 a check failed, 2 a file cannot be read.', &
          '  Documented in drivers/README.md and docs/abaqus.md.'
@@ -345,6 +350,12 @@ contains
                         if (ios /= 0) materials(current)%nconstants = -1
                      end if
                   end if
+               end if
+            case ('DEPVAR')
+               ! the element deletion variable (checked with the section: interphase's slots hold 0)
+               if (current > 0 .and. any(parameter_names == 'DELETE')) then
+                  materials(current)%delete_text = parameter_value(parameter_names, parameter_values, 'DELETE')
+                  materials(current)%delete_line = lineno
                end if
             case ('COHESIVESECTION')
                ! ELSET= and MATERIAL= are required (Abaqus Keywords Guide); RESPONSE= is checked
@@ -645,6 +656,7 @@ contains
                   int_to_string(mat%depvar)//empty_field_note(mat%depvar_empty)//' but '//trim(solver)// &
                   ' needs at least '//int_to_string(depvar_needed)//why, nfail)
             end if
+            if (mat%delete_line > 0) call check_delete(path, mat, explicit, depvar_needed, notes, nfail)
             if (.not. explicit .and. .not. mat%unsymm) then
                if (.not. decoded) then
                   call record_failure(where//': no UNSYMM: the tangent DDSDDE is unsymmetric (friction, damage)', nfail)
@@ -675,6 +687,61 @@ contains
             trim(section%material)//', '//trim(solver)//': '//summary//': ok'//notes
       end if
    end subroutine check_section
+
+   !> `*DEPVAR, DELETE=n` of a material: Abaqus deletes a material point whose state variable n is
+   !> 0 (1: active). interphase's own slots (1 to depvar_needed) start from zeros and hold 0 at an
+   !> intact point (or at one that has not failed: the VUMAT's flag), so a DELETE= among them would
+   !> delete every intact point: a failed check. A slot beyond them is the user's (the VUMAT
+   !> carries it over, the UMAT leaves it alone): a note that interphase never flags a point for
+   !> deletion. DELETE= that is not a whole number, or beyond *DEPVAR's count, is a failed check.
+   subroutine check_delete(path, mat, explicit, depvar_needed, notes, nfail)
+      character(len=*), intent(in) :: path
+      type(material_type), intent(in) :: mat
+      logical, intent(in) :: explicit
+      integer, intent(in) :: depvar_needed       !! interphase's slots for this material and solver
+      character(len=:), allocatable, intent(inout) :: notes
+      integer, intent(inout) :: nfail
+      character(len=:), allocatable :: where, slot
+      integer :: n, ios
+      where = path//':'//int_to_string(mat%delete_line)//': *DEPVAR of '//trim(mat%name)//', DELETE='// &
+         trim(mat%delete_text)
+      n = -1
+      if (len_trim(mat%delete_text) > 0 .and. len_trim(mat%delete_text) <= 9) then
+         if (verify(trim(mat%delete_text), '0123456789') == 0) then
+            read (mat%delete_text, '(i9)', iostat=ios) n
+            if (ios /= 0) n = -1
+         end if
+      end if
+      if (n < 1) then
+         call record_failure(where//': not a state variable number (a whole number >= 1)', nfail)
+      else if (mat%depvar >= 0 .and. n > mat%depvar) then
+         call record_failure(where//': beyond the '//int_to_string(mat%depvar)//' state variables of *DEPVAR', nfail)
+      else if (n <= depvar_needed) then
+         select case (n)
+         case (SV_DAMAGE)
+            slot = 'the damage D, 0 at every intact point'
+         case (SV_SLIP_1, SV_SLIP_2)
+            slot = 'a frictional slip, 0 until the crack slides'
+         case (SV_REGIME)
+            slot = 'the regime, 0 at every intact point'
+         case (SV_DAMAGE_INVISCID)
+            slot = 'with viscous regularisation the damage law''s own D, 0 at every intact point'
+         case (SV_FAILED)
+            slot = 'the failure flag, 0 at every point whose update has not failed'
+         case default
+            slot = 'a separation, 0 at the start'
+         end select
+         call record_failure(where//': STATEV('//int_to_string(n)//') is interphase''s ('//trim(slot)// &
+            '; every point starts from zeros), and Abaqus deletes a point whose deletion variable is 0: every '// &
+            'intact point would be deleted. interphase does not flag points for deletion (a fully cracked joint '// &
+            'still carries contact and friction, docs/abaqus.md): drop DELETE=', nfail)
+      else
+         slot = ''
+         if (explicit) slot = ' (the VUMAT carries it over)'
+         notes = notes//'; note: *DEPVAR, DELETE='//int_to_string(n)//': interphase never writes STATEV('// &
+            int_to_string(n)//')'//slot//', so a point is deleted only if that slot starts at 0'
+      end if
+   end subroutine check_delete
 
    !> ' (the empty field f of line L (PROPS(i)), ... read as 0, as Abaqus reads an empty data
    !> field)' after a decoder's message when some of the material's constants were empty fields;
@@ -939,6 +1006,8 @@ contains
          names = [character(len=NAME_LEN) :: 'ALLSDTOL', 'ALPHA', 'APPLICATION', 'DIRECT', 'ELEMENTBYELEMENT', &
             'EXPLICIT', 'FIXEDTIMEINCREMENTATION', 'HAFTOL', 'HALFINC', 'IMPROVEDDTMETHOD', 'INITIAL', 'NOHAF', &
             'SCALEFACTOR']
+      case ('DEPVAR')
+         names = [character(len=NAME_LEN) :: 'DELETE']
       case ('INCLUDE')
          names = [character(len=NAME_LEN) :: 'INPUT', 'PASSWORD']
       case default
