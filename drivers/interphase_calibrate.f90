@@ -137,8 +137,8 @@ program interphase_calibrate
    write (output_unit, '(a)') '  simplified model with the same K, sf and fracture energies (s0 = 2 G/(K sf)):'
    write (output_unit, '(a,es16.8,a,es16.8,a)') '  s0_N = ', s0_n, ' mm (given ', run%props(PROP_S0_N), ')'
    write (output_unit, '(a,es16.8,a,es16.8,a)') '  s0_T = ', s0_t, ' mm (given ', run%props(PROP_S0_T), ')'
-   if (.not. (s0_n < run%props(PROP_SF_N) .and. s0_t < run%props(PROP_SF_T))) &
-      call fail('no simplified model matches: the calibrated s0 is not below sf (G > 1/2 K sf^2)')
+   call check_below_sf('I', 'N', g_i, k_n, s0_n, run%props(PROP_SF_N))
+   call check_below_sf('II', 'T', g_ii, k_t, s0_t, run%props(PROP_SF_T))
 
    if (len(write_path) > 0) then
       open (newunit=unit, file=write_path, status='replace', action='write', iostat=ios, iomsg=open_message)
@@ -207,6 +207,26 @@ contains
          real_to_string(energy)//' N/mm is not the fracture energy (with the fracture law sf_'//mode// &
          ' does not bound the growth: raise it until the test breaks the interface)')
    end subroutine monotonic
+
+   !> A simplified model with the stiffness K and the full-crack separation sf dissipates at most
+   !> 1/2 K sf^2 (at s0 = sf): a larger G has no s0 < sf, and the failure names the mode, the
+   !> values and the case's entry to change.
+   subroutine check_below_sf(roman, mode, energy, stiffness, s0, sf)
+      character(len=*), intent(in) :: roman       !! 'I' or 'II', for the message
+      character(len=1), intent(in) :: mode        !! 'N' or 'T', for the message
+      real(dp), intent(in) :: energy, stiffness   !! G (N/mm) and K (MPa/mm) of the test
+      real(dp), intent(in) :: s0, sf              !! the calibrated s0 and the case's sf (mm)
+      character(len=:), allocatable :: entry
+      if (s0 < sf) return
+      entry = 'sf_'//merge('n', 't', mode == 'N')
+      call fail('no simplified model matches the mode-'//roman//' test: s0_'//mode//' = 2 G_'//roman// &
+         '/(K_'//mode//' sf_'//mode//') = '//real_to_string(s0)//' mm is not below sf_'//mode//' = '// &
+         real_to_string(sf)//' mm (&material: '//entry//'): G_'//roman//' = '//real_to_string(energy)// &
+         ' N/mm exceeds the most the simplified model with K_'//mode//' = '//real_to_string(stiffness)// &
+         ' MPa/mm and this sf_'//mode//' dissipates, 1/2 K_'//mode//' sf_'//mode//'^2 = '// &
+         real_to_string(0.5_dp*stiffness*sf**2)//' N/mm (with the fracture law sf_'//mode// &
+         ' only sets how far the tests go: raise '//entry//')')
+   end subroutine check_below_sf
 
    subroutine fail(text)
       character(len=*), intent(in) :: text

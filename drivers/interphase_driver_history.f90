@@ -28,7 +28,7 @@ module interphase_driver_history
    use interphase_finite, only: difference_is_finite
    implicit none
    private
-   public :: history_type, read_history, carriage_return_message, parse_number
+   public :: history_type, read_history, carriage_return_message, parse_number, separator_hint
 
    !> A prescribed separation history.
    type :: history_type
@@ -171,7 +171,7 @@ contains
          if (ncolumns == 0) then
             if (size(starts) /= 3 .and. size(starts) /= 4) then
                message = where//'found '//int_to_string(size(starts))//' columns; expected 3 '// &
-                  '(t s_T s_N, 2-D) or 4 (t s_T1 s_T2 s_N, 3-D)'
+                  '(t s_T s_N, 2-D) or 4 (t s_T1 s_T2 s_N, 3-D)'//separator_hint(line)
                call close_text_file(unit)
                return
             end if
@@ -308,6 +308,10 @@ contains
 
       kind = PLAIN_COMMENT
       kept = without_parentheses(text)
+      ! (commas and semicolons separate the names too: `# t, s_T, Sigma_N`, a spreadsheet's header)
+      do i = 1, len(kept)
+         if (kept(i:i) == ',' .or. kept(i:i) == ';') kept(i:i) = ' '
+      end do
       call split_words(kept, starts, ends)
       if (size(starts) == 0) return
       first = 1
@@ -347,6 +351,25 @@ contains
          end if
       end function in_order
    end function column_words_kind
+
+   !> '' when `line` (a data line without its comment) holds no comma or semicolon; else the note
+   !> that ends a wrong-column-count message: the fields of a history are separated by blanks, and
+   !> `0,0,0` (a spreadsheet's CSV) is one field.
+   pure function separator_hint(line) result(hint)
+      character(len=*), intent(in) :: line
+      character(len=:), allocatable :: hint
+      character(len=1) :: separator
+      hint = ''
+      if (index(line, ',') > 0) then
+         separator = ','
+      else if (index(line, ';') > 0) then
+         separator = ';'
+      else
+         return
+      end if
+      hint = ' (the fields of a line are separated by blanks or tabs, not by '''//separator// &
+         ''': write the values with blanks between them)'
+   end function separator_hint
 
    !> `text` with every group in parentheses, nested ones included, blanked (an unclosed group runs
    !> to the end).

@@ -14,7 +14,7 @@ module interphase_fe2d_case
       ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
-   use interphase_driver_history, only: carriage_return_message, parse_number
+   use interphase_driver_history, only: carriage_return_message, parse_number, separator_hint
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words, text_file_type, open_line_file, close_text_file
    implicit none
@@ -524,7 +524,7 @@ contains
          if (size(starts) == 0) cycle
          if (size(starts) /= 2) then
             message = shown//':'//int_to_string(line_number)//': found '// &
-               int_to_string(size(starts))//' columns; expected 2 (t u_shear)'
+               int_to_string(size(starts))//' columns; expected 2 (t u_shear)'//separator_hint(line)
             call close_text_file(unit)
             return
          end if

@@ -685,6 +685,12 @@ def test_read_mixed_history(source_dir, tmp_path):
     for text, line, match in [("# column: t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, 'looks like a "# columns:" line'),
                               ("#  Columns : t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, 'looks like a "# columns:" line'),
                               ("# columns t s_T Sigma_N\n0 0 0\n1 0 1\n", 1, "names traction columns, but is not"),
+                              # a spreadsheet's header: commas and semicolons separate the names
+                              ("# t, s_T, Sigma_N\n0 0 0\n1 0 -0.5\n", 1, "names traction columns, but is not"),
+                              ("# t (s);s_T (mm);Sigma_N (MPa)\n0 0 0\n1 0 -0.5\n", 1, "names traction columns"),
+                              ("# t, s_N, s_T\n0 0 0\n1 0.01 0\n", 1, "in another order"),
+                              ("# t, s_T, s_N\n0,0,0\n1,0,0.01\n", 2, "found 1 columns; expected 3 .* \\(the "
+                               "fields of a line are separated by blanks or tabs, not by ','"),
                               ("0 0 0\n#\tt  s_T (mm)  SIGMA_N (MPa)\n1 0 1\n", 2, "names traction columns"),
                               ("# t s_N s_T\n0 0 0\n1 0.01 0\n", 1, "names the columns in another order"),
                               ("#  t  s_N (mm)  s_T (mm)\n0 0 0\n1 0.01 0\n", 1, "in another order"),
@@ -960,6 +966,9 @@ DRIVER_CASES = {
     "time": ("'h.txt'", "'h.txt'", "0 0 0\n1 0 0\n0.5 0 0\n"),
     "vertical_tab_in_row": ("'h.txt'", "'h.txt'", "0 0 0\n1 0\x0b0.01\n"),
     "carriage_return_in_row": ("'h.txt'", "'h.txt'", "0 0\r0\n1\t0 0.01\r\n"),
+    "columns_header_commas": ("'h.txt'", "'h.txt'", "# t, s_T, Sigma_N\n0 0 0\n1 0 -0.5\n"),
+    "rows_commas": ("'h.txt'", "'h.txt'", "0,0,0\n1,0,0.01\n"),
+    "rows_semicolons": ("'h.txt'", "'h.txt'", "0;0;0\n1;0;0.01\n"),
     "columns_upper_t": ("'h.txt'", "'h.txt'", "# columns: T s_T Sigma_N\n0 0 0\n1 0 0.01\n"),
     "table_simplified": ("'simplified'", "'simplified', table = 'x.dat'", None),
     "increments_word": ("increments = 20", "increments = abc", None),

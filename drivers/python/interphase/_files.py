@@ -265,7 +265,8 @@ def _column_words(comment):
     of them is a traction's (`# t s_T Sigma_N`: read as a plain comment it would run the tractions
     as separations), "order" when they are not in the rows' order (`# t s_N s_T`), else None
     (interphase_driver_history's column_words_kind)."""
-    words = _words(_without_parentheses(comment))
+    # (commas and semicolons separate the names too: `# t, s_T, Sigma_N`, a spreadsheet's header)
+    words = _words(_without_parentheses(comment).replace(",", " ").replace(";", " "))
     if words and words[0] in ("column", "columns"):
         words = words[1:]
     if len(words) < 2 or not all(w in _COLUMN_NAMES for w in words):
@@ -275,6 +276,16 @@ def _column_words(comment):
     if words[0] == "t":
         words = words[1:]
     return None if words in (["s_t", "s_n"], ["s_t1", "s_t2", "s_n"]) else "order"
+
+
+def _separator_hint(line):
+    """'' when a data line (without its comment) holds no comma or semicolon, else the note that ends
+    a wrong-column-count message (interphase_driver_history's separator_hint)."""
+    for separator in (",", ";"):
+        if separator in line:
+            return (f" (the fields of a line are separated by blanks or tabs, not by '{separator}': write the "
+                    "values with blanks between them)")
+    return ""
 
 
 _UNITS = {"t": "s", "s_t": "mm", "s_t1": "mm", "s_t2": "mm", "s_n": "mm",
@@ -368,7 +379,7 @@ def read_history(path, control=False):
         if not rows:
             if len(words) not in (3, 4):
                 raise ValueError(f"{where}: found {len(words)} columns; expected 3 (t s_T s_N, 2-D) or 4 "
-                                 "(t s_T1 s_T2 s_N, 3-D)")
+                                 f"(t s_T1 s_T2 s_N, 3-D){_separator_hint(head)}")
             first_line = number
             if named is not None and named[0] != len(words):
                 raise ValueError(f'{where}: found {len(words)} columns, but the "# columns:" line (line '
