@@ -17,7 +17,8 @@
 !> the next `# columns:` line: the segment that ends at a row is controlled as that row's names
 !> say. Without such a line every column is a separation. The line holds nothing before its
 !> `#`; a comment that starts `column:` or `columns :`, or whose words name traction columns
-!> without the key (`# t s_T Sigma_N`; `columns_line_kind`), is refused.
+!> without the key (`# t s_T Sigma_N`; `columns_line_kind`), or separation columns with a length
+!> unit other than mm (`# t s_T (m) s_N (m)`), is refused.
 module interphase_driver_history
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
@@ -58,7 +59,12 @@ module interphase_driver_history
 
    !> `columns_line_kind`'s answers.
    integer, parameter :: PLAIN_COMMENT = 0, COLUMNS_LINE = 1, MISSPELLED_COLUMNS = 2, NAMES_WITHOUT_KEY = 3, &
-      NAMES_OUT_OF_ORDER = 4
+      NAMES_OUT_OF_ORDER = 4, NAMES_FOREIGN_UNIT = 5
+   !> Length units other than mm (lower case) that a comment of column names may give a
+   !> separation (`# t s_T (m) s_N (m)`): read as a plain comment, its columns would run as mm.
+   character(len=*), parameter :: LENGTH_UNITS(20) = [character(len=11) :: 'm', 'cm', 'dm', 'km', 'um', &
+      'nm', 'in', 'inch', 'inches', 'ft', 'mil', 'micron', 'microns', 'micrometre', 'micrometer', 'metre', &
+      'meter', 'metres', 'meters', 'micrometres']
 
 contains
 
@@ -129,6 +135,13 @@ contains
                message = where//'"#'//trim(line(comment + 1:))//'" names the columns in another order than '// &
                   'the rows are read (t, the shear component(s), then the normal one: t s_T s_N or t s_T1 s_T2 '// &
                   's_N): reorder the columns and the comment'
+               call close_text_file(unit)
+               return
+            case (NAMES_FOREIGN_UNIT)
+               ! (below a "# columns:" line too: the rows are read in mm whatever the caption says)
+               message = where//'"#'//trim(line(comment + 1:))//'" gives '// &
+                  foreign_length_unit(tabs_as_blanks(line(comment + 1:)))//', but the driver reads separations '// &
+                  'in mm: convert the columns, and write (mm) or no unit'
                call close_text_file(unit)
                return
             case (NAMES_WITHOUT_KEY)
@@ -261,7 +274,9 @@ contains
    !> column names, at least one of them a traction's (`Sigma_`), after an optional word `column`
    !> or `columns` and with words in parentheses (units) skipped (`# t s_T Sigma_N`,
    !> `# columns t s_T Sigma_N`: meant to name the columns, and read as a plain comment it would
-   !> run the tractions as separations), else PLAIN_COMMENT.
+   !> run the tractions as separations), NAMES_OUT_OF_ORDER or NAMES_FOREIGN_UNIT for such words
+   !> in another order than the rows' or with a length unit other than mm (`column_words_kind`),
+   !> else PLAIN_COMMENT.
    pure integer function columns_line_kind(comment)
       character(len=*), intent(in) :: comment     !! text after '#'
       character(len=*), parameter :: KEY = 'columns:', STEM = 'column'
@@ -293,9 +308,10 @@ contains
 
    !> What a comment is when its words (`text`: lower case, blanks for tabs) are two or more
    !> column names, after an optional first word `column` or `columns`, words in parentheses
-   !> skipped: NAMES_WITHOUT_KEY when one of them is a traction's, NAMES_OUT_OF_ORDER when they
-   !> are not in the rows' order (t first, when named, then s_t s_n or s_t1 s_t2 s_n); else
-   !> PLAIN_COMMENT (`columns_line_kind`).
+   !> skipped: NAMES_FOREIGN_UNIT when a separation's name has a length unit other than mm in
+   !> parentheses after it (`foreign_length_unit`), NAMES_WITHOUT_KEY when one of them is a
+   !> traction's, NAMES_OUT_OF_ORDER when they are not in the rows' order (t first, when named,
+   !> then s_t s_n or s_t1 s_t2 s_n); else PLAIN_COMMENT (`columns_line_kind`).
    pure integer function column_words_kind(text) result(kind)
       character(len=*), intent(in) :: text
       character(len=*), parameter :: NAMES(9) = [character(len=8) :: 't', 's_t', 's_n', 's_t1', 's_t2', &
@@ -328,6 +344,12 @@ contains
          nnames = nnames + 1
          if (nnames <= size(order)) order(nnames) = kept(starts(i):ends(i))
       end do
+      ! in mm, whatever they are (a caption below a "# columns:" line too): `# t s_T (m) s_N (m)`
+      ! would run metres as millimetres
+      if (len(foreign_length_unit(text)) > 0) then
+         kind = NAMES_FOREIGN_UNIT
+         return
+      end if
       if (traction) then
          kind = NAMES_WITHOUT_KEY
          return
@@ -351,6 +373,53 @@ contains
          end if
       end function in_order
    end function column_words_kind
+
+   !> '' when no word in parentheses right after a separation's name in `text` (a comment of
+   !> column names: `column_words_kind`) is a length unit other than mm (LENGTH_UNITS, any case);
+   !> else the first such name and unit as written (`s_T the unit (m)`). Other words in parentheses are a
+   !> remark (`# t s_T s_N (2-D)`).
+   pure function foreign_length_unit(text) result(found)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: found
+      character(len=:), allocatable :: name, unit
+      integer :: i, j, close, word_end, word_start
+      found = ''
+      i = 1
+      do while (i <= len(text))
+         if (text(i:i) /= '(') then
+            i = i + 1
+            cycle
+         end if
+         ! the group: to its ')' (nesting counted), or to the end
+         close = i
+         j = 0
+         do while (close <= len(text))
+            if (text(close:close) == '(') j = j + 1
+            if (text(close:close) == ')') j = j - 1
+            if (j == 0) exit
+            close = close + 1
+         end do
+         unit = trim(adjustl(text(i + 1:min(close, len(text) + 1) - 1)))
+         ! the word right before it (blanks between allowed; a comma or semicolon ends it)
+         word_end = len_trim(text(:i - 1))
+         word_start = word_end
+         do while (word_start > 1)
+            if (index(' ,;)'//char(9), text(word_start - 1:word_start - 1)) > 0) exit
+            word_start = word_start - 1
+         end do
+         name = ''
+         if (word_end >= 1) name = to_lower(text(word_start:word_end))
+         if (name == 's_t' .or. name == 's_t1' .or. name == 's_t2' .or. name == 's_n') then
+            ! (and micrometres with the micro sign or the Greek mu, in UTF-8)
+            if (any(to_lower(unit) == LENGTH_UNITS) .or. unit == char(194)//char(181)//'m' .or. &
+               unit == char(206)//char(188)//'m') then
+               found = text(word_start:word_end)//' the unit ('//unit//')'
+               return
+            end if
+         end if
+         i = close + 1
+      end do
+   end function foreign_length_unit
 
    !> '' when `line` (a data line without its comment) holds no comma or semicolon; else the note
    !> that ends a wrong-column-count message: the fields of a history are separated by blanks, and

@@ -689,6 +689,12 @@ def test_read_mixed_history(source_dir, tmp_path):
                               ("# t, s_T, Sigma_N\n0 0 0\n1 0 -0.5\n", 1, "names traction columns, but is not"),
                               ("# t (s);s_T (mm);Sigma_N (MPa)\n0 0 0\n1 0 -0.5\n", 1, "names traction columns"),
                               ("# t, s_N, s_T\n0 0 0\n1 0.01 0\n", 1, "in another order"),
+                              # separations named in another length unit than mm
+                              ("# t s_T (m) s_N (m)\n0 0 0\n1 0.001 0\n", 1,
+                               "gives s_T the unit \\(m\\), but the driver reads separations in mm"),
+                              ("# t, s_T(mm), s_N(CM)\n0 0 0\n1 0.001 0\n", 1, "gives s_N the unit \\(CM\\)"),
+                              ("# columns: t s_T Sigma_N\n# t s_T (\u00b5m) Sigma_N (MPa)\n0 0 0\n1 0 1\n", 2,
+                               "gives s_T the unit \\(\u00b5m\\)"),
                               ("# t, s_T, s_N\n0,0,0\n1,0,0.01\n", 2, "found 1 columns; expected 3 .* \\(the "
                                "fields of a line are separated by blanks or tabs, not by ','"),
                               ("0 0 0\n#\tt  s_T (mm)  SIGMA_N (MPa)\n1 0 1\n", 2, "names traction columns"),
@@ -967,6 +973,8 @@ DRIVER_CASES = {
     "vertical_tab_in_row": ("'h.txt'", "'h.txt'", "0 0 0\n1 0\x0b0.01\n"),
     "carriage_return_in_row": ("'h.txt'", "'h.txt'", "0 0\r0\n1\t0 0.01\r\n"),
     "columns_header_commas": ("'h.txt'", "'h.txt'", "# t, s_T, Sigma_N\n0 0 0\n1 0 -0.5\n"),
+    "columns_header_metres": ("'h.txt'", "'h.txt'", "# t s_T (m) s_N (m)\n0 0 0\n1 0.001 0\n"),
+    "columns_header_micro_sign": ("'h.txt'", "'h.txt'", "# t\ts_T (\u00b5m)  s_N\n0 0 0\n1 0.001 0\n"),
     "rows_commas": ("'h.txt'", "'h.txt'", "0,0,0\n1,0,0.01\n"),
     "rows_semicolons": ("'h.txt'", "'h.txt'", "0;0;0\n1;0;0.01\n"),
     "columns_upper_t": ("'h.txt'", "'h.txt'", "# columns: T s_T Sigma_N\n0 0 0\n1 0 0.01\n"),

@@ -261,7 +261,8 @@ _COLUMN_NAMES = ("t", "s_t", "s_n", "s_t1", "s_t2", "sigma_t", "sigma_n", "sigma
 
 def _column_words(comment):
     """What a comment (lower case) is when its words are two or more column names, after an
-    optional first word `column` or `columns`, words in parentheses skipped: "tractions" when one
+    optional first word `column` or `columns`, words in parentheses skipped: "units" when a
+    separation's name has a length unit other than mm after it (`_foreign_length_unit`), "tractions" when one
     of them is a traction's (`# t s_T Sigma_N`: read as a plain comment it would run the tractions
     as separations), "order" when they are not in the rows' order (`# t s_N s_T`), else None
     (interphase_driver_history's column_words_kind)."""
@@ -271,11 +272,50 @@ def _column_words(comment):
         words = words[1:]
     if len(words) < 2 or not all(w in _COLUMN_NAMES for w in words):
         return None
+    # (in mm, whatever they are, a caption below a columns line too: `# t s_T (m) s_N (m)` would run
+    # metres as millimetres)
+    if _foreign_length_unit(comment):
+        return "units"
     if any(w.startswith("sigma_") for w in words):
         return "tractions"
     if words[0] == "t":
         words = words[1:]
     return None if words in (["s_t", "s_n"], ["s_t1", "s_t2", "s_n"]) else "order"
+
+
+# length units other than mm (lower case) a comment of column names may give a separation
+# (interphase_driver_history's LENGTH_UNITS), and micrometres with the micro sign or Greek mu
+_LENGTH_UNITS = ("m", "cm", "dm", "km", "um", "nm", "in", "inch", "inches", "ft", "mil", "micron", "microns",
+                 "micrometre", "micrometer", "metre", "meter", "metres", "meters", "micrometres",
+                 "\u00b5m", "\u03bcm")
+
+
+def _foreign_length_unit(text):
+    """'' when no word in parentheses right after a separation's name in `text` (a comment of
+    column names) is a length unit other than mm, any case; else the first such name and unit as
+    written ("s_T the unit (m)"): other words in parentheses are a remark (`# t s_T s_N (2-D)`;
+    interphase_driver_history's foreign_length_unit)."""
+    i = 0
+    while i < len(text):
+        if text[i] != "(":
+            i += 1
+            continue
+        depth, close = 0, i
+        while close < len(text):
+            depth += (text[close] == "(") - (text[close] == ")")
+            if depth == 0:
+                break
+            close += 1
+        unit = text[i + 1:close].strip(" ")
+        before = text[:i].rstrip(" ")
+        start = len(before)
+        while start > 0 and before[start - 1] not in " ,;)\t":
+            start -= 1
+        name = before[start:]
+        if _lower(name) in ("s_t", "s_t1", "s_t2", "s_n") and (_lower(unit) in _LENGTH_UNITS):
+            return f"{name} the unit ({unit})"
+        i = close + 1
+    return ""
 
 
 def _separator_hint(line):
@@ -358,6 +398,9 @@ def read_history(path, control=False):
             raise ValueError(f'{where}: "#{shown}" names the columns in another order than the rows '
                              'are read (t, the shear component(s), then the normal one: t s_T s_N or t s_T1 s_T2 '
                              's_N): reorder the columns and the comment')
+        if kind == "units":
+            raise ValueError(f'{where}: "#{shown}" gives {_foreign_length_unit(comment.replace(chr(9), " "))}, but '
+                             'the driver reads separations in mm: convert the columns, and write (mm) or no unit')
         if kind == "tractions" and named is None:   # (a caption below a columns line is no mistake)
             raise ValueError(f'{where}: "#{shown}" names traction columns, but is not a "# columns:" '
                              'line, so every column would be read as a separation: write the key "columns:" '
