@@ -8,6 +8,8 @@
 !> toughness (energy per unit crack area, as measured; the eq-20 release rate G is twice it;
 !> docs/theory.md). Between the rows a monotone cubic (Fritsch-Carlson) interpolates, so the
 !> R-curve keeps the shape of the data; outside the rows it is an error, never an extrapolation.
+!> A comment that gives a column another unit (`# D G_cI (J/m^2) G_cII (J/m^2)`, `D (mm)`) is
+!> refused: its numbers would be read as N/mm (`foreign_unit`).
 module interphase_rcurve
    use interphase_finite, only: is_finite, PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_kinds, only: dp
@@ -16,7 +18,7 @@ module interphase_rcurve
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_BAD_TOUGHNESS, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_SPLINE_OUT_OF_RANGE, status_message
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END, path_problem
+      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END, path_problem, to_lower
    use interphase_spline, only: spline_type, spline_build, spline_export, cubic_locate, cubic_eval, &
       SPLINE_MONOTONE
    implicit none
@@ -82,7 +84,15 @@ contains
          associate (line => file%buffer(1:file%length))
             first = verify(line, ' '//achar(9))
             if (first == 0) cycle read_lines
-            if (line(first:first) == '#') cycle read_lines
+            if (line(first:first) == '#') then
+               ! a comment that gives the columns other units than the reader's (`G_cI (J/m^2)`)
+               text = foreign_unit(line(first + 1:))
+               if (len_trim(text) > 0) then
+                  call fail(STATUS_RCURVE_MALFORMED, trim(text))
+                  return
+               end if
+               cycle read_lines
+            end if
             ! exactly three blank-separated fields, each one number
             field = 0
             i = first
@@ -184,6 +194,69 @@ contains
       end subroutine fail
 
    end subroutine load_rcurve
+
+   !> '' when no word in parentheses right after a column's name in an R-curve file's comment
+   !> (`comment`, the text after '#') is a unit other than the reader's; else the message. A
+   !> toughness (G_cI, G_cII, G_c, G_f, ... any case) is read in N/mm: a group whose first word
+   !> (up to a blank, comma or semicolon) has a '/' and is not N/mm or the same unit written
+   !> otherwise (kJ/m^2, kN/m, mJ/mm^2) names another one (J/m^2 = 1e-3 N/mm); D is a/b:
+   !> a length unit after it (mm, m) names a crack length. Other words in parentheses are a remark.
+   pure function foreign_unit(comment) result(message)
+      character(len=*), intent(in) :: comment
+      character(len=:), allocatable :: message
+      character(len=*), parameter :: TOUGHNESS_NAMES(20) = [character(len=6) :: 'g_ci', 'g_cii', 'gci', 'gcii', &
+         'g_c', 'gc', 'g_ic', 'g_iic', 'gic', 'giic', 'g_i', 'g_ii', 'gi', 'gii', 'g_f', 'gf', 'g_fi', 'g_fii', &
+         'gfi', 'gfii']
+      character(len=*), parameter :: SAME_UNITS(12) = [character(len=9) :: 'n/mm', 'kj/m2', 'kj/m^2', 'kj/m**2', &
+         'kn/m', 'mj/mm2', 'mj/mm^2', 'mj/mm**2', 'nmm/mm2', 'n.mm/mm2', 'n*mm/mm2', 'nmm/mm^2']
+      character(len=*), parameter :: LENGTHS(9) = [character(len=2) :: 'mm', 'm', 'cm', 'dm', 'um', 'nm', 'in', &
+         'ft', 'km']
+      character(len=:), allocatable :: name, unit, item
+      integer :: i, j, close, word_end, word_start, k
+      message = ''
+      i = 1
+      do while (i <= len(comment))
+         if (comment(i:i) /= '(') then
+            i = i + 1
+            cycle
+         end if
+         ! the group: to its ')' (nesting counted), or to the end
+         close = i
+         j = 0
+         do while (close <= len(comment))
+            if (comment(close:close) == '(') j = j + 1
+            if (comment(close:close) == ')') j = j - 1
+            if (j == 0) exit
+            close = close + 1
+         end do
+         unit = trim(adjustl(comment(i + 1:min(close, len(comment) + 1) - 1)))
+         ! its first word (up to a blank, comma or semicolon), lower case
+         k = scan(unit, ' ,;'//achar(9))
+         if (k == 0) k = len(unit) + 1
+         item = to_lower(unit(:k - 1))
+         ! the word right before it (blanks between allowed; a comma or semicolon ends it)
+         word_end = len_trim(comment(:i - 1))
+         word_start = word_end
+         do while (word_start > 1)
+            if (index(' ,;)'//achar(9), comment(word_start - 1:word_start - 1)) > 0) exit
+            word_start = word_start - 1
+         end do
+         name = ''
+         if (word_end >= 1) name = to_lower(comment(word_start:word_end))
+         if (any(name == TOUGHNESS_NAMES) .and. index(item, '/') > 0 .and. .not. any(item == SAME_UNITS)) then
+            message = 'the comment gives '//comment(word_start:word_end)//' the unit ('//unit//'), but an '// &
+               'R-curve file''s toughnesses are read in N/mm (1 N/mm = 1 kJ/m^2 = 1000 J/m^2): convert the '// &
+               'column, and write (N/mm) or no unit'
+            return
+         end if
+         if (name == 'd' .and. any(item == LENGTHS)) then
+            message = 'the comment gives D the unit ('//unit//'), but D is the crack''s relative length a/b '// &
+               '(no unit, in [0, 1]): divide the crack lengths by b'
+            return
+         end if
+         i = close + 1
+      end do
+   end function foreign_unit
 
    !> G_cI, G_cII (N/mm) and their D-derivatives from the loaded R-curve at D: STATUS_OK,
    !> STATUS_RCURVE_NOT_LOADED, or STATUS_RCURVE_OUT_OF_RANGE when D lies outside the file's
