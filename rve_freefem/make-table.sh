@@ -24,6 +24,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 prog="make-table.sh"
 die() { local code=$1; shift; echo "$prog: error: $*" >&2; exit "$code"; }
 note() { echo "$prog: note: $*" >&2; }
+warn() { echo "$prog: warning: $*" >&2; }
 
 refine_mult=1
 jobs=2
@@ -167,6 +168,22 @@ refine=$(awk -v a="${P[refine]}" -v m="$refine_mult" 'BEGIN { printf "%.17g", a 
 uniform=0
 chk "${P[huni]}" "x > 0" && uniform=1
 bval=${P[b]}
+# plausibility, not validity: the identities every table is checked against hold for any units
+# and any mesh, so neither check-table.sh nor the loader can see a modulus given in GPa, a length
+# in m, or a mesh whose far-field size exceeds a layer (docs/rve.md, 'A table for your own brick
+# and mortar').  Warnings only: the run goes on.
+for key in E_m E_b; do
+  chk "${P[$key]}" "x < 100" && warn "$(loc "$key")'$key' = ${P[$key]} MPa is softer than any mortar or brick: moduli are in MPa (a value in GPa is 1000 times too small, and the table's stiffnesses with it)"
+  chk "${P[$key]}" "x > 1e6" && warn "$(loc "$key")'$key' = ${P[$key]} MPa is stiffer than any mortar or brick: moduli are in MPa (a value in Pa is 1e6 times too large)"
+done
+for key in h_m h_b b; do
+  chk "${P[$key]}" "x < 0.5" && warn "$(loc "$key")'$key' = ${P[$key]} mm is smaller than any mortar joint or brick dimension: lengths are in mm (a value in m is 1000 times too small; the mesh sizes are in mm too)"
+done
+if [ "$uniform" = 0 ]; then
+  thin=$(awk -v m="${P[h_m]}" -v b="${P[h_b]}" 'BEGIN { if (m <= b) print "h_m"; else print "h_b" }')
+  awk -v h="${P[hmax]}" -v r="$refine" -v t="${P[$thin]}" 'BEGIN { exit !(h / r > t) }' \
+    && warn "$(loc hmax)hmax/refine = $(awk -v h="${P[hmax]}" -v r="$refine" 'BEGIN { printf "%.6g", h / r }') mm is larger than the thinner layer ($thin = ${P[$thin]} mm): the mesh has less than one far-field element through it and the table will not be converged, although every identity check passes; the mesh sizes hmax, htipmax are lengths in mm, not fractions of the RVE: scale them with the layers and check with convergence.sh (docs/rve.md)"
+fi
 # uniform mesh: the layers and the RVE must be whole numbers of squares (rve.edp's test)
 if [ "$uniform" = 1 ]; then
   for key in b h_m h_b; do
