@@ -24,7 +24,7 @@ module interphase_driver_history
    use interphase_kinds, only: dp
    use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, to_lower, &
       text_file_type, open_line_file, close_text_file
-   use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES
+   use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES, next_parenthesised
    use interphase_params, only: SEPARATION_MAX, HOST_VALUE_MAX
    use interphase_finite, only: difference_is_finite
    implicit none
@@ -382,42 +382,21 @@ contains
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: found
       character(len=:), allocatable :: name, unit
-      integer :: i, j, close, word_end, word_start
+      integer :: i
+      logical :: group
       found = ''
       i = 1
-      do while (i <= len(text))
-         if (text(i:i) /= '(') then
-            i = i + 1
-            cycle
-         end if
-         ! the group: to its ')' (nesting counted), or to the end
-         close = i
-         j = 0
-         do while (close <= len(text))
-            if (text(close:close) == '(') j = j + 1
-            if (text(close:close) == ')') j = j - 1
-            if (j == 0) exit
-            close = close + 1
-         end do
-         unit = trim(adjustl(text(i + 1:min(close, len(text) + 1) - 1)))
-         ! the word right before it (blanks between allowed; a comma or semicolon ends it)
-         word_end = len_trim(text(:i - 1))
-         word_start = word_end
-         do while (word_start > 1)
-            if (index(' ,;)'//char(9), text(word_start - 1:word_start - 1)) > 0) exit
-            word_start = word_start - 1
-         end do
-         name = ''
-         if (word_end >= 1) name = to_lower(text(word_start:word_end))
-         if (name == 's_t' .or. name == 's_t1' .or. name == 's_t2' .or. name == 's_n') then
+      do
+         call next_parenthesised(text, i, group, unit, name)
+         if (.not. group) exit
+         if (any(to_lower(name) == ['s_t ', 's_t1', 's_t2', 's_n '])) then
             ! (and micrometres with the micro sign or the Greek mu, in UTF-8)
             if (any(to_lower(unit) == LENGTH_UNITS) .or. unit == char(194)//char(181)//'m' .or. &
                unit == char(206)//char(188)//'m') then
-               found = text(word_start:word_end)//' the unit ('//unit//')'
+               found = name//' the unit ('//unit//')'
                return
             end if
          end if
-         i = close + 1
       end do
    end function foreign_length_unit
 
@@ -541,50 +520,28 @@ contains
       character(len=*), intent(in) :: text
       character(len=:), allocatable, intent(out) :: message
       character(len=:), allocatable :: name, unit, wanted
-      integer :: i, j, close, word_end, word_start
+      integer :: i
+      logical :: found
       message = ''
       i = 1
-      do while (i <= len(text))
-         if (text(i:i) /= '(') then
-            i = i + 1
-            cycle
-         end if
-         ! the group: to its ')' (nesting counted), or to the end
-         close = i
-         j = 0
-         do while (close <= len(text))
-            if (text(close:close) == '(') j = j + 1
-            if (text(close:close) == ')') j = j - 1
-            if (j == 0) exit
-            close = close + 1
-         end do
-         unit = trim(adjustl(text(i + 1:min(close, len(text) + 1) - 1)))
-         ! the word right before it (blanks between allowed)
-         word_end = len_trim(text(:i - 1))
-         word_start = word_end
-         do while (word_start > 1)
-            if (text(word_start - 1:word_start - 1) == ' ' .or. text(word_start - 1:word_start - 1) == char(9) &
-               .or. text(word_start - 1:word_start - 1) == ')') exit
-            word_start = word_start - 1
-         end do
-         name = ''
-         if (word_end >= 1) name = to_lower(text(word_start:word_end))
+      do
+         call next_parenthesised(text, i, found, unit, name)
+         if (.not. found) exit
          wanted = ''
-         if (name == 't') then
+         select case (to_lower(name))
+         case ('t')
             wanted = 's'
-         else if (name == 's_t' .or. name == 's_t1' .or. name == 's_t2' .or. name == 's_n') then
+         case ('s_t', 's_t1', 's_t2', 's_n')
             wanted = 'mm'
-         else if (name == 'sigma_t' .or. name == 'sigma_t1' .or. name == 'sigma_t2' .or. name == 'sigma_n') then
+         case ('sigma_t', 'sigma_t1', 'sigma_t2', 'sigma_n')
             wanted = 'mpa'
-         end if
+         end select
          if (len(wanted) > 0 .and. to_lower(unit) /= wanted) then
             if (wanted == 'mpa') wanted = 'MPa'
-            message = '"# columns:" gives '//text(word_start:word_end)//' the unit ('//unit//'), but the driver '// &
-               'reads '//text(word_start:word_end)//' in '//wanted//': convert the column, and write ('//wanted// &
-               ') or no unit'
+            message = '"# columns:" gives '//name//' the unit ('//unit//'), but the driver reads '//name// &
+               ' in '//wanted//': convert the column, and write ('//wanted//') or no unit'
             return
          end if
-         i = close + 1
       end do
    end subroutine check_units
 

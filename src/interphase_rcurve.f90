@@ -18,7 +18,7 @@ module interphase_rcurve
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_BAD_TOUGHNESS, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_SPLINE_OUT_OF_RANGE, status_message
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END, path_problem, to_lower
+      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END, path_problem, to_lower, next_parenthesised
    use interphase_spline, only: spline_type, spline_build, spline_export, cubic_locate, cubic_eval, &
       SPLINE_MONOTONE
    implicit none
@@ -212,49 +212,27 @@ contains
       character(len=*), parameter :: LENGTHS(9) = [character(len=2) :: 'mm', 'm', 'cm', 'dm', 'um', 'nm', 'in', &
          'ft', 'km']
       character(len=:), allocatable :: name, unit, item
-      integer :: i, j, close, word_end, word_start, k
+      integer :: i, k
+      logical :: found
       message = ''
       i = 1
-      do while (i <= len(comment))
-         if (comment(i:i) /= '(') then
-            i = i + 1
-            cycle
-         end if
-         ! the group: to its ')' (nesting counted), or to the end
-         close = i
-         j = 0
-         do while (close <= len(comment))
-            if (comment(close:close) == '(') j = j + 1
-            if (comment(close:close) == ')') j = j - 1
-            if (j == 0) exit
-            close = close + 1
-         end do
-         unit = trim(adjustl(comment(i + 1:min(close, len(comment) + 1) - 1)))
+      do
+         call next_parenthesised(comment, i, found, unit, name)
+         if (.not. found) exit
          ! its first word (up to a blank, comma or semicolon), lower case
          k = scan(unit, ' ,;'//achar(9))
          if (k == 0) k = len(unit) + 1
          item = to_lower(unit(:k - 1))
-         ! the word right before it (blanks between allowed; a comma or semicolon ends it)
-         word_end = len_trim(comment(:i - 1))
-         word_start = word_end
-         do while (word_start > 1)
-            if (index(' ,;)'//achar(9), comment(word_start - 1:word_start - 1)) > 0) exit
-            word_start = word_start - 1
-         end do
-         name = ''
-         if (word_end >= 1) name = to_lower(comment(word_start:word_end))
-         if (any(name == TOUGHNESS_NAMES) .and. index(item, '/') > 0 .and. .not. any(item == SAME_UNITS)) then
-            message = 'the comment gives '//comment(word_start:word_end)//' the unit ('//unit//'), but an '// &
-               'R-curve file''s toughnesses are read in N/mm (1 N/mm = 1 kJ/m^2 = 1000 J/m^2): convert the '// &
-               'column, and write (N/mm) or no unit'
+         if (any(to_lower(name) == TOUGHNESS_NAMES) .and. index(item, '/') > 0 .and. .not. any(item == SAME_UNITS)) then
+            message = 'the comment gives '//name//' the unit ('//unit//'), but an R-curve file''s toughnesses are '// &
+               'read in N/mm (1 N/mm = 1 kJ/m^2 = 1000 J/m^2): convert the column, and write (N/mm) or no unit'
             return
          end if
-         if (name == 'd' .and. any(item == LENGTHS)) then
+         if (to_lower(name) == 'd' .and. any(item == LENGTHS)) then
             message = 'the comment gives D the unit ('//unit//'), but D is the crack''s relative length a/b '// &
                '(no unit, in [0, 1]): divide the crack lengths by b'
             return
          end if
-         i = close + 1
       end do
    end function foreign_unit
 

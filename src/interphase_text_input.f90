@@ -14,7 +14,7 @@ module interphase_text_input
    implicit none
    private
    public :: text_file_type, open_text_file, read_text_line, close_text_file, parse_real, &
-      is_real_literal, tried_path, clip_text, to_lower, text_before, path_problem
+      is_real_literal, tried_path, clip_text, to_lower, text_before, path_problem, next_parenthesised
 
    !> Longest line a reader takes (characters, without the newline).
    integer, parameter, public :: MAX_LINE_LEN = 65536
@@ -61,6 +61,47 @@ module interphase_text_input
    end interface
 
 contains
+
+   !> The next group in parentheses of a comment `text` from position `i` on, for the readers'
+   !> unit checks (`# columns: t s_T (mm) Sigma_N (MPa)`, an R-curve's `G_cI (N/mm)`): `found`
+   !> false when there is none; else `content`, what the group holds (to its ')', nested groups
+   !> counted, or to the end; blanks trimmed), `word`, the word right before it as written
+   !> (blanks between allowed; a blank, tab, comma, semicolon or ')' ends it; '' when none), and
+   !> `i` moved past the group.
+   pure subroutine next_parenthesised(text, i, found, content, word)
+      character(len=*), intent(in) :: text
+      integer, intent(inout) :: i
+      logical, intent(out) :: found
+      character(len=:), allocatable, intent(out) :: content, word
+      integer :: depth, close, word_start, word_end
+      content = ''
+      word = ''
+      found = .false.
+      if (i < 1) i = 1
+      do while (i <= len(text))
+         if (text(i:i) == '(') exit
+         i = i + 1
+      end do
+      if (i > len(text)) return
+      found = .true.
+      close = i
+      depth = 0
+      do while (close <= len(text))
+         if (text(close:close) == '(') depth = depth + 1
+         if (text(close:close) == ')') depth = depth - 1
+         if (depth == 0) exit
+         close = close + 1
+      end do
+      content = trim(adjustl(text(i + 1:min(close, len(text) + 1) - 1)))
+      word_end = len_trim(text(:i - 1))
+      word_start = word_end
+      do while (word_start > 1)
+         if (index(' ,;)'//achar(9), text(word_start - 1:word_start - 1)) > 0) exit
+         word_start = word_start - 1
+      end do
+      if (word_end >= 1) word = text(word_start:word_end)
+      i = close + 1
+   end subroutine next_parenthesised
 
    !> Lower-case copy of an ASCII string (other characters as they are).
    pure function to_lower(text) result(lower)

@@ -295,6 +295,17 @@ def _foreign_length_unit(text):
     column names) is a length unit other than mm, any case; else the first such name and unit as
     written ("s_T the unit (m)"): other words in parentheses are a remark (`# t s_T s_N (2-D)`;
     interphase_driver_history's foreign_length_unit)."""
+    for name, unit in _parenthesised(text):
+        if _lower(name) in ("s_t", "s_t1", "s_t2", "s_n") and _lower(unit) in _LENGTH_UNITS:
+            return f"{name} the unit ({unit})"
+    return ""
+
+
+def _parenthesised(text):
+    """The groups in parentheses of a comment, in order, as (word, content): the word right before
+    the group as written (blanks between allowed; a blank, tab, comma, semicolon or ')' ends it),
+    what the group holds (to its ')', nested groups counted, or to the end; blanks trimmed)
+    (interphase_text_input's next_parenthesised)."""
     i = 0
     while i < len(text):
         if text[i] != "(":
@@ -306,16 +317,12 @@ def _foreign_length_unit(text):
             if depth == 0:
                 break
             close += 1
-        unit = text[i + 1:close].strip(" ")
         before = text[:i].rstrip(" ")
         start = len(before)
         while start > 0 and before[start - 1] not in " ,;)\t":
             start -= 1
-        name = before[start:]
-        if _lower(name) in ("s_t", "s_t1", "s_t2", "s_n") and (_lower(unit) in _LENGTH_UNITS):
-            return f"{name} the unit ({unit})"
+        yield before[start:], text[i + 1:close].strip(" ")
         i = close + 1
-    return ""
 
 
 def _separator_hint(line):
@@ -337,28 +344,11 @@ def _check_units(text, where):
     the key, tabs as blanks) that is not the driver's: (mm) after s_X, (MPa) after Sigma_X, (s)
     after t (any case); parentheses after anything else are skipped (interphase_driver_history's
     check_units)."""
-    i = 0
-    while i < len(text):
-        if text[i] != "(":
-            i += 1
-            continue
-        depth, close = 0, i
-        while close < len(text):
-            depth += (text[close] == "(") - (text[close] == ")")
-            if depth == 0:
-                break
-            close += 1
-        unit = text[i + 1:close].strip(" ")
-        before = text[:i].rstrip(" ")
-        start = len(before)
-        while start > 0 and before[start - 1] not in " \t)":
-            start -= 1
-        name = before[start:]
+    for name, unit in _parenthesised(text):
         wanted = _UNITS.get(_lower(name))
         if wanted is not None and _lower(unit) != _lower(wanted):
             raise ValueError(f'{where}: "# columns:" gives {name} the unit ({unit}), but the driver reads {name} '
                              f'in {wanted}: convert the column, and write ({wanted}) or no unit')
-        i = close + 1
 
 
 def read_history(path, control=False):
