@@ -73,7 +73,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    !> symmetrises and stores it even from a call that asks for a cut-back
    logical :: calculix
    character(len=MESSAGE_LEN) :: message
-   character(len=66) :: stress_text
+   !> DSTRAN's or STRESS's fields in a message: up to NTENS = 6 of es_fields' width 12
+   character(len=6*12) :: stress_text
 
    calculix = .false.
    ! every failure leaves this block with status, severity and message set (reported below,
