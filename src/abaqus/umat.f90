@@ -143,6 +143,15 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
             'symmetric part of DDSDDE, with which Newton stalls where damage grows (docs/calculix.md): set it to 2'
          status = STATUS_BAD_OPTION
          exit update
+      else if (jstep(3) /= 0) then
+         ! NLGEOM (JSTEP(3) = 1): ccx then passes Green-Lagrange strains, and a thin layer's t E is
+         ! not its separation once s_T is comparable with t (E_nn gains (s_T/t)**2/2)
+         write (message, '(a,i0,a,i0,a)') 'PROPS(', options_base(params) + OPT_HOST, &
+            ') host = 1 (CalculiX) in a step with NLGEOM (JSTEP(3) = ', jstep(3), '): ccx then passes '// &
+            'Green-Lagrange strains, whose t*E_nn is not the separation once s_T nears t: run the step without '// &
+            'NLGEOM (docs/calculix.md)'
+         status = STATUS_BAD_OPTION
+         exit update
       end if
       if (map%identity) then
          ! a cohesive element: the separations themselves (NTENS = 2 or 3; written out, as below)
