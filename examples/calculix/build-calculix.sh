@@ -61,6 +61,14 @@ has_external_support() {
    [ -x "$1" ] && grep -q -a "unable to load function" "$1"
 }
 
+# the library (step 2) needs a built interphase tree, for its generated sources
+need_build_tree() {
+   [ -d "$build_dir/generated" ] || {
+      echo "build-calculix.sh: $build_dir is not a built interphase tree (cmake -S . -B $build_dir -DCMAKE_BUILD_TYPE=Release && cmake --build $build_dir)" >&2
+      exit 1
+   }
+}
+
 # ---- 1. ccx -----------------------------------------------------------------------------------
 if [ -n "$ccx_given" ]; then
    if ! has_external_support "$ccx_given"; then
@@ -74,6 +82,8 @@ elif [ $lib_only = yes ]; then
 elif has_external_support "$cache/ccx"; then
    say "ccx with external-behaviour support: $cache/ccx (cached)"
 else
+   # (said before ccx's build of a few minutes, not after it)
+   need_build_tree
    command -v apt-get >/dev/null 2>&1 || unavailable "no apt-get: cannot fetch Debian's calculix-ccx source"
    [ "$(id -u)" -eq 0 ] || unavailable "not root: cannot install calculix-ccx's build dependencies (run as root, or pass --ccx)"
    export DEBIAN_FRONTEND=noninteractive
@@ -119,10 +129,7 @@ else
 fi
 
 # ---- 2. libINTERPHASE.so ----------------------------------------------------------------------
-[ -d "$build_dir/generated" ] || {
-   echo "build-calculix.sh: $build_dir is not a built interphase tree (cmake -S . -B $build_dir -DCMAKE_BUILD_TYPE=Release && cmake --build $build_dir)" >&2
-   exit 1
-}
+need_build_tree
 lib=$cache/libINTERPHASE.so
 fc=${FC:-gfortran}
 if [ ! -f "$lib" ] || [ -n "$(find "$root/src" "$build_dir/generated" \( -name '*.f90' -o -name '*.inc' -o -name '*.c' \) -newer "$lib" | head -n 1)" ]; then

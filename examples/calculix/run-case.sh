@@ -48,6 +48,12 @@ mkdir -p "$outdir"
 name=$(basename "$deck" .inp)
 deck_abs=$(cd "$(dirname "$deck")" && pwd)/$(basename "$deck")
 [ "$deck_abs" -ef "$outdir/$name.inp" ] || cp "$deck" "$outdir/$name.inp"
+# the library's start-up hook reads INTERPHASE_TABLE and INTERPHASE_RCURVE in ccx's folder, the
+# output folder: a relative path is the caller's
+for var in INTERPHASE_TABLE INTERPHASE_RCURVE; do
+   val=${!var:-}
+   if [ -n "$val" ] && [ "${val#/}" = "$val" ]; then export "$var=$PWD/$val"; fi
+done
 cd "$outdir"
 rm -f "$name.dat" "$name.csv" "$name.point.csv" "$name.png"
 start=$(date +%s)

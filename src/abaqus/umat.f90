@@ -73,7 +73,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    !> symmetrises and stores it even from a call that asks for a cut-back
    logical :: calculix
    character(len=MESSAGE_LEN) :: message
-   character(len=66) :: stress_text
+   !> DSTRAN's or STRESS's fields in a message: up to NTENS = 6 of es_fields' width 12
+   character(len=6*12) :: stress_text
 
    calculix = .false.
    ! every failure leaves this block with status, severity and message set (reported below,
@@ -140,6 +141,15 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          write (message, '(a,i0,a,i0,a)') 'PROPS(', options_base(params) + OPT_STIFFNESS, ') stiffness = ', &
             params%stiffness, ' is not allowed with the host option 1 (CalculiX): CalculiX assembles only the '// &
             'symmetric part of DDSDDE, with which Newton stalls where damage grows (docs/calculix.md): set it to 2'
+         status = STATUS_BAD_OPTION
+         exit update
+      else if (jstep(3) /= 0) then
+         ! NLGEOM (JSTEP(3) = 1): ccx then passes Green-Lagrange strains, and a thin layer's t E is
+         ! not its separation once s_T is comparable with t (E_nn gains (s_T/t)**2/2)
+         write (message, '(a,i0,a,i0,a)') 'PROPS(', options_base(params) + OPT_HOST, &
+            ') host = 1 (CalculiX) in a step with NLGEOM (JSTEP(3) = ', jstep(3), '): ccx then passes '// &
+            'Green-Lagrange strains, whose t*E_nn is not the separation once s_T nears t: run the step without '// &
+            'NLGEOM (docs/calculix.md)'
          status = STATUS_BAD_OPTION
          exit update
       end if

@@ -4,7 +4,8 @@
 # The 2-D micromechanical couplet with PROPS(8) = 1 and INTERPHASE_TABLE = tables/paper.dat must
 # give the built-in table's curve, the same CSV digit for digit (the built-in table is compiled from
 # that file), and
-# a table that cannot be read must stop the run with a message naming the file.
+# a table that cannot be read must stop the run with a message naming the file; a table named
+# relative to the caller's folder is found although ccx runs in the output folder.
 #   custom-table.sh <repository> <cache> <work>
 set -uo pipefail
 root=$(cd "$1" && pwd)
@@ -32,6 +33,15 @@ if cmp -s builtin/couplet2d-micromechanical-monotonic.csv custom/custom.csv; the
    echo "the custom table tables/paper.dat gives the built-in table's curve (the same CSV)"
 else
    echo "FAILED: the custom-table curve differs from the built-in one"; status=1
+fi
+# a table named relative to the caller's folder (run-case.sh runs ccx in the output folder)
+mkdir -p tabledir
+cp "$root/tables/paper.dat" tabledir/paper.dat
+if INTERPHASE_TABLE=tabledir/paper.dat bash "$cx/run-case.sh" custom.inp --cache-dir "$cache" --output-dir relative \
+      --no-plot > relative.out 2>&1 && cmp -s builtin/couplet2d-micromechanical-monotonic.csv relative/custom.csv; then
+   echo "a relative INTERPHASE_TABLE is the caller's: the same CSV"
+else
+   echo "FAILED: INTERPHASE_TABLE=tabledir/paper.dat with --output-dir relative: $(tail -n 3 relative.out)"; status=1
 fi
 out=$(INTERPHASE_TABLE=$work/missing.dat bash "$cx/run-case.sh" custom.inp --cache-dir "$cache" --output-dir missing --no-plot 2>&1)
 if [ $? -eq 1 ] && grep -q "INTERPHASE_TABLE = .*missing.dat: RVE table file cannot be opened" <<< "$out"; then
