@@ -12,7 +12,7 @@ module interphase_real_text
    implicit none
    private
 
-   public :: real_text, es_field, es_fields, literal_overflows, exponent_too_long
+   public :: real_text, es_field, es_fields, es_list, literal_overflows, exponent_too_long
 
    !> Digits of an exponent (leading zeros not counted) beyond which a literal is out of range
    !> whatever its mantissa (10**6 > any line's digits).
@@ -123,6 +123,31 @@ contains
          text((i - 1)*w + 1:i*w) = es_field(values(i), w, decimals)
       end do
    end function es_fields
+
+   !> The values as ' v1 v2 ...': each in es(decimals + 12).(decimals)e3 with its leading blanks
+   !> dropped and one blank before it, so that a field never runs into the one before (a negative
+   !> value fills a fixed-width es field to its first column: '-2.0000E-003-1.0000E-001'); NaN
+   !> and the infinities in words, as es_field writes them.
+   pure function es_list(values, decimals) result(text)
+      real(dp), intent(in) :: values(:)           !! the numbers
+      integer, intent(in) :: decimals             !! digits after the point, 0..60
+      character(len=:), allocatable :: text
+      character(len=80) :: field
+      character(len=24) :: edit
+      integer :: i, d, ios
+      d = max(0, min(60, decimals))
+      write (edit, '(a,i0,a,i0,a)') '(es', d + 12, '.', d, 'e3)'
+      text = ''
+      do i = 1, size(values)
+         if (is_finite(values(i))) then
+            write (field, edit, iostat=ios) values(i)
+            if (ios /= 0) field = repeat('*', d + 12)
+         else
+            field = non_finite_text(values(i))
+         end if
+         text = text//' '//trim(adjustl(field))
+      end do
+   end function es_list
 
    !> NaN, Infinity or -Infinity.
    pure function non_finite_text(value) result(text)

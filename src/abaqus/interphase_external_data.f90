@@ -2,7 +2,9 @@
 !> VEXTERNALDB for Abaqus/Explicit), in one place: the custom RVE table named by the environment
 !> variable INTERPHASE_TABLE (the micromechanical model uses it where PROPS(8) = 1) and the
 !> tabulated R-curve named by INTERPHASE_RCURVE (the fracture-mechanics law, R-curve selector 3).
-!> Without a variable nothing is loaded (the built-in table serves).
+!> Without a variable nothing is loaded (the built-in table serves). A variable that is set but
+!> empty (`export INTERPHASE_TABLE=$UNSET_NAME` in a job script) loads nothing either, and is
+!> reported as a warning naming it: a material that needs the file then fails at its first update.
 !>
 !> Loading writes the library's only shared data (`protected` module data that the updates only
 !> read), so it must happen before any material point is updated and never while updates run:
@@ -13,7 +15,8 @@
 !> that; a host of its own must call it once, from one thread). A file that cannot be read or
 !> fails its checks is a fatal error naming the variable, the file, the line and the failed check.
 module interphase_external_data
-   use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_FATAL, status_message, file_loader, message_path
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_WARNING, SEVERITY_FATAL, status_message, &
+      file_loader, message_path
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_micro_coefficients, only: load_custom_table, custom_table_source
    use interphase_rcurve, only: load_rcurve, rcurve_source
@@ -36,9 +39,9 @@ contains
       logical, intent(out) :: ok
       character(len=:), allocatable :: path
       ok = .true.
-      if (environment(TABLE_VARIABLE, path)) call load_table_file(caller, path, ok)
+      if (environment(caller, TABLE_VARIABLE, 'custom RVE table', path)) call load_table_file(caller, path, ok)
       if (.not. ok) return
-      if (environment(RCURVE_VARIABLE, path)) call load_rcurve_file(caller, path, ok)
+      if (environment(caller, RCURVE_VARIABLE, 'R-curve', path)) call load_rcurve_file(caller, path, ok)
    end subroutine load_external_data
 
    !> Load the custom RVE table from `path` (unless that file is loaded already) and report.
@@ -80,13 +83,19 @@ contains
       call interphase_host_message(SEVERITY_INFO, caller//': '//what//' loaded from '//message_path(tried_path(path)))
    end subroutine load_named_file
 
-   !> The value of a non-empty environment variable.
-   logical function environment(name, value)
-      character(len=*), intent(in) :: name
+   !> The value of a non-empty environment variable. A variable that is set but empty names no
+   !> file: a warning says so (`caller` heads it, `what` is the data it would have named), since a
+   !> material that needs the file would otherwise fail later with no start-up message to explain it.
+   logical function environment(caller, name, what, value)
+      character(len=*), intent(in) :: caller, name, what
       character(len=:), allocatable, intent(out) :: value
       integer :: length, stat
       call get_environment_variable(name, length=length, status=stat)
       environment = stat == 0 .and. length > 0
+      if (stat == 0 .and. length == 0) then
+         call interphase_host_message(SEVERITY_WARNING, caller//': '//name//' is set but empty: no '//what// &
+            ' loaded (unset it, or set it to the file)')
+      end if
       if (.not. environment) return
       allocate (character(len=length) :: value)
       call get_environment_variable(name, value(:))

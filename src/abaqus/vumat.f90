@@ -61,6 +61,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_rcurve, only: rcurve_overrun
    use interphase_abaqus_interfaces, only: interphase_host_message
    use interphase_replay_file, only: write_replay, replay_note
+   use interphase_real_text, only: es_list
    implicit none
    integer, intent(in) :: nblock                    !! number of material points in this call
    integer, intent(in) :: ndir                      !! direct components: 1 (cohesive elements)
@@ -112,7 +113,6 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
    integer :: ios
    character(len=MESSAGE_LEN) :: message, first_message
-   character(len=40) :: increment_text
 
    ntens = ndir + nshr
    nt = nshr
@@ -349,19 +349,17 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                if (ok(k)) cycle
                km = k0 + k - 1
                if (.not. all(is_within(ds(k, 1:ntens), HOST_INCREMENT_MAX))) then
-                  write (increment_text, '(3es12.4e3)', iostat=ios) ds(k, 1:ntens)
                   write (message, '(a,i0,a,a,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
-                     ': separation increment (mm)', trim(increment_text), &
+                     ': separation increment (mm)', es_list(ds(k, 1:ntens), 4), &
                      ' (T0 strainInc, tensor shears x 2): the host must pass finite increments within ', &
                      HOST_INCREMENT_MAX, ' mm'
                   fatal_code = STATUS_BAD_HOST_INPUT
                   exit update
                end if
                if (.not. all(is_within(stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1), SEPARATION_MAX))) then
-                  write (increment_text, '(3es12.4e3)', iostat=ios) stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1)
                   write (message, '(a,i0,a,i0,a,i0,a,a,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
                      ': incoming STATEV(', SV_SEP_N, ':', SV_SEP_N + ntens - 1, ') separation (mm)', &
-                     trim(increment_text), ': must be finite within ', SEPARATION_MAX, &
+                     es_list(stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1), 4), ': must be finite within ', SEPARATION_MAX, &
                      ' mm (what the VUMAT returned last)'
                   fatal_code = STATUS_BAD_STATE
                   exit update
@@ -389,12 +387,11 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             end do
             k = min(k, n)
             km = k0 + k - 1
-            ! (e3 exponents: values up to 1e150 and beyond are printed)
-            write (first_message, '(3es11.3e3)', iostat=ios) stressold(km, :)
-            write (increment_text, '(3es11.3e3)', iostat=ios) ds(k, 1:ntens)
-            write (message, '(a,i0,a,a,a,2es11.3e3,a,a,a,es9.1e3,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
-               ': stressOld (MPa)', trim(first_message), ', energies', enerinternold(km), &
-               enerinelasold(km), ', increment (mm)', trim(increment_text), ': the host must pass finite values within ', &
+            ! (es_list: e3 exponents, values up to 1e150 and beyond are printed, each after a blank)
+            write (message, '(a,i0,a,a,a,a,a,a,a,es9.1e3,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
+               ': stressOld (MPa)', es_list(stressold(km, :), 3), ', energies', &
+               es_list([enerinternold(km), enerinelasold(km)], 3), ', increment (mm)', es_list(ds(k, 1:ntens), 3), &
+               ': the host must pass finite values within ', &
                HOST_VALUE_MAX, ', increments within ', HOST_INCREMENT_MAX, ' mm'
             fatal_code = STATUS_BAD_HOST_INPUT
             exit update
