@@ -74,7 +74,7 @@ extern "C" {
 #define INTERPHASE_STATUS_STAGGER_NOT_CONVERGED 23       /**< damage-friction iteration did not converge */
 #define INTERPHASE_STATUS_RCURVE_NOT_LOADED 24           /**< tabulated R-curve selected, none loaded */
 #define INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE 25     /**< a separation component |s_i| > 1e20 mm */
-#define INTERPHASE_STATUS_BAD_HOST_INPUT 26              /**< adapters: host stress/energy not finite */
+#define INTERPHASE_STATUS_BAD_HOST_INPUT 26              /**< a host value (stress, energy, increment, time) not finite or out of range */
 #define INTERPHASE_STATUS_BAD_TIME_INCREMENT 27          /**< time increment negative or not finite, or missing (viscosity) */
 /* history replays (interphase_run_history) */
 #define INTERPHASE_STATUS_BEYOND_PEAK 28                 /**< an imposed traction beyond the peak the material can carry */

@@ -136,8 +136,8 @@ contains
       case (STATUS_RCURVE_BAD_TOUGHNESS);  message = 'R-curve toughness outside [1e-20, 1e20] N/mm'
       case (STATUS_NONFINITE_SEPARATION);  message = 'separation is not finite (NaN or Inf)'
       case (STATUS_SEPARATION_OUT_OF_RANGE); message = 'separation outside the admissible range |s_i| <= 1e20 mm'
-      case (STATUS_BAD_HOST_INPUT);        message = 'incoming stress or energy from the host not finite, '// &
-         'or the energy it gives overflows'
+      case (STATUS_BAD_HOST_INPUT);        message = 'a value from the host (stress, energy, separation '// &
+         'increment or time) not finite or out of range, or the energy it gives overflows'
       case (STATUS_BAD_TIME_INCREMENT);    message = 'time increment missing, negative or not finite (viscous regularisation)'
       case (STATUS_BAD_STATE);             message = 'state variables out of range or not finite'
       case (STATUS_BEYOND_PEAK);           message = 'imposed traction beyond the peak the material can carry'
