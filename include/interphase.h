@@ -66,7 +66,7 @@ extern "C" {
 #define INTERPHASE_STATUS_BAD_RCURVE 16                  /**< fracture law: R-curve selector not 1, 2 or 3 */
 #define INTERPHASE_STATUS_BAD_GC_I 17                    /**< fracture law: G_cI out of range */
 #define INTERPHASE_STATUS_BAD_GC_II 18                   /**< fracture law: G_cII out of range */
-#define INTERPHASE_STATUS_BAD_OPTION 19                  /**< trailing option constant out of range */
+#define INTERPHASE_STATUS_BAD_OPTION 19                  /**< option constant out of range, missing, or not allowed with this element or host */
 /* update failures (the increment may be retried smaller) */
 #define INTERPHASE_STATUS_NONFINITE_SEPARATION 20        /**< separation NaN or Inf */
 #define INTERPHASE_STATUS_BAD_STATE 21                   /**< state_old out of range or not finite */

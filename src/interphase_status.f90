@@ -125,7 +125,8 @@ contains
       case (STATUS_BAD_RCURVE);            message = 'unknown R-curve selector'
       case (STATUS_BAD_GC_I);              message = 'mode-I toughness G_cI out of range'
       case (STATUS_BAD_GC_II);             message = 'mode-II toughness G_cII out of range'
-      case (STATUS_BAD_OPTION);            message = 'option constant out of range'
+      case (STATUS_BAD_OPTION);            message = 'option constant out of range, missing, or not '// &
+         'allowed with this element or host'
       case (STATUS_STAGGER_NOT_CONVERGED); message = 'staggered damage-friction iteration did not converge'
       case (STATUS_RCURVE_NOT_LOADED);     message = 'tabulated R-curve selected but none loaded'
       case (STATUS_RCURVE_UNREADABLE);     message = 'R-curve file cannot be opened or read'
