@@ -14,7 +14,8 @@
 # Same meaning as pFUnit's function: one executable <name> from all the .pf files (each translated
 # to ${CMAKE_CURRENT_BINARY_DIR}/<file>.F90) plus a generated driver, and one ctest test <name>.
 # Unlike pFUnit's, the executable exits with status 1 when a test fails; its last line is
-# "N passed, N failed". Run `<name> -h` for its options (filter by test name, verbose).
+# "N passed, N failed", and the ctest test passes only when that line reports 0 failed (a program
+# that stops early, even with status 0, fails). Run `<name> -h` for its options (filter by test name, verbose).
 # pFUnit's REGISTRY, EXTRA_USE, EXTRA_INITIALIZE and EXTRA_FINALIZE are not supported (error).
 #
 # INTERPHASE_PFUNIT_CHECK_FLAGS (cache) holds the run-time checks the test code is compiled with.
@@ -161,6 +162,11 @@ end program funit_driver
     set(working_directory "${CMAKE_CURRENT_BINARY_DIR}")
   endif()
   add_test(NAME ${test_name} COMMAND ${test_name} WORKING_DIRECTORY "${working_directory}")
+  # Passed only with the closing line of a run without failures: a test that ends the program
+  # with a plain `stop` (exit status 0) after a failed assertion, or before the last test ran,
+  # prints no closing line and fails here. (ctest then ignores the exit status, which is 0
+  # exactly when that line is printed.)
+  set_property(TEST ${test_name} PROPERTY PASS_REGULAR_EXPRESSION "(^|\n)[0-9]+ passed, 0 failed\n")
   if(PF_LABELS)
     set_property(TEST ${test_name} PROPERTY LABELS ${PF_LABELS})
   endif()

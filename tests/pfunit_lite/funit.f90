@@ -25,6 +25,8 @@ module funit
    integer, parameter :: NUMBER_LEN = 48
    !> Above this magnitude a - b may overflow, so differences are formed from halves.
    real(dp), parameter :: HALF_HUGE = 0.5_dp * huge(1.0_dp)
+   !> Real pFUnit names a module's suite `<module>_suite` and its tests `<module>_suite.<test>`.
+   character(len=*), parameter :: SUITE_SUFFIX = '_suite'
    !> Line number meaning "no .pf location recorded".
    integer, parameter :: NO_LINE = 0
 
@@ -81,7 +83,7 @@ module funit
    ! ---- state of the run ----
    character(len=:), allocatable :: location_file   !! .pf file of the assertion being checked
    integer :: location_line = NO_LINE               !! its line, NO_LINE when unknown
-   character(len=:), allocatable :: current_test    !! "module.test" of the running test
+   character(len=:), allocatable :: current_test    !! "<module>_suite.test" of the running test
    logical :: current_failed = .false.              !! an assertion of the running test failed
    character(len=:), allocatable :: name_filter     !! run only tests whose name contains this
    logical :: verbose = .false.                     !! print one line per test run
@@ -139,7 +141,8 @@ contains
       procedure(funit_test_procedure) :: test
       procedure(funit_test_procedure), optional :: before, after
 
-      current_test = suite // '.' // name
+      ! (real pFUnit's name of the test: its suite is `<module>_suite`, ../shared/PFUNIT.md)
+      current_test = suite // SUITE_SUFFIX // '.' // name
       if (allocated(name_filter)) then
          if (index(lower(current_test), name_filter) == 0) return
       end if
@@ -674,7 +677,7 @@ contains
    subroutine print_usage(unit)
       integer, intent(in) :: unit
       write (unit, '(a)') 'usage: <test executable> [-v|--verbose] [[-f|--filter] NAME]', &
-         '  runs every test (or those whose "module.test" name contains NAME, ignoring case)', &
+         '  runs every test (or those whose "<module>_suite.<test>" name contains NAME, ignoring case)', &
          '  and ends with the line "N passed, N failed"; exit status 1 if any test failed.'
    end subroutine print_usage
 
