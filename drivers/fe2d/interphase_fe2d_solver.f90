@@ -17,9 +17,9 @@
 !> a thousand times below its tolerance). The residual test is also met where ||R_f|| is at the
 !> round-off of its own assembly, ROUNDOFF_FACTOR * epsilon * ||sum_e |K_e| |u_e| + |f_joint|||
 !> (a load that vanishes, e.g. a shear force falling to mu * 0 without precompression, would
-!> otherwise ask for a residual below what double precision can form). Cut-back: a UMAT
-!> asking PNEWDT < 1 cuts the increment by max(PNEWDT, 0.1); no convergence in max_iterations (or a singular/non-finite
-!> system) halves it; after an increment that needed at most GROW_ITERATIONS iterations the
+!> otherwise ask for a residual below what double precision can form); such increments are
+!> counted and logged. Cut-back: a UMAT asking PNEWDT < 1 cuts the increment by
+!> max(PNEWDT, 0.1); no convergence in max_iterations (or a singular/non-finite system) halves it; after an increment that needed at most GROW_ITERATIONS iterations the
 !> increment grows by GROW_FACTOR, never beyond the nominal one. Below min_increment times
 !> the nominal increment the analysis stops with a message.
 module interphase_fe2d_solver
@@ -122,6 +122,9 @@ module interphase_fe2d_solver
       integer :: nincrements = 0                  !! converged increments
       type(fe2d_increment_type), allocatable :: increments(:)
       integer :: cutbacks = 0                     !! increments cut back
+      !> increments accepted with the residual at the round-off of the assembly, above
+      !> tolerance x F_ref (a vanishing load, or an ill-conditioned brick such as nu -> 0.5)
+      integer :: roundoff_increments = 0
       integer :: iterations = 0                   !! linear solves in all
       integer :: neq = 0                          !! free equations
       integer :: bandwidth = 0                    !! half bandwidth
@@ -138,6 +141,7 @@ contains
       character(len=80), parameter :: CMNAME = 'INTERPHASE-FE2D'
       real(dp), allocatable :: ke_quad(:, :, :), u(:), u_n(:), fint(:), fext(:), kfp_dup(:)
       real(dp), allocatable :: fint_abs(:)
+      logical :: at_roundoff
       real(dp), allocatable :: ab(:, :), rhs(:), dup(:)
       integer, allocatable :: ipiv(:)
       real(dp), allocatable :: sep_n(:, :), stress_n(:, :), statev_n(:, :), sse_n(:), spd_n(:)
@@ -389,10 +393,15 @@ contains
             du_rel = alpha*norm2(du)/unorm
             residuals(k) = rel
             call log_iteration(k, t_new, t_new - t, rel, du_rel, alpha)
-            if (rel <= run%tolerance .and. (du_rel <= run%displacement_tolerance .or. &
+            if ((rel <= run%tolerance .or. at_roundoff) .and. (du_rel <= run%displacement_tolerance .or. &
                rel <= 1.0e-3_dp*run%tolerance)) then
                converged = .true.
                iterations = k
+               if (at_roundoff) then
+                  result%roundoff_increments = result%roundoff_increments + 1
+                  call log_line('    residual above the tolerance but at the round-off of the '// &
+                     'assembly (64 eps ||sum |K_e||u_e|||): accepted')
+               end if
                return
             end if
          end do
@@ -413,6 +422,7 @@ contains
 
          ok = .false.
          rel = huge(1.0_dp)
+         at_roundoff = .false.
          call assemble(t, dt, predictor, pnewdt)
          if (pnewdt < 1.0_dp) then
             factor = max(pnewdt, MIN_PNEWDT_FACTOR)
@@ -432,7 +442,7 @@ contains
          rel = rnorm/fref
          ! a residual at the round-off of the assembly meets the residual test
          roundoff = ROUNDOFF_FACTOR*epsilon(1.0_dp)*norm2(fint_abs(1:nfree))
-         if (rnorm <= roundoff) rel = min(rel, run%tolerance)
+         at_roundoff = rnorm <= roundoff .and. rel > run%tolerance
          ok = .true.
       end subroutine residual_at
 
