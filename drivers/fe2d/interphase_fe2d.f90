@@ -97,6 +97,10 @@ program interphase_fe2d
       csv_path//' ('//int_to_string(result%nincrements)//' increments, '// &
       int_to_string(result%iterations)//' iterations, '//int_to_string(result%cutbacks)// &
       ' cut-backs; log '//log_path//')'
+   if (result%roundoff_increments > 0) write (output_unit, '(a)') run%name//': note: '// &
+      int_to_string(result%roundoff_increments)//' increments converged only to the round-off '// &
+      'of the assembly, above tolerance x the reference force (a vanishing load or an '// &
+      'ill-conditioned brick; see the log)'
    write (output_unit, '(a)') run%name//': peak |shear force| '// &
       real_to_string(abs(result%rows(COL_SHEAR, peak)))//' N; final shear force '// &
       real_to_string(result%rows(COL_SHEAR, result%nrows))//' N at normal force '// &

@@ -25,10 +25,20 @@ printf '%-8s %-14s %-12s %-14s\n' "mesh" "peak (N)" "change (N)" "final (N)"
 previous=""
 for level in $levels; do
   nx="${level%%:*}"; ny="${level##*:}"
-  sed -e "s/^ *nx *=.*/  nx = $nx/" -e "s/^ *ny *=.*/  ny = $ny/" \
-      -e "s#history = '\([^']*\)'#history = '$case_dir/\1'#" -e "s/^ *output *=.*/  output = 'case.csv'/" \
+  # nx, ny and output wherever they stand (one entry a line or several, any case; comments
+  # after '!' untouched), then nx, ny given right after '&mesh' (an empty '&mesh /' too)
+  sed -E -e ':c' -e 's/^([^!]*)\b(nx|ny)[[:space:]]*=[[:space:]]*[0-9]+[[:space:]]*,?/\1/I' -e 't c' \
+      -e 's/^([^!]*)\boutput[[:space:]]*=[[:space:]]*(\x27[^\x27]*\x27|"[^"]*")[[:space:]]*,?/\1/I' \
+      -e "s/^([^!]*)&mesh\b/\1\&mesh nx = $nx, ny = $ny,/I" \
+      -e "s#history = '([^']*)'#history = '$case_dir/\1'#" \
       "$case_file" > "$work/case.nml"
   "$exe" "$work/case.nml" --no-plot --output-dir "$work/out" > "$work/stdout"
+  # the mesh that ran, from the log's header: a study of one mesh repeated is no study
+  if ! head -n 1 "$work/out/case.log" | grep -q " $nx x $ny elements per brick"; then
+    echo "mesh-study.sh: $case_file: the run did not use ${nx} x ${ny} elements per brick" \
+      "($(head -n 1 "$work/out/case.log")); the &mesh group could not be rewritten" >&2
+    exit 1
+  fi
   peak=$(awk -F, 'NR > 1 { v = $4 < 0 ? -$4 : $4; if (v > m) m = v } END { printf "%.2f", m }' "$work/out/case.csv")
   final=$(awk -F, 'END { printf "%.2f", $4 }' "$work/out/case.csv")
   change=""
