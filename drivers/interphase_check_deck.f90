@@ -733,7 +733,7 @@ contains
          end select
          call record_failure(where//': STATEV('//int_to_string(n)//') is interphase''s ('//trim(slot)// &
             '; every point starts from zeros), and Abaqus deletes a point whose deletion variable is 0: every '// &
-            'intact point would be deleted. interphase does not flag points for deletion (a fully cracked joint '// &
+            'point would be deleted at the start. interphase does not flag points for deletion (a fully cracked joint '// &
             'still carries contact and friction, docs/abaqus.md): drop DELETE=', nfail)
       else
          slot = ''
