@@ -198,9 +198,10 @@ contains
    !> '' when no word in parentheses right after a column's name in an R-curve file's comment
    !> (`comment`, the text after '#') is a unit other than the reader's; else the message. A
    !> toughness (G_cI, G_cII, G_c, G_f, ... any case) is read in N/mm: a group whose first word
-   !> (up to a blank, comma or semicolon) has a '/' and is not N/mm or the same unit written
-   !> otherwise (kJ/m^2, kN/m, mJ/mm^2) names another one (J/m^2 = 1e-3 N/mm); D is a/b:
-   !> a length unit after it (mm, m) names a crack length. Other words in parentheses are a remark.
+   !> (`unit_word`: up to a blank, comma or semicolon, `J / m^2` as `J/m^2`, `kJ/m²` as `kJ/m2`)
+   !> has a '/' and is not N/mm or the same unit written otherwise (kJ/m^2, kN/m, mJ/mm^2) names
+   !> another one (J/m^2 = 1e-3 N/mm); D is a/b: a length unit after it (mm, m; `in` alone, not
+   !> `D (in [0, 1])`) names a crack length. Other words in parentheses are a remark.
    pure function foreign_unit(comment) result(message)
       character(len=*), intent(in) :: comment
       character(len=:), allocatable :: message
@@ -212,29 +213,83 @@ contains
       character(len=*), parameter :: LENGTHS(9) = [character(len=2) :: 'mm', 'm', 'cm', 'dm', 'um', 'nm', 'in', &
          'ft', 'km']
       character(len=:), allocatable :: name, unit, item
-      integer :: i, k
-      logical :: found
+      integer :: i
+      logical :: found, rest
       message = ''
       i = 1
       do
          call next_parenthesised(comment, i, found, unit, name)
          if (.not. found) exit
-         ! its first word (up to a blank, comma or semicolon), lower case
-         k = scan(unit, ' ,;'//achar(9))
-         if (k == 0) k = len(unit) + 1
-         item = to_lower(unit(:k - 1))
+         ! its first word (up to a blank, comma or semicolon; blanks around a '/' and a UTF-8
+         ! superscript two or three as written: `J / m^2`, `kJ/m²`), lower case
+         call unit_word(unit, item, rest)
+         item = to_lower(item)
          if (any(to_lower(name) == TOUGHNESS_NAMES) .and. index(item, '/') > 0 .and. .not. any(item == SAME_UNITS)) then
             message = 'the comment gives '//name//' the unit ('//unit//'), but an R-curve file''s toughnesses are '// &
                'read in N/mm (1 N/mm = 1 kJ/m^2 = 1000 J/m^2): convert the column, and write (N/mm) or no unit'
             return
          end if
-         if (to_lower(name) == 'd' .and. any(item == LENGTHS)) then
+         ! (`in` followed by more words is the preposition: `D (in [0, 1])`)
+         if (to_lower(name) == 'd' .and. any(item == LENGTHS) .and. .not. (item == 'in' .and. rest)) then
             message = 'the comment gives D the unit ('//unit//'), but D is the crack''s relative length a/b '// &
                '(no unit, in [0, 1]): divide the crack lengths by b'
             return
          end if
       end do
    end function foreign_unit
+
+   !> `word`, the first word of a group in parentheses (`content`, blanks trimmed) as
+   !> `foreign_unit` reads a unit: up to a blank, tab, comma or semicolon, with blanks around a
+   !> '/' joined to it (`J / m^2` is `J/m^2`) and a UTF-8 superscript two or three written 2 or 3
+   !> (`kJ/m²` is `kJ/m2`); `rest` true when a blank or tab and more words follow it.
+   pure subroutine unit_word(content, word, rest)
+      character(len=*), intent(in) :: content
+      character(len=:), allocatable, intent(out) :: word
+      logical, intent(out) :: rest
+      character(len=1), parameter :: TAB = achar(9)
+      integer :: i, next
+      word = ''
+      rest = .false.
+      i = 1
+      do while (i <= len(content))
+         select case (content(i:i))
+         case (',', ';')
+            return
+         case (' ', TAB)
+            ! a blank before a '/', or after one, joins; else the word ends here
+            next = verify(content(i:), ' '//TAB)
+            if (next == 0) return
+            next = i + next - 1
+            if (content(next:next) /= '/' .and. .not. ends_with_slash(word)) then
+               rest = content(next:next) /= ',' .and. content(next:next) /= ';'
+               return
+            end if
+            i = next
+            cycle
+         case (char(194))
+            ! the superscripts two and three (U+00B2, U+00B3)
+            if (i < len(content)) then
+               if (content(i + 1:i + 1) == char(178)) then
+                  word = word//'2'
+                  i = i + 2
+                  cycle
+               else if (content(i + 1:i + 1) == char(179)) then
+                  word = word//'3'
+                  i = i + 2
+                  cycle
+               end if
+            end if
+         end select
+         word = word//content(i:i)
+         i = i + 1
+      end do
+   contains
+      pure logical function ends_with_slash(text)
+         character(len=*), intent(in) :: text
+         ends_with_slash = .false.
+         if (len(text) > 0) ends_with_slash = text(len(text):len(text)) == '/'
+      end function ends_with_slash
+   end subroutine unit_word
 
    !> G_cI, G_cII (N/mm) and their D-derivatives from the loaded R-curve at D: STATUS_OK,
    !> STATUS_RCURVE_NOT_LOADED, or STATUS_RCURVE_OUT_OF_RANGE when D lies outside the file's
