@@ -391,8 +391,9 @@ contains
          if (.not. group) exit
          if (any(to_lower(name) == ['s_t ', 's_t1', 's_t2', 's_n '])) then
             ! (and micrometres with the micro sign or the Greek mu, in UTF-8)
-            if (any(to_lower(unit) == LENGTH_UNITS) .or. unit == char(194)//char(181)//'m' .or. &
-               unit == char(206)//char(188)//'m') then
+            ! (the text may be as written: `µM` is lowered as `_files.py` lowers it, A-Z only)
+            if (any(to_lower(unit) == LENGTH_UNITS) .or. to_lower(unit) == char(194)//char(181)//'m' .or. &
+               to_lower(unit) == char(206)//char(188)//'m') then
                found = name//' the unit ('//unit//')'
                return
             end if

@@ -975,6 +975,8 @@ DRIVER_CASES = {
     "columns_header_commas": ("'h.txt'", "'h.txt'", "# t, s_T, Sigma_N\n0 0 0\n1 0 -0.5\n"),
     "columns_header_metres": ("'h.txt'", "'h.txt'", "# t s_T (m) s_N (m)\n0 0 0\n1 0.001 0\n"),
     "columns_header_micro_sign": ("'h.txt'", "'h.txt'", "# t\ts_T (\u00b5m)  s_N\n0 0 0\n1 0.001 0\n"),
+    # (the micro sign with an upper-case M: both readers lower A-Z, and name the unit as written)
+    "columns_header_micro_upper": ("'h.txt'", "'h.txt'", "# t s_T (\u00b5M) s_N\n0 0 0\n1 0.001 0\n"),
     "rows_commas": ("'h.txt'", "'h.txt'", "0,0,0\n1,0,0.01\n"),
     "rows_semicolons": ("'h.txt'", "'h.txt'", "0;0;0\n1;0;0.01\n"),
     "columns_upper_t": ("'h.txt'", "'h.txt'", "# columns: T s_T Sigma_N\n0 0 0\n1 0 0.01\n"),
