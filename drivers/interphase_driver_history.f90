@@ -403,21 +403,24 @@ contains
 
    !> '' when `line` (a data line without its comment) holds no comma or semicolon; else the note
    !> that ends a wrong-column-count message: the fields of a history are separated by blanks, and
-   !> `0,0,0` (a spreadsheet's CSV) is one field.
+   !> `0,0,0` (a spreadsheet's CSV) is one field. A semicolon is the separator when there is one
+   !> (`0,5;0;0`: a spreadsheet's CSV where the comma is the decimal mark, which the note names).
    pure function separator_hint(line) result(hint)
       character(len=*), intent(in) :: line
       character(len=:), allocatable :: hint
       character(len=1) :: separator
       hint = ''
-      if (index(line, ',') > 0) then
-         separator = ','
-      else if (index(line, ';') > 0) then
+      if (index(line, ';') > 0) then
          separator = ';'
+      else if (index(line, ',') > 0) then
+         separator = ','
       else
          return
       end if
       hint = ' (the fields of a line are separated by blanks or tabs, not by '''//separator// &
-         ''': write the values with blanks between them)'
+         ''': write the values with blanks between them'
+      if (separator == ';' .and. index(line, ',') > 0) hint = hint//', and a point for the decimal comma'
+      hint = hint//')'
    end function separator_hint
 
    !> `text` with every group in parentheses, nested ones included, blanked (an unclosed group runs

@@ -697,6 +697,8 @@ def test_read_mixed_history(source_dir, tmp_path):
                                "gives s_T the unit \\(\u00b5m\\)"),
                               ("# t, s_T, s_N\n0,0,0\n1,0,0.01\n", 2, "found 1 columns; expected 3 .* \\(the "
                                "fields of a line are separated by blanks or tabs, not by ','"),
+                              ("0,5;0;0\n1;0;0,01\n", 1, "not by ';': write the values with blanks between them, "
+                               "and a point for the decimal comma\\)"),
                               ("0 0 0\n#\tt  s_T (mm)  SIGMA_N (MPa)\n1 0 1\n", 2, "names traction columns"),
                               ("# t s_N s_T\n0 0 0\n1 0.01 0\n", 1, "names the columns in another order"),
                               ("#  t  s_N (mm)  s_T (mm)\n0 0 0\n1 0.01 0\n", 1, "in another order"),
@@ -979,6 +981,7 @@ DRIVER_CASES = {
     "columns_header_micro_upper": ("'h.txt'", "'h.txt'", "# t s_T (\u00b5M) s_N\n0 0 0\n1 0.001 0\n"),
     "rows_commas": ("'h.txt'", "'h.txt'", "0,0,0\n1,0,0.01\n"),
     "rows_semicolons": ("'h.txt'", "'h.txt'", "0;0;0\n1;0;0.01\n"),
+    "rows_semicolons_decimal_comma": ("'h.txt'", "'h.txt'", "0,5;0;0\n1;0;0,01\n"),
     "columns_upper_t": ("'h.txt'", "'h.txt'", "# columns: T s_T Sigma_N\n0 0 0\n1 0 0.01\n"),
     "table_simplified": ("'simplified'", "'simplified', table = 'x.dat'", None),
     "increments_word": ("increments = 20", "increments = abc", None),

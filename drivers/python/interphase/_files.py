@@ -327,11 +327,13 @@ def _parenthesised(text):
 
 def _separator_hint(line):
     """'' when a data line (without its comment) holds no comma or semicolon, else the note that ends
-    a wrong-column-count message (interphase_driver_history's separator_hint)."""
-    for separator in (",", ";"):
+    a wrong-column-count message; a semicolon is the separator when there is one (`0,5;0;0`: the
+    comma a decimal mark, which the note names; interphase_driver_history's separator_hint)."""
+    for separator in (";", ","):
         if separator in line:
+            decimal = ", and a point for the decimal comma" if separator == ";" and "," in line else ""
             return (f" (the fields of a line are separated by blanks or tabs, not by '{separator}': write the "
-                    "values with blanks between them)")
+                    f"values with blanks between them{decimal})")
     return ""
 
 
