@@ -173,7 +173,7 @@ bval=${P[b]}
 # in m, or a mesh whose far-field size exceeds a layer (docs/rve.md, 'A table for your own brick
 # and mortar').  Warnings only: the run goes on.
 for key in E_m E_b; do
-  chk "${P[$key]}" "x < 100" && warn "$(loc "$key")'$key' = ${P[$key]} MPa is softer than any mortar or brick: moduli are in MPa (a value in GPa is 1000 times too small, and the table's stiffnesses with it)"
+  chk "${P[$key]}" "x < 100" && warn "$(loc "$key")'$key' = ${P[$key]} MPa is softer than mortars and bricks usually are: moduli are in MPa (a value in GPa is 1000 times too small, and the table's stiffnesses with it)"
   chk "${P[$key]}" "x > 1e6" && warn "$(loc "$key")'$key' = ${P[$key]} MPa is stiffer than any mortar or brick: moduli are in MPa (a value in Pa is 1e6 times too large)"
 done
 for key in h_m h_b b; do

@@ -19,8 +19,9 @@
 !> (a load that vanishes, e.g. a shear force falling to mu * 0 without precompression, would
 !> otherwise ask for a residual below what double precision can form); such increments are
 !> counted and logged. Cut-back: a UMAT asking PNEWDT < 1 cuts the increment by
-!> max(PNEWDT, 0.1); no convergence in max_iterations (or a singular/non-finite system) halves it; after an increment that needed at most GROW_ITERATIONS iterations the
-!> increment grows by GROW_FACTOR, never beyond the nominal one. Below min_increment times
+!> max(PNEWDT, 0.1); no convergence in max_iterations (or a singular/non-finite system) halves
+!> it; after an increment that needed at most GROW_ITERATIONS iterations the increment grows by
+!> GROW_FACTOR, never beyond the nominal one. Below min_increment times
 !> the nominal increment the analysis stops with a message.
 module interphase_fe2d_solver
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
