@@ -24,7 +24,8 @@ module interphase_driver_history
    use interphase_kinds, only: dp
    use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, to_lower, &
       text_file_type, open_line_file, close_text_file
-   use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES, next_parenthesised
+   use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES, next_parenthesised, &
+      LENGTH_UNIT_WORDS
    use interphase_params, only: SEPARATION_MAX, HOST_VALUE_MAX
    use interphase_finite, only: difference_is_finite
    implicit none
@@ -60,11 +61,6 @@ module interphase_driver_history
    !> `columns_line_kind`'s answers.
    integer, parameter :: PLAIN_COMMENT = 0, COLUMNS_LINE = 1, MISSPELLED_COLUMNS = 2, NAMES_WITHOUT_KEY = 3, &
       NAMES_OUT_OF_ORDER = 4, NAMES_FOREIGN_UNIT = 5
-   !> Length units other than mm (lower case) that a comment of column names may give a
-   !> separation (`# t s_T (m) s_N (m)`): read as a plain comment, its columns would run as mm.
-   character(len=*), parameter :: LENGTH_UNITS(20) = [character(len=11) :: 'm', 'cm', 'dm', 'km', 'um', &
-      'nm', 'in', 'inch', 'inches', 'ft', 'mil', 'micron', 'microns', 'micrometre', 'micrometer', 'metre', &
-      'meter', 'metres', 'meters', 'micrometres']
 
 contains
 
@@ -375,7 +371,7 @@ contains
    end function column_words_kind
 
    !> '' when no word in parentheses right after a separation's name in `text` (a comment of
-   !> column names: `column_words_kind`) is a length unit other than mm (LENGTH_UNITS, any case);
+   !> column names: `column_words_kind`) is a length unit other than mm (LENGTH_UNIT_WORDS, any case);
    !> else the first such name and unit as written (`s_T the unit (m)`). Other words in parentheses are a
    !> remark (`# t s_T s_N (2-D)`).
    pure function foreign_length_unit(text) result(found)
@@ -389,14 +385,11 @@ contains
       do
          call next_parenthesised(text, i, group, unit, name)
          if (.not. group) exit
-         if (any(to_lower(name) == ['s_t ', 's_t1', 's_t2', 's_n '])) then
-            ! (and micrometres with the micro sign or the Greek mu, in UTF-8)
-            ! (the text may be as written: `µM` is lowered as `_files.py` lowers it, A-Z only)
-            if (any(to_lower(unit) == LENGTH_UNITS) .or. to_lower(unit) == char(194)//char(181)//'m' .or. &
-               to_lower(unit) == char(206)//char(188)//'m') then
-               found = name//' the unit ('//unit//')'
-               return
-            end if
+         ! (the text as written: `µM` is lowered as `_files.py` lowers it, A-Z only)
+         if (any(to_lower(name) == ['s_t ', 's_t1', 's_t2', 's_n ']) .and. any(to_lower(unit) == LENGTH_UNIT_WORDS) &
+            .and. to_lower(unit) /= 'mm') then
+            found = name//' the unit ('//unit//')'
+            return
          end if
       end do
    end function foreign_length_unit

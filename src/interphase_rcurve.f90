@@ -18,7 +18,8 @@ module interphase_rcurve
       STATUS_RCURVE_NEGATIVE, STATUS_RCURVE_BAD_RANGE, STATUS_RCURVE_BAD_TOUGHNESS, STATUS_RCURVE_NOT_LOADED, MESSAGE_LEN, &
       STATUS_RCURVE_OUT_OF_RANGE, STATUS_SPLINE_OUT_OF_RANGE, status_message
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
-      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END, path_problem, to_lower, next_parenthesised
+      parse_real, tried_path, clip_text, TEXT_LINE, TEXT_END, path_problem, to_lower, next_parenthesised, &
+      LENGTH_UNIT_WORDS
    use interphase_spline, only: spline_type, spline_build, spline_export, cubic_locate, cubic_eval, &
       SPLINE_MONOTONE
    implicit none
@@ -210,8 +211,6 @@ contains
          'gfi', 'gfii']
       character(len=*), parameter :: SAME_UNITS(12) = [character(len=9) :: 'n/mm', 'kj/m2', 'kj/m^2', 'kj/m**2', &
          'kn/m', 'mj/mm2', 'mj/mm^2', 'mj/mm**2', 'nmm/mm2', 'n.mm/mm2', 'n*mm/mm2', 'nmm/mm^2']
-      character(len=*), parameter :: LENGTHS(9) = [character(len=2) :: 'mm', 'm', 'cm', 'dm', 'um', 'nm', 'in', &
-         'ft', 'km']
       character(len=:), allocatable :: name, unit, item
       integer :: i
       logical :: found, rest
@@ -230,7 +229,7 @@ contains
             return
          end if
          ! (`in` followed by more words is the preposition: `D (in [0, 1])`)
-         if (to_lower(name) == 'd' .and. any(item == LENGTHS) .and. .not. (item == 'in' .and. rest)) then
+         if (to_lower(name) == 'd' .and. any(item == LENGTH_UNIT_WORDS) .and. .not. (item == 'in' .and. rest)) then
             message = 'the comment gives D the unit ('//unit//'), but D is the crack''s relative length a/b '// &
                '(no unit, in [0, 1]): divide the crack lengths by b'
             return

@@ -26,6 +26,14 @@ module interphase_text_input
    integer, parameter, public :: TEXT_LINE = 0, TEXT_END = 1, TEXT_LINE_TOO_LONG = 2, &
       TEXT_FILE_TOO_LARGE = 3, TEXT_READ_ERROR = 4
 
+   !> Length units as a comment may name them in parentheses (lower case; `um` and the micro sign
+   !> or Greek mu before `m` in UTF-8 for micrometres): the readers' unit checks refuse them where
+   !> a column is read in mm (other than `mm`) or is a ratio (R-curve's D).
+   character(len=*), parameter, public :: LENGTH_UNIT_WORDS(23) = [character(len=11) :: 'mm', 'm', 'cm', &
+      'dm', 'km', 'um', char(194)//char(181)//'m', char(206)//char(188)//'m', 'nm', 'in', 'inch', 'inches', &
+      'ft', 'mil', 'micron', 'microns', 'micrometre', 'micrometer', 'micrometres', 'metre', 'meter', &
+      'metres', 'meters']
+
    !> Why parse_real refuses a nonzero literal whose magnitude is below tiny(1.0_dp).
    character(len=*), parameter, public :: UNDERFLOW_WHY = 'out of range (|x| < 2.2e-308)'
 

@@ -142,6 +142,7 @@ contains
       character(len=80), parameter :: CMNAME = 'INTERPHASE-FE2D'
       real(dp), allocatable :: ke_quad(:, :, :), u(:), u_n(:), fint(:), fext(:), kfp_dup(:)
       real(dp), allocatable :: fint_abs(:)
+      real(dp), allocatable :: ke_abs(:, :, :)   !! |K_e| of each brick element, for fint_abs
       logical :: at_roundoff
       real(dp), allocatable :: ab(:, :), rhs(:), dup(:)
       integer, allocatable :: ipiv(:)
@@ -161,11 +162,12 @@ contains
       ldab = 3*bw + 1
       result%neq = nfree
       result%bandwidth = bw
-      allocate (ke_quad(8, 8, mesh%nquad))
+      allocate (ke_quad(8, 8, mesh%nquad), ke_abs(8, 8, mesh%nquad))
       do e = 1, mesh%nquad
          xy = 0.0_dp
          xy(:, 1:4) = mesh%x(:, mesh%quad(:, e))
          call q4_stiffness(xy, mesh%d_matrix, mesh%thickness, ke_quad(:, :, e))
+         ke_abs(:, :, e) = abs(ke_quad(:, :, e))
       end do
       allocate (u(mesh%neq), u_n(mesh%neq), fint(mesh%neq), fint_abs(mesh%neq), fext(mesh%neq), &
          kfp_dup(nfree), &
@@ -401,7 +403,7 @@ contains
                if (at_roundoff) then
                   result%roundoff_increments = result%roundoff_increments + 1
                   call log_line('    residual above the tolerance but at the round-off of the '// &
-                     'assembly (64 eps ||sum |K_e||u_e|||): accepted')
+                     'assembly ('//int_to_string(nint(ROUNDOFF_FACTOR))//' eps ||sum |K_e||u_e|||): accepted')
                end if
                return
             end if
@@ -472,7 +474,7 @@ contains
             end do
             d = u(eqs)
             fe = matmul(ke_quad(:, :, e), d)
-            call scatter_abs(eqs, matmul(abs(ke_quad(:, :, e)), abs(d)))
+            call scatter_abs(eqs, matmul(ke_abs(:, :, e), abs(d)))
             call scatter(eqs, ke_quad(:, :, e), fe)
          end do
          drot = 0.0_dp

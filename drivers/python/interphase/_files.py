@@ -284,7 +284,7 @@ def _column_words(comment):
 
 
 # length units other than mm (lower case) a comment of column names may give a separation
-# (interphase_driver_history's LENGTH_UNITS), and micrometres with the micro sign or Greek mu
+# (interphase_text_input's LENGTH_UNIT_WORDS but mm), and micrometres with the micro sign or Greek mu
 _LENGTH_UNITS = ("m", "cm", "dm", "km", "um", "nm", "in", "inch", "inches", "ft", "mil", "micron", "microns",
                  "micrometre", "micrometer", "metre", "meter", "metres", "meters", "micrometres",
                  "\u00b5m", "\u03bcm")
