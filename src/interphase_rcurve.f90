@@ -199,9 +199,10 @@ contains
    !> '' when no word in parentheses right after a column's name in an R-curve file's comment
    !> (`comment`, the text after '#') is a unit other than the reader's; else the message. A
    !> toughness (G_cI, G_cII, G_c, G_f, ... any case) is read in N/mm: a group whose first word
-   !> (`unit_word`: up to a blank, comma or semicolon, `J / m^2` as `J/m^2`, `kJ/m²` as `kJ/m2`)
-   !> has a '/' and is not N/mm or the same unit written otherwise (kJ/m^2, kN/m, mJ/mm^2) names
-   !> another one (J/m^2 = 1e-3 N/mm); D is a/b: a length unit after it (mm, m; `in` alone, not
+   !> (`unit_word`: up to a blank, comma or semicolon, `J / m^2` as `J/m^2`, `J m^-2` as `Jm^-2`,
+   !> `kJ/m²` as `kJ/m2`) is a quotient (a '/' or a negative power) and not N/mm or the same
+   !> unit written otherwise (kJ/m^2, kJ m^-2, kN/m, N mm^-1, mJ/mm^2; `*`, `.` and `**` as
+   !> products and powers) names another one (J/m^2 = 1e-3 N/mm); D is a/b: a length unit after it (mm, m; `in` alone, not
    !> `D (in [0, 1])`) names a crack length. Other words in parentheses are a remark.
    pure function foreign_unit(comment) result(message)
       character(len=*), intent(in) :: comment
@@ -209,8 +210,10 @@ contains
       character(len=*), parameter :: TOUGHNESS_NAMES(20) = [character(len=6) :: 'g_ci', 'g_cii', 'gci', 'gcii', &
          'g_c', 'gc', 'g_ic', 'g_iic', 'gic', 'giic', 'g_i', 'g_ii', 'gi', 'gii', 'g_f', 'gf', 'g_fi', 'g_fii', &
          'gfi', 'gfii']
-      character(len=*), parameter :: SAME_UNITS(12) = [character(len=9) :: 'n/mm', 'kj/m2', 'kj/m^2', 'kj/m**2', &
-         'kn/m', 'mj/mm2', 'mj/mm^2', 'mj/mm**2', 'nmm/mm2', 'n.mm/mm2', 'n*mm/mm2', 'nmm/mm^2']
+      ! (as `unit_form` writes them: lower case, `**` as `^`, no `*`, `.` or middle dot)
+      character(len=*), parameter :: SAME_UNITS(16) = [character(len=8) :: 'n/mm', 'kj/m2', 'kj/m^2', &
+         'kn/m', 'mj/mm2', 'mj/mm^2', 'nmm/mm2', 'nmm/mm^2', 'kjm^-2', 'kjm-2', 'knm^-1', 'knm-1', 'nmm^-1', &
+         'nmm-1', 'mjmm^-2', 'mjmm-2']
       character(len=:), allocatable :: name, unit, item
       integer :: i
       logical :: found, rest
@@ -223,7 +226,8 @@ contains
          ! superscript two or three as written: `J / m^2`, `kJ/m²`), lower case
          call unit_word(unit, item, rest)
          item = to_lower(item)
-         if (any(to_lower(name) == TOUGHNESS_NAMES) .and. index(item, '/') > 0 .and. .not. any(item == SAME_UNITS)) then
+         if (any(to_lower(name) == TOUGHNESS_NAMES) .and. is_quotient(item)) then
+            if (any(unit_form(item) == SAME_UNITS)) cycle
             message = 'the comment gives '//name//' the unit ('//unit//'), but an R-curve file''s toughnesses are '// &
                'read in N/mm (1 N/mm = 1 kJ/m^2 = 1000 J/m^2): convert the column, and write (N/mm) or no unit'
             return
@@ -235,11 +239,56 @@ contains
             return
          end if
       end do
+   contains
+      !> a unit with a '/' or a negative power (`m^-2`, `m**-2`, `m-2`)
+      pure logical function is_quotient(word)
+         character(len=*), intent(in) :: word
+         is_quotient = index(word, '/') > 0 .or. negative_power(word)
+      end function is_quotient
+      !> `word` without the marks of a product (`*`, `.`, a UTF-8 middle dot), `**` written `^`
+      pure function unit_form(word) result(form)
+         character(len=*), intent(in) :: word
+         character(len=:), allocatable :: form
+         integer :: k
+         form = ''
+         k = 1
+         do while (k <= len(word))
+            if (word(k:min(k + 1, len(word))) == '**') then
+               form = form//'^'
+               k = k + 2
+               cycle
+            else if (word(k:min(k + 1, len(word))) == char(194)//char(183)) then
+               k = k + 2
+               cycle
+            end if
+            if (word(k:k) /= '*' .and. word(k:k) /= '.') form = form//word(k:k)
+            k = k + 1
+         end do
+      end function unit_form
    end function foreign_unit
+
+   !> A negative power in a unit: `^-`, `**-`, or a letter, '-' and a digit (`m-2`); `mode-I`
+   !> and `2-D` are not.
+   pure logical function negative_power(word)
+      character(len=*), intent(in) :: word
+      integer :: k
+      negative_power = index(word, '^-') > 0 .or. index(word, '**-') > 0
+      do k = 2, len(word) - 1
+         if (negative_power) return
+         negative_power = word(k:k) == '-' .and. is_letter(word(k - 1:k - 1)) .and. &
+            verify(word(k + 1:k + 1), '0123456789') == 0
+      end do
+   contains
+      pure logical function is_letter(c)
+         character(len=1), intent(in) :: c
+         is_letter = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z')
+      end function is_letter
+   end function negative_power
 
    !> `word`, the first word of a group in parentheses (`content`, blanks trimmed) as
    !> `foreign_unit` reads a unit: up to a blank, tab, comma or semicolon, with blanks around a
-   !> '/' joined to it (`J / m^2` is `J/m^2`) and a UTF-8 superscript two or three written 2 or 3
+   !> '/' joined to it (`J / m^2` is `J/m^2`), a negative power after a blank too (`J m^-2` is
+   !> `Jm^-2`), and a UTF-8 superscript two or three written 2 or 3
    !> (`kJ/m²` is `kJ/m2`); `rest` true when a blank or tab and more words follow it.
    pure subroutine unit_word(content, word, rest)
       character(len=*), intent(in) :: content
@@ -259,7 +308,8 @@ contains
             next = verify(content(i:), ' '//TAB)
             if (next == 0) return
             next = i + next - 1
-            if (content(next:next) /= '/' .and. .not. ends_with_slash(word)) then
+            if (content(next:next) /= '/' .and. .not. ends_with_slash(word) .and. &
+               .not. negative_power(next_word(content(next:)))) then
                rest = content(next:next) /= ',' .and. content(next:next) /= ';'
                return
             end if
@@ -283,6 +333,15 @@ contains
          i = i + 1
       end do
    contains
+      !> `text` up to its first blank, tab, comma or semicolon
+      pure function next_word(text) result(w)
+         character(len=*), intent(in) :: text
+         character(len=:), allocatable :: w
+         integer :: k
+         k = scan(text, ' ,;'//TAB)
+         if (k == 0) k = len(text) + 1
+         w = text(1:k - 1)
+      end function next_word
       pure logical function ends_with_slash(text)
          character(len=*), intent(in) :: text
          ends_with_slash = .false.
