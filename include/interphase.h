@@ -107,7 +107,7 @@ extern "C" {
 #define INTERPHASE_STATUS_TABLE_INTERPOLANT 49           /**< RVE table's interpolant inadmissible between two rows */
 /* R-curve files (interphase_load_rcurve) */
 #define INTERPHASE_STATUS_RCURVE_UNREADABLE 60           /**< R-curve file cannot be opened or read */
-#define INTERPHASE_STATUS_RCURVE_MALFORMED 61            /**< line is not "D G_cI G_cII" */
+#define INTERPHASE_STATUS_RCURVE_MALFORMED 61            /**< a line is not "D G_cI G_cII", or a comment gives a column another unit */
 #define INTERPHASE_STATUS_RCURVE_NEGATIVE 62             /**< toughness not positive (see also 65) */
 #define INTERPHASE_STATUS_RCURVE_BAD_RANGE 63            /**< D not increasing in [0, 1], or too few rows */
 #define INTERPHASE_STATUS_RCURVE_OUT_OF_RANGE 64         /**< tabulated R-curve does not cover D0 or the D reached */

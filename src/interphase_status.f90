@@ -130,7 +130,8 @@ contains
       case (STATUS_STAGGER_NOT_CONVERGED); message = 'staggered damage-friction iteration did not converge'
       case (STATUS_RCURVE_NOT_LOADED);     message = 'tabulated R-curve selected but none loaded'
       case (STATUS_RCURVE_UNREADABLE);     message = 'R-curve file cannot be opened or read'
-      case (STATUS_RCURVE_MALFORMED);      message = 'R-curve file line is not "D G_cI G_cII" (three finite numbers)'
+      case (STATUS_RCURVE_MALFORMED);      message = 'R-curve file malformed: a line that is not "D G_cI G_cII" '// &
+         '(three finite numbers), or a comment that gives a column another unit'
       case (STATUS_RCURVE_NEGATIVE);       message = 'R-curve toughness not positive'
       case (STATUS_RCURVE_BAD_RANGE);      message = 'R-curve D values not strictly increasing within [0, 1], or too few'
       case (STATUS_RCURVE_OUT_OF_RANGE);   message = 'tabulated R-curve does not cover the damage reached (or D0)'
