@@ -144,6 +144,11 @@ contains
       real(dp), allocatable :: fint_abs(:)
       real(dp), allocatable :: ke_abs(:, :, :)   !! |K_e| of each brick element, for fint_abs
       logical :: at_roundoff
+      !> why the last Newton attempt failed (named in the message when the increment falls below
+      !> the minimum)
+      character(len=:), allocatable :: last_failure
+      !> the last residual's round-off floor of the assembly, relative as the residual (-)
+      real(dp) :: roundoff_rel
       real(dp), allocatable :: ab(:, :), rhs(:), dup(:)
       integer, allocatable :: ipiv(:)
       real(dp), allocatable :: sep_n(:, :), stress_n(:, :), statev_n(:, :), sse_n(:), spd_n(:)
@@ -157,6 +162,8 @@ contains
 
       call system_clock(clock_start, clock_rate)
       clock_last = clock_start
+      last_failure = ''
+      roundoff_rel = 0.0_dp
       nfree = mesh%nfree
       bw = mesh%bandwidth
       ldab = 3*bw + 1
@@ -327,7 +334,8 @@ contains
                      real_to_string(dt)//' at t = '//real_to_string(t)// &
                      ' is below the minimum '//real_to_string(run%min_increment*dt_nominal)// &
                      ' (min_increment = '//real_to_string(run%min_increment)// &
-                     ' of the nominal increment): the analysis cannot proceed'
+                     ' of the nominal increment): the analysis cannot proceed; the last attempt: '// &
+                     last_failure
                   call log_line('error: '//result%message)
                   return
                end if
@@ -369,12 +377,14 @@ contains
          do k = 1, run%max_iterations
             call dgbsv(nfree, bw, bw, 1, ab, ldab, ipiv, rhs, nfree, info)
             if (info /= 0) then
-               call log_line('    iteration '//int_to_string(k)//': singular tangent (dgbsv info = '// &
-                  int_to_string(info)//')')
+               last_failure = 'iteration '//int_to_string(k)//': singular tangent (dgbsv info = '// &
+                  int_to_string(info)//')'
+               call log_line('    '//last_failure)
                return
             end if
             if (.not. all(ieee_is_finite(rhs))) then
-               call log_line('    iteration '//int_to_string(k)//': non-finite correction')
+               last_failure = 'iteration '//int_to_string(k)//': non-finite correction'
+               call log_line('    '//last_failure)
                return
             end if
             du = rhs
@@ -408,7 +418,13 @@ contains
                return
             end if
          end do
-         call log_line('    no convergence in '//int_to_string(run%max_iterations)//' iterations')
+         ! (the residual against its round-off floor tells a tolerance the assembly cannot reach,
+         ! as in an ill-conditioned mesh, from a path Newton does not follow)
+         last_failure = 'no convergence in '//int_to_string(run%max_iterations)//' iterations, relative '// &
+            'residual '//real_to_string(rel)//' (tolerance '//real_to_string(run%tolerance)// &
+            ', the assembly''s round-off '//real_to_string(roundoff_rel)//'), ||du||/||u|| '// &
+            real_to_string(du_rel)//' (tolerance '//real_to_string(run%displacement_tolerance)//')'
+         call log_line('    '//last_failure)
 
       end subroutine newton
 
@@ -429,8 +445,8 @@ contains
          call assemble(t, dt, predictor, pnewdt)
          if (pnewdt < 1.0_dp) then
             factor = max(pnewdt, MIN_PNEWDT_FACTOR)
-            call log_line('    iteration '//int_to_string(k)//': a UMAT call asked '// &
-               'PNEWDT = '//real_to_string(pnewdt))
+            last_failure = 'iteration '//int_to_string(k)//': a UMAT call asked PNEWDT = '//real_to_string(pnewdt)
+            call log_line('    '//last_failure)
             return
          end if
          rhs = fext(1:nfree) - fint(1:nfree)
@@ -439,12 +455,14 @@ contains
             FORCE_FLOOR*run%young*run%brick_length*run%thickness)
          rnorm = norm2(rhs)
          if (.not. ieee_is_finite(rnorm)) then
-            call log_line('    iteration '//int_to_string(k)//': non-finite residual')
+            last_failure = 'iteration '//int_to_string(k)//': non-finite residual'
+            call log_line('    '//last_failure)
             return
          end if
          rel = rnorm/fref
          ! a residual at the round-off of the assembly meets the residual test
          roundoff = ROUNDOFF_FACTOR*epsilon(1.0_dp)*norm2(fint_abs(1:nfree))
+         roundoff_rel = roundoff/fref
          at_roundoff = rnorm <= roundoff .and. rel > run%tolerance
          ok = .true.
       end subroutine residual_at
