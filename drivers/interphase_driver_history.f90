@@ -416,18 +416,26 @@ contains
       hint = hint//')'
    end function separator_hint
 
-   !> `text` with every group in parentheses, nested ones included, blanked (an unclosed group runs
+   !> `text` with every group in parentheses or square brackets, nested ones included, blanked (an unclosed group runs
    !> to the end).
    pure function without_parentheses(text) result(kept)
       character(len=*), intent(in) :: text
       character(len=len(text)) :: kept
       integer :: i, depth
+      character(len=1) :: opening, closing
       kept = text
       depth = 0
+      opening = '('
+      closing = ')'
       do i = 1, len(kept)
-         if (kept(i:i) == '(') depth = depth + 1
+         ! (a group in square brackets, `s_T [m]`, as one in parentheses)
+         if (depth == 0 .and. (kept(i:i) == '(' .or. kept(i:i) == '[')) then
+            opening = kept(i:i)
+            closing = merge(')', ']', opening == '(')
+         end if
+         if (kept(i:i) == opening) depth = depth + 1
          if (depth > 0) then
-            if (kept(i:i) == ')') depth = depth - 1
+            if (kept(i:i) == closing) depth = depth - 1
             kept(i:i) = ' '
          end if
       end do

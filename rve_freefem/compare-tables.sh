@@ -22,7 +22,14 @@ export LC_ALL=C
 usage() { echo "usage: compare-tables.sh [--tol TOL] [--cols LIST] REF.dat NEW.dat" >&2; exit 2; }
 tol=""
 cols=""
+given=" "
 while [ $# -gt 0 ]; do
+  # (an option given twice: which of its values counts is not guessed)
+  case "$1" in
+    --tol|--cols)
+      case "$given" in *" $1 "*) echo "compare-tables.sh: error: $1 given twice" >&2; exit 2 ;; esac
+      given="$given$1 " ;;
+  esac
   case "$1" in
     --tol) [ $# -ge 2 ] || usage; tol=$2; shift 2 ;;
     --cols) [ $# -ge 2 ] || usage; cols=$2; shift 2 ;;

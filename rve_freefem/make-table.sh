@@ -14,6 +14,7 @@
 #                   those that are in the list (the others are named in a note)
 #   --no-fields     do not write the side file (its a values stay in the table)
 #   --check         check the parameters (and, with --refine, the mesh at that level), run nothing
+# An option may be given once (a second --refine, say, is refused, not taken over the first).
 # A table has at least 4 rows (a = 0 and a = b included): the loader's spline needs them.
 # Needs bash, awk and FreeFem++ (Debian package freefem++).  Exit code 0 on success, 2 for bad
 # parameters or usage, 3 for a missing program or unreadable file, 4 if a FreeFEM run failed.
@@ -32,7 +33,14 @@ a_override=""
 a_override_given=0
 want_fields=1
 check_only=0
+given=" "
 while [ $# -gt 0 ]; do
+  # an option given twice is refused: which of its values counts is not guessed
+  case "$1" in
+    --refine|--jobs|--a-over-b|--no-fields|--check)
+      case "$given" in *" $1 "*) die 2 "$1 given twice" ;; esac
+      given="$given$1 " ;;
+  esac
   case "$1" in
     --refine) [ $# -ge 2 ] || die 2 "--refine needs a value"; refine_mult=$2; shift 2 ;;
     --jobs) [ $# -ge 2 ] || die 2 "--jobs needs a value"; jobs=$2; shift 2 ;;

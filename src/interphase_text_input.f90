@@ -70,33 +70,36 @@ module interphase_text_input
 
 contains
 
-   !> The next group in parentheses of a comment `text` from position `i` on, for the readers'
-   !> unit checks (`# columns: t s_T (mm) Sigma_N (MPa)`, an R-curve's `G_cI (N/mm)`): `found`
-   !> false when there is none; else `content`, what the group holds (to its ')', nested groups
-   !> counted, or to the end; blanks trimmed), `word`, the word right before it as written
-   !> (blanks between allowed; a blank, tab, comma, semicolon or ')' ends it; '' when none), and
-   !> `i` moved past the group.
+   !> The next group in parentheses or square brackets of a comment `text` from position `i` on,
+   !> for the readers' unit checks (`# columns: t s_T (mm) Sigma_N (MPa)`, an R-curve's
+   !> `G_cI (N/mm)` or `G_cI [J/m^2]`): `found` false when there is none; else `content`, what the
+   !> group holds (to its ')' or ']', nested groups of its kind counted, or to the end; blanks
+   !> trimmed), `word`, the word right before it as written (blanks between allowed; a blank,
+   !> tab, comma, semicolon, ')' or ']' ends it; '' when none), and `i` moved past the group.
    pure subroutine next_parenthesised(text, i, found, content, word)
       character(len=*), intent(in) :: text
       integer, intent(inout) :: i
       logical, intent(out) :: found
       character(len=:), allocatable, intent(out) :: content, word
       integer :: depth, close, word_start, word_end
+      character(len=1) :: opening, closing
       content = ''
       word = ''
       found = .false.
       if (i < 1) i = 1
       do while (i <= len(text))
-         if (text(i:i) == '(') exit
+         if (text(i:i) == '(' .or. text(i:i) == '[') exit
          i = i + 1
       end do
       if (i > len(text)) return
       found = .true.
+      opening = text(i:i)
+      closing = merge(')', ']', opening == '(')
       close = i
       depth = 0
       do while (close <= len(text))
-         if (text(close:close) == '(') depth = depth + 1
-         if (text(close:close) == ')') depth = depth - 1
+         if (text(close:close) == opening) depth = depth + 1
+         if (text(close:close) == closing) depth = depth - 1
          if (depth == 0) exit
          close = close + 1
       end do
@@ -104,7 +107,7 @@ contains
       word_end = len_trim(text(:i - 1))
       word_start = word_end
       do while (word_start > 1)
-         if (index(' ,;)'//achar(9), text(word_start - 1:word_start - 1)) > 0) exit
+         if (index(' ,;)]'//achar(9), text(word_start - 1:word_start - 1)) > 0) exit
          word_start = word_start - 1
       end do
       if (word_end >= 1) word = text(word_start:word_end)

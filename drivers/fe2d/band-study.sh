@@ -22,14 +22,30 @@ build="$here/../../build"
 band=""
 viscosity=""
 check=0
+usage="usage: $0 [--build-dir DIR] [--band CHI] [--viscosity ETA] [--check]"
+die() { echo "band-study.sh: error: $*" >&2; exit 2; }
+given=" "
 while [ $# -gt 0 ]; do
+  # (an option given twice: which one counts is not guessed)
+  case "$given" in *" $1 "*) die "$1 given twice" ;; esac
+  case "$1" in
+    --build-dir|--band|--viscosity) [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a value"; given="$given$1 " ;;
+    --check) given="$given$1 " ;;
+  esac
   case "$1" in
     --build-dir) build="$2"; shift 2 ;;
     --band) band="$2"; shift 2 ;;
     --viscosity) viscosity="$2"; shift 2 ;;
     --check) check=1; shift ;;
-    *) echo "usage: $0 [--build-dir DIR] [--band CHI] [--viscosity ETA] [--check]" >&2; exit 2 ;;
+    *) echo "band-study.sh: error: unknown argument '$1'" >&2; echo "$usage" >&2; exit 2 ;;
   esac
+done
+# CHI and ETA go into the cases as they are: each must be one number (`--band '0.5, mu = 2'`
+# would add an entry; `--band 0,5` would give two values), its range is the library's to check
+for option in band viscosity; do
+  value=${!option}
+  [ -z "$value" ] || printf '%s\n' "$value" | grep -Eqx '[+-]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eEdD][+-]?[0-9]+)?' \
+    || die "--$option '$value' is not a number"
 done
 exe="$build/drivers/fe2d/interphase-fe2d"
 [ -x "$exe" ] || { echo "no $exe: build first (cmake --build $build --target interphase-fe2d)" >&2; exit 1; }
@@ -75,6 +91,8 @@ series() {
     else
       stop=$(grep -o 'at t = [0-9.E+-]*' "$work/stderr" | head -1 || true)
       printf '%-18s %-8s %-5s %-24s\n' "${case_name#couplet-micro-}" "$integration" "$n" "FAILED $stop"
+      # (why, as interphase-fe2d said it: a refused value fails every run, and says so)
+      sed -n 's/^interphase-fe2d: error: /  /p' "$work/stderr" | head -n 1 >&2
       failed=1
     fi
   done

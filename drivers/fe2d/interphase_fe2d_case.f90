@@ -9,7 +9,7 @@ module interphase_fe2d_case
    use interphase_kinds, only: dp
    use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_finite, only: difference_is_finite
-   use interphase_text_input, only: tried_path, clip_text
+   use interphase_text_input, only: tried_path, clip_text, next_parenthesised, LENGTH_UNIT_WORDS
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
@@ -518,6 +518,15 @@ contains
                   return
                end if
             end if
+            ! a caption that gives u_shear another length unit (`# t u_shear (m)`): the rows are
+            ! read in mm whatever it says, so metres would run as millimetres
+            comment = foreign_shear_unit(line(k + 1:))
+            if (len(comment) > 0) then
+               message = where//'"#'//clip_text(line(k + 1:))//'" gives '//comment//', but interphase-fe2d '// &
+                  'reads u_shear in mm: convert the column, and write (mm) or no unit'
+               call close_text_file(unit)
+               return
+            end if
             line = line(1:k - 1)
          end if
          call split_words(line, starts, ends)
@@ -580,5 +589,28 @@ contains
       end if
       ok = .true.
    end subroutine read_shear_history
+
+   !> '' when no group in parentheses right after the word `u_shear` or `u` (any case) of a
+   !> history's comment (`comment`, the text after '#') is a length unit other than mm
+   !> (LENGTH_UNIT_WORDS); else that word and unit as written (`u_shear the unit (m)`). Other
+   !> words in parentheses are a remark (`t (s)`, `u_shear (2 segments)`).
+   pure function foreign_shear_unit(comment) result(found)
+      character(len=*), intent(in) :: comment
+      character(len=:), allocatable :: found
+      character(len=:), allocatable :: name, unit
+      integer :: i
+      logical :: group
+      found = ''
+      i = 1
+      do
+         call next_parenthesised(comment, i, group, unit, name)
+         if (.not. group) exit
+         if (any(to_lower(name) == ['u_shear', 'u      ']) .and. any(to_lower(unit) == LENGTH_UNIT_WORDS) &
+            .and. to_lower(unit) /= 'mm') then
+            found = name//' the unit ('//unit//')'
+            return
+         end if
+      end do
+   end function foreign_shear_unit
 
 end module interphase_fe2d_case

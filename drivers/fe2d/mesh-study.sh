@@ -8,12 +8,23 @@ here="$(cd "$(dirname "$0")" && pwd)"
 build="$here/../../build"
 case_file="$here/cases/couplet-simplified-monotonic.nml"
 levels="4:1 8:2 16:4 32:8"
+usage="usage: $0 [--build-dir DIR] [--case CASE.nml] [--fine]"
+die() { echo "mesh-study.sh: error: $*" >&2; exit 2; }
+given=" "
 while [ $# -gt 0 ]; do
+  # (an option given twice: which one counts is not guessed)
+  case "$given" in *" $1 "*) die "$1 given twice" ;; esac
+  case "$1" in
+    --build-dir|--case) [ $# -ge 2 ] && [ -n "$2" ] || die "$1 needs a value"; given="$given$1 " ;;
+    --fine) given="$given$1 " ;;
+  esac
   case "$1" in
     --build-dir) build="$2"; shift 2 ;;
-    --case) case_file="$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"; shift 2 ;;
+    --case)
+      [ -f "$2" ] && [ -r "$2" ] || die "--case $2: cannot read the case file (no such file, or not a readable file)"
+      case_file="$(cd "$(dirname "$2")" && pwd)/$(basename "$2")"; shift 2 ;;
     --fine) levels="$levels 64:16"; shift ;;
-    *) echo "usage: $0 [--build-dir DIR] [--case CASE.nml] [--fine]" >&2; exit 2 ;;
+    *) echo "mesh-study.sh: error: unknown argument '$1'" >&2; echo "$usage" >&2; exit 2 ;;
   esac
 done
 exe="$build/drivers/fe2d/interphase-fe2d"
@@ -21,6 +32,12 @@ exe="$build/drivers/fe2d/interphase-fe2d"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 case_dir="$(dirname "$case_file")"
+# the case runs from $work: its relative paths (history, and &joint's table and rcurve_file), in
+# either quotes and with any blanks around '=', are made absolute in the case's folder (absolute
+# ones are kept); the folder written as sed's replacement ('\', '&', '#' escaped) inside a
+# namelist string (its quote doubled)
+dir_sq=$(printf '%s' "$case_dir" | sed -e "s/'/''/g" -e 's/[\\&#]/\\&/g')
+dir_dq=$(printf '%s' "$case_dir" | sed -e 's/"/""/g' -e 's/[\\&#]/\\&/g')
 printf '%-8s %-14s %-12s %-14s\n' "mesh" "peak (N)" "change (N)" "final (N)"
 previous=""
 for level in $levels; do
@@ -30,7 +47,8 @@ for level in $levels; do
   sed -E -e ':c' -e 's/^([^!]*)\b(nx|ny)[[:space:]]*=[[:space:]]*[0-9]+[[:space:]]*,?/\1/I' -e 't c' \
       -e 's/^([^!]*)\boutput[[:space:]]*=[[:space:]]*(\x27[^\x27]*\x27|"[^"]*")[[:space:]]*,?/\1/I' \
       -e "s/^([^!]*)&mesh\b/\1\&mesh nx = $nx, ny = $ny,/I" \
-      -e "s#history = '([^']*)'#history = '$case_dir/\1'#" \
+      -e "s#\\b(history|table|rcurve_file)([[:space:]]*=[[:space:]]*)'([^'/][^']*)'#\\1\\2'$dir_sq/\\3'#Ig" \
+      -e "s#\\b(history|table|rcurve_file)([[:space:]]*=[[:space:]]*)\"([^\"/][^\"]*)\"#\\1\\2\"$dir_dq/\\3\"#Ig" \
       "$case_file" > "$work/case.nml"
   "$exe" "$work/case.nml" --no-plot --output-dir "$work/out" > "$work/stdout"
   # the mesh that ran, from the log's header: a study of one mesh repeated is no study

@@ -54,7 +54,10 @@ if [ $rc -eq 2 ] && grep -q -- '--a-over-b "0.3": 1 distinct .* 3 rows' "$work/a
 # option values: an underflowing --refine, --jobs beyond the shell's integers (--check: no FreeFEM run)
 for opt in "--refine 1e-400|--refine = '1e-400' is out of range" \
            "--jobs 99999999999999999999|--jobs = 99999999999999999999 is too large" \
-           "--jobs 0|--jobs = 0 must be >= 1"; do
+           "--jobs 0|--jobs = 0 must be >= 1" \
+           "--refine 2 --refine 4|--refine given twice" \
+           "--jobs 2 --jobs 2|--jobs given twice" \
+           "--check|--check given twice"; do
   args=${opt%%|*}; pat=${opt#*|}
   bash "$here/make-table.sh" --check $args "$work/good.params" > "$work/opt.out" 2>&1
   rc=$?

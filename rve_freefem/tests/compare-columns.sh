@@ -38,6 +38,8 @@ cmp_ --tol 0.005 --cols "Tf Xy" "$table" "$table"; rc=$?
 expect "unknown column refused" 2 'unknown column Xy'
 cmp_ --tol 1e-7 "$table" "$table"; rc=$?
 expect "a table against itself" 0
+cmp_ --tol 0.5 --tol 1e-7 "$table" "$table"; rc=$?
+expect "--tol given twice refused" 2 '^compare-tables.sh: error: --tol given twice'
 # CRLF line ends and d exponents: the same numbers
 awk '/^#/ || NF == 0 { print; next } { gsub(/e/, "d"); print }' "$table" | sed 's/$/\r/' > "$work/crlf-d.dat"
 grep -q 'd-' "$work/crlf-d.dat" || { echo "FAIL no d exponent in the test table"; fail=1; }

@@ -219,13 +219,16 @@ _NAMES = {3: (("s_T", "Sigma_T"), ("s_N", "Sigma_N")),
 
 
 def _without_parentheses(text):
-    """`text` with every character from a '(' to its ')' (to the end, if unclosed) a blank."""
-    depth, kept = 0, []
+    """`text` with every character from a '(' to its ')', or a '[' to its ']' (to the end, if
+    unclosed) a blank."""
+    depth, kept, opening, closing = 0, [], "(", ")"
     for ch in text:
-        if ch == "(":
+        if depth == 0 and ch in "([":
+            opening, closing = ch, ")" if ch == "(" else "]"
+        if ch == opening:
             depth += 1
         if depth > 0:
-            if ch == ")":
+            if ch == closing:
                 depth -= 1
             kept.append(" ")
         else:
@@ -302,24 +305,25 @@ def _foreign_length_unit(text):
 
 
 def _parenthesised(text):
-    """The groups in parentheses of a comment, in order, as (word, content): the word right before
-    the group as written (blanks between allowed; a blank, tab, comma, semicolon or ')' ends it),
-    what the group holds (to its ')', nested groups counted, or to the end; blanks trimmed)
-    (interphase_text_input's next_parenthesised)."""
+    """The groups in parentheses or square brackets of a comment, in order, as (word, content): the
+    word right before the group as written (blanks between allowed; a blank, tab, comma, semicolon,
+    ')' or ']' ends it), what the group holds (to its ')' or ']', nested groups of its kind counted,
+    or to the end; blanks trimmed) (interphase_text_input's next_parenthesised)."""
     i = 0
     while i < len(text):
-        if text[i] != "(":
+        if text[i] not in "([":
             i += 1
             continue
+        opening, closing = text[i], ")" if text[i] == "(" else "]"
         depth, close = 0, i
         while close < len(text):
-            depth += (text[close] == "(") - (text[close] == ")")
+            depth += (text[close] == opening) - (text[close] == closing)
             if depth == 0:
                 break
             close += 1
         before = text[:i].rstrip(" ")
         start = len(before)
-        while start > 0 and before[start - 1] not in " ,;)\t":
+        while start > 0 and before[start - 1] not in " ,;)]\t":
             start -= 1
         yield before[start:], text[i + 1:close].strip(" ")
         i = close + 1
