@@ -54,7 +54,7 @@ contains
       character(len=:), allocatable :: source
       real(dp), allocatable :: rows(:, :), grown(:, :)
       real(dp) :: v(3)
-      integer :: outcome, n, first, i, j, field, starts(3), ends(3)
+      integer :: outcome, n, first, last, i, j, field, starts(3), ends(3)
       logical :: ok
       type(spline_type) :: spline
 
@@ -94,12 +94,24 @@ contains
                end if
                cycle read_lines
             end if
+            ! a comment after the numbers ends the row, as in the drivers' history files (and is
+            ! checked for units as a comment line is)
+            last = index(line, '#') - 1
+            if (last >= 0) then
+               text = foreign_unit(line(last + 2:))
+               if (len_trim(text) > 0) then
+                  call fail(STATUS_RCURVE_MALFORMED, trim(text))
+                  return
+               end if
+            else
+               last = len(line)
+            end if
             ! exactly three blank-separated fields, each one number
             field = 0
             i = first
-            do while (i <= len(line))
+            do while (i <= last)
                j = i
-               do while (j <= len(line))
+               do while (j <= last)
                   if (line(j:j) == ' ' .or. line(j:j) == achar(9)) exit
                   j = j + 1
                end do
@@ -109,7 +121,7 @@ contains
                   ends(field) = j - 1
                end if
                i = j
-               do while (i <= len(line))
+               do while (i <= last)
                   if (line(i:i) /= ' ' .and. line(i:i) /= achar(9)) exit
                   i = i + 1
                end do
