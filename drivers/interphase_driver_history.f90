@@ -195,7 +195,7 @@ contains
          else if (size(starts) /= ncolumns) then
             message = where//'found '//int_to_string(size(starts))//' columns, but line '// &
                int_to_string(first_data_line)//' has '//int_to_string(ncolumns)// &
-               '; every data line must have the same number of columns'
+               '; every data line must have the same number of columns'//separator_hint(line)
             call close_text_file(unit)
             return
          end if
@@ -394,16 +394,20 @@ contains
       end do
    end function foreign_length_unit
 
-   !> '' when `line` (a data line without its comment) holds no comma or semicolon; else the note
-   !> that ends a wrong-column-count message: the fields of a history are separated by blanks, and
-   !> `0,0,0` (a spreadsheet's CSV) is one field. A semicolon is the separator when there is one
-   !> (`0,5;0;0`: a spreadsheet's CSV where the comma is the decimal mark, which the note names).
+   !> '' when `line` (a data line without its comment) holds no comma, semicolon or '!'; else the
+   !> note that ends a wrong-column-count message: the fields of a history are separated by
+   !> blanks, and `0,0,0` (a spreadsheet's CSV) is one field. A semicolon is the separator when
+   !> there is one (`0,5;0;0`: a spreadsheet's CSV where the comma is the decimal mark, which the
+   !> note names). A '!' (a Fortran or namelist comment) does not start a comment here: '#' does.
    pure function separator_hint(line) result(hint)
       character(len=*), intent(in) :: line
       character(len=:), allocatable :: hint
       character(len=1) :: separator
       hint = ''
-      if (index(line, ';') > 0) then
+      if (index(line, '!') > 0) then
+         hint = ' (''!'' does not start a comment in a history file: ''#'' does)'
+         return
+      else if (index(line, ';') > 0) then
          separator = ';'
       else if (index(line, ',') > 0) then
          separator = ','

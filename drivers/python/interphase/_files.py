@@ -332,7 +332,10 @@ def _parenthesised(text):
 def _separator_hint(line):
     """'' when a data line (without its comment) holds no comma or semicolon, else the note that ends
     a wrong-column-count message; a semicolon is the separator when there is one (`0,5;0;0`: the
-    comma a decimal mark, which the note names; interphase_driver_history's separator_hint)."""
+    comma a decimal mark, which the note names; interphase_driver_history's separator_hint). A '!'
+    does not start a comment here: '#' does."""
+    if "!" in line:
+        return " ('!' does not start a comment in a history file: '#' does)"
     for separator in (";", ","):
         if separator in line:
             decimal = ", and a point for the decimal comma" if separator == ";" and "," in line else ""
@@ -425,7 +428,7 @@ def read_history(path, control=False):
                                  f'{names_line}) names {named[0]}')
         elif len(words) != len(rows[0]):
             raise ValueError(f"{where}: found {len(words)} columns, but line {first_line} has {len(rows[0])}; "
-                             "every data line must have the same number of columns")
+                             f"every data line must have the same number of columns{_separator_hint(head)}")
         row = [_number(w, f"{where}: column {i}") for i, w in enumerate(words, 1)]
         controls = named[1] if named is not None else [False] * (len(words) - 1)
         # (the driver's checks: a separation beyond the update's range, a time step not finite)
