@@ -23,9 +23,20 @@ KEY="C_TT C_NN Dbar_TT Dbar_NN Cf_T Tf"
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 prog=convergence.sh
 die() { local code=$1; shift; echo "$prog: error: $*" >&2; exit "$code"; }
+usage="usage: convergence.sh [--reuse] PARAMS OUTDIR [BASE.dat]"
 reuse=0
-if [ "${1:-}" = "--reuse" ]; then reuse=1; shift; fi
-[ $# -ge 2 ] && [ $# -le 3 ] || die 2 "usage: convergence.sh [--reuse] PARAMS OUTDIR [BASE.dat]"
+positional=()
+# --reuse anywhere among the arguments, once; another word that starts with '-' is no file
+for arg in "$@"; do
+  case "$arg" in
+    --reuse) [ "$reuse" = 0 ] || die 2 "--reuse given twice ($usage)"; reuse=1 ;;
+    -h|--help) echo "$usage"; exit 0 ;;
+    -*) die 2 "unknown option '$arg' ($usage)" ;;
+    *) positional+=("$arg") ;;
+  esac
+done
+set -- ${positional[@]+"${positional[@]}"}
+[ $# -ge 2 ] && [ $# -le 3 ] || die 2 "$usage"
 params=$1; outdir=$2; base=${3:-}
 [ -f "$params" ] && [ -r "$params" ] || die 3 "cannot read parameter file '$params'"
 [ -z "$base" ] || [ -r "$base" ] || die 3 "cannot read $base"

@@ -11,6 +11,15 @@
 # Exit status 77 when gnuplot is missing (the table and the check are made all the same).
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
+usage="usage: tools/shear-envelope.sh [BUILD_DIR] [OUT_DIR]"
+case "${1:-}" in
+  -h|--help) echo "$usage"; exit 0 ;;
+  -*) echo "shear-envelope.sh: unknown option '$1' ($usage)" >&2; exit 2 ;;
+esac
+if [ $# -gt 2 ]; then
+  echo "shear-envelope.sh: $# arguments, at most 2 ($usage)" >&2
+  exit 2
+fi
 build=${1:-$here/build/release}
 out=${2:-$here/out/shear-envelope}
 point=$build/drivers/interphase-point

@@ -63,4 +63,12 @@ expect "x4 table with another a" 4 '^convergence.sh: error: compare-tables.sh fa
 # a base table that cannot be read: exit 3 before any run
 conv --reuse "$params" "$work/reuse" "$work/no-such.dat"
 expect "unreadable base" 3 '^convergence.sh: error: cannot read'
+# --reuse after the files is the same option (it was taken for a file name: 'cannot read --reuse');
+# given twice, or an unknown option, is a usage error
+conv "$params" "$work/reuse" "$work/no-such.dat" --reuse
+expect "--reuse last" 3 "^convergence.sh: error: cannot read $work/no-such.dat"
+conv --reuse "$params" "$work/reuse" --reuse
+expect "--reuse twice" 2 '^convergence.sh: error: --reuse given twice'
+conv --refine 2 "$params" "$work/reuse"
+expect "unknown option" 2 "^convergence.sh: error: unknown option '--refine'"
 exit $fail
