@@ -284,7 +284,8 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  * @return INTERPHASE_STATUS_OK; a material status as interphase_update;
  *         INTERPHASE_STATUS_NULL_ARGUMENT (a NULL @p props, @p time or @p value, named);
  *         INTERPHASE_STATUS_BAD_HISTORY (nrows 0, nrows or capacity too large for any array
- *         (2^63 / 72 or more, SIZE_MAX included: named as the unsigned value), times, a value
+ *         (2^63 / 72 or more, SIZE_MAX included: named as the unsigned value), an nrows whose
+ *         4 * ntens * nrows bytes of controls the library cannot allocate, times, a value
  *         that is not finite or an imposed traction beyond 1e150 MPa, controls, increments,
  *         output_every, traction_tolerance: checked before any update);
  *         INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE (before any update: a separation of the

@@ -911,7 +911,8 @@ static void test_run_history(const char *csv_path) {
 /* 7. Arguments: every array an entry point dereferences, when NULL, gives
  * INTERPHASE_STATUS_NULL_ARGUMENT and a detail naming it (no crash, also with a NULL detail); a
  * size_t of 2^63 or more is read as the unsigned value it is (refused as too large, named), and
- * a detail of that length is written. */
+ * a detail of that length is written; interphase_run_history with more rows than memory holds
+ * returns a status (the process goes on). */
 static void expect_null(int status, const char *detail, const char *name, const char *call) {
   char want[64];
   snprintf(want, sizeof want, "%s is NULL", name);
@@ -1000,6 +1001,14 @@ static void test_arguments(void) {
   CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 &&
             strstr(detail, "capacity = 18446744073709551615 rows is too large") != NULL,
         "interphase_run_history, capacity = SIZE_MAX: status %d: %s", status, detail);
+  /* an nrows below that bound but beyond any memory (a wrong size_t, as a rule): a status, not
+   * the Fortran run time's error and the end of the process */
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, (size_t)100000000000000000ULL, tim, hv, NULL,
+                                  2, 1e-12, 1, 10, NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail,
+                                  sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 &&
+            strstr(detail, "nrows = 100000000000000000: no memory for so many rows") != NULL,
+        "interphase_run_history, nrows = 1e17: status %d: %s", status, detail);
   /* a detail of length SIZE_MAX is written (the message and its NUL) */
   strcpy(detail, "the previous message");
   status = interphase_update(props, 8, 2, state, s, t, k, st, &psi, detail, SIZE_MAX);
