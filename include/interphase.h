@@ -23,7 +23,32 @@
  *
  * PROPS and the state are the arrays of the Abaqus UMAT (docs/abaqus.md): 9 PROPS for the
  * simplified model; INTERPHASE_NSTATE doubles of state (damage D, slip lambda_1, slip lambda_2,
- * regime code), all zero for a virgin point.
+ * regime code), all zero for a virgin point. Messages number PROPS and STATEV from 1, as the
+ * tables of docs/abaqus.md do: "PROPS(5)" is props[4], "STATEV(4)" is state_old[3].
+ *
+ * The state, slot by slot (docs/abaqus.md, 'STATEV'): [0] D in [0, 1]; [1], [2] the slips
+ * lambda_1, lambda_2 (mm, |lambda_i| <= 1e30; in 2-D [2] is not read and is written 0); [3] the
+ * regime of the last update, 0 intact, 1 open, 2 stick, 3 slip: an output, but checked on
+ * input (exactly 0, 1, 2 or 3, and not -0.0); with viscous regularisation [4] the damage law's
+ * own D, in [state[0], 1]. An incoming state outside these ranges is
+ * INTERPHASE_STATUS_BAD_STATE, naming the slot.
+ *
+ * Restart: an update depends on props, state_old, the separation and (interphase_update_dt) dt
+ * only, and on the custom RVE table or tabulated R-curve the material selects; the library keeps
+ * nothing else. To restart a point, store its state doubles exactly (printf "%.17g" and strtod
+ * give them back bit for bit), load the same table or R-curve files again, and go on; the
+ * separation, the traction and the energies are the host's to keep.
+ *
+ * Energies: stored_energy is the recoverable energy psi at the end of the update. The dissipated
+ * energy (damage and friction) is not an output of interphase_update: accumulate it over the
+ * converged increments as the UMAT accumulates SPD,
+ *   W = W_old + 1/2 sum_i (traction_old[i] + traction[i]) (separation[i] - separation_old[i])
+ *       - (psi - psi_old),
+ * which interphase_run and interphase_run_history return as dissipated_energy. A host that sums
+ * in that order, forms the separation as separation_old + (separation - separation_old) (the
+ * UMAT's STRAN + DSTRAN) and does not contract multiply-adds (gcc -ffp-contract=off, as the
+ * library is built) gets interphase_run's numbers bit for bit (and, from the same build,
+ * interphase-point's W_dis); otherwise equal to rounding.
  */
 #ifndef INTERPHASE_H
 #define INTERPHASE_H
@@ -129,10 +154,11 @@ extern "C" {
  *                       INTERPHASE_STATUS_NONFINITE_SEPARATION
  * @param traction       out, @p ntens doubles: traction (MPa)
  * @param tangent        out, @p ntens * @p ntens doubles, row-major: d traction / d separation (MPa/mm)
- * @param state_new      out, INTERPHASE_NSTATE doubles: state at the end (may alias nothing else)
+ * @param state_new      out, INTERPHASE_NSTATE doubles: state at the end; may be @p state_old
+ *                       itself (an update in place, which a failure leaves as it was)
  * @param stored_energy  out: recoverable energy per unit area (N/mm)
  * @param detail         out, may be NULL: on failure, a NUL-terminated message naming the bad
- *                       value (e.g. "PROPS(5) sf_N = 1.00000E-04 is out of range: ...")
+ *                       value (e.g. "PROPS(5) sf_N = 1.00000E-004 is out of range: ...")
  * @param detail_len     size of @p detail in bytes (257 holds any message: at most 256 characters;
  *                       every value is read as the size_t it is, SIZE_MAX too)
  * @return INTERPHASE_STATUS_OK (0), or a status code; on failure traction, tangent, state_new
@@ -258,7 +284,8 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  * @return INTERPHASE_STATUS_OK; a material status as interphase_update;
  *         INTERPHASE_STATUS_NULL_ARGUMENT (a NULL @p props, @p time or @p value, named);
  *         INTERPHASE_STATUS_BAD_HISTORY (nrows 0, nrows or capacity too large for any array
- *         (2^63 / 72 or more, SIZE_MAX included: named as the unsigned value), times, a value
+ *         (2^63 / 72 or more, SIZE_MAX included: named as the unsigned value), an nrows whose
+ *         4 * ntens * nrows bytes of controls the library cannot allocate, times, a value
  *         that is not finite or an imposed traction beyond 1e150 MPa, controls, increments,
  *         output_every, traction_tolerance: checked before any update);
  *         INTERPHASE_STATUS_SEPARATION_OUT_OF_RANGE (before any update: a separation of the

@@ -495,7 +495,16 @@ contains
       end if
       call c_f_pointer(time, times, [nrows])
       call c_f_pointer(value, values, [int(n, c_size_t), nrows])
-      allocate (traction_control(n, nrows))
+      ! (an nrows no array can hold, a wrong or uninitialised size_t as a rule, must come back as a
+      ! status: without stat= the run time would print its error and end the host's process)
+      allocate (traction_control(n, nrows), stat=ios)
+      if (ios /= 0) then
+         code = STATUS_BAD_HISTORY
+         message = 'nrows = '//size_text(nrows)//': no memory for so many rows (the replay''s '// &
+            'controls take 4 bytes a component): is nrows the number of rows of time and value?'
+         call finish()
+         return
+      end if
       traction_control = .false.
       do row = 1, nrows
          if (.not. ieee_is_finite(times(row))) then

@@ -281,7 +281,10 @@ contains
                end if
                eq = index(line(first:), ' = ')
                if (eq < 2) then
-                  call fail(STATUS_TABLE_BAD_HEADER, 'line reads: '//clip_text(line(first:)))
+                  ! (say what a header line is: an R-curve file's '# D G_cI G_cII', loaded as a
+                  ! table, was named with no hint of what was expected)
+                  call fail(STATUS_TABLE_BAD_HEADER, 'header line "# '//clip_text(line(first:))// &
+                     '" is not "# key = value" (a blank either side of =) nor the "# columns:" line (tables/README.md)')
                   return
                end if
                eq = first + eq - 1

@@ -10,6 +10,9 @@
  *    |Sigma_T| = mu |Sigma_N|; D never decreases.
  * 3. The row-major tangent equals a finite-difference tangent of interphase_update (on a
  *    slipping row, where it is unsymmetric, so a transposed matrix would fail).
+ * 3a. The header's promises to a host: the dissipated energy accumulated as it says equals
+ *    interphase_run's bit for bit (the driver's W_dis to the reference's tolerance); an update in place (state_new == state_old) and a restart from
+ *    the state written as text give the same numbers; a failed update in place keeps the state.
  * 4. Failures: a bad PROPS value, a bad ntens and a NaN separation return the right status and
  *    message and leave the outputs untouched; interphase_status_message truncates like snprintf;
  *    every status code of the header has a message of its own.
@@ -185,6 +188,89 @@ static void test_mixed_history(const char *csv_path) {
   CHECK(coulomb_rows > 100, "only %d rows slipping at D = 1", coulomb_rows);
   CHECK(tangent_checked == 3, "tangent checked on %d rows", tangent_checked);
   printf("mixed history: %d rows, %d intact, %d slipping at D = 1\n", rows, elastic_rows, coulomb_rows);
+}
+
+/* The header's promises to a host that keeps its own energies and restarts: along the mixed
+ * history, the dissipated energy accumulated as the header says (W_old + 1/2 sum (t_old + t)(s -
+ * s_old) - (psi - psi_old), s formed as s_old + (s - s_old)) equals interphase_run's bit for bit
+ * and the driver's W_dis to the reference's tolerance; the state updated in place (state_new ==
+ * state_old) gives the same numbers, and a failed update in place leaves it as it was; the state
+ * written with "%.17g" and read back halfway continues bit for bit. */
+static void test_energy_in_place_and_restart(const char *csv_path) {
+  static struct csv_row csv[CSV_MAX_ROWS];
+  static double path_s[2 * CSV_MAX_ROWS], path_t[2 * CSV_MAX_ROWS], path_state[INTERPHASE_NSTATE * CSV_MAX_ROWS],
+      path_psi[CSV_MAX_ROWS], path_w[CSV_MAX_ROWS];
+  const size_t nrows = read_driver_csv(csv_path, csv, sizeof csv / sizeof csv[0]);
+  CHECK(nrows > 1000, "only %zu rows read from %s", nrows, csv_path);
+  if (nrows < 2) return;
+  double props[INTERPHASE_NPROPS_SIMPLIFIED];
+  paper_props(props);
+  double state[INTERPHASE_NSTATE] = {0.0}, s_old[2], t_old[2], psi_old, w;
+  double tangent[4];
+  char detail[257] = "";
+  /* row 0: the driver's start (its preload is elastic: one step from the virgin point) */
+  s_old[0] = csv[0].s_n;
+  s_old[1] = csv[0].s_t;
+  int status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_old, t_old, tangent, state, &psi_old,
+                                 detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK, "row 0: status %d: %s", status, detail);
+  w = csv[0].w_dis;
+  /* the same path through interphase_run, from the same start */
+  for (size_t row = 0; row < nrows; ++row) {
+    path_s[2 * row] = csv[row].s_n;
+    path_s[2 * row + 1] = csv[row].s_t;
+  }
+  memcpy(path_t, t_old, sizeof t_old);
+  memcpy(path_state, state, sizeof state);
+  path_psi[0] = psi_old;
+  path_w[0] = w;
+  size_t done = 0;
+  status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, nrows, path_s, NULL, path_t, NULL, path_state, path_psi,
+                          path_w, &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == nrows, "interphase_run: status %d, %zu rows: %s", status, done, detail);
+  int w_differs = 0, restarted = 0;
+  for (size_t row = 1; row < nrows && status == INTERPHASE_STATUS_OK; ++row) {
+    if (row == nrows / 2) { /* restart: the state through text */
+      char text[INTERPHASE_NSTATE][32];
+      for (int k = 0; k < INTERPHASE_NSTATE; ++k) snprintf(text[k], sizeof text[k], "%.17g", state[k]);
+      for (int k = 0; k < INTERPHASE_NSTATE; ++k) state[k] = strtod(text[k], NULL);
+      restarted = 1;
+    }
+    const double s_row[2] = {csv[row].s_n, csv[row].s_t};
+    const double s[2] = {s_old[0] + (s_row[0] - s_old[0]), s_old[1] + (s_row[1] - s_old[1])};
+    double t[2], psi, separate[INTERPHASE_NSTATE], t_separate[2], psi_separate;
+    status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s, t_separate, tangent, separate,
+                               &psi_separate, detail, sizeof detail);
+    CHECK(status == INTERPHASE_STATUS_OK, "row %zu: status %d: %s", row, status, detail);
+    status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s, t, tangent, state, &psi, detail,
+                               sizeof detail);
+    CHECK(status == INTERPHASE_STATUS_OK, "row %zu (in place): status %d: %s", row, status, detail);
+    if (status != INTERPHASE_STATUS_OK) break;
+    CHECK(memcmp(state, separate, sizeof state) == 0 && memcmp(t, t_separate, sizeof t) == 0 && psi == psi_separate,
+          "row %zu: the update in place differs from the one into another array", row);
+    w = w + 0.5 * ((t_old[0] + t[0]) * (s[0] - s_old[0]) + (t_old[1] + t[1]) * (s[1] - s_old[1])) - (psi - psi_old);
+    if (done == nrows && !(w == path_w[row] && psi == path_psi[row] &&
+                           memcmp(state, &path_state[INTERPHASE_NSTATE * row], sizeof state) == 0) &&
+        w_differs++ < 3)
+      CHECK(0, "row %zu: W = %.17g, psi = %.17g, D = %.17g; interphase_run: %.17g, %.17g, %.17g", row, w, psi, state[0],
+            path_w[row], path_psi[row], path_state[INTERPHASE_NSTATE * row]);
+    CHECK(close_to(w, csv[row].w_dis, 1e-12, 1e-9), "row %zu: W = %.17g, the driver's W_dis %.17g", row, w,
+          csv[row].w_dis);
+    memcpy(s_old, s, sizeof s_old);
+    memcpy(t_old, t, sizeof t_old);
+    psi_old = psi;
+  }
+  CHECK(w_differs == 0, "W, psi or the state differ from interphase_run's on %d rows", w_differs);
+  CHECK(restarted, "no restart made");
+  /* a failed update in place leaves the state as it was */
+  double kept[INTERPHASE_NSTATE], t[2], psi;
+  memcpy(kept, state, sizeof kept);
+  const double bad[2] = {NAN, 0.0};
+  status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, bad, t, tangent, state, &psi, detail,
+                             sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_NONFINITE_SEPARATION, "NaN separation in place: status %d", status);
+  CHECK(memcmp(state, kept, sizeof kept) == 0, "a failed update in place changed the state");
+  printf("energies: %zu rows, W as the header says = interphase_run's; in place and restarted\n", nrows);
 }
 
 static void test_failures(void) {
@@ -825,7 +911,8 @@ static void test_run_history(const char *csv_path) {
 /* 7. Arguments: every array an entry point dereferences, when NULL, gives
  * INTERPHASE_STATUS_NULL_ARGUMENT and a detail naming it (no crash, also with a NULL detail); a
  * size_t of 2^63 or more is read as the unsigned value it is (refused as too large, named), and
- * a detail of that length is written. */
+ * a detail of that length is written; interphase_run_history with more rows than memory holds
+ * returns a status (the process goes on). */
 static void expect_null(int status, const char *detail, const char *name, const char *call) {
   char want[64];
   snprintf(want, sizeof want, "%s is NULL", name);
@@ -914,6 +1001,14 @@ static void test_arguments(void) {
   CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 &&
             strstr(detail, "capacity = 18446744073709551615 rows is too large") != NULL,
         "interphase_run_history, capacity = SIZE_MAX: status %d: %s", status, detail);
+  /* an nrows below that bound but beyond any memory (a wrong size_t, as a rule): a status, not
+   * the Fortran run time's error and the end of the process */
+  status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, (size_t)100000000000000000ULL, tim, hv, NULL,
+                                  2, 1e-12, 1, 10, NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail,
+                                  sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 &&
+            strstr(detail, "nrows = 100000000000000000: no memory for so many rows") != NULL,
+        "interphase_run_history, nrows = 1e17: status %d: %s", status, detail);
   /* a detail of length SIZE_MAX is written (the message and its NUL) */
   strcpy(detail, "the previous message");
   status = interphase_update(props, 8, 2, state, s, t, k, st, &psi, detail, SIZE_MAX);
@@ -931,6 +1026,7 @@ int main(int argc, char **argv) {
     test_load_rcurve();
   } else if (argc == 2) {
     test_mixed_history(argv[1]);
+    test_energy_in_place_and_restart(argv[1]);
     test_failures();
     test_run(argv[1]);
     test_run_history(argv[1]);
