@@ -213,11 +213,14 @@ contains
                d_w(i) = max(d_k, min(1.0_dp, d_hat)) + 0.0_dp
             end do
             ! where the crack grew: the trial slip lambda_n (D_n/D), the quotient the point update
-            ! forms (growth_trial_slip, m = D ufbar = D); elsewhere lambda_n x 1, lambda_n itself
+            ! forms (growth_trial_slip, m = D ufbar = D); elsewhere lambda_n x 1, lambda_n itself.
+            ! m(D_n) is +0 where D_n <= 0, as slip_measure gives it: from an incoming D_n = -0 the
+            ! slip is lambda_n x +0, not lambda_n x -0 (the sign of a zero slip)
             do i = 1, m
                k = c0 + i - 1
                d_k = d_w(i)
-               ratio_w(i) = merge(d_old(k)*(1.0_dp/max(d_k, tiny(1.0_dp))), 1.0_dp, conserve .and. d_k > d_old(k))
+               ratio_w(i) = merge(merge(d_old(k), 0.0_dp, d_old(k) > 0.0_dp)*(1.0_dp/max(d_k, tiny(1.0_dp))), 1.0_dp, &
+                  conserve .and. d_k > d_old(k))
                lam1_w(i) = lam1_w(i)*ratio_w(i)
             end do
             if (nt == 2) lam2_w(1:m) = lam2_w(1:m)*ratio_w(1:m)
