@@ -141,60 +141,9 @@ contains
       if (ntens == 3) st(2) = s(3)
 
       if (params%damage_law == DAMAGE_DISPLACEMENT) then
-         ! damage first (eq 39), then the response at that damage
-         ! the damage law's own D, the history maximum (without viscous regularisation old%d_inviscid
-         ! is old%d); + 0: an incoming D = -0 leaves as +0 whichever operand max picks (the block
-         ! update of interphase_block does the same, so both agree bit for bit)
-         d_law = max(old%d_inviscid, old%d)
-         dd_ds = 0.0_dp
-         if (d_law >= 1.0_dp) then
-            ! the crack has reached b: D stays (what max(D_law, min(1, D^(s))) gives; no need of
-            ! D^(s))
-            d = d_law + 0.0_dp
-            grows = .false.
-         else
-            t_sq = st(1)**2 + st(2)**2
-            call displacement_damage(params, s_n, t_sq, d_hat, terms)
-            d = max(d_law, min(1.0_dp, d_hat)) + 0.0_dp
-            ! (D^ > 0 too: an incoming D below 0, which the hosts' STATEV check refuses, would
-            ! otherwise ask for the slopes of D^ = 0, where displacement_damage forms no terms)
-            grows = d_hat > max(d_law, 0.0_dp) .and. d_hat < 1.0_dp
-            if (grows) then
-               call damage_slopes(params, t_sq, d_hat, terms, dd_dsn, dd_dt)
-               dd_ds(1) = dd_dsn
-               t = sqrt(t_sq)
-               if (t > 0.0_dp) dd_ds(2:ntens) = dd_dt*st(1:nt)/t
-            else if (d_hat < 1.0_dp .and. d_law >= 0.0_dp) then
-               ! D stays D_law (not growing, D^ < 1: D^ <= D_law): the value max gave, assigned
-               ! again from D_law alone, so that the coefficients and the response, which follow,
-               ! wait on a predicted branch and not on D^'s square root and division (2-4 ns a
-               ! call without LTO, docs/performance.md; a compiler that turned this branch into a
-               ! conditional move would bring the wait back, not change a result)
-               d = d_law + 0.0_dp
-            end if
-         end if
-         new%d_inviscid = d
-         if (params%viscosity > 0.0_dp) then
-            call regularise_damage(params%viscosity, old%d, d, dd_ds, status, dt)
-            if (status /= STATUS_OK) return
-         end if
-         ! (the derivatives only where the tangent needs dt/dD)
-         if (grows) then
-            call coefficients_at(params, d, c, dc, status)
-         else
-            call coefficient_values_at(params, d, c, dc, status)
-         end if
-         if (status /= STATUS_OK) return
-         slip_trial = old%slip
-         dslip_dd = 0.0_dp
-         if (params%growth_slip == GROWTH_FIXED_PI .and. d > old%d .and. &
-            (abs(old%slip(1)) > 0.0_dp .or. abs(old%slip(2)) > 0.0_dp)) then
-            ! the crack grew under slip: the friction step starts from the slip that conserves
-            ! pi = D ufbar lambda (a zero slip needs no scaling: it stays as it is)
-            call slip_measure(params, old%d, m_from, status)
-            if (status /= STATUS_OK) return
-            call growth_trial_slip(params%growth_slip, old%d, m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
-         end if
+         ! damage first (eq 39), then the response at that damage (the statements are shared with
+         ! the UMAT's path for the simplified model, interphase_umat_simplified: one source)
+         include 'interphase_displacement_damage.inc'
          form_response = .true.
       else
          call fracture_update(params, old, s_n, st, ntens, d, at, which, dd_ds, grows, status, form_response, c, &
@@ -216,108 +165,8 @@ contains
       end if
    end subroutine update_point
 
-   !> update_point's outputs from the response r at the increment's damage D (dD/ds = dd_ds where
-   !> the damage law's D grows): the state, the traction, the tangent of the STIFFNESS_* option
-   !> and the stored energy.
-   pure subroutine update_outputs(params, d, grows, dd_ds, ntens, r, traction, tangent, new, psi)
-      type(law_params_type), intent(in) :: params
-      real(dp), intent(in) :: d                          !! damage at the end of the increment (-)
-      logical, intent(in) :: grows                       !! as update_point's
-      real(dp), intent(in) :: dd_ds(3)                   !! dD/ds (1/mm)
-      integer, intent(in) :: ntens
-      type(response_type), intent(in) :: r               !! the response at D
-      real(dp), intent(out) :: traction(3)               !! (MPa)
-      real(dp), intent(out) :: tangent(3, 3)             !! (MPa/mm)
-      type(interface_state_type), intent(inout) :: new
-      real(dp), intent(out) :: psi                       !! (N/mm)
-      integer :: j, m
-      if (params%damage_law /= DAMAGE_DISPLACEMENT) new%d_inviscid = d
-      new%d = d
-      new%slip = r%slip
-      new%regime = r%regime
-      ! (component by component: a whole-array copy of 2 or 3 values is a library call)
-      traction(1) = r%traction(1)
-      traction(2) = r%traction(2)
-      if (ntens == 3) traction(3) = r%traction(3)
-      ! (m = ntens, in a form from which the compiler sees m <= 3: with a run-time extent alone,
-      ! GCC's link-time inlining warns of writes beyond a caller's 3 x 3 array)
-      m = merge(3, 2, ntens == 3)
-      select case (params%stiffness)
-      case (STIFFNESS_FIXED_DAMAGE)
-         ! the tangent at fixed D, without the slipping crack's coupling of the shear traction to
-         ! s_N (through the friction bound mu sigma): symmetric, positive semi-definite
-         call copy_tangent(m, r%tangent, tangent)
-         if (r%regime == REGIME_SLIP) tangent(2:m, 1) = 0.0_dp
-      case default
-         if (.not. grows) then
-            ! dD/ds = 0: the tangent at fixed D
-            call copy_tangent(m, r%tangent, tangent)
-         else if (m == 2) then
-            ! (written out: the loop over a run-time extent costs more than the 2-D tangent)
-            tangent(1, 1) = r%tangent(1, 1) + r%dtrac_dd(1)*dd_ds(1)
-            tangent(2, 1) = r%tangent(2, 1) + r%dtrac_dd(2)*dd_ds(1)
-            tangent(1, 2) = r%tangent(1, 2) + r%dtrac_dd(1)*dd_ds(2)
-            tangent(2, 2) = r%tangent(2, 2) + r%dtrac_dd(2)*dd_ds(2)
-         else
-            do j = 1, 3
-               tangent(1:3, j) = r%tangent(1:3, j) + r%dtrac_dd(1:3)*dd_ds(j)
-            end do
-         end if
-         if (params%stiffness == STIFFNESS_SYMMETRIC) &
-            tangent(1:m, 1:m) = 0.5_dp*(tangent(1:m, 1:m) + transpose(tangent(1:m, 1:m)))
-      end select
-      psi = r%psi
-   end subroutine update_outputs
 
-   !> tangent(1:m, 1:m) = from(1:m, 1:m) for m = 2 or 3 (the 2-D block written out, the 3-D one in
-   !> whole columns: an assignment of a run-time extent compiles to a byte loop).
-   pure subroutine copy_tangent(m, from, tangent)
-      integer, intent(in) :: m                        !! 2 or 3
-      real(dp), intent(in) :: from(3, 3)              !! (MPa/mm)
-      real(dp), intent(inout) :: tangent(3, 3)        !! (MPa/mm); entries beyond m kept
-      integer :: j
-      if (m == 2) then
-         tangent(1, 1) = from(1, 1)
-         tangent(2, 1) = from(2, 1)
-         tangent(1, 2) = from(1, 2)
-         tangent(2, 2) = from(2, 2)
-      else
-         do j = 1, 3
-            tangent(1:3, j) = from(1:3, j)
-         end do
-      end if
-   end subroutine copy_tangent
 
-   !> Viscous regularisation of the damage (Duvaut-Lions, docs/theory.md 'Viscous
-   !> regularisation'): from the damage law's D and dD/ds to the regularised
-   !> D_v = (D_v,n + (dt/eta) D)/(1 + dt/eta) and dD_v/ds = (dt/eta)/(1 + dt/eta) dD/ds.
-   !> STATUS_BAD_TIME_INCREMENT without a finite dt >= 0.
-   pure subroutine regularise_damage(eta, d_v_old, d, dd_ds, status, dt)
-      real(dp), intent(in) :: eta                     !! viscosity (s), > 0
-      real(dp), intent(in) :: d_v_old                 !! D_v,n (-)
-      real(dp), intent(inout) :: d                    !! in: the damage law's D; out: D_v (-)
-      real(dp), intent(inout) :: dd_ds(3)             !! in: dD/ds; out: dD_v/ds (1/mm)
-      integer, intent(out) :: status
-      real(dp), intent(in), optional :: dt            !! time increment (s)
-      real(dp) :: ratio, weight, d_v
-      status = STATUS_BAD_TIME_INCREMENT
-      if (.not. present(dt)) return
-      if (.not. is_finite_nonnegative(dt)) return
-      status = STATUS_OK
-      ratio = dt/eta
-      weight = 1.0_dp                                 ! dt/eta beyond the range of reals: inviscid
-      if (is_finite(ratio)) weight = ratio/(1.0_dp + ratio)
-      d_v = max(d_v_old, d_v_old + weight*(d - d_v_old)) + 0.0_dp
-      ! D = 1 and D_v within 64 ulps of it, where the step is below the resolution of D_v
-      ! (weight (1 - D_v,n) < half an ulp): D_v takes 1. Without it D_v stops an ulp or so below
-      ! 1, where the micromechanical stiffness, falling only like 1/ln(1/(1 - D_v)), is still
-      ! 3 % of the intact one. (Anywhere else a step below the resolution leaves D_v where it is:
-      ! dt = 0 or a tiny dt/eta keeps the damage.)
-      if (weight > 0.0_dp .and. d >= 1.0_dp .and. .not. (d_v > d_v_old) .and. &
-         1.0_dp - d_v_old <= 64.0_dp*epsilon(1.0_dp)) d_v = 1.0_dp
-      d = d_v
-      dd_ds = weight*dd_ds
-   end subroutine regularise_damage
 
    !> The fracture-mechanics law: D from g = 0, the response at that D (at(which)%r, the root
    !> search's last evaluation, read in place), and dD/ds. Where the crack ran to b, or had
@@ -400,5 +249,6 @@ contains
    include 'interphase_coefficients_at.inc'
    include 'interphase_coefficient_values_at.inc'
    include 'interphase_simplified.inc'
+   include 'interphase_update_outputs.inc'
 
 end module interphase_kernel

@@ -116,6 +116,7 @@ contains
    end subroutine from_props
 
    include 'interphase_decode_props.inc'
+   include 'interphase_props_stores.inc'
 
    !> The checks of decode_props, each of which names the first bad value: NPROPS, the
    !> selectors, then every constant (`check_values`, `check_fracture`). Sets model, damage_law

@@ -10,7 +10,10 @@
 !> symmetric one (hosts that assemble only a symmetric stiffness, such as CalculiX). PROPS and
 !> STATEV are documented in docs/abaqus.md.
 !>
-!> This adapter only packs arguments and calls the pure kernel. On a failed update it asks for a
+!> This adapter only packs arguments and calls the pure kernel; its most common call (the simplified
+!> model with the displacement-driven law and no option constants, 2-D cohesive element, every
+!> input in range) takes a path of its own, the same update compiled for that material alone
+!> (interphase_umat_simplified: the same numbers, bit for bit). On a failed update it asks for a
 !> cut-back through PNEWDT (0.25 unless the host already holds a smaller positive request: Abaqus
 !> passes PNEWDT large, CalculiX -1), reports through `interphase_host_message` and returns before
 !> touching STRESS, STATEV, DDSDDE, SSE or SPD (with the CalculiX host option DDSDDE is set to
@@ -49,6 +52,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       NSTATV_VISCOUS, REGIME_INTACT, REGIME_SLIP, STIFFNESS_FIXED_DAMAGE
    use interphase_state, only: interface_state_type, ONE_BITS, SLIP_MAX_BITS, SIGN_BIT, REGIME_BITS
    use interphase_kernel, only: update_point
+   use interphase_umat_simplified, only: simplified_cohesive_path, PATH_NTENS
    use interphase_rcurve, only: rcurve_coverage, rcurve_loaded, rcurve_covers, rcurve_overrun
    use interphase_micro_coefficients, only: custom_table_loaded
    use interphase_umat_failure, only: umat_fail
@@ -63,12 +67,9 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    real(dp), intent(in) :: celent, dfgrd0(3, 3), dfgrd1(3, 3)
    character(len=80), intent(in) :: cmname
 
-   type(law_params_type) :: params
-   type(layer_map_type) :: map
-   type(interface_state_type) :: old, new
    real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6), work
    integer :: status, severity, nsep, i, j
-   logical :: host_energies, within
+   logical :: host_energies, within, taken
    !> the host is CalculiX (known once PROPS are decoded): its DDSDDE is uninitialised, and it
    !> symmetrises and stores it even from a call that asks for a cut-back
    logical :: calculix
@@ -76,10 +77,26 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    !> DSTRAN's or STRESS's fields in a message: up to NTENS = 6 of es_fields' width 12
    character(len=6*12) :: stress_text
 
+   ! the simplified model with the displacement-driven law and no option constants on a cohesive
+   ! element, every input in range (simplified_cohesive_path decides): its own path, the same
+   ! update specialised to that material (interphase_umat_simplified); every other call, and
+   ! every call the general path would refuse, takes the general path
+   ! (NPROPS and NTENS tested here too, so that other calls do not pay the call)
+   if (nprops == NPROPS_SIMPLIFIED .and. ntens == PATH_NTENS) then
+      call simplified_cohesive_path(nprops, props, ndi, nshr, ntens, nstatv, statev, stran, dstran, stress, ddsdde, &
+         sse, spd, taken)
+      if (taken) return
+   end if
+
    calculix = .false.
    ! every failure leaves this block with status, severity and message set (reported below,
    ! out of line, before STRESS, STATEV, DDSDDE, SSE or SPD are touched)
    update: block
+      ! (declared here, where their default initialisation runs: not on the simplified model's
+      ! path above)
+      type(law_params_type) :: params
+      type(layer_map_type) :: map
+      type(interface_state_type) :: old, new
       severity = SEVERITY_FATAL
       call decode_props(nprops, props, params, status, message)
       if (status /= STATUS_OK) exit update
@@ -180,29 +197,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       ! every term bounded (|STRESS|, |SSE|, |SPD| <= HOST_VALUE_MAX, |DSTRAN| <= HOST_INCREMENT_MAX,
       ! the kernel's outputs by the admissible ranges, t >= 1e-6 mm): no overflow
       if (map%identity) then
-         if (host_energies) then
-            ! the work in element order, not with SUM (flang's SUM is compensated: the zeros of a
-            ! layer's in-plane components would change its last bit, docs/compilers.md)
-            work = (0.0_dp + (stress(1) + traction(1))*dstran(1)) + (stress(2) + traction(2))*dstran(2)
-            if (ntens == 3) work = work + (stress(3) + traction(3))*dstran(3)
-            spd = spd + 0.5_dp*work - (psi - sse)
-            sse = psi
-         end if
-         ! (component by component: a whole-array copy of 2 or 3 values is a library call)
-         stress(1) = traction(1)
-         stress(2) = traction(2)
-         ddsdde(1, 1) = tangent(1, 1)
-         ddsdde(2, 1) = tangent(2, 1)
-         ddsdde(1, 2) = tangent(1, 2)
-         ddsdde(2, 2) = tangent(2, 2)
-         if (ntens == 3) then
-            stress(3) = traction(3)
-            ddsdde(3, 1) = tangent(3, 1)
-            ddsdde(3, 2) = tangent(3, 2)
-            ddsdde(1, 3) = tangent(1, 3)
-            ddsdde(2, 3) = tangent(2, 3)
-            ddsdde(3, 3) = tangent(3, 3)
-         end if
+         call cohesive_outputs(ntens, host_energies, traction, tangent, psi, dstran, stress, ddsdde, sse, spd)
       else
          ! the layer: tractions on its plane, no in-plane stress; energies per unit volume
          sigma(1:ntens) = 0.0_dp
@@ -242,5 +237,7 @@ contains
    include 'interphase_run_time_data.inc'
    include 'interphase_statev.inc'
    include 'interphase_decode_props.inc'
+   include 'interphase_props_stores.inc'
+   include 'interphase_cohesive_outputs.inc'
 
 end subroutine umat

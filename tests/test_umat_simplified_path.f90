@@ -1,0 +1,458 @@
+!> The UMAT's path for the simplified model (interphase_umat_simplified) against its general
+!> path, bit for bit, over many random materials, histories and host inputs.
+!>
+!> Every call is made twice from the same inputs: with the material's nine PROPS (NPROPS = 9, a
+!> 2-D cohesive element: the calls the path may take) and with the same nine followed by the
+!> growth-slip option constant at its default, 0 (NPROPS = 10: the same material, which only the
+!> general path serves). STRESS, DDSDDE, STATEV (every slot of NSTATV), SSE, SPD and PNEWDT, and
+!> the message the call reports (its count, severity and text), must agree bit for bit.
+!>
+!> Part 1, histories: NMATERIALS random materials (mu exactly 0, tiny or up to 1.5; s0 and sf
+!> over three decades with sf/s0 from 1 + 2 eps to 100; K_N, K_T over six decades), each with a
+!> random history of NSTEPS steps built from segments that reach every regime: intact loading,
+!> damage growth, open, closed stick and slip, shear reversals (a slip much larger than the
+!> result: the return mapping's second step), holds and round-off-sized steps after a slip (the
+!> slip onset's round-off bound, docs/theory.md 'Slip onset'), closing at the slip, and breaking
+!> to D = 1.
+!> Part 2, single calls from random incoming states: D in {+0, -0, 1, 1 - ulp, random}, slips,
+!> regime codes, STRESS, SSE and SPD, PNEWDT as Abaqus (large) and CalculiX (-1) pass it,
+!> NSTATV 4 to 8 with the slots beyond 4 random (left alone by both paths).
+!> Part 3, refused calls: one input of a valid call spoilt (NaN, Inf or out of range STRAN,
+!> DSTRAN, STRESS, SSE, SPD; a separation beyond 1e20 mm; STATEV's D, slip or regime; NSTATV;
+!> NDI, NSHR; each PROPS value, -0 for mu included): both report the same, and leave the same.
+!>
+!> A failure prints the material, the step and what differed; the program ends with exit
+!> status 1. It prints what it covered.
+program test_umat_simplified_path
+   use, intrinsic :: iso_fortran_env, only: int64, output_unit, error_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
+   use interphase_kinds, only: dp
+   use interphase_layout, only: NSTATV_REQUIRED, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, REGIME_INTACT, &
+      REGIME_OPEN, REGIME_STICK, REGIME_SLIP
+   use interphase_abaqus_interfaces, only: umat
+   use host_recorder, only: recorder_reset, recorded_count, recorded_severity, recorded_message
+   implicit none
+
+   integer, parameter :: NMATERIALS = 3000, NSTEPS = 60, NSINGLE = 20000, NSPOILT = 6000
+   !> The largest NSTATV the test passes.
+   integer, parameter :: NSTATV_MAX = 8
+
+   !> Everything one UMAT call reads and writes that the test varies or compares.
+   type :: call_type
+      integer :: ndi = 1, nshr = 1, ntens = 2, nstatv = NSTATV_REQUIRED
+      real(dp) :: stress(3) = 0.0_dp, ddsdde(3, 3) = 0.0_dp, statev(NSTATV_MAX) = 0.0_dp
+      real(dp) :: sse = 0.0_dp, spd = 0.0_dp, pnewdt = 1.0e36_dp
+      real(dp) :: stran(3) = 0.0_dp, dstran(3) = 0.0_dp
+      ! what the call reported
+      integer :: reported = 0, severity = 0
+      character(len=1024) :: message = ''
+   end type call_type
+
+   integer(int64) :: seed = 20261206_int64
+   integer :: nfailed = 0, ncalls = 0, nrefused = 0
+   !> coverage: accepted steps of part 1 ending in each regime, growing, reaching D = 1, holds,
+   !> reversals, round-off steps
+   integer :: nregime(REGIME_INTACT:REGIME_SLIP) = 0, ngrowth = 0, nbroken = 0, nhold = 0, nreversal = 0, &
+      nroundoff = 0, nclosing = 0, nsingle_ok = 0
+   integer :: imat, k
+   real(dp) :: props(9)
+
+   ! ---- part 1: histories -----------------------------------------------------------------
+   do imat = 1, NMATERIALS
+      props = random_props()
+      call run_history(imat, props)
+   end do
+
+   ! ---- part 2: single calls from random states --------------------------------------------
+   do k = 1, NSINGLE
+      props = random_props()
+      call single_call(k, props)
+   end do
+
+   ! ---- part 3: refused calls ----------------------------------------------------------------
+   do k = 1, NSPOILT
+      props = random_props()
+      call spoilt_call(k, props)
+   end do
+
+   write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: ', ncalls, ' calls compared (', nrefused, &
+      ' refused by both)'
+   write (output_unit, '(a,4(i0,a))') 'test_umat_simplified_path: histories: ', nregime(REGIME_INTACT), &
+      ' intact, ', nregime(REGIME_OPEN), ' open, ', nregime(REGIME_STICK), ' stick, ', nregime(REGIME_SLIP), ' slip steps'
+   write (output_unit, '(a,6(i0,a))') 'test_umat_simplified_path: ', ngrowth, ' growing, ', nbroken, &
+      ' at D = 1, ', nreversal, ' reversals, ', nhold, ' holds, ', nroundoff, ' round-off steps, ', nclosing, &
+      ' closings'
+   write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: single calls: ', nsingle_ok, ' of ', NSINGLE, &
+      ' accepted'
+   write (output_unit, '(a,i0,a)') 'test_umat_simplified_path: ', nfailed, ' differences'
+   if (nfailed > 0) error stop 1
+
+contains
+
+   ! ---- random numbers (the fuzz test's generator: the same cases with every compiler) -------
+
+   real(dp) function uniform()
+      seed = ieor(seed, ishft(seed, 13))
+      seed = ieor(seed, ishft(seed, -7))
+      seed = ieor(seed, ishft(seed, 17))
+      uniform = real(ishft(seed, -11), dp)*2.0_dp**(-53)
+   end function uniform
+
+   real(dp) function between(lo, hi)
+      real(dp), intent(in) :: lo, hi
+      between = lo + (hi - lo)*uniform()
+   end function between
+
+   integer function pick(lo, hi)
+      integer, intent(in) :: lo, hi
+      pick = min(hi, lo + int(uniform()*real(hi - lo + 1, dp)))
+   end function pick
+
+   !> a random sign
+   real(dp) function sgn()
+      sgn = merge(1.0_dp, -1.0_dp, uniform() < 0.5_dp)
+   end function sgn
+
+   !> a random sign times a random magnitude in [lo, hi], drawn in that order (each statement of
+   !> this program draws once at most: the order of function calls within an expression is the
+   !> compiler's, and every build must see the same cases)
+   real(dp) function signed(lo, hi)
+      real(dp), intent(in) :: lo, hi
+      real(dp) :: r
+      r = sgn()
+      signed = r*between(lo, hi)
+   end function signed
+
+   !> true with probability p
+   logical function chance(p)
+      real(dp), intent(in) :: p
+      chance = uniform() < p
+   end function chance
+
+   ! ---- materials and calls -------------------------------------------------------------------
+
+   !> The nine PROPS of a random simplified material with the displacement-driven law.
+   function random_props() result(p)
+      real(dp) :: p(9)
+      real(dp) :: r
+      p(1) = 1.0_dp
+      p(2) = 1.0_dp
+      r = uniform()
+      if (r < 0.1_dp) then
+         p(3) = 0.0_dp
+      else if (r < 0.2_dp) then
+         p(3) = 10.0_dp**between(-20.0_dp, -10.0_dp)
+      else
+         p(3) = between(0.0_dp, 1.5_dp)
+      end if
+      p(4) = 10.0_dp**between(-4.0_dp, -1.0_dp)
+      p(5) = sf_from(p(4))
+      p(6) = 10.0_dp**between(-4.0_dp, -1.0_dp)
+      p(7) = sf_from(p(6))
+      p(8) = 10.0_dp**between(0.0_dp, 6.0_dp)
+      p(9) = 10.0_dp**between(0.0_dp, 6.0_dp)
+   end function random_props
+
+   !> sf > s0: mostly a ratio up to 100, sometimes s0 (1 + 2 eps)
+   real(dp) function sf_from(s0) result(sf)
+      real(dp), intent(in) :: s0
+      if (uniform() < 0.05_dp) then
+         sf = s0*(1.0_dp + 2.0_dp*epsilon(1.0_dp))
+      else
+         sf = s0*(1.0_dp + 10.0_dp**between(-6.0_dp, 2.0_dp))
+      end if
+   end function sf_from
+
+   !> One call of the UMAT with PROPS p (their size: NPROPS).
+   subroutine call_umat(c, p)
+      type(call_type), intent(inout) :: c
+      real(dp), intent(in) :: p(:)
+      real(dp) :: scd, rpl, ddsddt(3), drplde(3), drpldt, time(2), predef(1), dpred(1), coords(3), drot(3, 3), &
+         dfgrd(3, 3)
+      real(dp) :: tangent(c%ntens, c%ntens)
+      character(len=80) :: cmname
+      integer :: n
+      n = c%ntens
+      cmname = 'PATH_TEST'
+      scd = 0.0_dp
+      rpl = 0.0_dp
+      ddsddt = 0.0_dp
+      drplde = 0.0_dp
+      drpldt = 0.0_dp
+      time = 1.0_dp
+      predef = 0.0_dp
+      dpred = 0.0_dp
+      coords = 0.0_dp
+      drot = 0.0_dp
+      dfgrd = 0.0_dp
+      tangent = c%ddsdde(1:n, 1:n)
+      call recorder_reset()
+      call umat(c%stress(1:n), c%statev(1:c%nstatv), tangent, c%sse, c%spd, scd, rpl, ddsddt(1:n), drplde(1:n), &
+         drpldt, c%stran(1:n), c%dstran(1:n), time, 1.0_dp, 0.0_dp, 0.0_dp, predef, dpred, cmname, c%ndi, &
+         c%nshr, n, c%nstatv, p, size(p), coords, drot, c%pnewdt, 1.0_dp, dfgrd, dfgrd, 1, 1, 1, 1, [1, 1, 0, 0], 1)
+      c%ddsdde(1:n, 1:n) = tangent
+      c%reported = recorded_count
+      c%severity = recorded_severity
+      c%message = recorded_message
+   end subroutine call_umat
+
+   !> The call with PROPS p (NPROPS = 9) and with p and the default growth-slip option (NPROPS = 10):
+   !> on return `c` holds the first's results; a difference is reported as a failure.
+   subroutine compare_paths(c, p, where)
+      type(call_type), intent(inout) :: c
+      real(dp), intent(in) :: p(9)
+      character(len=*), intent(in) :: where
+      type(call_type) :: reference
+      reference = c
+      call call_umat(c, p)
+      call call_umat(reference, [p, 0.0_dp])
+      ! (a refusal of the constants' count names NPROPS: the reference's is 10)
+      call replace_text(reference%message, 'NPROPS = 10 ', 'NPROPS = 9 ')
+      ncalls = ncalls + 1
+      if (c%reported > 0) nrefused = nrefused + 1
+      if (.not. same_call(c, reference)) then
+         nfailed = nfailed + 1
+         if (nfailed <= 20) then
+            write (error_unit, '(a)') 'test_umat_simplified_path: '//where//': the paths differ'
+            write (error_unit, '(a,9es25.17)') '  PROPS ', p
+            write (error_unit, '(a,2es25.17,a,2es25.17)') '  STRESS ', c%stress(1:2), ' general ', reference%stress(1:2)
+            write (error_unit, '(a,4es25.17)') '  DDSDDE ', c%ddsdde(1:2, 1:2)
+            write (error_unit, '(a,4es25.17)') '  general', reference%ddsdde(1:2, 1:2)
+            write (error_unit, '(a,4es25.17)') '  STATEV ', c%statev(1:4)
+            write (error_unit, '(a,4es25.17)') '  general', reference%statev(1:4)
+            write (error_unit, '(a,3es25.17)') '  SSE, SPD, PNEWDT ', c%sse, c%spd, c%pnewdt
+            write (error_unit, '(a,3es25.17)') '  general          ', reference%sse, reference%spd, reference%pnewdt
+            write (error_unit, '(a,i0,a)') '  reported ', c%reported, ': '//trim(c%message)
+            write (error_unit, '(a,i0,a)') '  general  ', reference%reported, ': '//trim(reference%message)
+         end if
+      end if
+   end subroutine compare_paths
+
+   !> text with its first `from` replaced by `to`.
+   subroutine replace_text(text, from, to)
+      character(len=*), intent(inout) :: text
+      character(len=*), intent(in) :: from, to
+      integer :: at
+      at = index(text, from)
+      if (at > 0) text = text(1:at - 1)//to//text(at + len(from):)
+   end subroutine replace_text
+
+   !> Every output of the two calls, bit for bit.
+   logical function same_call(a, b)
+      type(call_type), intent(in) :: a, b
+      same_call = same_bits(a%stress, b%stress) .and. same_bits(reshape(a%ddsdde, [9]), reshape(b%ddsdde, [9])) &
+         .and. same_bits(a%statev, b%statev) .and. same_bits([a%sse, a%spd, a%pnewdt], [b%sse, b%spd, b%pnewdt]) &
+         .and. a%reported == b%reported .and. a%severity == b%severity .and. a%message == b%message
+   end function same_call
+
+   pure logical function same_bits(a, b)
+      real(dp), intent(in) :: a(:), b(:)
+      same_bits = all(transfer(a, 0_int64, size(a)) == transfer(b, 0_int64, size(b)))
+   end function same_bits
+
+   ! ---- part 1 ----------------------------------------------------------------------------
+
+   !> A random history of one point: segments of steps towards random targets (closed or open,
+   !> within or beyond the strengths), reversals of the shear, holds, round-off-sized steps, a
+   !> closing at the current shear, a break to D = 1.
+   subroutine run_history(imat, p)
+      integer, intent(in) :: imat
+      real(dp), intent(in) :: p(9)
+      type(call_type) :: c
+      real(dp) :: target(2), s(2), d_old
+      integer :: step, nseg, kind, i
+      character(len=64) :: where
+
+      c%nstatv = pick(NSTATV_REQUIRED, NSTATV_MAX)
+      c%statev = 0.0_dp
+      c%statev(NSTATV_REQUIRED + 1:) = [(between(-1.0_dp, 1.0_dp), i = NSTATV_REQUIRED + 1, NSTATV_MAX)]
+      c%ddsdde = 0.0_dp
+      step = 0
+      do while (step < NSTEPS)
+         s = c%stran(1:2)
+         kind = pick(1, 9)
+         ! (a break to D = 1 ends a point's interesting history: one segment in about forty)
+         if (kind == 7) then
+            if (uniform() > 0.2_dp) kind = 1
+         end if
+         nseg = pick(1, 6)
+         select case (kind)
+         case (1, 2, 9)  ! towards a random target, mostly closed, mostly within the strengths
+            target(1) = merge(-1.0_dp, 1.0_dp, chance(0.7_dp))
+            target(1) = target(1)*between(0.0_dp, 1.0_dp)
+            target(1) = target(1)*(p(4) + between(0.0_dp, 0.6_dp)*(p(5) - p(4)))
+            target(2) = signed(0.0_dp, 1.0_dp)*p(6)
+            target(2) = target(2) + sign(between(0.0_dp, 0.6_dp)*(p(7) - p(6)), target(2))
+         case (3)        ! shear reversal at the current normal separation
+            target = [s(1), -s(2)*between(0.0_dp, 1.5_dp)]
+            nreversal = nreversal + 1
+         case (4)        ! hold
+            target = s
+            nhold = nhold + 1
+         case (5)        ! steps of round-off size
+            target(1) = sgn()
+            target(2) = sgn()
+            target = s + target*epsilon(1.0_dp)*max(abs(s), tiny(1.0_dp))*between(0.0_dp, 64.0_dp)
+            nroundoff = nroundoff + 1
+         case (6)        ! close (or open) at the current shear
+            target = [-s(1) - sgn()*1.0e-3_dp*p(4), s(2)]
+            nclosing = nclosing + 1
+         case (7)        ! break: far beyond the strengths
+            target(1) = signed(0.0_dp, 3.0_dp)*p(5)
+            target(2) = signed(2.0_dp, 10.0_dp)*p(7)
+         case default    ! small cycles about the current point (stick and slip onset)
+            target = s + [0.0_dp, signed(0.0_dp, 0.05_dp)*p(6)]
+         end select
+         do i = 1, nseg
+            step = step + 1
+            c%dstran(1:2) = s + (target - s)*(real(i, dp)/real(nseg, dp)) - c%stran(1:2)
+            d_old = c%statev(SV_DAMAGE)
+            write (where, '(a,i0,a,i0)') 'material ', imat, ', step ', step
+            call compare_paths(c, p, trim(where))
+            if (c%reported > 0) exit
+            c%stran(1:2) = c%stran(1:2) + c%dstran(1:2)
+            nregime(nint(c%statev(SV_REGIME))) = nregime(nint(c%statev(SV_REGIME))) + 1
+            if (c%statev(SV_DAMAGE) > d_old) ngrowth = ngrowth + 1
+            if (c%statev(SV_DAMAGE) >= 1.0_dp) nbroken = nbroken + 1
+         end do
+      end do
+   end subroutine run_history
+
+   ! ---- part 2 ----------------------------------------------------------------------------
+
+   !> A random admissible incoming state and increment for material p.
+   subroutine random_state(c, p)
+      type(call_type), intent(out) :: c
+      real(dp), intent(in) :: p(9)
+      real(dp) :: r
+      integer :: i
+      c%nstatv = pick(NSTATV_REQUIRED, NSTATV_MAX)
+      r = uniform()
+      if (r < 0.15_dp) then
+         c%statev(SV_DAMAGE) = 0.0_dp
+      else if (r < 0.2_dp) then
+         c%statev(SV_DAMAGE) = -0.0_dp
+      else if (r < 0.3_dp) then
+         c%statev(SV_DAMAGE) = 1.0_dp
+      else if (r < 0.35_dp) then
+         c%statev(SV_DAMAGE) = nearest(1.0_dp, -1.0_dp)
+      else
+         c%statev(SV_DAMAGE) = uniform()
+      end if
+      c%statev(SV_SLIP_1) = 0.0_dp
+      if (chance(0.7_dp)) c%statev(SV_SLIP_1) = signed(0.0_dp, 3.0_dp)*p(7)
+      c%statev(SV_SLIP_2) = 0.0_dp
+      if (chance(0.2_dp)) c%statev(SV_SLIP_2) = signed(0.0_dp, 3.0_dp)*p(7)
+      c%statev(SV_REGIME) = real(pick(REGIME_INTACT, REGIME_SLIP), dp)
+      c%statev(NSTATV_REQUIRED + 1:) = [(between(-1.0_dp, 1.0_dp), i = NSTATV_REQUIRED + 1, NSTATV_MAX)]
+      c%stran(1) = signed(0.0_dp, 2.0_dp)*p(5)
+      c%stran(2) = signed(0.0_dp, 2.0_dp)*p(7)
+      c%dstran(1) = signed(0.0_dp, 0.5_dp)*p(5)
+      c%dstran(2) = signed(0.0_dp, 0.5_dp)*p(7)
+      if (chance(0.1_dp)) c%dstran(1:2) = 0.0_dp
+      c%stress(1) = signed(0.0_dp, 1.0_dp)*p(8)*p(5)
+      c%stress(2) = signed(0.0_dp, 1.0_dp)*p(9)*p(7)
+      c%sse = between(0.0_dp, 10.0_dp)
+      c%spd = between(-1.0_dp, 10.0_dp)
+      c%pnewdt = merge(1.0e36_dp, -1.0_dp, chance(0.8_dp))
+      c%ddsdde = between(-1.0_dp, 1.0_dp)
+   end subroutine random_state
+
+   subroutine single_call(k, p)
+      integer, intent(in) :: k
+      real(dp), intent(in) :: p(9)
+      type(call_type) :: c
+      character(len=64) :: where
+      call random_state(c, p)
+      write (where, '(a,i0)') 'single call ', k
+      call compare_paths(c, p, trim(where))
+      if (c%reported == 0) nsingle_ok = nsingle_ok + 1
+   end subroutine single_call
+
+   ! ---- part 3 ----------------------------------------------------------------------------
+
+   !> A random state with one input spoilt.
+   subroutine spoilt_call(k, p)
+      integer, intent(in) :: k
+      real(dp), intent(in) :: p(9)
+      type(call_type) :: c
+      real(dp) :: q(9), bad
+      character(len=64) :: where
+      integer :: which, k2
+      call random_state(c, p)
+      q = p
+      select case (pick(1, 4))
+      case (1)
+         bad = ieee_value(1.0_dp, ieee_quiet_nan)
+      case (2)
+         bad = sgn()
+         bad = bad*ieee_value(1.0_dp, ieee_positive_inf)
+      case (3)
+         bad = sgn()*1.0e160_dp
+      case default
+         bad = sgn()*1.0e60_dp
+      end select
+      which = pick(1, 16)
+      select case (which)
+      case (1)
+         k2 = pick(1, 2)
+         c%stran(k2) = bad
+      case (2)
+         k2 = pick(1, 2)
+         c%dstran(k2) = bad
+      case (3)
+         k2 = pick(1, 2)
+         c%stress(k2) = bad
+      case (4)
+         c%sse = bad
+      case (5)
+         c%spd = bad
+      case (6)        ! a separation beyond 1e20 mm from values within 1e50
+         k2 = pick(1, 2)
+         c%stran(k2) = signed(1.0e21_dp, 1.0e49_dp)
+      case (7)
+         c%statev(SV_DAMAGE) = bad
+         if (chance(0.5_dp)) c%statev(SV_DAMAGE) = signed(1.0_dp, 2.0_dp)
+         if (chance(0.3_dp)) c%statev(SV_DAMAGE) = nearest(1.0_dp, 1.0_dp)
+      case (8)
+         k2 = SV_SLIP_1 + pick(0, 1)
+         c%statev(k2) = bad
+         if (chance(0.5_dp)) c%statev(k2) = sgn()*2.0e30_dp
+      case (9)
+         c%statev(SV_REGIME) = real(pick(-2, 8), dp)
+         if (chance(0.5_dp)) c%statev(SV_REGIME) = c%statev(SV_REGIME) + 0.5_dp
+         if (chance(0.3_dp)) c%statev(SV_REGIME) = bad
+      case (10)
+         c%nstatv = pick(1, NSTATV_REQUIRED - 1)
+      case (11)       ! other element layouts: NDI + NSHR /= NTENS, a continuum element
+         c%ndi = pick(1, 3)
+         c%nshr = pick(0, 2)
+         if (c%ndi == 1 .and. c%nshr == 1) c%ndi = 2
+      case (12)       ! mu: negative, -0 (refused by the one-pass test, accepted by the checks) or bad
+         q(3) = -between(0.0_dp, 1.0_dp)
+         if (chance(0.5_dp)) q(3) = bad
+         if (chance(0.5_dp)) q(3) = -0.0_dp
+      case (13)       ! sf <= s0
+         q(5) = q(4)*between(0.5_dp, 1.0_dp)
+      case (14)       ! a constant out of its window or not a number
+         k2 = pick(4, 9)
+         q(k2) = bad
+         if (chance(0.5_dp)) q(k2) = between(1.0e-30_dp, 1.0e-21_dp)
+      case (15)       ! the selectors
+         k2 = pick(1, 2)
+         q(k2) = real(pick(0, 3), dp)
+         if (chance(0.3_dp)) q(k2) = q(k2) + 0.5_dp
+      case default    ! the 3-D element: the general path's
+         c%nshr = 2
+         c%ntens = 3
+         c%stran(3) = signed(0.0_dp, 2.0_dp)*p(7)
+         c%dstran(3) = signed(0.0_dp, 0.5_dp)*p(7)
+         c%stress(3) = 0.0_dp
+      end select
+      if (which /= 16) c%ntens = c%ndi + c%nshr
+      if (which == 11) c%ntens = max(1, min(3, c%ntens))
+      write (where, '(a,i0,a,i0)') 'spoilt call ', k, ', kind ', which
+      call compare_paths(c, q, trim(where))
+   end subroutine spoilt_call
+
+end program test_umat_simplified_path
