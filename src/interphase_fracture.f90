@@ -351,11 +351,14 @@ contains
 
    !> The separation at which the displacement-driven law reaches D in a pure mode,
    !> sigma(D) = s0/(1 - D(1 - eta)), and its derivative: the R-curve equivalent to that law
-   !> is G_c(D) = -k'(D) sigma(D)^2 (the paper's remark after eq 24).
+   !> is G_c(D) = -k'(D) sigma(D)^2 (the paper's remark after eq 24). The denominator
+   !> 1 - D(1 - eta) is formed as (1 - D) + D eta: the same number, without the cancellation near
+   !> D = 1 (where it is eta, not the 0 that 1 - D(1 - eta) rounds to when eta < eps/2, sf/s0 >
+   !> 1e16: a division by zero before).
    elemental subroutine equivalent_scale(s0, eta, d, sigma, dsigma_dd)
       real(dp), intent(in) :: s0, eta, d
       real(dp), intent(out) :: sigma, dsigma_dd
-      sigma = s0/(1.0_dp - d*(1.0_dp - eta))
+      sigma = s0/((1.0_dp - d) + d*eta)
       dsigma_dd = (1.0_dp - eta)*sigma*sigma/s0
    end subroutine equivalent_scale
 
