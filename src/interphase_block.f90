@@ -556,7 +556,7 @@ contains
                   - 0.5_dp*d_k*tf_k*cufbar(i)*lam1_closed**2
                regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
-               open = d_k <= 0.0_dp .or. cdbar_n(i)*s_n_k > 0.0_dp .or. (s_n_k > 0.0_dp .and. abs(cdbar_n(i)) <= 0.0_dp)
+               open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
                bad_w(i) = merge(1.0_dp, failc(i), .not. open .and. slipping .and. .not. (kf > 0.0_dp))
                d(k) = d_k
                t_n(k) = merge(tn_open, tn_closed, open)
@@ -621,7 +621,7 @@ contains
                   - 0.5_dp*d_k*tf_k*cufbar(i)*(lam1_closed**2 + lam2_closed**2)
                regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
-               open = d_k <= 0.0_dp .or. cdbar_n(i)*s_n_k > 0.0_dp .or. (s_n_k > 0.0_dp .and. abs(cdbar_n(i)) <= 0.0_dp)
+               open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
                bad_w(i) = merge(1.0_dp, failc(i), .not. open .and. slipping .and. .not. (kf > 0.0_dp))
                d(k) = d_k
                t_n(k) = merge(tn_open, tn_closed, open)

@@ -8,7 +8,8 @@
 !>
 !> The response at a given damage D (`respond`):
 !>   D = 0: intact, t = k s.
-!>   mean crack opening dbar_n s_N > 0: open crack, t = k s, crack faces free, the slip
+!>   mean crack opening dbar_n s_N > 0, i.e. s_N > 0 (dbar_n > 0 for every crack): open crack,
+!>   t = k s, crack faces free, the slip
 !>   follows the mean tangential jump: lambda = dbar_t s_T / ufbar.
 !>   otherwise closed: trial crack stresses sigma = sc_n s_N, tau = tc_t s_T + T^f lambda_n,
 !>   phi = mu sigma + |tau| (eq 43); phi <= 0 (or within its round-off, SLIP_ONSET_ROUNDOFF):
