@@ -297,7 +297,8 @@ contains
    !> interval of any x (cubic_locate's: the largest i <= n - 1 with knots(i) <= x) is found from
    !> its cell g = min(ncells, max(1, int((x - knots(1))*scale) + 1)), starting at guide(g), by
    !> `steps` forward comparisons (interval = i + 1 while knots(i + 1) <= x and i + 1 <= n - 1),
-   !> where a binary search takes log2(n) of them (interphase_micro_coefficients uses it). The cells are at most half the smallest knot spacing wide (up to
+   !> where a binary search takes log2(n) of them (interphase_micro_coefficients uses it). The
+   !> cells are at most half the smallest knot spacing wide (up to
    !> GUIDE_CELLS_MAX cells): a cell then holds at most one knot and steps is 1. Each cell's
    !> range is widened by a millionth of a cell on both sides, far beyond the rounding of the
    !> cell index (x - knots(1))*scale, so the interval found is always cubic_locate's.

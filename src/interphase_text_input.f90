@@ -172,7 +172,8 @@ contains
    !> length. Returns TEXT_LINE, TEXT_END, or (with `message`) TEXT_LINE_TOO_LONG (more than
    !> MAX_LINE_LEN characters), TEXT_FILE_TOO_LARGE (more than MAX_FILE_BYTES read) or
    !> TEXT_READ_ERROR (also for a UTF-8 byte-order mark that starts the file). A last line
-   !> without a newline is a line; a trailing carriage return is dropped. Reading stops at the limit: a line without end is never read to its end.
+   !> without a newline is a line; a trailing carriage return is dropped. Reading stops at the
+   !> limit: a line without end is never read to its end.
    subroutine read_text_line(file, outcome, message)
       type(text_file_type), intent(inout) :: file
       integer, intent(out) :: outcome                 !! TEXT_*
