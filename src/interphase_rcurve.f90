@@ -211,7 +211,7 @@ contains
    !> '' when no word in parentheses right after a column's name in an R-curve file's comment
    !> (`comment`, the text after '#') is a unit other than the reader's; else the message. A
    !> toughness (G_cI, G_cII, G_c, G_f, ... any case) is read in N/mm: a group whose first word
-   !> (`unit_word`: up to a blank, comma or semicolon, `J / m^2` as `J/m^2`, `J m^-2` as `Jm^-2`,
+   !> (`unit_word`: up to a blank, comma or semicolon, `J / m^2` as `J/m^2`, `J m^-2` as `J.m^-2`,
    !> `kJ/m²` as `kJ/m2`) is a quotient (a '/' or a negative power) and not N/mm or the same
    !> unit written otherwise (kJ/m^2, kJ m^-2, kN/m, N mm^-1, mJ/mm^2; `*`, `.` and `**` as
    !> products and powers) names another one (J/m^2 = 1e-3 N/mm); D is a/b: a length unit after it (mm, m; `in` alone, not
@@ -279,28 +279,30 @@ contains
       end function unit_form
    end function foreign_unit
 
-   !> A negative power in a unit: `^-`, `**-`, or a letter, '-' and a digit (`m-2`); `mode-I`
-   !> and `2-D` are not.
+   !> A negative power in a unit: `^-` or `**-`, or a factor (between `.`, `*` or a middle dot)
+   !> that is a length to a power written without a caret, `m-2`, `mm-1`, `cm-2` (any case);
+   !> `mode-I`, `Set-1`, `EN-1052` and `2-D` are not.
    pure logical function negative_power(word)
       character(len=*), intent(in) :: word
-      integer :: k
+      character(len=*), parameter :: POWERS(9) = [character(len=5) :: 'm-1', 'm-2', 'm-3', 'mm-1', 'mm-2', &
+         'mm-3', 'cm-1', 'cm-2', 'cm-3']
+      integer :: first, k
       negative_power = index(word, '^-') > 0 .or. index(word, '**-') > 0
-      do k = 2, len(word) - 1
+      first = 1
+      do k = 1, len(word) + 1
          if (negative_power) return
-         negative_power = word(k:k) == '-' .and. is_letter(word(k - 1:k - 1)) .and. &
-            verify(word(k + 1:k + 1), '0123456789') == 0
+         if (k <= len(word)) then
+            if (word(k:k) /= '.' .and. word(k:k) /= '*' .and. word(k:k) /= char(194) .and. word(k:k) /= char(183)) cycle
+         end if
+         if (k > first) negative_power = any(to_lower(word(first:k - 1)) == POWERS)
+         first = k + 1
       end do
-   contains
-      pure logical function is_letter(c)
-         character(len=1), intent(in) :: c
-         is_letter = (c >= 'a' .and. c <= 'z') .or. (c >= 'A' .and. c <= 'Z')
-      end function is_letter
    end function negative_power
 
    !> `word`, the first word of a group in parentheses (`content`, blanks trimmed) as
    !> `foreign_unit` reads a unit: up to a blank, tab, comma or semicolon, with blanks around a
-   !> '/' joined to it (`J / m^2` is `J/m^2`), a negative power after a blank too (`J m^-2` is
-   !> `Jm^-2`), and a UTF-8 superscript two or three written 2 or 3
+   !> '/' joined to it (`J / m^2` is `J/m^2`), a negative power after a blank too, as a product
+   !> (`J m^-2` is `J.m^-2`), and a UTF-8 superscript two or three written 2 or 3
    !> (`kJ/m²` is `kJ/m2`); `rest` true when a blank or tab and more words follow it.
    pure subroutine unit_word(content, word, rest)
       character(len=*), intent(in) :: content
@@ -320,10 +322,13 @@ contains
             next = verify(content(i:), ' '//TAB)
             if (next == 0) return
             next = i + next - 1
-            if (content(next:next) /= '/' .and. .not. ends_with_slash(word) .and. &
-               .not. negative_power(next_word(content(next:)))) then
-               rest = content(next:next) /= ',' .and. content(next:next) /= ';'
-               return
+            if (content(next:next) /= '/' .and. .not. ends_with_slash(word)) then
+               if (.not. negative_power(next_word(content(next:)))) then
+                  rest = content(next:next) /= ',' .and. content(next:next) /= ';'
+                  return
+               end if
+               ! a product: `J m^-2` is `J.m^-2`
+               word = word//'.'
             end if
             i = next
             cycle

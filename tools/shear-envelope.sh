@@ -12,10 +12,12 @@
 set -euo pipefail
 here=$(cd "$(dirname "$0")/.." && pwd)
 usage="usage: tools/shear-envelope.sh [BUILD_DIR] [OUT_DIR]"
-case "${1:-}" in
-  -h|--help) echo "$usage"; exit 0 ;;
-  -*) echo "shear-envelope.sh: unknown option '$1' ($usage)" >&2; exit 2 ;;
-esac
+for arg in "$@"; do
+  case "$arg" in
+    -h|--help) echo "$usage"; exit 0 ;;
+    -*) echo "shear-envelope.sh: unknown option '$arg' ($usage)" >&2; exit 2 ;;
+  esac
+done
 if [ $# -gt 2 ]; then
   echo "shear-envelope.sh: $# arguments, at most 2 ($usage)" >&2
   exit 2
