@@ -203,6 +203,7 @@ contains
             call parse_number(line(starts(i):ends(i)), values(i), ok, message)
             if (.not. ok) then
                message = where//'column '//int_to_string(i)//': '//message
+               if (index(line(starts(i):ends(i)), '!') > 0) message = trim(message)//separator_hint('!')
                call close_text_file(unit)
                return
             end if

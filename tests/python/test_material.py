@@ -701,6 +701,8 @@ def test_read_mixed_history(source_dir, tmp_path):
                                "and a point for the decimal comma\\)"),
                               ("0 0 0 ! start\n1 0 0.01\n", 1, "found 5 columns; expected 3 .* \\('!' does not start "
                                "a comment in a history file: '#' does\\)"),
+                              ("0 0 0 !start\n1 0 0.01\n", 1, "column 4: cannot parse '!start' as a number \\('!' "
+                               "does not start a comment in a history file: '#' does\\)"),
                               ("0 0 0\n#\tt  s_T (mm)  SIGMA_N (MPa)\n1 0 1\n", 2, "names traction columns"),
                               ("# t s_N s_T\n0 0 0\n1 0.01 0\n", 1, "names the columns in another order"),
                               ("#  t  s_N (mm)  s_T (mm)\n0 0 0\n1 0.01 0\n", 1, "in another order"),

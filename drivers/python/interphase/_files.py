@@ -201,16 +201,17 @@ def _parse_real(text):
     return value, None
 
 
-def _number(text, where):
-    """The number of a history's field, or ValueError with the driver's message (parse_number)."""
+def _number(text, where, hint=""):
+    """The number of a history's field, or ValueError with the driver's message (parse_number),
+    `hint` after it."""
     value, why = _parse_real(text)
     if why is None:
         return value
     if "finite" in why:
-        raise ValueError(f"{where}: '{_clip(text)}' is not a finite number {why[len('not finite '):]}")
+        raise ValueError(f"{where}: '{_clip(text)}' is not a finite number {why[len('not finite '):]}{hint}")
     if "out of range" in why:
-        raise ValueError(f"{where}: '{_clip(text)}' is {why}")
-    raise ValueError(f"{where}: cannot parse '{_clip(text)}' as a number")
+        raise ValueError(f"{where}: '{_clip(text)}' is {why}{hint}")
+    raise ValueError(f"{where}: cannot parse '{_clip(text)}' as a number{hint}")
 
 
 # the names of a `# columns:` line after t (file order): separation, traction
@@ -429,7 +430,8 @@ def read_history(path, control=False):
         elif len(words) != len(rows[0]):
             raise ValueError(f"{where}: found {len(words)} columns, but line {first_line} has {len(rows[0])}; "
                              f"every data line must have the same number of columns{_separator_hint(head)}")
-        row = [_number(w, f"{where}: column {i}") for i, w in enumerate(words, 1)]
+        row = [_number(w, f"{where}: column {i}", _separator_hint("!") if "!" in w else "")
+               for i, w in enumerate(words, 1)]
         controls = named[1] if named is not None else [False] * (len(words) - 1)
         # (the driver's checks: a separation beyond the update's range, a time step not finite)
         for i, value in enumerate(row[1:], 2):
