@@ -30,6 +30,7 @@ program test_umat_simplified_path
    use interphase_layout, only: NSTATV_REQUIRED, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, REGIME_INTACT, &
       REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    use interphase_abaqus_interfaces, only: umat
+   use interphase_umat_simplified, only: simplified_cohesive_path
    use host_recorder, only: recorder_reset, recorded_count, recorded_severity, recorded_message
    implicit none
 
@@ -50,6 +51,10 @@ program test_umat_simplified_path
 
    integer(int64) :: seed = 20261206_int64
    integer :: nfailed = 0, ncalls = 0, nrefused = 0
+   !> calls the path takes (asked directly, on a copy of the inputs), and calls the general path
+   !> accepts that the path could take (mu not -0): the test compares the two paths only if the
+   !> first is a large share of the second
+   integer :: ntaken = 0, ntakeable = 0
    !> coverage: accepted steps of part 1 ending in each regime, growing, reaching D = 1, holds,
    !> reversals, round-off steps
    integer :: nregime(REGIME_INTACT:REGIME_SLIP) = 0, ngrowth = 0, nbroken = 0, nhold = 0, nreversal = 0, &
@@ -84,8 +89,16 @@ program test_umat_simplified_path
       ' closings'
    write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: single calls: ', nsingle_ok, ' of ', NSINGLE, &
       ' accepted'
+   write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: the path took ', ntaken, ' of the ', &
+      ntakeable, ' calls the general path accepts'
    write (output_unit, '(a,i0,a)') 'test_umat_simplified_path: ', nfailed, ' differences'
    if (nfailed > 0) error stop 1
+   ! (every accepted call with mu other than -0 is the path's: a decision that stopped taking calls
+   ! would leave the test comparing the general path with itself)
+   if (ntaken /= ntakeable .or. ntaken < NMATERIALS) then
+      write (error_unit, '(a)') 'test_umat_simplified_path: the path did not take every call it should'
+      error stop 1
+   end if
 
 contains
 
@@ -204,6 +217,7 @@ contains
       character(len=*), intent(in) :: where
       type(call_type) :: reference
       reference = c
+      call count_taken(c, p)
       call call_umat(c, p)
       call call_umat(reference, [p, 0.0_dp])
       ! (a refusal of the constants' count names NPROPS: the reference's is 10)
@@ -227,6 +241,25 @@ contains
          end if
       end if
    end subroutine compare_paths
+
+   !> Whether the path takes the call (on a copy of its inputs), counted against the calls the
+   !> general path accepts with NPROPS = 9 on a 2-D cohesive element and mu not -0, the ones the
+   !> path is for (its decision: interphase_umat_simplified).
+   subroutine count_taken(c, p)
+      type(call_type), intent(in) :: c
+      real(dp), intent(in) :: p(9)
+      type(call_type) :: copy, general
+      logical :: taken
+      copy = c
+      call simplified_cohesive_path(9, p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, copy%statev(1:copy%nstatv), &
+         copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), copy%stress(1:copy%ntens), &
+         copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
+      if (taken) ntaken = ntaken + 1
+      general = c
+      call call_umat(general, [p, 0.0_dp])
+      if (general%reported == 0 .and. c%ndi == 1 .and. c%nshr == 1 .and. c%ntens == 2 .and. &
+         transfer(p(3), 0_int64) /= transfer(-0.0_dp, 0_int64)) ntakeable = ntakeable + 1
+   end subroutine count_taken
 
    !> text with its first `from` replaced by `to`.
    subroutine replace_text(text, from, to)
