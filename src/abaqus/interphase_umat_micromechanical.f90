@@ -21,8 +21,7 @@ module interphase_umat_micromechanical
       SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, NSTATV_REQUIRED, NSTATV_VISCOUS
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, RCURVE_TABULATED, GROWTH_FIXED_PI, STIFFNESS_SYMMETRIC, &
-      STIFFNESS_FIXED_DAMAGE, REGIME_INTACT, REGIME_OPEN, &
-      REGIME_STICK, REGIME_SLIP
+      STIFFNESS_FIXED_DAMAGE, REGIME_INTACT, REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    use interphase_status, only: STATUS_OK, STATUS_BAD_TIME_INCREMENT, STATUS_BAD_COEFFICIENTS, &
       STATUS_MODEL_UNAVAILABLE, STATUS_BAD_NSTATV, STATUS_BAD_STATE, STATUS_TABLE_NOT_LOADED, &
       STATUS_RCURVE_NOT_LOADED, STATUS_RCURVE_OUT_OF_RANGE, MESSAGE_LEN
@@ -48,9 +47,9 @@ contains
    include 'interphase_umat_cohesive_path.inc'
 
    ! the PROPS decoder (interphase_params'), the run-time data check (interphase_provider's),
-   ! the STATEV reader and writer (interphase_state's), the range
-   ! tests (interphase_finite's), the update's procedures (interphase_kernel's) and the UMAT's
-   ! outputs, from the same sources: private copies
+   ! the STATEV reader and writer (interphase_state's), the range tests (interphase_finite's),
+   ! the update's procedures (interphase_kernel's) and the UMAT's outputs, from the same
+   ! sources: private copies
    include 'interphase_binary64_bits.inc'
    include 'interphase_within.inc'
    include 'interphase_props_stores.inc'
