@@ -1,12 +1,17 @@
-!> The UMAT's path for the simplified model (interphase_umat_simplified) against its general
-!> path, bit for bit, over many random materials, histories and host inputs.
+!> The UMAT's paths for the simplified and the micromechanical model (interphase_umat_simplified,
+!> interphase_umat_micromechanical) against its general path, bit for bit, over many random
+!> materials, histories and host inputs.
 !>
-!> Every call is made twice from the same inputs: with the material's nine PROPS (NPROPS = 9, a
-!> 2-D cohesive element: the calls the path may take) and with the same nine followed by the
-!> growth-slip option constant at its default, 0 (NPROPS = 10: the same material, which only the
-!> general path serves). STRESS, DDSDDE, STATEV (every slot of NSTATV), SSE, SPD and PNEWDT, and
-!> the message the call reports (its count, severity and text), must agree bit for bit.
+!> Every call is made twice from the same inputs: with the material's PROPS without options
+!> (NPROPS = 9 for the simplified model, 8 for the micromechanical one, a 2-D cohesive element:
+!> the calls the paths may take) and with the same PROPS followed by the growth-slip option
+!> constant at its default, 0 (NPROPS one more: the same material, which only the general path
+!> serves). STRESS, DDSDDE, STATEV (every slot of NSTATV), SSE, SPD and PNEWDT, and the message
+!> the call reports (its count, severity and text), must agree bit for bit.
 !>
+!> Materials: half simplified, half micromechanical (the built-in table, or the custom table: the
+!> paper's, loaded from the source tree after part 0).
+!> Part 0, the micromechanical model on the custom table before one is loaded: refused by both.
 !> Part 1, histories: NMATERIALS random materials (mu exactly 0, tiny or up to 1.5; s0 and sf
 !> over three decades with sf/s0 from 1 + 2 eps to 100; K_N, K_T over six decades), each with a
 !> random history of NSTEPS steps built from segments that reach every regime: intact loading,
@@ -19,7 +24,8 @@
 !> NSTATV 4 to 8 with the slots beyond 4 random (left alone by both paths).
 !> Part 3, refused calls: one input of a valid call spoilt (NaN, Inf or out of range STRAN,
 !> DSTRAN, STRESS, SSE, SPD; a separation beyond 1e20 mm; STATEV's D, slip or regime; NSTATV;
-!> NDI, NSHR; each PROPS value, -0 for mu included): both report the same, and leave the same.
+!> NDI, NSHR; each PROPS value, -0 for mu and the table selector included): both report the same,
+!> and leave the same.
 !>
 !> A failure prints the material, the step and what differed; the program ends with exit
 !> status 1. It prints what it covered.
@@ -30,11 +36,15 @@ program test_umat_simplified_path
    use interphase_layout, only: NSTATV_REQUIRED, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, REGIME_INTACT, &
       REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    use interphase_abaqus_interfaces, only: umat
-   use interphase_umat_simplified, only: simplified_cohesive_path
+   use interphase_umat_simplified, only: simplified_cohesive_path => cohesive_path
+   use interphase_umat_micromechanical, only: micromechanical_cohesive_path => cohesive_path
+   use interphase_micro_coefficients, only: load_custom_table
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN
+   use interphase_test_support, only: source_path
    use host_recorder, only: recorder_reset, recorded_count, recorded_severity, recorded_message
    implicit none
 
-   integer, parameter :: NMATERIALS = 3000, NSTEPS = 60, NSINGLE = 20000, NSPOILT = 6000
+   integer, parameter :: NMATERIALS = 6000, NSTEPS = 60, NSINGLE = 40000, NSPOILT = 12000, NUNLOADED = 200
    !> The largest NSTATV the test passes.
    integer, parameter :: NSTATV_MAX = 8
 
@@ -51,16 +61,39 @@ program test_umat_simplified_path
 
    integer(int64) :: seed = 20261206_int64
    integer :: nfailed = 0, ncalls = 0, nrefused = 0
-   !> calls the path takes (asked directly, on a copy of the inputs), and calls the general path
-   !> accepts that the path could take (mu not -0): the test compares the two paths only if the
+   !> calls the paths take (asked directly, on a copy of the inputs), and calls the general path
+   !> accepts that a path could take (mu not -0): the test compares the two paths only if the
    !> first is a large share of the second
    integer :: ntaken = 0, ntakeable = 0
+   !> the current material's NPROPS without options (9: simplified, 8: micromechanical), and the
+   !> stiffness scale (MPa/mm) of the random incoming STRESS
+   integer :: np = 9
+   real(dp) :: stiffness(2) = 1.0_dp
+   !> calls of each model (simplified, micromechanical), and of the micromechanical model on the
+   !> custom table; of those, accepted
+   integer :: nmodel(2) = 0, nmodel_ok(2) = 0, ncustom = 0, ncustom_ok = 0
+   integer :: status
+   character(len=MESSAGE_LEN) :: message
    !> coverage: accepted steps of part 1 ending in each regime, growing, reaching D = 1, holds,
    !> reversals, round-off steps
    integer :: nregime(REGIME_INTACT:REGIME_SLIP) = 0, ngrowth = 0, nbroken = 0, nhold = 0, nreversal = 0, &
       nroundoff = 0, nclosing = 0, nsingle_ok = 0
    integer :: imat, k
    real(dp) :: props(9)
+
+   ! ---- part 0: the custom table before one is loaded ---------------------------------------
+   do k = 1, NUNLOADED
+      props = random_props()
+      props(1) = 2.0_dp
+      props(8) = 1.0_dp
+      np = 8
+      call single_call(k, props)
+   end do
+   call load_custom_table(source_path('tables/paper.dat'), status, message)
+   if (status /= STATUS_OK) then
+      write (error_unit, '(a)') 'test_umat_simplified_path: '//trim(message)
+      error stop 1
+   end if
 
    ! ---- part 1: histories -----------------------------------------------------------------
    do imat = 1, NMATERIALS
@@ -89,8 +122,12 @@ program test_umat_simplified_path
       ' closings'
    write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: single calls: ', nsingle_ok, ' of ', NSINGLE, &
       ' accepted'
-   write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: the path took ', ntaken, ' of the ', &
+   write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: the paths took ', ntaken, ' of the ', &
       ntakeable, ' calls the general path accepts'
+   write (output_unit, '(a,2(i0,a,i0,a))') 'test_umat_simplified_path: simplified: ', nmodel(1), ' calls (', &
+      nmodel_ok(1), ' accepted), micromechanical: ', nmodel(2), ' calls (', nmodel_ok(2), ' accepted)'
+   write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: custom table: ', ncustom, ' calls (', &
+      ncustom_ok, ' accepted)'
    write (output_unit, '(a,i0,a)') 'test_umat_simplified_path: ', nfailed, ' differences'
    if (nfailed > 0) error stop 1
    ! (every accepted call with mu other than -0 is the path's: a decision that stopped taking calls
@@ -144,10 +181,14 @@ contains
 
    ! ---- materials and calls -------------------------------------------------------------------
 
-   !> The nine PROPS of a random simplified material with the displacement-driven law.
+   !> The PROPS of a random material with the displacement-driven law: the simplified model's nine,
+   !> or (half of them) the micromechanical model's eight, p(9) then unused; sets np and the
+   !> stiffness scale.
    function random_props() result(p)
       real(dp) :: p(9)
       real(dp) :: r
+      logical :: micro
+      micro = chance(0.5_dp)
       p(1) = 1.0_dp
       p(2) = 1.0_dp
       r = uniform()
@@ -164,6 +205,14 @@ contains
       p(7) = sf_from(p(6))
       p(8) = 10.0_dp**between(0.0_dp, 6.0_dp)
       p(9) = 10.0_dp**between(0.0_dp, 6.0_dp)
+      stiffness = p(8:9)
+      np = 9
+      if (micro) then
+         ! the built-in table mostly, the custom one (once loaded) in a third of them
+         p(1) = 2.0_dp
+         p(8) = merge(1.0_dp, 0.0_dp, chance(1.0_dp/3.0_dp))
+         np = 8
+      end if
    end function random_props
 
    !> sf > s0: mostly a ratio up to 100, sometimes s0 (1 + 2 eps)
@@ -216,19 +265,30 @@ contains
       real(dp), intent(in) :: p(9)
       character(len=*), intent(in) :: where
       type(call_type) :: reference
+      character(len=16) :: from, to
+      integer :: m
       reference = c
-      call count_taken(c, p)
-      call call_umat(c, p)
-      call call_umat(reference, [p, 0.0_dp])
-      ! (a refusal of the constants' count names NPROPS: the reference's is 10)
-      call replace_text(reference%message, 'NPROPS = 10 ', 'NPROPS = 9 ')
+      call count_taken(c, p(1:np))
+      call call_umat(c, p(1:np))
+      call call_umat(reference, [p(1:np), 0.0_dp])
+      ! (a refusal of the constants' count names NPROPS: the reference's is one more)
+      write (from, '(a,i0,a)') 'NPROPS = ', np + 1, ' '
+      write (to, '(a,i0,a)') 'NPROPS = ', np, ' '
+      call replace_text(reference%message, trim(from)//' ', trim(to)//' ')
       ncalls = ncalls + 1
       if (c%reported > 0) nrefused = nrefused + 1
+      m = merge(2, 1, np == 8)
+      nmodel(m) = nmodel(m) + 1
+      if (c%reported == 0) nmodel_ok(m) = nmodel_ok(m) + 1
+      if (np == 8 .and. same_bits([p(1), p(8)], [2.0_dp, 1.0_dp])) then
+         ncustom = ncustom + 1
+         if (c%reported == 0) ncustom_ok = ncustom_ok + 1
+      end if
       if (.not. same_call(c, reference)) then
          nfailed = nfailed + 1
          if (nfailed <= 20) then
             write (error_unit, '(a)') 'test_umat_simplified_path: '//where//': the paths differ'
-            write (error_unit, '(a,9es25.17)') '  PROPS ', p
+            write (error_unit, '(a,9es25.17)') '  PROPS ', p(1:np)
             write (error_unit, '(a,2es25.17,a,2es25.17)') '  STRESS ', c%stress(1:2), ' general ', reference%stress(1:2)
             write (error_unit, '(a,4es25.17)') '  DDSDDE ', c%ddsdde(1:2, 1:2)
             write (error_unit, '(a,4es25.17)') '  general', reference%ddsdde(1:2, 1:2)
@@ -242,18 +302,25 @@ contains
       end if
    end subroutine compare_paths
 
-   !> Whether the path takes the call (on a copy of its inputs), counted against the calls the
-   !> general path accepts with NPROPS = 9 on a 2-D cohesive element and mu not -0, the ones the
-   !> path is for (its decision: interphase_umat_simplified).
+   !> Whether a path takes the call (on a copy of its inputs), counted against the calls the
+   !> general path accepts on a 2-D cohesive element with the material's NPROPS without options
+   !> (9: simplified, 8: micromechanical) and mu not -0, the ones the paths are for (their
+   !> decision: interphase_umat_cohesive_path.inc).
    subroutine count_taken(c, p)
       type(call_type), intent(in) :: c
-      real(dp), intent(in) :: p(9)
+      real(dp), intent(in) :: p(:)
       type(call_type) :: copy, general
       logical :: taken
       copy = c
-      call simplified_cohesive_path(9, p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, copy%statev(1:copy%nstatv), &
-         copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), copy%stress(1:copy%ntens), &
-         copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
+      if (size(p) == 9) then
+         call simplified_cohesive_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
+            copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
+      else
+         call micromechanical_cohesive_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
+            copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
+      end if
       if (taken) ntaken = ntaken + 1
       general = c
       call call_umat(general, [p, 0.0_dp])
@@ -383,8 +450,8 @@ contains
       c%dstran(1) = signed(0.0_dp, 0.5_dp)*p(5)
       c%dstran(2) = signed(0.0_dp, 0.5_dp)*p(7)
       if (chance(0.1_dp)) c%dstran(1:2) = 0.0_dp
-      c%stress(1) = signed(0.0_dp, 1.0_dp)*p(8)*p(5)
-      c%stress(2) = signed(0.0_dp, 1.0_dp)*p(9)*p(7)
+      c%stress(1) = signed(0.0_dp, 1.0_dp)*stiffness(1)*p(5)
+      c%stress(2) = signed(0.0_dp, 1.0_dp)*stiffness(2)*p(7)
       c%sse = between(0.0_dp, 10.0_dp)
       c%spd = between(-1.0_dp, 10.0_dp)
       c%pnewdt = merge(1.0e36_dp, -1.0_dp, chance(0.8_dp))
@@ -468,12 +535,31 @@ contains
       case (13)       ! sf <= s0
          q(5) = q(4)*between(0.5_dp, 1.0_dp)
       case (14)       ! a constant out of its window or not a number
-         k2 = pick(4, 9)
+         k2 = pick(4, np)
          q(k2) = bad
          if (chance(0.5_dp)) q(k2) = between(1.0e-30_dp, 1.0e-21_dp)
+         if (np == 8 .and. k2 == 8) then
+            ! the micromechanical model's table selector: -0, 2, 0.5 or 1 + ulp (the draw in a
+            ! statement of its own: every build makes it)
+            if (chance(0.5_dp)) then
+               select case (pick(1, 4))
+               case (1)
+                  q(8) = -0.0_dp
+               case (2)
+                  q(8) = 2.0_dp
+               case (3)
+                  q(8) = 0.5_dp
+               case default
+                  q(8) = nearest(1.0_dp, 1.0_dp)
+               end select
+            end if
+         end if
       case (15)       ! the selectors
          k2 = pick(1, 2)
          q(k2) = real(pick(0, 3), dp)
+         ! (the micromechanical model's eight PROPS read as the simplified model's: the reference's
+         ! ninth value, the option 0, would then be its K_T, a different refusal; not compared)
+         if (np == 8 .and. k2 == 1 .and. nint(q(1)) == 1) q(1) = 0.0_dp
          if (chance(0.3_dp)) q(k2) = q(k2) + 0.5_dp
       case default    ! the 3-D element: the general path's
          c%nshr = 2
