@@ -30,7 +30,7 @@ module interphase_driver_history
    use interphase_finite, only: difference_is_finite
    implicit none
    private
-   public :: history_type, read_history, carriage_return_message, parse_number, separator_hint
+   public :: history_type, read_history, carriage_return_message, parse_number, separator_hint, foreign_length_unit_after
 
    !> A prescribed separation history.
    type :: history_type
@@ -378,6 +378,15 @@ contains
    pure function foreign_length_unit(text) result(found)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: found
+      found = foreign_length_unit_after(text, [character(len=4) :: 's_t', 's_t1', 's_t2', 's_n'])
+   end function foreign_length_unit
+
+   !> foreign_length_unit for the separations named `names` (lower case; interphase-fe2d's history:
+   !> `u_shear`, `u`): '' or the first name and foreign length unit as written.
+   pure function foreign_length_unit_after(text, names) result(found)
+      character(len=*), intent(in) :: text
+      character(len=*), intent(in) :: names(:)
+      character(len=:), allocatable :: found
       character(len=:), allocatable :: name, unit
       integer :: i
       logical :: group
@@ -387,13 +396,12 @@ contains
          call next_parenthesised(text, i, group, unit, name)
          if (.not. group) exit
          ! (the text as written: `µM` is lowered as `_files.py` lowers it, A-Z only)
-         if (any(to_lower(name) == ['s_t ', 's_t1', 's_t2', 's_n ']) .and. any(to_lower(unit) == LENGTH_UNIT_WORDS) &
-            .and. to_lower(unit) /= 'mm') then
+         if (any(to_lower(name) == names) .and. any(to_lower(unit) == LENGTH_UNIT_WORDS) .and. to_lower(unit) /= 'mm') then
             found = name//' the unit ('//unit//')'
             return
          end if
       end do
-   end function foreign_length_unit
+   end function foreign_length_unit_after
 
    !> '' when `line` (a data line without its comment) holds no comma, semicolon or '!'; else the
    !> note that ends a wrong-column-count message: the fields of a history are separated by

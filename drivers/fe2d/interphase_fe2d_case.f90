@@ -9,12 +9,12 @@ module interphase_fe2d_case
    use interphase_kinds, only: dp
    use interphase_params, only: PROPS_VALUE_MIN, PROPS_VALUE_MAX
    use interphase_finite, only: difference_is_finite
-   use interphase_text_input, only: tried_path, clip_text, next_parenthesised, LENGTH_UNIT_WORDS
+   use interphase_text_input, only: tried_path, clip_text
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
       ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
-   use interphase_driver_history, only: carriage_return_message, parse_number, separator_hint
+   use interphase_driver_history, only: carriage_return_message, parse_number, separator_hint, foreign_length_unit_after
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words, text_file_type, open_line_file, close_text_file
    implicit none
@@ -597,20 +597,7 @@ contains
    pure function foreign_shear_unit(comment) result(found)
       character(len=*), intent(in) :: comment
       character(len=:), allocatable :: found
-      character(len=:), allocatable :: name, unit
-      integer :: i
-      logical :: group
-      found = ''
-      i = 1
-      do
-         call next_parenthesised(comment, i, group, unit, name)
-         if (.not. group) exit
-         if (any(to_lower(name) == ['u_shear', 'u      ']) .and. any(to_lower(unit) == LENGTH_UNIT_WORDS) &
-            .and. to_lower(unit) /= 'mm') then
-            found = name//' the unit ('//unit//')'
-            return
-         end if
-      end do
+      found = foreign_length_unit_after(comment, [character(len=7) :: 'u_shear', 'u'])
    end function foreign_shear_unit
 
 end module interphase_fe2d_case
