@@ -280,12 +280,16 @@ contains
    end function foreign_unit
 
    !> A negative power in a unit: `^-` or `**-`, or a factor (between `.`, `*` or a middle dot)
-   !> that is a length to a power written without a caret, `m-2`, `mm-1`, `cm-2` (any case);
-   !> `mode-I`, `Set-1`, `EN-1052` and `2-D` are not.
+   !> that is a length to a power written without a caret, `m-2`, `mm-1`, `cm-2`, `in-1` (any
+   !> case), alone or right after the symbol of an energy or a force (`Jm-2`, `kJm-2`, `Nm-1`,
+   !> `Nmm-1`: one unit written without a mark of the product); `mode-I`, `Set-1`, `beam-1`,
+   !> `EN-1052` and `2-D` are not.
    pure logical function negative_power(word)
       character(len=*), intent(in) :: word
-      character(len=*), parameter :: POWERS(9) = [character(len=5) :: 'm-1', 'm-2', 'm-3', 'mm-1', 'mm-2', &
-         'mm-3', 'cm-1', 'cm-2', 'cm-3']
+      character(len=*), parameter :: POWERS(12) = [character(len=4) :: 'm-1', 'm-2', 'm-3', 'mm-1', 'mm-2', &
+         'mm-3', 'cm-1', 'cm-2', 'cm-3', 'in-1', 'in-2', 'in-3']
+      !> the symbols written before a length power without a mark (lower case)
+      character(len=*), parameter :: SYMBOLS(7) = [character(len=3) :: 'j', 'kj', 'mj', 'n', 'kn', 'mn', 'nmm']
       integer :: first, k
       negative_power = index(word, '^-') > 0 .or. index(word, '**-') > 0
       first = 1
@@ -294,9 +298,25 @@ contains
          if (k <= len(word)) then
             if (word(k:k) /= '.' .and. word(k:k) /= '*' .and. word(k:k) /= char(194) .and. word(k:k) /= char(183)) cycle
          end if
-         if (k > first) negative_power = any(to_lower(word(first:k - 1)) == POWERS)
+         if (k > first) negative_power = is_power(to_lower(word(first:k - 1)))
          first = k + 1
       end do
+   contains
+      !> `factor` is one of POWERS, or one of SYMBOLS followed by one
+      pure logical function is_power(factor)
+         character(len=*), intent(in) :: factor
+         integer :: i, j
+         is_power = .false.
+         do i = 1, size(POWERS)
+            ! (j: the length of what comes before the power)
+            j = len(factor) - len_trim(POWERS(i))
+            if (j < 0) cycle
+            if (factor(j + 1:) /= trim(POWERS(i))) cycle
+            is_power = j == 0
+            if (.not. is_power) is_power = any(factor(1:j) == SYMBOLS)
+            if (is_power) return
+         end do
+      end function is_power
    end function negative_power
 
    !> `word`, the first word of a group in parentheses (`content`, blanks trimmed) as
