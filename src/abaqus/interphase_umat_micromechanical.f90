@@ -44,23 +44,7 @@ module interphase_umat_micromechanical
 
 contains
 
+   ! (the decision, the update and the procedures they call: one source for both paths)
    include 'interphase_umat_cohesive_path.inc'
-
-   ! the PROPS decoder (interphase_params'), the run-time data check (interphase_provider's),
-   ! the STATEV reader and writer (interphase_state's), the range tests (interphase_finite's),
-   ! the update's procedures (interphase_kernel's) and the UMAT's outputs, from the same
-   ! sources: private copies
-   include 'interphase_binary64_bits.inc'
-   include 'interphase_within.inc'
-   include 'interphase_props_stores.inc'
-   include 'interphase_run_time_data.inc'
-   include 'interphase_statev.inc'
-   include 'interphase_response.inc'
-   include 'interphase_damage.inc'
-   include 'interphase_coefficients_at.inc'
-   include 'interphase_coefficient_values_at.inc'
-   include 'interphase_simplified.inc'
-   include 'interphase_update_outputs.inc'
-   include 'interphase_cohesive_outputs.inc'
 
 end module interphase_umat_micromechanical
