@@ -143,7 +143,7 @@ contains
 
       if (params%damage_law == DAMAGE_DISPLACEMENT) then
          ! damage first (eq 39), then the response at that damage (the statements are shared with
-         ! the UMAT's path for the simplified model, interphase_umat_simplified: one source)
+         ! the UMAT's two paths, interphase_umat_cohesive_path.inc: one source)
          include 'interphase_displacement_damage.inc'
          form_response = .true.
       else
