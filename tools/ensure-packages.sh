@@ -3,12 +3,15 @@
 #   freefem++   (FreeFem++: RVE coefficient tables and their tests)
 #   gnuplot-nox (gnuplot: PNG plots of the driver and of the tables)
 #   pkgconf     (pkg-config: the test of the installed interphase.pc)
+#   valgrind    (callgrind: the Debug suite's check of the UMAT's dispatch, umat_dispatch, and
+#               tools/bench-ratios.sh's instruction counts)
 #   python3-numpy, python3-scipy, python3-matplotlib, python3-pytest (the Python package
 #   drivers/python/interphase, its examples and its tests), checked as modules of Debian's
 #   /usr/bin/python3 (another python3 first on PATH, e.g. pyenv's, does not see Debian's packages)
 #   flang-19 and libomp-19-dev (LLVM flang 19 with its OpenMP: the second compiler of
 #               tools/run-tests.sh; asked for by name only, not by default)
-# Usage: tools/ensure-packages.sh [freefem] [gnuplot] [pkgconfig] [numpy] [scipy] [matplotlib] [pytest] [flang]
+# Usage: tools/ensure-packages.sh [freefem] [gnuplot] [pkgconfig] [valgrind] [numpy] [scipy] [matplotlib] [pytest]
+#        [flang]
 #        (default: freefem gnuplot)
 # Never fails: where a package cannot be installed it says so, and the parts that need it
 # skip with their own clear message.
@@ -16,9 +19,9 @@ set -u
 want=("$@")
 [ ${#want[@]} -eq 0 ] && want=(freefem gnuplot)
 
-declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot [pkgconfig]=pkg-config [flang]=flang-new-19)
+declare -A cmd_of=([freefem]=FreeFem++ [gnuplot]=gnuplot [pkgconfig]=pkg-config [valgrind]=valgrind [flang]=flang-new-19)
 declare -A module_of=([numpy]=numpy [scipy]=scipy [matplotlib]=matplotlib [pytest]=pytest)
-declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox [pkgconfig]=pkgconf [numpy]=python3-numpy [scipy]=python3-scipy
+declare -A pkg_of=([freefem]=freefem++ [gnuplot]=gnuplot-nox [pkgconfig]=pkgconf [valgrind]=valgrind [numpy]=python3-numpy [scipy]=python3-scipy
                    [matplotlib]=python3-matplotlib [pytest]=python3-pytest [flang]="flang-19 libomp-19-dev")
 debian_python=/usr/bin/python3
 

@@ -16,7 +16,7 @@ jobs=$(nproc 2>/dev/null || echo 2)
 
 # flang is installed before the first build: the gfortran builds' one-file Abaqus source check
 # (abaqus_user_file_compiles) compiles with every supported compiler found at configure time
-bash "$here/tools/ensure-packages.sh" freefem gnuplot pkgconfig numpy scipy matplotlib pytest flang
+bash "$here/tools/ensure-packages.sh" freefem gnuplot pkgconfig valgrind numpy scipy matplotlib pytest flang
 
 # suite <compiler> <name prefix of the build directories>
 suite() {
