@@ -322,14 +322,17 @@ contains
    !> `word`, the first word of a group in parentheses (`content`, blanks trimmed) as
    !> `foreign_unit` reads a unit: up to a blank, tab, comma or semicolon, with blanks around a
    !> '/' joined to it (`J / m^2` is `J/m^2`), a negative power after a blank too, as a product
-   !> (`J m^-2` is `J.m^-2`), and a UTF-8 superscript two or three written 2 or 3
-   !> (`kJ/m²` is `kJ/m2`); `rest` true when a blank or tab and more words follow it.
-   pure subroutine unit_word(content, word, rest)
-      character(len=*), intent(in) :: content
+   !> (`J m^-2` is `J.m^-2`), and UTF-8 superscripts as their plain forms (`plain_superscripts`:
+   !> `kJ/m²` is `kJ/m2`, `J m⁻²` is `J.m^-2`); `rest` true when a blank or tab and more words
+   !> follow it.
+   pure subroutine unit_word(raw_content, word, rest)
+      character(len=*), intent(in) :: raw_content
       character(len=:), allocatable, intent(out) :: word
       logical, intent(out) :: rest
       character(len=1), parameter :: TAB = achar(9)
+      character(len=:), allocatable :: content
       integer :: i, next
+      content = plain_superscripts(raw_content)
       word = ''
       rest = .false.
       i = 1
@@ -352,19 +355,6 @@ contains
             end if
             i = next
             cycle
-         case (char(194))
-            ! the superscripts two and three (U+00B2, U+00B3)
-            if (i < len(content)) then
-               if (content(i + 1:i + 1) == char(178)) then
-                  word = word//'2'
-                  i = i + 2
-                  cycle
-               else if (content(i + 1:i + 1) == char(179)) then
-                  word = word//'3'
-                  i = i + 2
-                  cycle
-               end if
-            end if
          end select
          word = word//content(i:i)
          i = i + 1
@@ -385,6 +375,48 @@ contains
          if (len(text) > 0) ends_with_slash = text(len(text):len(text)) == '/'
       end function ends_with_slash
    end subroutine unit_word
+
+   !> `text` with the UTF-8 superscripts a unit is written with in their plain forms: the
+   !> superscript minus (U+207B) as `^-`, the superscript digits (U+00B9, U+00B2, U+00B3,
+   !> U+2070, U+2074 to U+2079) as the digits (`m⁻²` is `m^-2`, `m²` is `m2`, `m⁻¹` is `m^-1`).
+   !> A superscript digit after a caret stays a power: `m^-2` and `m⁻²` read alike.
+   pure function plain_superscripts(text) result(plain)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: plain
+      integer :: i, b2, b3
+      plain = ''
+      i = 1
+      do while (i <= len(text))
+         if (text(i:i) == char(194) .and. i < len(text)) then
+            ! U+00B2, U+00B3, U+00B9: C2 B2, C2 B3, C2 B9
+            b2 = ichar(text(i + 1:i + 1))
+            if (b2 == 178 .or. b2 == 179) then
+               plain = plain//achar(iachar('0') + b2 - 176)
+               i = i + 2
+               cycle
+            else if (b2 == 185) then
+               plain = plain//'1'
+               i = i + 2
+               cycle
+            end if
+         else if (text(i:i) == char(226) .and. i + 2 <= len(text)) then
+            ! U+2070 to U+207B: E2 81 B0 to E2 81 BB (U+2071 to U+2073 are not digits)
+            b2 = ichar(text(i + 1:i + 1))
+            b3 = ichar(text(i + 2:i + 2))
+            if (b2 == 129 .and. (b3 == 176 .or. (b3 >= 180 .and. b3 <= 185))) then
+               plain = plain//achar(iachar('0') + b3 - 176)
+               i = i + 3
+               cycle
+            else if (b2 == 129 .and. b3 == 187) then
+               plain = plain//'^-'
+               i = i + 3
+               cycle
+            end if
+         end if
+         plain = plain//text(i:i)
+         i = i + 1
+      end do
+   end function plain_superscripts
 
    !> G_cI, G_cII (N/mm) and their D-derivatives from the loaded R-curve at D: STATUS_OK,
    !> STATUS_RCURVE_NOT_LOADED, or STATUS_RCURVE_OUT_OF_RANGE when D lies outside the file's
