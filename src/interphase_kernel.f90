@@ -166,74 +166,9 @@ contains
       end if
    end subroutine update_point
 
-
-
-
-   !> The fracture-mechanics law: D from g = 0, the response at that D (at(which)%r, the root
-   !> search's last evaluation, read in place), and dD/ds. Where the crack ran to b, or had
-   !> reached it (D = 1), the response is the caller's to form (`broken`: from c, dc and the trial
-   !> slip it returns).
-   pure subroutine fracture_update(params, old, s_n, st, ntens, d, at, which, dd_ds, grows, status, broken, c, &
-         dc, slip_trial, dslip_dd)
-      type(law_params_type), intent(in) :: params
-      type(interface_state_type), intent(in) :: old
-      real(dp), intent(in) :: s_n, st(2)
-      integer, intent(in) :: ntens
-      real(dp), intent(out) :: d                      !! damage at the end of the increment
-      !> the root search's evaluations (grow_crack): at(which)%r is the response at d (unless broken)
-      type(growth_point_type), intent(out) :: at(2)
-      integer, intent(out) :: which                   !! 1 or 2 (0 where broken)
-      real(dp), intent(out) :: dd_ds(3)               !! dD/ds (0 unless the crack grows)
-      logical, intent(out) :: grows                   !! the crack grows to D < 1: dd_ds may be non-zero
-      integer, intent(out) :: status
-      !> the crack ran to b (D = 1): no response is set, the caller forms it by `respond` (without
-      !> D-derivatives) from c, dc at D = 1 and the trial slip from D_n
-      logical, intent(out) :: broken
-      type(coefficient_set_type), intent(out) :: c, dc     !! at D = 1 where broken
-      real(dp), intent(out) :: slip_trial(2), dslip_dd(2)     !! lambda_trial, its D-slope, where broken
-
-      type(crack_load_type) :: load
-      real(dp) :: d_n, denominator, numerator(3)
-      integer :: j, nt
-
-      nt = ntens - 1
-      d_n = max(old%d, params%d0)                     ! the initial crack a0 = D0 b
-      dd_ds = 0.0_dp
-      grows = .false.
-      broken = .false.
-      if (d_n < 1.0_dp) then
-         load%s_n = s_n
-         load%st = st
-         load%slip_old = old%slip
-         call grow_crack(params, d_n, load, ntens, d, status, at, which)
-         if (status /= STATUS_OK) return
-         if (which /= 0) then
-            ! dD/ds from g(D, s, lambda(D, s)) = 0 while the crack grows
-            grows = d > d_n .and. d < 1.0_dp
-            if (grows) then
-               numerator = at(which)%g_s
-               denominator = at(which)%g_d
-               do j = 1, nt
-                  numerator = numerator + at(which)%g_lam(j)*at(which)%r%dlam_ds(j, :)
-                  denominator = denominator + at(which)%g_lam(j)*at(which)%r%dlam_dd(j)
-               end do
-               if (abs(denominator) > 0.0_dp) dd_ds(1:ntens) = -numerator(1:ntens)/denominator
-            end if
-            return
-         end if
-      else
-         ! the crack has reached b: D stays (grow_crack's own first test, made here before its
-         ! call, which such a point then does not pay)
-         d = d_n
-         which = 0
-         load%m_from = 0.0_dp
-      end if
-      ! D = 1: the crack ran to b in the increment, or had reached it before
-      broken = .true.
-      call coefficient_values_at(params, d, c, dc, status)
-      if (status /= STATUS_OK) return
-      call growth_trial_slip(params%growth_slip, d_n, load%m_from, d, c, dc, old%slip, slip_trial, dslip_dd)
-   end subroutine fracture_update
+   ! the fracture-mechanics law's step (one source with the UMAT's 2-D paths,
+   ! interphase_umat_cohesive_path.inc)
+   include 'interphase_fracture_update.inc'
 
    ! the separation's range test, here where the compiler inlines it (interphase_finite's, from
    ! the same source)
