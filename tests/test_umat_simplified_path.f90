@@ -1,17 +1,27 @@
-!> The UMAT's paths for the simplified and the micromechanical model (interphase_umat_simplified,
-!> interphase_umat_micromechanical) against its general path, bit for bit, over many random
-!> materials, histories and host inputs.
+!> The UMAT's four 2-D paths, the simplified and the micromechanical model with the
+!> displacement-driven law (interphase_umat_simplified, interphase_umat_micromechanical) and with
+!> the fracture-mechanics law (interphase_umat_simplified_fracture,
+!> interphase_umat_micromechanical_fracture), against its general path, bit for bit, over many
+!> random materials, histories and host inputs.
 !>
 !> Every call is made twice from the same inputs: with the material's PROPS without options
-!> (NPROPS = 9 for the simplified model, 8 for the micromechanical one, a 2-D cohesive element:
-!> the calls the paths may take) and with the same PROPS followed by the growth-slip option
-!> constant at its default, 0 (NPROPS one more: the same material, which only the general path
-!> serves). STRESS, DDSDDE, STATEV (every slot of NSTATV), SSE, SPD and PNEWDT, and the message
-!> the call reports (its count, severity and text), must agree bit for bit.
+!> (NPROPS = 9 for the simplified model, 8 for the micromechanical one, 13 and 12 with the
+!> fracture law, a 2-D cohesive element: the calls the paths may take) and with the same PROPS
+!> followed by the growth-slip option constant at its default, 0 (NPROPS one more: the same
+!> material, which only the general path serves). STRESS, DDSDDE, STATEV (every slot of NSTATV),
+!> SSE, SPD and PNEWDT, and the message the call reports (its count, severity and text), must
+!> agree bit for bit. Each path is also asked directly which calls it takes: every call the
+!> general path accepts for a material a path is for (its model and law, no options, mu, G_cI and
+!> G_cII not -0) must be that path's.
 !>
 !> Materials: half simplified, half micromechanical (the built-in table, or the custom table: the
-!> paper's, loaded from the source tree after part 0).
-!> Part 0, the micromechanical model on the custom table before one is loaded: refused by both.
+!> paper's, loaded from the source tree after part 0); half with the displacement-driven law,
+!> half with the fracture law (initial crack D0 mostly 1e-4 to 0.5, sometimes 1e-30 to 1e-5 or
+!> within 1e-15 of 1; the constant R-curve with G_cI, G_cII from 0.03 to 30 times K s0^2, the
+!> equivalent R-curve, or, after part 0, the tabulated R-curve of a file written here, which
+!> covers D up to 0.9 only, with s0 then drawn to suit its toughness).
+!> Part 0, the micromechanical model on the custom table and the fracture law on the tabulated
+!> R-curve before either is loaded: refused by both.
 !> Part 1, histories: NMATERIALS random materials (mu exactly 0, tiny or up to 1.5; s0 and sf
 !> over three decades with sf/s0 from 1 + 2 eps to 100; K_N, K_T over six decades), each with a
 !> random history of NSTEPS steps built from segments that reach every regime: intact loading,
@@ -24,8 +34,8 @@
 !> NSTATV 4 to 8 with the slots beyond 4 random (left alone by both paths).
 !> Part 3, refused calls: one input of a valid call spoilt (NaN, Inf or out of range STRAN,
 !> DSTRAN, STRESS, SSE, SPD; a separation beyond 1e20 mm; STATEV's D, slip or regime; NSTATV;
-!> NDI, NSHR; each PROPS value, -0 for mu and the table selector included): both report the same,
-!> and leave the same.
+!> NDI, NSHR; each PROPS value, -0 for mu and the table selector included; the fracture law's
+!> D0, R-curve selector and G_c, -0 included): both report the same, and leave the same.
 !>
 !> A failure prints the material, the step and what differed; the program ends with exit
 !> status 1. It prints what it covered.
@@ -38,15 +48,33 @@ program test_umat_simplified_path
    use interphase_abaqus_interfaces, only: umat
    use interphase_umat_simplified, only: simplified_cohesive_path => cohesive_path
    use interphase_umat_micromechanical, only: micromechanical_cohesive_path => cohesive_path
+   use interphase_umat_simplified_fracture, only: simplified_fracture_path => cohesive_path
+   use interphase_umat_micromechanical_fracture, only: micromechanical_fracture_path => cohesive_path
    use interphase_micro_coefficients, only: load_custom_table
+   use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
-   use interphase_test_support, only: source_path
+   use interphase_test_support, only: source_path, scratch_path
    use host_recorder, only: recorder_reset, recorded_count, recorded_severity, recorded_message
    implicit none
 
-   integer, parameter :: NMATERIALS = 6000, NSTEPS = 60, NSINGLE = 40000, NSPOILT = 12000, NUNLOADED = 200
+   integer, parameter :: NMATERIALS = 12000, NSTEPS = 60, NSINGLE = 80000, NSPOILT = 24000, NUNLOADED = 200
    !> The largest NSTATV the test passes.
    integer, parameter :: NSTATV_MAX = 8
+   !> The most PROPS without options (the simplified model with the fracture law).
+   integer, parameter :: NP_MAX = 13
+   !> The paths, by the NPROPS of their materials: 9, 8, 13, 12.
+   integer, parameter :: PATH_NP(4) = [9, 8, 13, 12]
+   character(len=*), parameter :: PATH_NAME(4) = [character(len=33) :: 'simplified, displacement law', &
+      'micromechanical, displacement law', 'simplified, fracture law', 'micromechanical, fracture law']
+   !> The tabulated R-curve's file: D (-), G_cI, G_cII (N/mm per unit crack area), rising, covering
+   !> D up to 0.9 only (a D0 beyond it, or a crack grown beyond it, is refused by both paths); and
+   !> the toughness the tabulated materials' s0 is drawn for (N/mm).
+   real(dp), parameter :: RCURVE_ROWS(3, 4) = reshape([0.0_dp, 0.005_dp, 0.0085_dp, 0.3_dp, 0.006_dp, 0.010_dp, &
+      0.6_dp, 0.008_dp, 0.013_dp, 0.9_dp, 0.009_dp, 0.015_dp], [3, 4])
+   real(dp), parameter :: RCURVE_GC(2) = [0.005_dp, 0.0085_dp]
+   !> the micromechanical model's stiffness scale for G_c and s0 (MPa/mm): the paper's K_N, K_T,
+   !> which the built-in table's stiffnesses are of the order of
+   real(dp), parameter :: MICRO_K(2) = [544000.0_dp/1127.0_dp, 32000.0_dp/161.0_dp]
 
    !> Everything one UMAT call reads and writes that the test varies or compares.
    type :: call_type
@@ -61,32 +89,40 @@ program test_umat_simplified_path
 
    integer(int64) :: seed = 20261206_int64
    integer :: nfailed = 0, ncalls = 0, nrefused = 0
-   !> calls the paths take (asked directly, on a copy of the inputs), and calls the general path
-   !> accepts that a path could take (mu not -0): the test compares the two paths only if the
-   !> first is a large share of the second
-   integer :: ntaken = 0, ntakeable = 0
-   !> the current material's NPROPS without options (9: simplified, 8: micromechanical), and the
-   !> stiffness scale (MPa/mm) of the random incoming STRESS
+   !> calls each path takes (asked directly, on a copy of the inputs), and calls the general path
+   !> accepts that the path is for (its model and law, mu, G_cI, G_cII not -0): each path must
+   !> take all of them
+   integer :: ntaken(4) = 0, ntakeable(4) = 0
+   !> the current material's NPROPS without options (9: simplified, 8: micromechanical, 13 and 12
+   !> with the fracture law), and the stiffness scale (MPa/mm) of the random incoming STRESS
    integer :: np = 9
    real(dp) :: stiffness(2) = 1.0_dp
-   !> calls of each model (simplified, micromechanical), and of the micromechanical model on the
-   !> custom table; of those, accepted
-   integer :: nmodel(2) = 0, nmodel_ok(2) = 0, ncustom = 0, ncustom_ok = 0
+   !> the tabulated R-curve is loaded (part 0 is over): random materials may draw it
+   logical :: rcurve_ready = .false.
+   !> calls of each path's materials (PATH_NP's order), of the micromechanical model on the
+   !> custom table, and of the fracture law on each R-curve (constant, equivalent, tabulated); of
+   !> those, accepted
+   integer :: nmodel(4) = 0, nmodel_ok(4) = 0, ncustom = 0, ncustom_ok = 0, nrcurve(3) = 0, nrcurve_ok(3) = 0
    integer :: status
    character(len=MESSAGE_LEN) :: message
    !> coverage: accepted steps of part 1 ending in each regime, growing, reaching D = 1, holds,
    !> reversals, round-off steps
    integer :: nregime(REGIME_INTACT:REGIME_SLIP) = 0, ngrowth = 0, nbroken = 0, nhold = 0, nreversal = 0, &
-      nroundoff = 0, nclosing = 0, nsingle_ok = 0
-   integer :: imat, k
-   real(dp) :: props(9)
+      nroundoff = 0, nclosing = 0, nsingle_ok = 0, ngrowth_fracture = 0, nbroken_fracture = 0
+   integer :: imat, k, unit
+   real(dp) :: props(NP_MAX)
 
-   ! ---- part 0: the custom table before one is loaded ---------------------------------------
+   ! ---- part 0: the custom table and the tabulated R-curve before either is loaded --------------
    do k = 1, NUNLOADED
       props = random_props()
       props(1) = 2.0_dp
+      props(2) = 1.0_dp
       props(8) = 1.0_dp
       np = 8
+      call single_call(k, props)
+   end do
+   do k = 1, NUNLOADED
+      props = random_props(tabulated=.true.)
       call single_call(k, props)
    end do
    call load_custom_table(source_path('tables/paper.dat'), status, message)
@@ -94,6 +130,16 @@ program test_umat_simplified_path
       write (error_unit, '(a)') 'test_umat_simplified_path: '//trim(message)
       error stop 1
    end if
+   open (newunit=unit, file=scratch_path('path_test_rcurve.txt'), status='replace', action='write')
+   write (unit, '(a)') '# D  G_cI  G_cII (N/mm per unit crack area)'
+   write (unit, '(3es25.17)') RCURVE_ROWS
+   close (unit)
+   call load_rcurve(scratch_path('path_test_rcurve.txt'), status, message)
+   if (status /= STATUS_OK) then
+      write (error_unit, '(a)') 'test_umat_simplified_path: '//trim(message)
+      error stop 1
+   end if
+   rcurve_ready = .true.
 
    ! ---- part 1: histories -----------------------------------------------------------------
    do imat = 1, NMATERIALS
@@ -120,22 +166,31 @@ program test_umat_simplified_path
    write (output_unit, '(a,6(i0,a))') 'test_umat_simplified_path: ', ngrowth, ' growing, ', nbroken, &
       ' at D = 1, ', nreversal, ' reversals, ', nhold, ' holds, ', nroundoff, ' round-off steps, ', nclosing, &
       ' closings'
+   write (output_unit, '(a,2(i0,a))') 'test_umat_simplified_path: fracture law: ', ngrowth_fracture, &
+      ' growing, ', nbroken_fracture, ' at D = 1'
    write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: single calls: ', nsingle_ok, ' of ', NSINGLE, &
       ' accepted'
-   write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: the paths took ', ntaken, ' of the ', &
-      ntakeable, ' calls the general path accepts'
-   write (output_unit, '(a,2(i0,a,i0,a))') 'test_umat_simplified_path: simplified: ', nmodel(1), ' calls (', &
-      nmodel_ok(1), ' accepted), micromechanical: ', nmodel(2), ' calls (', nmodel_ok(2), ' accepted)'
+   do k = 1, size(PATH_NP)
+      write (output_unit, '(a,5(i0,a))') 'test_umat_simplified_path: '//trim(PATH_NAME(k))//' (NPROPS = ', &
+         PATH_NP(k), '): ', nmodel(k), ' calls (', nmodel_ok(k), ' accepted), the path took ', ntaken(k), &
+         ' of the ', ntakeable(k), ' it is for'
+   end do
    write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: custom table: ', ncustom, ' calls (', &
       ncustom_ok, ' accepted)'
+   write (output_unit, '(a,3(i0,a,i0,a))') 'test_umat_simplified_path: R-curves: constant ', nrcurve(1), ' calls (', &
+      nrcurve_ok(1), ' accepted), equivalent ', nrcurve(2), ' (', nrcurve_ok(2), '), tabulated ', nrcurve(3), ' (', &
+      nrcurve_ok(3), ')'
    write (output_unit, '(a,i0,a)') 'test_umat_simplified_path: ', nfailed, ' differences'
    if (nfailed > 0) error stop 1
-   ! (every accepted call with mu other than -0 is the path's: a decision that stopped taking calls
-   ! would leave the test comparing the general path with itself)
-   if (ntaken /= ntakeable .or. ntaken < NMATERIALS) then
-      write (error_unit, '(a)') 'test_umat_simplified_path: the path did not take every call it should'
-      error stop 1
-   end if
+   ! (every accepted call a path is for is the path's: a decision that stopped taking calls would
+   ! leave the test comparing the general path with itself)
+   do k = 1, size(PATH_NP)
+      if (ntaken(k) /= ntakeable(k) .or. ntaken(k) < NMATERIALS/4) then
+         write (error_unit, '(a)') 'test_umat_simplified_path: the path for the '//trim(PATH_NAME(k))// &
+            ' did not take every call it should'
+         error stop 1
+      end if
+   end do
 
 contains
 
@@ -181,14 +236,20 @@ contains
 
    ! ---- materials and calls -------------------------------------------------------------------
 
-   !> The PROPS of a random material with the displacement-driven law: the simplified model's nine,
-   !> or (half of them) the micromechanical model's eight, p(9) then unused; sets np and the
-   !> stiffness scale.
-   function random_props() result(p)
-      real(dp) :: p(9)
-      real(dp) :: r
-      logical :: micro
+   !> The PROPS of a random material: the simplified model's nine, or (half of them) the
+   !> micromechanical model's eight, with the displacement-driven law, or (half of them) with the
+   !> fracture law's four constants after them (13 or 12); the values beyond np unused. Sets np and
+   !> the stiffness scale. `tabulated`: the fracture law on the tabulated R-curve (else drawn only
+   !> once it is loaded).
+   function random_props(tabulated) result(p)
+      logical, intent(in), optional :: tabulated
+      real(dp) :: p(NP_MAX)
+      real(dp) :: r, k_scale(2)
+      logical :: micro, fracture
+      integer :: nm, rcurve
       micro = chance(0.5_dp)
+      fracture = chance(0.5_dp)
+      if (present(tabulated)) fracture = .true.
       p(1) = 1.0_dp
       p(2) = 1.0_dp
       r = uniform()
@@ -206,12 +267,51 @@ contains
       p(8) = 10.0_dp**between(0.0_dp, 6.0_dp)
       p(9) = 10.0_dp**between(0.0_dp, 6.0_dp)
       stiffness = p(8:9)
+      p(10:NP_MAX) = 0.0_dp
       np = 9
+      k_scale = p(8:9)
       if (micro) then
          ! the built-in table mostly, the custom one (once loaded) in a third of them
          p(1) = 2.0_dp
          p(8) = merge(1.0_dp, 0.0_dp, chance(1.0_dp/3.0_dp))
          np = 8
+         k_scale = MICRO_K
+      end if
+      if (.not. fracture) return
+      ! the fracture law: PROPS(nm + 1:nm + 4) = D0, the R-curve selector, G_cI, G_cII (N/mm)
+      p(2) = 2.0_dp
+      nm = np
+      np = nm + 4
+      r = uniform()
+      if (r < 0.05_dp) then
+         ! (tiny, not below 1e-30: at D0 below about 1e-150 the general path's closed-crack release
+         ! slopes overflow, (m'/m)**2 with m = D ufbar: a fault of the law, not of the paths)
+         p(nm + 1) = 10.0_dp**between(-30.0_dp, -5.0_dp)
+      else if (r < 0.1_dp) then
+         p(nm + 1) = 1.0_dp - 10.0_dp**between(-15.0_dp, -2.0_dp)
+      else
+         p(nm + 1) = 10.0_dp**between(-4.0_dp, log10(0.5_dp))
+      end if
+      r = uniform()
+      if (r < 0.45_dp) then
+         rcurve = 1
+      else if (r < 0.7_dp .or. .not. rcurve_ready) then
+         rcurve = 2
+      else
+         rcurve = 3
+      end if
+      if (present(tabulated)) rcurve = 3
+      p(nm + 2) = real(rcurve, dp)
+      if (rcurve == 1) then
+         ! G_c from 0.03 to 30 times K s0^2: cracks that grow at once, later, or only when broken
+         p(nm + 3) = k_scale(1)*p(4)**2*10.0_dp**between(-1.5_dp, 1.5_dp)
+         p(nm + 4) = k_scale(2)*p(6)**2*10.0_dp**between(-1.5_dp, 1.5_dp)
+      else if (rcurve == 3) then
+         ! s0 drawn for the file's toughness instead (the same spread of G_c/(K s0^2))
+         p(4) = sqrt(RCURVE_GC(1)/k_scale(1)*10.0_dp**between(-1.5_dp, 1.5_dp))
+         p(5) = sf_from(p(4))
+         p(6) = sqrt(RCURVE_GC(2)/k_scale(2)*10.0_dp**between(-1.5_dp, 1.5_dp))
+         p(7) = sf_from(p(6))
       end if
    end function random_props
 
@@ -258,15 +358,15 @@ contains
       c%message = recorded_message
    end subroutine call_umat
 
-   !> The call with PROPS p (NPROPS = 9) and with p and the default growth-slip option (NPROPS = 10):
-   !> on return `c` holds the first's results; a difference is reported as a failure.
+   !> The call with PROPS p(1:np) and with p(1:np) and the default growth-slip option (NPROPS one
+   !> more): on return `c` holds the first's results; a difference is reported as a failure.
    subroutine compare_paths(c, p, where)
       type(call_type), intent(inout) :: c
-      real(dp), intent(in) :: p(9)
+      real(dp), intent(in) :: p(NP_MAX)
       character(len=*), intent(in) :: where
       type(call_type) :: reference
       character(len=16) :: from, to
-      integer :: m
+      integer :: m, rcurve
       reference = c
       call count_taken(c, p(1:np))
       call call_umat(c, p(1:np))
@@ -277,18 +377,25 @@ contains
       call replace_text(reference%message, trim(from)//' ', trim(to)//' ')
       ncalls = ncalls + 1
       if (c%reported > 0) nrefused = nrefused + 1
-      m = merge(2, 1, np == 8)
+      m = findloc(PATH_NP, np, dim=1)
       nmodel(m) = nmodel(m) + 1
       if (c%reported == 0) nmodel_ok(m) = nmodel_ok(m) + 1
-      if (np == 8 .and. same_bits([p(1), p(8)], [2.0_dp, 1.0_dp])) then
+      if ((np == 8 .or. np == 12) .and. same_bits([p(1), p(8)], [2.0_dp, 1.0_dp])) then
          ncustom = ncustom + 1
          if (c%reported == 0) ncustom_ok = ncustom_ok + 1
+      end if
+      if (np >= 12 .and. same_bits([p(2)], [2.0_dp])) then
+         rcurve = findloc([1.0_dp, 2.0_dp, 3.0_dp], p(np - 2), dim=1)
+         if (rcurve > 0) then
+            nrcurve(rcurve) = nrcurve(rcurve) + 1
+            if (c%reported == 0) nrcurve_ok(rcurve) = nrcurve_ok(rcurve) + 1
+         end if
       end if
       if (.not. same_call(c, reference)) then
          nfailed = nfailed + 1
          if (nfailed <= 20) then
             write (error_unit, '(a)') 'test_umat_simplified_path: '//where//': the paths differ'
-            write (error_unit, '(a,9es25.17)') '  PROPS ', p(1:np)
+            write (error_unit, '(a,13es25.17)') '  PROPS ', p(1:np)
             write (error_unit, '(a,2es25.17,a,2es25.17)') '  STRESS ', c%stress(1:2), ' general ', reference%stress(1:2)
             write (error_unit, '(a,4es25.17)') '  DDSDDE ', c%ddsdde(1:2, 1:2)
             write (error_unit, '(a,4es25.17)') '  general', reference%ddsdde(1:2, 1:2)
@@ -302,31 +409,53 @@ contains
       end if
    end subroutine compare_paths
 
-   !> Whether a path takes the call (on a copy of its inputs), counted against the calls the
-   !> general path accepts on a 2-D cohesive element with the material's NPROPS without options
-   !> (9: simplified, 8: micromechanical) and mu not -0, the ones the paths are for (their
-   !> decision: interphase_umat_cohesive_path.inc).
+   !> Whether the path for the material's NPROPS without options (PATH_NP) takes the call (on a
+   !> copy of its inputs), counted against the calls the general path accepts on a 2-D cohesive
+   !> element for the material that path is for (its model and law selectors; mu, and with the
+   !> fracture law G_cI and G_cII, not -0: accepted by the checks, not by the paths' one-pass
+   !> test), the ones it must take (its decision: interphase_umat_cohesive_path.inc).
    subroutine count_taken(c, p)
       type(call_type), intent(in) :: c
       real(dp), intent(in) :: p(:)
       type(call_type) :: copy, general
-      logical :: taken
+      logical :: taken, its_material
+      integer :: m
+      real(dp), parameter :: SELECTORS(2, 4) = reshape([1.0_dp, 1.0_dp, 2.0_dp, 1.0_dp, 1.0_dp, 2.0_dp, &
+         2.0_dp, 2.0_dp], [2, 4])
+      m = findloc(PATH_NP, size(p), dim=1)
       copy = c
-      if (size(p) == 9) then
+      select case (m)
+      case (1)
          call simplified_cohesive_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
             copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
             copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
-      else
+      case (2)
          call micromechanical_cohesive_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
             copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
             copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
-      end if
-      if (taken) ntaken = ntaken + 1
+      case (3)
+         call simplified_fracture_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
+            copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
+      case default
+         call micromechanical_fracture_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
+            copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
+      end select
+      if (taken) ntaken(m) = ntaken(m) + 1
       general = c
       call call_umat(general, [p, 0.0_dp])
-      if (general%reported == 0 .and. c%ndi == 1 .and. c%nshr == 1 .and. c%ntens == 2 .and. &
-         transfer(p(3), 0_int64) /= transfer(-0.0_dp, 0_int64)) ntakeable = ntakeable + 1
+      its_material = same_bits(p(1:2), SELECTORS(:, m)) .and. .not. minus_zero(p(3))
+      if (m >= 3) its_material = its_material .and. .not. (minus_zero(p(size(p) - 1)) .or. minus_zero(p(size(p))))
+      if (general%reported == 0 .and. c%ndi == 1 .and. c%nshr == 1 .and. c%ntens == 2 .and. its_material) &
+         ntakeable(m) = ntakeable(m) + 1
    end subroutine count_taken
+
+   !> x is -0.
+   pure logical function minus_zero(x)
+      real(dp), intent(in) :: x
+      minus_zero = transfer(x, 0_int64) == transfer(-0.0_dp, 0_int64)
+   end function minus_zero
 
    !> text with its first `from` replaced by `to`.
    subroutine replace_text(text, from, to)
@@ -357,7 +486,7 @@ contains
    !> closing at the current shear, a break to D = 1.
    subroutine run_history(imat, p)
       integer, intent(in) :: imat
-      real(dp), intent(in) :: p(9)
+      real(dp), intent(in) :: p(NP_MAX)
       type(call_type) :: c
       real(dp) :: target(2), s(2), d_old
       integer :: step, nseg, kind, i
@@ -414,6 +543,10 @@ contains
             nregime(nint(c%statev(SV_REGIME))) = nregime(nint(c%statev(SV_REGIME))) + 1
             if (c%statev(SV_DAMAGE) > d_old) ngrowth = ngrowth + 1
             if (c%statev(SV_DAMAGE) >= 1.0_dp) nbroken = nbroken + 1
+            if (np >= 12) then
+               if (c%statev(SV_DAMAGE) > d_old) ngrowth_fracture = ngrowth_fracture + 1
+               if (c%statev(SV_DAMAGE) >= 1.0_dp) nbroken_fracture = nbroken_fracture + 1
+            end if
          end do
       end do
    end subroutine run_history
@@ -423,7 +556,7 @@ contains
    !> A random admissible incoming state and increment for material p.
    subroutine random_state(c, p)
       type(call_type), intent(out) :: c
-      real(dp), intent(in) :: p(9)
+      real(dp), intent(in) :: p(NP_MAX)
       real(dp) :: r
       integer :: i
       c%nstatv = pick(NSTATV_REQUIRED, NSTATV_MAX)
@@ -460,7 +593,7 @@ contains
 
    subroutine single_call(k, p)
       integer, intent(in) :: k
-      real(dp), intent(in) :: p(9)
+      real(dp), intent(in) :: p(NP_MAX)
       type(call_type) :: c
       character(len=64) :: where
       call random_state(c, p)
@@ -474,11 +607,11 @@ contains
    !> A random state with one input spoilt.
    subroutine spoilt_call(k, p)
       integer, intent(in) :: k
-      real(dp), intent(in) :: p(9)
+      real(dp), intent(in) :: p(NP_MAX)
       type(call_type) :: c
-      real(dp) :: q(9), bad
+      real(dp) :: q(NP_MAX), bad
       character(len=64) :: where
-      integer :: which, k2
+      integer :: which, k2, nm
       call random_state(c, p)
       q = p
       select case (pick(1, 4))
@@ -492,7 +625,7 @@ contains
       case default
          bad = sgn()*1.0e60_dp
       end select
-      which = pick(1, 16)
+      which = pick(1, 17)
       select case (which)
       case (1)
          k2 = pick(1, 2)
@@ -538,7 +671,7 @@ contains
          k2 = pick(4, np)
          q(k2) = bad
          if (chance(0.5_dp)) q(k2) = between(1.0e-30_dp, 1.0e-21_dp)
-         if (np == 8 .and. k2 == 8) then
+         if ((np == 8 .or. np == 12) .and. k2 == 8) then
             ! the micromechanical model's table selector: -0, 2, 0.5 or 1 + ulp (the draw in a
             ! statement of its own: every build makes it)
             if (chance(0.5_dp)) then
@@ -557,10 +690,61 @@ contains
       case (15)       ! the selectors
          k2 = pick(1, 2)
          q(k2) = real(pick(0, 3), dp)
-         ! (the micromechanical model's eight PROPS read as the simplified model's: the reference's
-         ! ninth value, the option 0, would then be its K_T, a different refusal; not compared)
-         if (np == 8 .and. k2 == 1 .and. nint(q(1)) == 1) q(1) = 0.0_dp
+         ! (the micromechanical model's eight PROPS read as the simplified model's, or its twelve with
+         ! the fracture law: the reference's last value, the option 0, would then be its K_T or G_cII,
+         ! a different refusal; not compared)
+         if ((np == 8 .or. np == 12) .and. k2 == 1 .and. nint(q(1)) == 1) q(1) = 0.0_dp
          if (chance(0.3_dp)) q(k2) = q(k2) + 0.5_dp
+      case (17)       ! the fracture law's constants: D0, the R-curve selector, G_cI, G_cII
+         if (np < 12) then
+            q(2) = 2.0_dp            ! the fracture law without its four constants
+         else
+            nm = np - 4
+            select case (pick(1, 4))
+            case (1)    ! D0 at or beyond the ends of (0, 1), -0 or below 0
+               select case (pick(1, 5))
+               case (1)
+                  q(nm + 1) = 0.0_dp
+               case (2)
+                  q(nm + 1) = -0.0_dp
+               case (3)
+                  q(nm + 1) = 1.0_dp
+               case (4)
+                  q(nm + 1) = nearest(1.0_dp, 1.0_dp)
+               case default
+                  q(nm + 1) = -between(0.0_dp, 1.0_dp)
+               end select
+            case (2)    ! the R-curve selector: 0, 4, 1.5, -0, or another of 1, 2, 3 (with G_c that
+               ! suit it or not)
+               select case (pick(1, 5))
+               case (1)
+                  q(nm + 2) = 0.0_dp
+               case (2)
+                  q(nm + 2) = 4.0_dp
+               case (3)
+                  q(nm + 2) = 1.5_dp
+               case (4)
+                  q(nm + 2) = -0.0_dp
+               case default
+                  q(nm + 2) = real(pick(1, 3), dp)
+               end select
+            case (3)    ! G_c: -0 (accepted by the checks, not by the paths' one-pass test), +0, or
+               ! a value (wrong for the equivalent and the tabulated R-curve)
+               k2 = nm + 2 + pick(1, 2)
+               select case (pick(1, 3))
+               case (1)
+                  q(k2) = -0.0_dp
+               case (2)
+                  q(k2) = 0.0_dp
+               case default
+                  q(k2) = 10.0_dp**between(-3.0_dp, 0.0_dp)
+               end select
+            case default    ! G_c out of its window or not a number
+               k2 = nm + 2 + pick(1, 2)
+               q(k2) = bad
+               if (chance(0.5_dp)) q(k2) = between(1.0e-30_dp, 1.0e-21_dp)
+            end select
+         end if
       case default    ! the 3-D element: the general path's
          c%nshr = 2
          c%ntens = 3

@@ -33,18 +33,21 @@ module interphase_umat_micromechanical
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    use interphase_damage, only: damage_terms_type
    use interphase_response, only: response_type, slip_measure
+   use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
    implicit none
    private
    public :: cohesive_path
 
-   !> The material the path serves: the micromechanical model, no option constants.
-   integer, parameter :: PATH_MODEL = MODEL_MICROMECHANICAL, PATH_NPROPS = NPROPS_MICROMECHANICAL
+   !> The material the path serves: the micromechanical model, the displacement-driven law, no
+   !> option constants.
+   integer, parameter :: PATH_MODEL = MODEL_MICROMECHANICAL, PATH_DAMAGE_LAW = DAMAGE_DISPLACEMENT, &
+      PATH_NPROPS = NPROPS_MICROMECHANICAL
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the simplified model's.
    integer, parameter, public :: PATH_NTENS = 2
 
 contains
 
-   ! (the decision, the update and the procedures they call: one source for both paths)
+   ! (the decision, the update and the procedures they call: one source for the four paths)
    include 'interphase_umat_cohesive_path.inc'
 
 end module interphase_umat_micromechanical

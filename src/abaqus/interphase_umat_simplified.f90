@@ -9,8 +9,9 @@
 !> writes the general path's outputs (cohesive_outputs, pack_statev), compiled here for that
 !> material alone: NTENS and the option parameters are constants, the response is inlined, the
 !> parameters and the state never leave this unit. The decision and the update are one source
-!> with the micromechanical model's path (interphase_umat_cohesive_path.inc, included in
-!> interphase_umat_micromechanical too). The numbers are the general path's, bit for bit
+!> with the other three paths (interphase_umat_cohesive_path.inc, included in
+!> interphase_umat_micromechanical and in the fracture law's interphase_umat_simplified_fracture
+!> and interphase_umat_micromechanical_fracture too). The numbers are the general path's, bit for bit
 !> (tests/test_umat_simplified_path.f90); every other call, and every call the general path
 !> would refuse, is left to the general path, which decides and reports. No module data; pure.
 module interphase_umat_simplified
@@ -38,12 +39,15 @@ module interphase_umat_simplified
    use interphase_rcurve, only: rcurve_loaded, rcurve_covers, rcurve_coverage
    use interphase_damage, only: damage_terms_type
    use interphase_response, only: response_type, slip_measure
+   use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
    implicit none
    private
    public :: cohesive_path
 
-   !> The material the path serves: the simplified model, no option constants.
-   integer, parameter :: PATH_MODEL = MODEL_SIMPLIFIED, PATH_NPROPS = NPROPS_SIMPLIFIED
+   !> The material the path serves: the simplified model, the displacement-driven law, no option
+   !> constants.
+   integer, parameter :: PATH_MODEL = MODEL_SIMPLIFIED, PATH_DAMAGE_LAW = DAMAGE_DISPLACEMENT, &
+      PATH_NPROPS = NPROPS_SIMPLIFIED
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1). (The 3-D element in the
    !> same unit, measured: the response is then called from two places and no longer inlined,
    !> which costs the 2-D path about 170 instructions a call; docs/performance.md.)
@@ -51,7 +55,7 @@ module interphase_umat_simplified
 
 contains
 
-   ! (the decision, the update and the procedures they call: one source for both paths)
+   ! (the decision, the update and the procedures they call: one source for the four paths)
    include 'interphase_umat_cohesive_path.inc'
 
 end module interphase_umat_simplified
