@@ -25,6 +25,15 @@ module interphase_finite
    real(dp), parameter, public :: PROPS_VALUE_MIN = 1.0e-20_dp
    real(dp), parameter, public :: PROPS_VALUE_MAX = 1.0e20_dp
 
+   !> Smallest positive damage D = a/b at which a crack's coefficients and release rates are
+   !> formed (-): the micromechanical tables' T^f ~ 1/D and its D-derivatives ~ 1/D^2, 1/D^3 stay
+   !> far from overflow (interphase_micro_coefficients fails below it), and so do the fracture
+   !> law's release-rate slopes, which hold (m'/m)^2 ~ 1/D^2 with m = D ufbar (both models;
+   !> interphase_fracture). The fracture law's initial crack D0 must be at least this
+   !> (interphase_params): 1e-30 b is no physical length for any brick, and such a crack's release
+   !> rates, which scale with D, could not make it grow.
+   real(dp), parameter, public :: D_MIN_CRACK = 1.0e-30_dp
+
    !> Exponent field of an IEEE binary64 number; all ones means Inf or NaN.
    integer(int64), parameter :: EXPONENT_MASK = int(z'7FF0000000000000', int64)
    !> All bits but the sign: iand(bits of x, MAGNITUDE_MASK) are the bits of |x|.

@@ -16,7 +16,7 @@ module interphase_micro_coefficients
       STATUS_TABLE_INTERPOLANT, status_message, message_path, STATUS_SPLINE_OUT_OF_RANGE, &
       STATUS_SPLINE_NONFINITE_ARGUMENT, STATUS_SPLINE_TOO_FEW_POINTS
    use interphase_coefficients, only: coefficient_set_type, NO_COEFFICIENTS
-   use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK
+   use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, D_MIN_CRACK
    use interphase_spline, only: spline_type, spline_build, spline_export, &
       cubic_locate, cubic_eval, guide_build
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
@@ -49,8 +49,8 @@ module interphase_micro_coefficients
    !> Points per interval between two rows at which `check_interpolant` evaluates the interpolant.
    integer, parameter :: INTERPOLANT_SAMPLES = 16
 
-   !> Smallest positive damage at which the tables' coefficients are evaluated (-).
-   real(dp), parameter, public :: D_MIN_CRACK = 1.0e-30_dp
+   !> Smallest positive damage at which the tables' coefficients are evaluated (-): interphase_finite's
+   public :: D_MIN_CRACK
 
    !> The custom table: written once by `load_custom_table` before any update, then read only.
    integer, protected :: custom_variable = 0

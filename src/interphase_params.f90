@@ -3,7 +3,8 @@
 !> symbol, the value and the admissible range; nothing is clamped.
 module interphase_params
    use, intrinsic :: iso_fortran_env, only: int64
-   use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, PROPS_VALUE_MIN, PROPS_VALUE_MAX
+   use interphase_finite, only: EXPONENT_MASK, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, PROPS_VALUE_MIN, PROPS_VALUE_MAX, &
+      D_MIN_CRACK
    use interphase_kinds, only: dp
    use interphase_real_text, only: real_text
    use interphase_layout, only: PROP_MODEL, PROP_DAMAGE_LAW, PROP_MU, PROP_S0_N, PROP_SF_N, PROP_S0_T, &
@@ -23,7 +24,8 @@ module interphase_params
    public :: law_params_type, from_props, decode_props, params_from_values, set_fracture_params, set_options, to_props, &
       refuse_umat_options, constants_count
    ! (for the UMAT, which includes decode_props' source: interphase_decode_props.inc)
-   public :: check_constants, decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS
+   public :: check_constants, decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS, &
+      D0_MIN_BITS
 
    ! PROPS_VALUE_MIN, PROPS_VALUE_MAX: the admissible magnitudes of the dimensional PROPS
    ! (interphase_finite, where the table readers, built before this module, take them too)
@@ -62,6 +64,8 @@ module interphase_params
    !> as signed integers, negative ones (sign bit set) lie below every positive one, +Inf and NaN
    !> above every finite one; so a test on the bits is a range test raising no FP exception.
    integer(int64), parameter :: WINDOW_MIN_BITS = transfer(PROPS_VALUE_MIN, 0_int64)
+   !> the fracture law's smallest initial crack D0, D_MIN_CRACK, as bits (accept_constants)
+   integer(int64), parameter :: D0_MIN_BITS = transfer(D_MIN_CRACK, 0_int64)
    integer(int64), parameter :: WINDOW_MAX_BITS = transfer(PROPS_VALUE_MAX, 0_int64)
    !> The largest selector code (PROPS values that select a model, a law, a table, an option)
    !> and its bit pattern.
@@ -433,11 +437,13 @@ contains
       status = STATUS_OK
       ! (d0 compared with 1 only once it is known finite: a NaN D0 raises no invalid-operation
       ! exception, which a build trapping them would stop on)
-      valid = finite_above(d0, 0.0_dp)
+      valid = finite_at_least(d0, D_MIN_CRACK)
       if (valid) valid = d0 < 1.0_dp
       if (.not. valid) then
+         ! (below D_MIN_CRACK, 1e-30, the coefficients' and the release rates' D-slopes of so short
+         ! a crack would overflow: interphase_finite)
          call reject(STATUS_BAD_D0, base + LFM_D0, 'D0 = a0/b', d0, &
-            'must lie in (0, 1): the fracture-mechanics law needs an initial crack', status, message)
+            'must lie in [1e-30, 1): the fracture-mechanics law needs an initial crack', status, message)
          return
       end if
       if (rcurve /= RCURVE_CONSTANT .and. rcurve /= RCURVE_EQUIVALENT .and. rcurve /= RCURVE_TABULATED) then

@@ -284,8 +284,8 @@ contains
       np = nm + 4
       r = uniform()
       if (r < 0.05_dp) then
-         ! (tiny, not below 1e-30: at D0 below about 1e-150 the general path's closed-crack release
-         ! slopes overflow, (m'/m)**2 with m = D ufbar: a fault of the law, not of the paths)
+         ! (tiny, down to the smallest D0 the PROPS checks accept, D_MIN_CRACK = 1e-30; the spoilt
+         ! calls try below it)
          p(nm + 1) = 10.0_dp**between(-30.0_dp, -5.0_dp)
       else if (r < 0.1_dp) then
          p(nm + 1) = 1.0_dp - 10.0_dp**between(-15.0_dp, -2.0_dp)
@@ -701,8 +701,8 @@ contains
          else
             nm = np - 4
             select case (pick(1, 4))
-            case (1)    ! D0 at or beyond the ends of (0, 1), -0 or below 0
-               select case (pick(1, 5))
+            case (1)    ! D0 at or beyond the ends of [1e-30, 1), -0 or below 0
+               select case (pick(1, 7))
                case (1)
                   q(nm + 1) = 0.0_dp
                case (2)
@@ -711,6 +711,11 @@ contains
                   q(nm + 1) = 1.0_dp
                case (4)
                   q(nm + 1) = nearest(1.0_dp, 1.0_dp)
+               case (5)
+                  ! below the smallest initial crack, D_MIN_CRACK = 1e-30
+                  q(nm + 1) = 10.0_dp**between(-300.0_dp, -30.0_dp)
+               case (6)
+                  q(nm + 1) = nearest(1.0e-30_dp, -1.0_dp)
                case default
                   q(nm + 1) = -between(0.0_dp, 1.0_dp)
                end select

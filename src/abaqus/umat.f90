@@ -43,7 +43,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       STATUS_BAD_TIME_INCREMENT, STATUS_BAD_NTENS, STATUS_BAD_OPTION, STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED, &
       STATUS_BAD_STATE, STATUS_BAD_NSTATV, separation_text
    use interphase_params, only: law_params_type, HOST_VALUE_MAX, HOST_INCREMENT_MAX, SLIP_MAX, check_constants, &
-      decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS
+      decode_options, DEFAULT_PARAMS, WINDOW_MIN_BITS, WINDOW_MAX_BITS, TWO_BITS, THREE_BITS, &
+      D0_MIN_BITS
    use interphase_layer, only: layer_map_type
    use interphase_layout, only: HOST_CALCULIX, NPROPS_SIMPLIFIED, NPROPS_MICROMECHANICAL, NPROPS_FRACTURE_EXTRA, &
       OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, MODEL_MICROMECHANICAL, DAMAGE_FRACTURE, PROP_TABLE, TABLE_CUSTOM_CODE, &
