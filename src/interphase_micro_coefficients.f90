@@ -10,7 +10,7 @@ module interphase_micro_coefficients
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    use interphase_real_text, only: es_field
-   use interphase_logarithm, only: ln_positive, ln_positive_block
+   use interphase_logarithm, only: ln_positive_block
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
       STATUS_TABLE_INTERPOLANT, status_message, message_path, STATUS_SPLINE_OUT_OF_RANGE, &
@@ -76,6 +76,9 @@ contains
    ! from the same source)
    include 'interphase_binary64_bits.inc'
    include 'interphase_is_finite.inc'
+   ! the logarithm of the interpolation variable, here where the compiler inlines it (interphase_logarithm's
+   ! ln_positive, from the same source: the same operations as ln_positive_block's)
+   include 'interphase_ln_positive.inc'
    ! (the interpolation variable, from interphase_rve_table's source)
    include 'interphase_crack_variable.inc'
 
