@@ -10,7 +10,7 @@ module interphase_micro_coefficients
    use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    use interphase_real_text, only: es_field
-   use interphase_logarithm, only: ln_positive, ln_positive_block
+   use interphase_logarithm, only: ln_positive_block
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_status, only: STATUS_OK, STATUS_TABLE_NOT_LOADED, STATUS_BAD_COEFFICIENTS, MESSAGE_LEN, &
       STATUS_TABLE_INTERPOLANT, status_message, message_path, STATUS_SPLINE_OUT_OF_RANGE, &
@@ -21,9 +21,10 @@ module interphase_micro_coefficients
       cubic_locate, cubic_eval, guide_build
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
       interpolation_data, N_COEFFICIENTS, TABLE_SPLINE_METHOD, VARIABLE_DAMAGE, IC_K_N, IC_K_T, &
-      IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_DTF, IC_UFBAR
+      IC_KC_N, IC_KC_T, IC_DBAR_N, IC_DBAR_T, IC_TC_T, IC_SC_N, IC_DTF, IC_UFBAR, state_columns
    use interphase_default_table, only: DEFAULT_TABLE_KNOTS, DEFAULT_TABLE_COEF, DEFAULT_TABLE_SOURCE, &
-      DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS
+      DEFAULT_TABLE_VARIABLE, DEFAULT_TABLE_GUIDE, DEFAULT_TABLE_GUIDE_SCALE, DEFAULT_TABLE_GUIDE_STEPS, &
+      DEFAULT_TABLE_STATE_COLUMNS, DEFAULT_TABLE_STATE_STATUS
    implicit none
    private
    public :: micro_coefficients, micro_values, micro_ufbar, load_custom_table, custom_table_source, table_coefficients, &
@@ -52,6 +53,9 @@ module interphase_micro_coefficients
    !> Smallest positive damage at which the tables' coefficients are evaluated (-): interphase_finite's
    public :: D_MIN_CRACK
 
+   !> The bit pattern of D = 1, the broken state (the intact state D = +0 is the pattern 0).
+   integer(int64), parameter :: BROKEN_BITS = int(z'3FF0000000000000', int64)
+
    !> The custom table: written once by `load_custom_table` before any update, then read only.
    integer, protected :: custom_variable = 0
    real(dp), allocatable, protected :: custom_knots(:)
@@ -60,6 +64,10 @@ module interphase_micro_coefficients
    integer, allocatable, protected :: custom_guide(:)
    real(dp), protected :: custom_guide_scale = 0.0_dp
    integer, protected :: custom_guide_steps = 0
+   !> its interpolated columns at D = +0 and D = 1, and the status of each (interphase_rve_table's
+   !> state_columns; STATUS_TABLE_NOT_LOADED until a table is loaded)
+   real(dp), protected :: custom_state_columns(N_COEFFICIENTS, 2) = 0.0_dp
+   integer, protected :: custom_state_status(2) = STATUS_TABLE_NOT_LOADED
    character(len=:), allocatable, protected :: custom_source
 
 contains
@@ -68,6 +76,9 @@ contains
    ! from the same source)
    include 'interphase_binary64_bits.inc'
    include 'interphase_is_finite.inc'
+   ! the logarithm of the interpolation variable, here where the compiler inlines it (interphase_logarithm's
+   ! ln_positive, from the same source: the same operations as ln_positive_block's)
+   include 'interphase_ln_positive.inc'
    ! (the interpolation variable, from interphase_rve_table's source)
    include 'interphase_crack_variable.inc'
 
@@ -304,6 +315,25 @@ contains
       real(dp), intent(in) :: d                              !! damage D = a/b
       type(coefficient_set_type), intent(out) :: coef        !! coefficients at D
       integer, intent(out) :: status
+      integer(int64) :: d_bits
+      integer :: state
+      d_bits = binary64_bits(d)
+      if (d_bits == 0_int64 .or. d_bits == BROKEN_BITS) then
+         ! the intact (D = +0) or the broken state (D = 1), where most of a structure's interface
+         ! points are: the table's columns there, evaluated once (state_columns, with the operations
+         ! of table_values: the same bits, the same status), without the logarithm, the crack
+         ! variable's division or the interval search
+         state = merge(1, 2, d_bits == 0_int64)
+         if (table == TABLE_CUSTOM_CODE) then
+            ! (STATUS_TABLE_NOT_LOADED before a custom table is loaded)
+            status = custom_state_status(state)
+            if (status == STATUS_OK) call columns_set(custom_state_columns(:, state), d, coef)
+         else
+            status = DEFAULT_TABLE_STATE_STATUS(state)
+            if (status == STATUS_OK) call columns_set(DEFAULT_TABLE_STATE_COLUMNS(:, state), d, coef)
+         end if
+         return
+      end if
       if (table == TABLE_CUSTOM_CODE) then
          if (.not. allocated(custom_coef)) then
             status = STATUS_TABLE_NOT_LOADED
@@ -334,7 +364,7 @@ contains
       real(dp), intent(in) :: d
       type(coefficient_set_type), intent(out) :: coef
       integer, intent(out) :: status
-      real(dp) :: x, dx_dd, d2x_dd2, t, v(N_COEFFICIENTS), tf
+      real(dp) :: x, dx_dd, d2x_dd2, t, v(N_COEFFICIENTS)
       integer :: interval, candidate, j, k
       if (d > 0.0_dp .and. d < D_MIN_CRACK) then
          status = STATUS_BAD_COEFFICIENTS
@@ -346,10 +376,21 @@ contains
          v(j) = coef_table(j, 0, interval) + t*(coef_table(j, 1, interval) &
             + t*(coef_table(j, 2, interval) + t*coef_table(j, 3, interval)))
       end do
+      call columns_set(v, d, coef)
+   end subroutine table_values
+
+   !> The coefficient set at D from the interpolated columns v there (IC_* order): T^f = (D T^f)/D
+   !> (-huge at D = 0, where it has no finite value) and C^f_T from the reciprocity relation
+   !> (reciprocal_cf), the values of form_sets.
+   pure subroutine columns_set(v, d, coef)
+      real(dp), intent(in) :: v(N_COEFFICIENTS)              !! the columns at D
+      real(dp), intent(in) :: d                              !! damage D = a/b (-)
+      type(coefficient_set_type), intent(out) :: coef
+      real(dp) :: tf
       tf = -huge(1.0_dp)
       if (d > 0.0_dp) tf = v(IC_DTF)/d
       coef = as_set(v, tf, reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR)))
-   end subroutine table_values
+   end subroutine columns_set
 
    !> ufbar(D) alone, for the slip measure m = D ufbar (interphase_response): the column IC_UFBAR
    !> of micro_coefficients' set, at the same interval in the same Horner form, so the same
@@ -766,6 +807,7 @@ contains
          return
       end if
       call guide_build(knots, guide, guide_scale, guide_steps)
+      call state_columns(table%variable, knots, coef, custom_state_columns, custom_state_status)
       call move_alloc(knots, custom_knots)
       call move_alloc(coef, custom_coef)
       call move_alloc(guide, custom_guide)

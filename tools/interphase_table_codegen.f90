@@ -9,7 +9,7 @@ program interphase_table_codegen
    use interphase_kinds, only: dp
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message
    use interphase_rve_table, only: rve_table_type, read_rve_table, check_rve_table, &
-      interpolation_data, N_COEFFICIENTS, TABLE_SPLINE_METHOD
+      interpolation_data, N_COEFFICIENTS, TABLE_SPLINE_METHOD, state_columns
    use interphase_spline, only: spline_type, spline_build, spline_export, guide_build
    implicit none
 
@@ -20,6 +20,8 @@ program interphase_table_codegen
    integer, allocatable :: guide(:)
    real(dp) :: guide_scale
    integer :: guide_steps
+   real(dp) :: columns(N_COEFFICIENTS, 2)
+   integer :: state_status(2)
    integer :: status, n, unit, ios, i, line_unit
    character(len=MESSAGE_LEN) :: message
    character(len=1024) :: line
@@ -95,6 +97,16 @@ program interphase_table_codegen
          write (unit, '(a,i0,a,i0,a)') '      INTERVAL_'//int_text(i)//'], [', N_COEFFICIENTS, ', 4, ', n - 1, '])'
       end if
    end do
+   ! the columns at the intact (D = +0) and the broken state (D = 1), evaluated here once with the
+   ! library's own operations (interphase_rve_table's state_columns), and their statuses
+   call state_columns(table%variable, knots, coef, columns, state_status)
+   write (unit, '(a)') '   !> The interpolated columns at D = +0 (intact) and D = 1 (broken), and the status of each'
+   write (unit, '(a)') '   !> (state_columns of interphase_rve_table; 0 where the status is not STATUS_OK).'
+   call write_array('STATE_COLUMNS', reshape(columns, [size(columns)]), public=.false.)
+   write (unit, '(a,i0,a,i0,a)') '   real(dp), parameter, public :: DEFAULT_TABLE_STATE_COLUMNS(', N_COEFFICIENTS, &
+      ', 2) = reshape(STATE_COLUMNS, [', N_COEFFICIENTS, ', 2])'
+   write (unit, '(a,i0,a,i0,a)') '   integer, parameter, public :: DEFAULT_TABLE_STATE_STATUS(2) = [', &
+      state_status(1), ', ', state_status(2), ']'
    write (unit, '(a)') 'end module interphase_default_table'
    close (unit)
 
