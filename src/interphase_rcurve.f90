@@ -234,8 +234,8 @@ contains
       do
          call next_parenthesised(comment, i, found, unit, name)
          if (.not. found) exit
-         ! its first word (up to a blank, comma or semicolon; blanks around a '/' and a UTF-8
-         ! superscript two or three as written: `J / m^2`, `kJ/m²`), lower case
+         ! its first word (up to a blank, comma or semicolon; blanks around a '/' and UTF-8
+         ! superscripts and minus signs as written: `J / m^2`, `kJ/m²`, `J m⁻²`), lower case
          call unit_word(unit, item, rest)
          item = to_lower(item)
          if (any(to_lower(name) == TOUGHNESS_NAMES) .and. is_quotient(item)) then
@@ -376,10 +376,12 @@ contains
       end function ends_with_slash
    end subroutine unit_word
 
-   !> `text` with the UTF-8 superscripts a unit is written with in their plain forms: the
-   !> superscript minus (U+207B) as `^-`, the superscript digits (U+00B9, U+00B2, U+00B3,
-   !> U+2070, U+2074 to U+2079) as the digits (`m⁻²` is `m^-2`, `m²` is `m2`, `m⁻¹` is `m^-1`).
-   !> A superscript digit after a caret stays a power: `m^-2` and `m⁻²` read alike.
+   !> `text` with the UTF-8 characters a unit is written with in their plain forms: the
+   !> superscript minus (U+207B) as `^-` (as `-` right after a caret: `m^⁻²` is `m^-2`), the
+   !> minus sign (U+2212) and the en dash (U+2013) of typeset text as `-`, the superscript digits
+   !> (U+00B9, U+00B2, U+00B3, U+2070, U+2074 to U+2079) as the digits (`m⁻²` and `m−²` are
+   !> `m^-2` and `m-2`, `m²` is `m2`), except a superscript one right after a letter, the power
+   !> one, which is dropped (`N/mm¹` is `N/mm`).
    pure function plain_superscripts(text) result(plain)
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: plain
@@ -395,20 +397,33 @@ contains
                i = i + 2
                cycle
             else if (b2 == 185) then
-               plain = plain//'1'
+               if (.not. after_letter(plain)) plain = plain//'1'
                i = i + 2
                cycle
             end if
          else if (text(i:i) == char(226) .and. i + 2 <= len(text)) then
-            ! U+2070 to U+207B: E2 81 B0 to E2 81 BB (U+2071 to U+2073 are not digits)
             b2 = ichar(text(i + 1:i + 1))
             b3 = ichar(text(i + 2:i + 2))
             if (b2 == 129 .and. (b3 == 176 .or. (b3 >= 180 .and. b3 <= 185))) then
+               ! U+2070, U+2074 to U+2079: E2 81 B0, E2 81 B4 to E2 81 B9 (U+2071 to U+2073 are not digits)
                plain = plain//achar(iachar('0') + b3 - 176)
                i = i + 3
                cycle
             else if (b2 == 129 .and. b3 == 187) then
+               ! U+207B: E2 81 BB
+               if (len(plain) > 0) then
+                  if (plain(len(plain):len(plain)) == '^') then
+                     plain = plain//'-'
+                     i = i + 3
+                     cycle
+                  end if
+               end if
                plain = plain//'^-'
+               i = i + 3
+               cycle
+            else if ((b2 == 136 .and. b3 == 146) .or. (b2 == 128 .and. b3 == 147)) then
+               ! U+2212 (E2 88 92), U+2013 (E2 80 93)
+               plain = plain//'-'
                i = i + 3
                cycle
             end if
@@ -416,6 +431,13 @@ contains
          plain = plain//text(i:i)
          i = i + 1
       end do
+   contains
+      pure logical function after_letter(so_far)
+         character(len=*), intent(in) :: so_far
+         after_letter = .false.
+         if (len(so_far) > 0) after_letter = verify(so_far(len(so_far):len(so_far)), &
+            'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ') == 0
+      end function after_letter
    end function plain_superscripts
 
    !> G_cI, G_cII (N/mm) and their D-derivatives from the loaded R-curve at D: STATUS_OK,
