@@ -87,7 +87,7 @@ extern "C" {
 #define INTERPHASE_STATUS_BAD_NSTATV 12                  /**< too few state variables (NSTATV, adapters) */
 #define INTERPHASE_STATUS_MODEL_UNAVAILABLE 13           /**< model not available in this build */
 #define INTERPHASE_STATUS_BAD_TABLE_SELECTOR 14          /**< micromechanical PROPS[7]: table not 0 or 1 */
-#define INTERPHASE_STATUS_BAD_D0 15                      /**< fracture law: initial crack D0 out of (0, 1) */
+#define INTERPHASE_STATUS_BAD_D0 15                      /**< fracture law: initial crack D0 not in 1e-30 <= D0 < 1 */
 #define INTERPHASE_STATUS_BAD_RCURVE 16                  /**< fracture law: R-curve selector not 1, 2 or 3 */
 #define INTERPHASE_STATUS_BAD_GC_I 17                    /**< fracture law: G_cI out of range */
 #define INTERPHASE_STATUS_BAD_GC_II 18                   /**< fracture law: G_cII out of range */

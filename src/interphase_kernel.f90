@@ -136,34 +136,11 @@ contains
          status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s(1:ntens))))
          return
       end if
-      s_n = s(1)
-      st(1) = s(2)
-      st(2) = 0.0_dp
-      if (ntens == 3) st(2) = s(3)
-
-      if (params%damage_law == DAMAGE_DISPLACEMENT) then
-         ! damage first (eq 39), then the response at that damage (the statements are shared with
-         ! the UMAT's two paths, interphase_umat_cohesive_path.inc: one source)
-         include 'interphase_displacement_damage.inc'
-         form_response = .true.
-      else
-         call fracture_update(params, old, s_n, st, ntens, d, at, which, dd_ds, grows, status, form_response, c, &
-            dc, slip_trial, dslip_dd)
-         if (status /= STATUS_OK) return
-      end if
-      ! the response at D: the displacement law's, and the fracture law's where the crack ran to b
-      ! (one call of the response in the update, which the compiler inlines)
-      if (form_response) then
-         call respond(params, c, dc, d, slip_trial, s_n, st, ntens, grows, r, status, dslip_dd)
-         if (status /= STATUS_OK) return
-      end if
-
-      if (form_response) then
-         call update_outputs(params, d, grows, dd_ds, ntens, r, traction, tangent, new, psi)
-      else
-         ! (the search's evaluation at D, where it is: not copied)
-         call update_outputs(params, d, grows, dd_ds, ntens, at(which)%r, traction, tangent, new, psi)
-      end if
+      ! the damage law's step, the response and the outputs (one source with the UMAT's 2-D paths)
+      ! (update_law: interphase_law_update.inc's name of the damage law, DAMAGE_*)
+      associate (update_law => params%damage_law)
+         include 'interphase_law_update.inc'
+      end associate
    end subroutine update_point
 
    ! the fracture-mechanics law's step (one source with the UMAT's 2-D paths,

@@ -117,8 +117,9 @@ for f in "${roots[@]}"; do visit "$f"; done
 # a source with its INCLUDE lines replaced by the files they name (src/*.inc: one source of the
 # procedures and statements included where the compiler must inline them), so that the one file
 # needs no other file. An INCLUDE line must name one file of src/ in quotes, alone on its line; an included
-# file may include others in turn (the UMAT's paths: src/interphase_umat_cohesive_path.inc), to a
-# depth of 2 (what else starts with INCLUDE is refused, not copied).
+# file may include others in turn (the UMAT's paths: src/interphase_umat_cohesive_path.inc
+# includes interphase_law_update.inc, which includes interphase_displacement_damage.inc), to a
+# depth of 3 (what else starts with INCLUDE is refused, not copied).
 expand_includes() {
    local line name lower depth=${2:-0}
    while IFS= read -r line || [ -n "$line" ]; do
@@ -134,8 +135,8 @@ expand_includes() {
             echo "make-user-file.sh: $1 includes '$name', which is not in src/" >&2
             return 1
          fi
-         if [ "$depth" -ge 2 ]; then
-            echo "make-user-file.sh: $1 includes '$name' at a depth beyond 2 (not supported)" >&2
+         if [ "$depth" -ge 3 ]; then
+            echo "make-user-file.sh: $1 includes '$name' at a depth beyond 3 (not supported)" >&2
             return 1
          fi
          echo "   ! ---- included from src/$name ----"

@@ -123,7 +123,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    ! every failure leaves this block with status, severity and message set (reported below,
    ! out of line, before STRESS, STATEV, DDSDDE, SSE or SPD are touched)
    update: block
-      ! (declared here, where their default initialisation runs: not on the two paths above)
+      ! (declared here, where their default initialisation runs: not on the paths above)
       type(law_params_type) :: params
       type(layer_map_type) :: map
       type(interface_state_type) :: old, new
