@@ -45,7 +45,7 @@ program test_umat_simplified_path
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_REQUIRED, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, REGIME_INTACT, &
       REGIME_OPEN, REGIME_STICK, REGIME_SLIP
-   use interphase_abaqus_interfaces, only: umat
+   use interphase_adapter_calls, only: call_umat_element
    use interphase_umat_simplified, only: simplified_cohesive_path => cohesive_path
    use interphase_umat_micromechanical, only: micromechanical_cohesive_path => cohesive_path
    use interphase_umat_simplified_fracture, only: simplified_fracture_path => cohesive_path
@@ -329,30 +329,11 @@ contains
    subroutine call_umat(c, p)
       type(call_type), intent(inout) :: c
       real(dp), intent(in) :: p(:)
-      real(dp) :: scd, rpl, ddsddt(3), drplde(3), drpldt, time(2), predef(1), dpred(1), coords(3), drot(3, 3), &
-         dfgrd(3, 3)
-      real(dp) :: tangent(c%ntens, c%ntens)
-      character(len=80) :: cmname
       integer :: n
       n = c%ntens
-      cmname = 'PATH_TEST'
-      scd = 0.0_dp
-      rpl = 0.0_dp
-      ddsddt = 0.0_dp
-      drplde = 0.0_dp
-      drpldt = 0.0_dp
-      time = 1.0_dp
-      predef = 0.0_dp
-      dpred = 0.0_dp
-      coords = 0.0_dp
-      drot = 0.0_dp
-      dfgrd = 0.0_dp
-      tangent = c%ddsdde(1:n, 1:n)
       call recorder_reset()
-      call umat(c%stress(1:n), c%statev(1:c%nstatv), tangent, c%sse, c%spd, scd, rpl, ddsddt(1:n), drplde(1:n), &
-         drpldt, c%stran(1:n), c%dstran(1:n), time, 1.0_dp, 0.0_dp, 0.0_dp, predef, dpred, cmname, c%ndi, &
-         c%nshr, n, c%nstatv, p, size(p), coords, drot, c%pnewdt, 1.0_dp, dfgrd, dfgrd, 1, 1, 1, 1, [1, 1, 0, 0], 1)
-      c%ddsdde(1:n, 1:n) = tangent
+      call call_umat_element(c%stress(1:n), c%statev(1:c%nstatv), c%ddsdde(1:n, 1:n), c%sse, c%spd, c%stran(1:n), &
+         c%dstran(1:n), c%ndi, c%nshr, p, c%pnewdt, 'PATH_TEST')
       c%reported = recorded_count
       c%severity = recorded_severity
       c%message = recorded_message

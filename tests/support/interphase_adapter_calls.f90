@@ -10,7 +10,8 @@ module interphase_adapter_calls
    use interphase_capi, only: interphase_update_c
    implicit none
    private
-   public :: umat_point_type, call_umat_point, vumat_block_type, vumat_block_init, call_vumat_block, call_capi
+   public :: umat_point_type, call_umat_point, call_umat_element, vumat_block_type, vumat_block_init, call_vumat_block, &
+      call_capi
 
    !> What one UMAT point carries from one increment to the next.
    type :: umat_point_type
@@ -41,13 +42,33 @@ contains
       real(dp), intent(in) :: props(:)
       real(dp), intent(in) :: ds(:)
       character(len=*), intent(in), optional :: cmname
-      real(dp) :: scd, rpl, ddsddt(3), drplde(3), drpldt, time(2), predef(1), dpred(1)
-      real(dp) :: coords(3), drot(3, 3), dfgrd(3, 3), tangent(p%ntens, p%ntens), pnewdt_in
-      character(len=80) :: name
+      real(dp) :: pnewdt_in
       integer :: n
       n = p%ntens
-      name = 'ADAPTER_CALLS'
-      if (present(cmname)) name = cmname
+      pnewdt_in = p%pnewdt
+      if (present(cmname)) then
+         call call_umat_element(p%stress(1:n), p%statev, p%ddsdde(1:n, 1:n), p%sse, p%spd, p%stran(1:n), ds(1:n), 1, &
+            n - 1, props, p%pnewdt, cmname)
+      else
+         call call_umat_element(p%stress(1:n), p%statev, p%ddsdde(1:n, 1:n), p%sse, p%spd, p%stran(1:n), ds(1:n), 1, &
+            n - 1, props, p%pnewdt, 'ADAPTER_CALLS')
+      end if
+      if (.not. (p%pnewdt < pnewdt_in)) p%stran(1:n) = p%stran(1:n) + ds(1:n)
+   end subroutine call_umat_point
+
+   !> One UMAT call with the arguments a test varies (NTENS = size(stress), NSTATV = size(statev),
+   !> NDI, NSHR and NPROPS = size(props) as given, so also inconsistent ones), the others neutral.
+   subroutine call_umat_element(stress, statev, ddsdde, sse, spd, stran, dstran, ndi, nshr, props, pnewdt, cmname)
+      real(dp), intent(inout) :: stress(:), statev(:), ddsdde(:, :), sse, spd, pnewdt
+      real(dp), intent(in) :: stran(:), dstran(:), props(:)
+      integer, intent(in) :: ndi, nshr
+      character(len=*), intent(in) :: cmname
+      real(dp) :: scd, rpl, ddsddt(size(stress)), drplde(size(stress)), drpldt, time(2), predef(1), dpred(1)
+      real(dp) :: coords(3), drot(3, 3), dfgrd(3, 3), tangent(size(stress), size(stress))
+      character(len=80) :: name
+      integer :: n
+      n = size(stress)
+      name = cmname
       scd = 0.0_dp
       rpl = 0.0_dp
       ddsddt = 0.0_dp
@@ -59,15 +80,12 @@ contains
       coords = 0.0_dp
       drot = 0.0_dp
       dfgrd = 0.0_dp
-      tangent = p%ddsdde(1:n, 1:n)
-      pnewdt_in = p%pnewdt
-      call umat(p%stress(1:n), p%statev, tangent, p%sse, p%spd, scd, rpl, ddsddt(1:n), drplde(1:n), &
-         drpldt, p%stran(1:n), ds(1:n), time, 1.0_dp, 0.0_dp, 0.0_dp, predef, dpred, name, 1, n - 1, n, &
-         NSTATV_REQUIRED, props, size(props), coords, drot, p%pnewdt, 1.0_dp, dfgrd, dfgrd, 1, 1, 1, 1, &
-         [1, 1, 0, 0], 1)
-      p%ddsdde(1:n, 1:n) = tangent
-      if (.not. (p%pnewdt < pnewdt_in)) p%stran(1:n) = p%stran(1:n) + ds(1:n)
-   end subroutine call_umat_point
+      tangent = ddsdde
+      call umat(stress, statev, tangent, sse, spd, scd, rpl, ddsddt, drplde, drpldt, stran, dstran, time, 1.0_dp, &
+         0.0_dp, 0.0_dp, predef, dpred, name, ndi, nshr, n, size(statev), props, size(props), coords, drot, pnewdt, &
+         1.0_dp, dfgrd, dfgrd, 1, 1, 1, 1, [1, 1, 0, 0], 1)
+      ddsdde = tangent
+   end subroutine call_umat_element
 
    !> A block of nblock intact points (no separation, zero energies) of density rho.
    subroutine vumat_block_init(b, nblock, nshr, rho)
