@@ -5,7 +5,10 @@
 !> CASE 1..8 runs one row of the table only (in the order printed: simplified + displacement
 !> law 2-D, 3-D, micromechanical + displacement law 2-D, 3-D, simplified + LFM 2-D, 3-D,
 !> micromechanical + LFM 2-D, 3-D), e.g. for an instruction count of one case under callgrind
-!> (tools/bench-ratios.sh).
+!> (tools/bench-ratios.sh). CASE 9..16 runs case CASE - 8 with the growth-slip option constant
+!> at its default appended to PROPS (NPROPS one more: the same material and the same numbers,
+!> through the UMAT's general path instead of the path of its own; tests/threads/
+!> check_umat_dispatch.sh, docs/performance.md); these rows are printed only when asked for.
 !>
 !> POINTS > 1 calls the UMAT as a host's element loop does: each increment updates POINTS points
 !> one after the other, each with its own STRESS, STATEV, STRAN and energies, and each replaying
@@ -91,7 +94,7 @@ program bench_umat
    if (nargs >= 2) runs = positive_argument(2, 'RUNS')
    if (nargs >= 3) then
       only_case = positive_argument(3, 'CASE')
-      if (only_case > 8) call fail('CASE (argument 3) must be 1..8, got '//int_to_string(only_case), usage=.true.)
+      if (only_case > 16) call fail('CASE (argument 3) must be 1..16, got '//int_to_string(only_case), usage=.true.)
    end if
    if (nargs >= 4) npoints = positive_argument(4, 'POINTS')
    increments = max(1, calls_per_run/(NSEGMENTS*npoints))
@@ -116,8 +119,10 @@ program bench_umat
    model = merge(MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, variant == 1 .or. variant == 3)
    law = merge(DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, variant <= 2)
    call set_props(model, law)
+   ! (cases 9..16: the same material with the growth-slip option at its default, the general path)
+   if (only_case > 8) props = [props, 0.0_dp]
    do ntens = 2, 3
-      if (only_case > 0 .and. only_case /= 2*(variant - 1) + ntens - 1) cycle
+      if (only_case > 0 .and. modulo(only_case - 1, 8) + 1 /= 2*(variant - 1) + ntens - 1) cycle
       do run = 1, runs
          if (npoints == 1) then
             call one_run(ntens, ns_per_call(run), checksum)
@@ -125,7 +130,10 @@ program bench_umat
             call host_run(ntens, npoints, ns_per_call(run), checksum)
          end if
       end do
-      if (ntens == 2) then
+      if (only_case > 8) then
+         write (output_unit, ROW_FORMAT) model_name(model, law), 'general '//merge('2-D', '3-D', ntens == 2), ntens, &
+            NSEGMENTS*increments*npoints, runs, minval(ns_per_call), median(ns_per_call), checksum
+      else if (ntens == 2) then
          write (output_unit, ROW_FORMAT) model_name(model, law), 'mixed 2-D', ntens, NSEGMENTS*increments*npoints, &
             runs, minval(ns_per_call), median(ns_per_call), checksum
       else

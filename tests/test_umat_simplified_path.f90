@@ -1,18 +1,19 @@
-!> The UMAT's four 2-D paths, the simplified and the micromechanical model with the
+!> The UMAT's eight paths, the simplified and the micromechanical model with the
 !> displacement-driven law (interphase_umat_simplified, interphase_umat_micromechanical) and with
 !> the fracture-mechanics law (interphase_umat_simplified_fracture,
-!> interphase_umat_micromechanical_fracture), against its general path, bit for bit, over many
-!> random materials, histories and host inputs.
+!> interphase_umat_micromechanical_fracture), each for the 2-D cohesive element and, the same
+!> names with _3d, for the 3-D one, against its general path, bit for bit, over many random
+!> materials, histories and host inputs, half of them on the 2-D element, half on the 3-D one.
 !>
 !> Every call is made twice from the same inputs: with the material's PROPS without options
 !> (NPROPS = 9 for the simplified model, 8 for the micromechanical one, 13 and 12 with the
-!> fracture law, a 2-D cohesive element: the calls the paths may take) and with the same PROPS
+!> fracture law, a 2-D or 3-D cohesive element: the calls the paths may take) and with the same PROPS
 !> followed by the growth-slip option constant at its default, 0 (NPROPS one more: the same
 !> material, which only the general path serves). STRESS, DDSDDE, STATEV (every slot of NSTATV),
 !> SSE, SPD and PNEWDT, and the message the call reports (its count, severity and text), must
 !> agree bit for bit. Each path is also asked directly which calls it takes: every call the
-!> general path accepts for a material a path is for (its model and law, no options, mu, G_cI and
-!> G_cII not -0) must be that path's.
+!> general path accepts for a material and element a path is for (its model and law, no options,
+!> mu, G_cI and G_cII not -0) must be that path's, and the other element's path must take none.
 !>
 !> Materials: half simplified, half micromechanical (the built-in table, or the custom table: the
 !> paper's, loaded from the source tree after part 0); half with the displacement-driven law,
@@ -25,7 +26,8 @@
 !> Part 1, histories: NMATERIALS random materials (mu exactly 0, tiny or up to 1.5; s0 and sf
 !> over three decades with sf/s0 from 1 + 2 eps to 100; K_N, K_T over six decades), each with a
 !> random history of NSTEPS steps built from segments that reach every regime: intact loading,
-!> damage growth, open, closed stick and slip, shear reversals (a slip much larger than the
+!> damage growth, open, closed stick and slip, shear reversals and, on the 3-D element, turns of
+!> the shear's direction (a slip much larger than the
 !> result: the return mapping's second step), holds and round-off-sized steps after a slip (the
 !> slip onset's round-off bound, docs/theory.md 'Slip onset'), closing at the slip, and breaking
 !> to D = 1.
@@ -34,7 +36,7 @@
 !> NSTATV 4 to 8 with the slots beyond 4 random (left alone by both paths).
 !> Part 3, refused calls: one input of a valid call spoilt (NaN, Inf or out of range STRAN,
 !> DSTRAN, STRESS, SSE, SPD; a separation beyond 1e20 mm; STATEV's D, slip or regime; NSTATV;
-!> NDI, NSHR; each PROPS value, -0 for mu and the table selector included; the fracture law's
+!> NDI, NSHR, NTENS; each PROPS value, -0 for mu and the table selector included; the fracture law's
 !> D0, R-curve selector and G_c, -0 included): both report the same, and leave the same.
 !>
 !> A failure prints the material, the step and what differed; the program ends with exit
@@ -50,6 +52,10 @@ program test_umat_simplified_path
    use interphase_umat_micromechanical, only: micromechanical_cohesive_path => cohesive_path
    use interphase_umat_simplified_fracture, only: simplified_fracture_path => cohesive_path
    use interphase_umat_micromechanical_fracture, only: micromechanical_fracture_path => cohesive_path
+   use interphase_umat_simplified_3d, only: simplified_cohesive_path_3d => cohesive_path
+   use interphase_umat_micromechanical_3d, only: micromechanical_cohesive_path_3d => cohesive_path
+   use interphase_umat_simplified_fracture_3d, only: simplified_fracture_path_3d => cohesive_path
+   use interphase_umat_micromechanical_fracture_3d, only: micromechanical_fracture_path_3d => cohesive_path
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
@@ -90,9 +96,10 @@ program test_umat_simplified_path
    integer(int64) :: seed = 20261206_int64
    integer :: nfailed = 0, ncalls = 0, nrefused = 0
    !> calls each path takes (asked directly, on a copy of the inputs), and calls the general path
-   !> accepts that the path is for (its model and law, mu, G_cI, G_cII not -0): each path must
-   !> take all of them
-   integer :: ntaken(4) = 0, ntakeable(4) = 0
+   !> accepts that the path is for (its model and law, mu, G_cI, G_cII not -0; its element, 2-D
+   !> or 3-D, the second index): each path must take all of them; calls a path took that were the
+   !> other element's path's (none may be)
+   integer :: ntaken(4, 2) = 0, ntakeable(4, 2) = 0, nwrong_element = 0
    !> the current material's NPROPS without options (9: simplified, 8: micromechanical, 13 and 12
    !> with the fracture law), and the stiffness scale (MPa/mm) of the random incoming STRESS
    integer :: np = 9
@@ -109,7 +116,7 @@ program test_umat_simplified_path
    !> reversals, round-off steps
    integer :: nregime(REGIME_INTACT:REGIME_SLIP) = 0, ngrowth = 0, nbroken = 0, nhold = 0, nreversal = 0, &
       nroundoff = 0, nclosing = 0, nsingle_ok = 0, ngrowth_fracture = 0, nbroken_fracture = 0
-   integer :: imat, k, unit
+   integer :: imat, k, e, unit
    real(dp) :: props(NP_MAX)
 
    ! ---- part 0: the custom table and the tabulated R-curve before either is loaded --------------
@@ -171,9 +178,9 @@ program test_umat_simplified_path
    write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: single calls: ', nsingle_ok, ' of ', NSINGLE, &
       ' accepted'
    do k = 1, size(PATH_NP)
-      write (output_unit, '(a,5(i0,a))') 'test_umat_simplified_path: '//trim(PATH_NAME(k))//' (NPROPS = ', &
-         PATH_NP(k), '): ', nmodel(k), ' calls (', nmodel_ok(k), ' accepted), the path took ', ntaken(k), &
-         ' of the ', ntakeable(k), ' it is for'
+      write (output_unit, '(a,7(i0,a))') 'test_umat_simplified_path: '//trim(PATH_NAME(k))//' (NPROPS = ', &
+         PATH_NP(k), '): ', nmodel(k), ' calls (', nmodel_ok(k), ' accepted), the 2-D path took ', ntaken(k, 1), &
+         ' of the ', ntakeable(k, 1), ' it is for, the 3-D path ', ntaken(k, 2), ' of ', ntakeable(k, 2)
    end do
    write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: custom table: ', ncustom, ' calls (', &
       ncustom_ok, ' accepted)'
@@ -185,12 +192,19 @@ program test_umat_simplified_path
    ! (every accepted call a path is for is the path's: a decision that stopped taking calls would
    ! leave the test comparing the general path with itself)
    do k = 1, size(PATH_NP)
-      if (ntaken(k) /= ntakeable(k) .or. ntaken(k) < NMATERIALS/4) then
-         write (error_unit, '(a)') 'test_umat_simplified_path: the path for the '//trim(PATH_NAME(k))// &
-            ' did not take every call it should'
-         error stop 1
-      end if
+      do e = 1, 2
+         if (ntaken(k, e) /= ntakeable(k, e) .or. ntaken(k, e) < NMATERIALS/8) then
+            write (error_unit, '(a,i0,a)') 'test_umat_simplified_path: the path for the '//trim(PATH_NAME(k))// &
+               ', NTENS = ', e + 1, ', did not take every call it should'
+            error stop 1
+         end if
+      end do
    end do
+   if (nwrong_element > 0) then
+      write (error_unit, '(a,i0,a)') 'test_umat_simplified_path: ', nwrong_element, &
+         ' calls taken by the path of the other element'
+      error stop 1
+   end if
 
 contains
 
@@ -377,9 +391,10 @@ contains
          if (nfailed <= 20) then
             write (error_unit, '(a)') 'test_umat_simplified_path: '//where//': the paths differ'
             write (error_unit, '(a,13es25.17)') '  PROPS ', p(1:np)
-            write (error_unit, '(a,2es25.17,a,2es25.17)') '  STRESS ', c%stress(1:2), ' general ', reference%stress(1:2)
-            write (error_unit, '(a,4es25.17)') '  DDSDDE ', c%ddsdde(1:2, 1:2)
-            write (error_unit, '(a,4es25.17)') '  general', reference%ddsdde(1:2, 1:2)
+            write (error_unit, '(a,i0)') '  NTENS ', c%ntens
+            write (error_unit, '(a,3es25.17,a,3es25.17)') '  STRESS ', c%stress, ' general ', reference%stress
+            write (error_unit, '(a,9es25.17)') '  DDSDDE ', c%ddsdde
+            write (error_unit, '(a,9es25.17)') '  general', reference%ddsdde
             write (error_unit, '(a,4es25.17)') '  STATEV ', c%statev(1:4)
             write (error_unit, '(a,4es25.17)') '  general', reference%statev(1:4)
             write (error_unit, '(a,3es25.17)') '  SSE, SPD, PNEWDT ', c%sse, c%spd, c%pnewdt
@@ -390,47 +405,78 @@ contains
       end if
    end subroutine compare_paths
 
-   !> Whether the path for the material's NPROPS without options (PATH_NP) takes the call (on a
-   !> copy of its inputs), counted against the calls the general path accepts on a 2-D cohesive
-   !> element for the material that path is for (its model and law selectors; mu, and with the
-   !> fracture law G_cI and G_cII, not -0: accepted by the checks, not by the paths' one-pass
-   !> test), the ones it must take (its decision: interphase_umat_cohesive_path.inc).
+   !> Whether the path for the material's NPROPS without options (PATH_NP) and the call's element
+   !> (NTENS = 3: the 3-D path, else the 2-D one) takes the call (on a copy of its inputs), counted
+   !> against the calls the general path accepts on that cohesive element for the material that
+   !> path is for (its model and law selectors; mu, and with the fracture law G_cI and G_cII, not
+   !> -0: accepted by the checks, not by the paths' one-pass test), the ones it must take (its
+   !> decision: interphase_umat_cohesive_path.inc); and that the other element's path does not take it.
    subroutine count_taken(c, p)
       type(call_type), intent(in) :: c
       real(dp), intent(in) :: p(:)
-      type(call_type) :: copy, general
+      type(call_type) :: general
       logical :: taken, its_material
-      integer :: m
+      integer :: m, e
       real(dp), parameter :: SELECTORS(2, 4) = reshape([1.0_dp, 1.0_dp, 2.0_dp, 1.0_dp, 1.0_dp, 2.0_dp, &
          2.0_dp, 2.0_dp], [2, 4])
       m = findloc(PATH_NP, size(p), dim=1)
-      copy = c
-      select case (m)
-      case (1)
-         call simplified_cohesive_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
-            copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
-      case (2)
-         call micromechanical_cohesive_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
-            copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
-      case (3)
-         call simplified_fracture_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
-            copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
-      case default
-         call micromechanical_fracture_path(size(p), p, copy%ndi, copy%nshr, copy%ntens, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:copy%ntens), copy%dstran(1:copy%ntens), &
-            copy%stress(1:copy%ntens), copy%ddsdde(1:copy%ntens, 1:copy%ntens), copy%sse, copy%spd, taken)
-      end select
-      if (taken) ntaken(m) = ntaken(m) + 1
+      e = merge(2, 1, c%ntens == 3)
+      taken = path_takes(m, e, c, p)
+      if (taken) ntaken(m, e) = ntaken(m, e) + 1
+      if (path_takes(m, 3 - e, c, p)) nwrong_element = nwrong_element + 1
       general = c
       call call_umat(general, [p, 0.0_dp])
       its_material = same_bits(p(1:2), SELECTORS(:, m)) .and. .not. minus_zero(p(3))
       if (m >= 3) its_material = its_material .and. .not. (minus_zero(p(size(p) - 1)) .or. minus_zero(p(size(p))))
-      if (general%reported == 0 .and. c%ndi == 1 .and. c%nshr == 1 .and. c%ntens == 2 .and. its_material) &
-         ntakeable(m) = ntakeable(m) + 1
+      if (general%reported == 0 .and. c%ndi == 1 .and. c%nshr == c%ntens - 1 .and. c%ntens == e + 1 &
+         .and. its_material) ntakeable(m, e) = ntakeable(m, e) + 1
    end subroutine count_taken
+
+   !> Whether path m (PATH_NP's order) for element e (1: 2-D, 2: 3-D) takes the call, asked on a
+   !> copy of its inputs.
+   logical function path_takes(m, e, c, p) result(taken)
+      integer, intent(in) :: m, e
+      type(call_type), intent(in) :: c
+      real(dp), intent(in) :: p(:)
+      type(call_type) :: copy
+      real(dp) :: ddsdde(c%ntens, c%ntens)   ! (contiguous: no temporary)
+      integer :: n
+      copy = c
+      n = copy%ntens
+      ddsdde = c%ddsdde(1:n, 1:n)
+      select case (m + 4*(e - 1))
+      case (1)
+         call simplified_cohesive_path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, copy%statev(1:copy%nstatv), &
+            copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, copy%sse, copy%spd, taken)
+      case (2)
+         call micromechanical_cohesive_path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
+            copy%sse, copy%spd, taken)
+      case (3)
+         call simplified_fracture_path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, copy%statev(1:copy%nstatv), &
+            copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, copy%sse, copy%spd, taken)
+      case (4)
+         call micromechanical_fracture_path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
+            copy%sse, copy%spd, taken)
+      case (5)
+         call simplified_cohesive_path_3d(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
+            copy%sse, copy%spd, taken)
+      case (6)
+         call micromechanical_cohesive_path_3d(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
+            copy%sse, copy%spd, taken)
+      case (7)
+         call simplified_fracture_path_3d(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
+            copy%sse, copy%spd, taken)
+      case default
+         call micromechanical_fracture_path_3d(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
+            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
+            copy%sse, copy%spd, taken)
+      end select
+   end function path_takes
 
    !> x is -0.
    pure logical function minus_zero(x)
@@ -462,24 +508,28 @@ contains
 
    ! ---- part 1 ----------------------------------------------------------------------------
 
-   !> A random history of one point: segments of steps towards random targets (closed or open,
-   !> within or beyond the strengths), reversals of the shear, holds, round-off-sized steps, a
-   !> closing at the current shear, a break to D = 1.
+   !> A random history of one point on a random element (2-D or 3-D): segments of steps towards
+   !> random targets (closed or open, within or beyond the strengths; on the 3-D element the shear
+   !> in a random direction, or turned from the current one), reversals of the shear, holds,
+   !> round-off-sized steps, a closing at the current shear, a break to D = 1.
    subroutine run_history(imat, p)
       integer, intent(in) :: imat
       real(dp), intent(in) :: p(NP_MAX)
       type(call_type) :: c
-      real(dp) :: target(2), s(2), d_old
-      integer :: step, nseg, kind, i
+      real(dp) :: target(3), s(3), d_old, shear
+      integer :: step, nseg, kind, i, n
       character(len=64) :: where
 
+      call random_element(c)
+      n = c%ntens
       c%nstatv = pick(NSTATV_REQUIRED, NSTATV_MAX)
       c%statev = 0.0_dp
       c%statev(NSTATV_REQUIRED + 1:) = [(between(-1.0_dp, 1.0_dp), i = NSTATV_REQUIRED + 1, NSTATV_MAX)]
       c%ddsdde = 0.0_dp
       step = 0
       do while (step < NSTEPS)
-         s = c%stran(1:2)
+         s = c%stran
+         target = 0.0_dp
          kind = pick(1, 9)
          ! (a break to D = 1 ends a point's interesting history: one segment in about forty)
          if (kind == 7) then
@@ -491,10 +541,11 @@ contains
             target(1) = merge(-1.0_dp, 1.0_dp, chance(0.7_dp))
             target(1) = target(1)*between(0.0_dp, 1.0_dp)
             target(1) = target(1)*(p(4) + between(0.0_dp, 0.6_dp)*(p(5) - p(4)))
-            target(2) = signed(0.0_dp, 1.0_dp)*p(6)
-            target(2) = target(2) + sign(between(0.0_dp, 0.6_dp)*(p(7) - p(6)), target(2))
+            shear = signed(0.0_dp, 1.0_dp)*p(6)
+            shear = shear + sign(between(0.0_dp, 0.6_dp)*(p(7) - p(6)), shear)
+            target(2:n) = shear*shear_direction(c, s)
          case (3)        ! shear reversal at the current normal separation
-            target = [s(1), -s(2)*between(0.0_dp, 1.5_dp)]
+            target = [s(1), -s(2:3)*between(0.0_dp, 1.5_dp)]
             nreversal = nreversal + 1
          case (4)        ! hold
             target = s
@@ -502,25 +553,30 @@ contains
          case (5)        ! steps of round-off size
             target(1) = sgn()
             target(2) = sgn()
+            target(3) = sgn()
             target = s + target*epsilon(1.0_dp)*max(abs(s), tiny(1.0_dp))*between(0.0_dp, 64.0_dp)
             nroundoff = nroundoff + 1
          case (6)        ! close (or open) at the current shear
-            target = [-s(1) - sgn()*1.0e-3_dp*p(4), s(2)]
+            target = [-s(1) - sgn()*1.0e-3_dp*p(4), s(2:3)]
             nclosing = nclosing + 1
          case (7)        ! break: far beyond the strengths
             target(1) = signed(0.0_dp, 3.0_dp)*p(5)
-            target(2) = signed(2.0_dp, 10.0_dp)*p(7)
+            shear = signed(2.0_dp, 10.0_dp)*p(7)
+            target(2:n) = shear*shear_direction(c, s)
          case default    ! small cycles about the current point (stick and slip onset)
-            target = s + [0.0_dp, signed(0.0_dp, 0.05_dp)*p(6)]
+            shear = signed(0.0_dp, 0.05_dp)*p(6)
+            target(1:n) = s(1:n)
+            target(2:n) = target(2:n) + shear*shear_direction(c, s)
          end select
+         if (n == 2) target(3) = 0.0_dp
          do i = 1, nseg
             step = step + 1
-            c%dstran(1:2) = s + (target - s)*(real(i, dp)/real(nseg, dp)) - c%stran(1:2)
+            c%dstran(1:n) = s(1:n) + (target(1:n) - s(1:n))*(real(i, dp)/real(nseg, dp)) - c%stran(1:n)
             d_old = c%statev(SV_DAMAGE)
-            write (where, '(a,i0,a,i0)') 'material ', imat, ', step ', step
+            write (where, '(a,i0,a,i0,a,i0)') 'material ', imat, ', NTENS ', n, ', step ', step
             call compare_paths(c, p, trim(where))
             if (c%reported > 0) exit
-            c%stran(1:2) = c%stran(1:2) + c%dstran(1:2)
+            c%stran(1:n) = c%stran(1:n) + c%dstran(1:n)
             nregime(nint(c%statev(SV_REGIME))) = nregime(nint(c%statev(SV_REGIME))) + 1
             if (c%statev(SV_DAMAGE) > d_old) ngrowth = ngrowth + 1
             if (c%statev(SV_DAMAGE) >= 1.0_dp) nbroken = nbroken + 1
@@ -532,14 +588,47 @@ contains
       end do
    end subroutine run_history
 
+   !> The element of a call: the 2-D cohesive element (NSHR = 1) or, half of the time, the 3-D
+   !> one (NSHR = 2).
+   subroutine random_element(c)
+      type(call_type), intent(inout) :: c
+      c%ndi = 1
+      c%nshr = merge(2, 1, chance(0.5_dp))
+      c%ntens = 1 + c%nshr
+   end subroutine random_element
+
+   !> A unit direction for a shear target (its size, NSHR): 1 on the 2-D element; on the 3-D one a
+   !> random direction, or the current shear's turned by a random angle of up to 90 degrees (in
+   !> four of ten draws), or the current shear's itself (two of ten; a random one at zero shear).
+   function shear_direction(c, s) result(dir)
+      type(call_type), intent(in) :: c
+      real(dp), intent(in) :: s(3)
+      real(dp) :: dir(c%nshr)
+      real(dp) :: angle, r, size_now
+      real(dp), parameter :: PI = acos(-1.0_dp)
+      if (c%nshr == 1) then
+         dir = 1.0_dp
+         return
+      end if
+      r = uniform()
+      size_now = hypot(s(2), s(3))
+      angle = between(-PI, PI)
+      if (r < 0.6_dp .and. size_now > 0.0_dp) then
+         angle = atan2(s(3), s(2))
+         if (r < 0.4_dp) angle = angle + between(-0.5_dp*PI, 0.5_dp*PI)
+      end if
+      dir = [cos(angle), sin(angle)]
+   end function shear_direction
+
    ! ---- part 2 ----------------------------------------------------------------------------
 
-   !> A random admissible incoming state and increment for material p.
+   !> A random admissible incoming state and increment for material p on a random element.
    subroutine random_state(c, p)
       type(call_type), intent(out) :: c
       real(dp), intent(in) :: p(NP_MAX)
       real(dp) :: r
       integer :: i
+      call random_element(c)
       c%nstatv = pick(NSTATV_REQUIRED, NSTATV_MAX)
       r = uniform()
       if (r < 0.15_dp) then
@@ -563,9 +652,14 @@ contains
       c%stran(2) = signed(0.0_dp, 2.0_dp)*p(7)
       c%dstran(1) = signed(0.0_dp, 0.5_dp)*p(5)
       c%dstran(2) = signed(0.0_dp, 0.5_dp)*p(7)
-      if (chance(0.1_dp)) c%dstran(1:2) = 0.0_dp
       c%stress(1) = signed(0.0_dp, 1.0_dp)*stiffness(1)*p(5)
       c%stress(2) = signed(0.0_dp, 1.0_dp)*stiffness(2)*p(7)
+      if (c%ntens == 3) then
+         c%stran(3) = signed(0.0_dp, 2.0_dp)*p(7)
+         c%dstran(3) = signed(0.0_dp, 0.5_dp)*p(7)
+         c%stress(3) = signed(0.0_dp, 1.0_dp)*stiffness(2)*p(7)
+      end if
+      if (chance(0.1_dp)) c%dstran = 0.0_dp
       c%sse = between(0.0_dp, 10.0_dp)
       c%spd = between(-1.0_dp, 10.0_dp)
       c%pnewdt = merge(1.0e36_dp, -1.0_dp, chance(0.8_dp))
@@ -609,20 +703,20 @@ contains
       which = pick(1, 17)
       select case (which)
       case (1)
-         k2 = pick(1, 2)
+         k2 = pick(1, c%ntens)
          c%stran(k2) = bad
       case (2)
-         k2 = pick(1, 2)
+         k2 = pick(1, c%ntens)
          c%dstran(k2) = bad
       case (3)
-         k2 = pick(1, 2)
+         k2 = pick(1, c%ntens)
          c%stress(k2) = bad
       case (4)
          c%sse = bad
       case (5)
          c%spd = bad
       case (6)        ! a separation beyond 1e20 mm from values within 1e50
-         k2 = pick(1, 2)
+         k2 = pick(1, c%ntens)
          c%stran(k2) = signed(1.0e21_dp, 1.0e49_dp)
       case (7)
          c%statev(SV_DAMAGE) = bad
@@ -638,10 +732,10 @@ contains
          if (chance(0.3_dp)) c%statev(SV_REGIME) = bad
       case (10)
          c%nstatv = pick(1, NSTATV_REQUIRED - 1)
-      case (11)       ! other element layouts: NDI + NSHR /= NTENS, a continuum element
+      case (11)       ! other element layouts: a continuum element, NDI = 1 with NSHR = 0
          c%ndi = pick(1, 3)
          c%nshr = pick(0, 2)
-         if (c%ndi == 1 .and. c%nshr == 1) c%ndi = 2
+         if (c%ndi == 1 .and. c%nshr >= 1) c%ndi = 2
       case (12)       ! mu: negative, -0 (refused by the one-pass test, accepted by the checks) or bad
          q(3) = -between(0.0_dp, 1.0_dp)
          if (chance(0.5_dp)) q(3) = bad
@@ -731,12 +825,8 @@ contains
                if (chance(0.5_dp)) q(k2) = between(1.0e-30_dp, 1.0e-21_dp)
             end select
          end if
-      case default    ! the 3-D element: the general path's
-         c%nshr = 2
-         c%ntens = 3
-         c%stran(3) = signed(0.0_dp, 2.0_dp)*p(7)
-         c%dstran(3) = signed(0.0_dp, 0.5_dp)*p(7)
-         c%stress(3) = 0.0_dp
+      case default    ! NTENS /= NDI + NSHR on a cohesive element: the other element's NSHR
+         c%nshr = 3 - c%nshr
       end select
       if (which /= 16) c%ntens = c%ndi + c%nshr
       if (which == 11) c%ntens = max(1, min(3, c%ntens))

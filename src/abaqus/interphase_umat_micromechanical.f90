@@ -19,12 +19,13 @@ module interphase_umat_micromechanical
    !> option constants.
    integer, parameter :: PATH_MODEL = MODEL_MICROMECHANICAL, PATH_DAMAGE_LAW = DAMAGE_DISPLACEMENT, &
       PATH_NPROPS = NPROPS_MICROMECHANICAL
-   !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the simplified model's.
+   !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the simplified model's (the 3-D
+   !> element: interphase_umat_micromechanical_3d).
    integer, parameter, public :: PATH_NTENS = 2
 
 contains
 
-   ! (the decision, the update and the procedures they call: one source for the four paths)
+   ! (the decision, the update and the procedures they call: one source for the eight paths)
    include 'interphase_umat_cohesive_path.inc'
 
 end module interphase_umat_micromechanical

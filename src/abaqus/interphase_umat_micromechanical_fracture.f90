@@ -21,12 +21,13 @@ module interphase_umat_micromechanical_fracture
    !> option constants.
    integer, parameter :: PATH_MODEL = MODEL_MICROMECHANICAL, PATH_DAMAGE_LAW = DAMAGE_FRACTURE, &
       PATH_NPROPS = NPROPS_MICROMECHANICAL + NPROPS_FRACTURE_EXTRA
-   !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the other paths'.
+   !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the other paths' (the 3-D
+   !> element: interphase_umat_micromechanical_fracture_3d).
    integer, parameter, public :: PATH_NTENS = 2
 
 contains
 
-   ! (the decision, the update and the procedures they call: one source for the four paths)
+   ! (the decision, the update and the procedures they call: one source for the eight paths)
    include 'interphase_umat_cohesive_path.inc'
 
 end module interphase_umat_micromechanical_fracture

@@ -1,5 +1,6 @@
-!> The names the UMAT's four 2-D paths use (interphase_umat_simplified, interphase_umat_micromechanical,
-!> interphase_umat_simplified_fracture, interphase_umat_micromechanical_fracture): the procedures
+!> The names the UMAT's paths use (interphase_umat_simplified, interphase_umat_micromechanical,
+!> interphase_umat_simplified_fracture, interphase_umat_micromechanical_fracture for the 2-D
+!> cohesive element, and their 3-D twins, the same names with _3d): the procedures
 !> and constants that their shared source, interphase_umat_cohesive_path.inc, and the sources it
 !> includes need, in one list, re-exported, so that each path's unit uses this module alone. No
 !> data, no procedures.

@@ -27,12 +27,13 @@ module interphase_umat_simplified
       PATH_NPROPS = NPROPS_SIMPLIFIED
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1). (The 3-D element in the
    !> same unit, measured: the response is then called from two places and no longer inlined,
-   !> which costs the 2-D path about 170 instructions a call; docs/performance.md.)
+   !> which costs the 2-D path about 170 instructions a call; docs/performance.md. The 3-D
+   !> element has its twin, interphase_umat_simplified_3d.)
    integer, parameter, public :: PATH_NTENS = 2
 
 contains
 
-   ! (the decision, the update and the procedures they call: one source for the four paths)
+   ! (the decision, the update and the procedures they call: one source for the eight paths)
    include 'interphase_umat_cohesive_path.inc'
 
 end module interphase_umat_simplified

@@ -11,11 +11,12 @@
 !> STATEV are documented in docs/abaqus.md.
 !>
 !> This adapter only packs arguments and calls the pure kernel; its most common calls (the simplified
-!> or the micromechanical model with either damage law and no option constants, 2-D cohesive
-!> element, every input in range) take a path of their own, the same update compiled for that
-!> material alone (interphase_umat_simplified, interphase_umat_micromechanical and their
-!> fracture-law twins interphase_umat_simplified_fracture, interphase_umat_micromechanical_fracture:
-!> the same numbers, bit for bit). On a failed update it asks for a
+!> or the micromechanical model with either damage law and no option constants, 2-D or 3-D
+!> cohesive element, every input in range) take a path of their own, the same update compiled for
+!> that material and element alone (interphase_umat_simplified, interphase_umat_micromechanical
+!> and their fracture-law twins interphase_umat_simplified_fracture,
+!> interphase_umat_micromechanical_fracture for the 2-D element, the same names with _3d for the
+!> 3-D one: the same numbers, bit for bit). On a failed update it asks for a
 !> cut-back through PNEWDT (0.25 unless the host already holds a smaller positive request: Abaqus
 !> passes PNEWDT large, CalculiX -1), reports through `interphase_host_message` and returns before
 !> touching STRESS, STATEV, DDSDDE, SSE or SPD (with the CalculiX host option DDSDDE is set to
@@ -55,10 +56,14 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
       NSTATV_VISCOUS, REGIME_INTACT, REGIME_SLIP, STIFFNESS_FIXED_DAMAGE
    use interphase_state, only: interface_state_type, ONE_BITS, SLIP_MAX_BITS, SIGN_BIT, REGIME_BITS
    use interphase_kernel, only: update_point
-   use interphase_umat_simplified, only: simplified_cohesive_path => cohesive_path, PATH_NTENS
+   use interphase_umat_simplified, only: simplified_cohesive_path => cohesive_path, NTENS_2D => PATH_NTENS
    use interphase_umat_micromechanical, only: micromechanical_cohesive_path => cohesive_path
    use interphase_umat_simplified_fracture, only: simplified_fracture_path => cohesive_path
    use interphase_umat_micromechanical_fracture, only: micromechanical_fracture_path => cohesive_path
+   use interphase_umat_simplified_3d, only: simplified_cohesive_path_3d => cohesive_path, NTENS_3D => PATH_NTENS
+   use interphase_umat_micromechanical_3d, only: micromechanical_cohesive_path_3d => cohesive_path
+   use interphase_umat_simplified_fracture_3d, only: simplified_fracture_path_3d => cohesive_path
+   use interphase_umat_micromechanical_fracture_3d, only: micromechanical_fracture_path_3d => cohesive_path
    use interphase_rcurve, only: rcurve_coverage, rcurve_loaded, rcurve_covers, rcurve_overrun
    use interphase_micro_coefficients, only: custom_table_loaded
    use interphase_umat_failure, only: umat_fail
@@ -84,21 +89,20 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    character(len=6*12) :: stress_text
 
    ! the simplified and the micromechanical model with either damage law and no option constants
-   ! on a 2-D cohesive element, every input in range (each path's cohesive_path decides): a path
-   ! of its own, the same update specialised to that material (interphase_umat_simplified,
-   ! interphase_umat_micromechanical, interphase_umat_simplified_fracture,
-   ! interphase_umat_micromechanical_fracture); every other call, every call the general path
-   ! would refuse and every call whose update fails there takes the general path. NPROPS and
-   ! NTENS are tested here too, so that other calls do not pay a call: NTENS = 2, then NPROPS <= 9
-   ! (the displacement-driven law without options: 9 to the simplified model's path, anything
-   ! below to the micromechanical model's, whose decision takes only NPROPS = 8; fewer are
-   ! refused by the general path), else 13 and 12 (the fracture law without options, the
-   ! simplified and the micromechanical model; also the displacement-driven law with option
-   ! constants, 12 or 13 PROPS in all, which those paths' decisions leave to the general path,
-   ! after the one-pass PROPS test they make). Measured: this order adds 1 instruction a call to
-   ! the displacement-driven law's 2-D paths and leaves the 3-D calls' counts as they were
-   ! (docs/performance.md).
-   if (ntens == PATH_NTENS) then
+   ! on a 2-D or a 3-D cohesive element, every input in range (each path's cohesive_path
+   ! decides): a path of its own, the same update specialised to that material and element
+   ! (interphase_umat_simplified, interphase_umat_micromechanical, interphase_umat_simplified_fracture,
+   ! interphase_umat_micromechanical_fracture, and for NTENS = 3 the same names with _3d); every
+   ! other call, every call the general path would refuse and every call whose update fails there
+   ! takes the general path. NPROPS and NTENS are tested here too, so that other calls do not pay
+   ! a call: NTENS = 2 or 3, then NPROPS <= 9 (the displacement-driven law without options: 9 to
+   ! the simplified model's path, anything below to the micromechanical model's, whose decision
+   ! takes only NPROPS = 8; fewer are refused by the general path), else 13 and 12 (the fracture
+   ! law without options, the simplified and the micromechanical model; also the
+   ! displacement-driven law with option constants, 12 or 13 PROPS in all, which those paths'
+   ! decisions leave to the general path, after the one-pass PROPS test they make). The two
+   ! elements' dispatches are the same but for the paths they call (docs/performance.md).
+   if (ntens == NTENS_2D) then
       if (nprops <= NPROPS_SIMPLIFIED) then
          if (nprops == NPROPS_SIMPLIFIED) then
             call simplified_cohesive_path(nprops, props, ndi, nshr, ntens, nstatv, statev, stran, dstran, stress, &
@@ -114,6 +118,25 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          if (taken) return
       else if (nprops == NPROPS_MICROMECHANICAL + NPROPS_FRACTURE_EXTRA) then
          call micromechanical_fracture_path(nprops, props, ndi, nshr, ntens, nstatv, statev, stran, dstran, &
+            stress, ddsdde, sse, spd, taken)
+         if (taken) return
+      end if
+   else if (ntens == NTENS_3D) then
+      if (nprops <= NPROPS_SIMPLIFIED) then
+         if (nprops == NPROPS_SIMPLIFIED) then
+            call simplified_cohesive_path_3d(nprops, props, ndi, nshr, ntens, nstatv, statev, stran, dstran, stress, &
+               ddsdde, sse, spd, taken)
+         else
+            call micromechanical_cohesive_path_3d(nprops, props, ndi, nshr, ntens, nstatv, statev, stran, dstran, &
+               stress, ddsdde, sse, spd, taken)
+         end if
+         if (taken) return
+      else if (nprops == NPROPS_SIMPLIFIED + NPROPS_FRACTURE_EXTRA) then
+         call simplified_fracture_path_3d(nprops, props, ndi, nshr, ntens, nstatv, statev, stran, dstran, stress, &
+            ddsdde, sse, spd, taken)
+         if (taken) return
+      else if (nprops == NPROPS_MICROMECHANICAL + NPROPS_FRACTURE_EXTRA) then
+         call micromechanical_fracture_path_3d(nprops, props, ndi, nshr, ntens, nstatv, statev, stran, dstran, &
             stress, ddsdde, sse, spd, taken)
          if (taken) return
       end if

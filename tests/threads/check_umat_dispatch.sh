@@ -1,20 +1,21 @@
 #!/usr/bin/env bash
-# Does `umat` hand its calls to the right update? The UMAT's four 2-D paths of their own
-# (src/abaqus/interphase_umat_simplified.f90, interphase_umat_micromechanical.f90 for the
-# displacement law, interphase_umat_simplified_fracture.f90,
-# interphase_umat_micromechanical_fracture.f90 for the fracture law) return the general path's
-# numbers bit for bit by design (tests/test_umat_simplified_path.f90), so no result shows
-# whether `umat` calls them at all, or goes on to the general path after them: only the call
-# graph does. This check runs the UMAT benchmark (drivers/bench_umat.f90) under valgrind's
-# callgrind, which counts every call exactly, and reads from its output how often `umat_` called
-# each path's `cohesive_path` and the general path's update (the kernel's `update_point`),
-# against how often `umat_` itself was called:
-#   case 1 (simplified model, displacement law, 2-D):      the simplified path every call, the general path never;
-#   case 3 (micromechanical model, displacement law, 2-D): the micromechanical path every call, the general path never;
-#   case 5 (simplified model, fracture law, 2-D):          its fracture path every call, the general path never;
-#   case 7 (micromechanical model, fracture law, 2-D):     its fracture path every call, the general path never;
-#   case 2 (simplified model, displacement law, 3-D) and case 6 (fracture law, 3-D): the general
-#   path every call, no path (which also shows that the check sees the general path's calls).
+# Does `umat` hand its calls to the right update? The UMAT's paths of their own (for the 2-D
+# cohesive element src/abaqus/interphase_umat_simplified.f90, interphase_umat_micromechanical.f90
+# for the displacement law, interphase_umat_simplified_fracture.f90,
+# interphase_umat_micromechanical_fracture.f90 for the fracture law; for the 3-D element their
+# twins, the same names with _3d) return the general path's numbers bit for bit by design
+# (tests/test_umat_simplified_path.f90), so no result shows whether `umat` calls them at all, or
+# goes on to the general path after them: only the call graph does. This check runs the UMAT
+# benchmark (drivers/bench_umat.f90) under valgrind's callgrind, which counts every call exactly,
+# and reads from its output how often `umat_` called each path's `cohesive_path` and the general
+# path's update (the kernel's `update_point`), against how often `umat_` itself was called:
+#   cases 1 and 2 (simplified model, displacement law, 2-D and 3-D): the simplified path of the
+#   element every call, no other path, the general path never;
+#   cases 3 and 4 (micromechanical model, displacement law): its path, as above;
+#   cases 5 and 6 (simplified model, fracture law): its fracture path, as above;
+#   cases 7 and 8 (micromechanical model, fracture law): its fracture path, as above;
+#   cases 9 and 14 (cases 1 and 6 with an option constant at its default): the general path every
+#   call, no path (which also shows that the check sees the general path's calls).
 # Meant for a build without link-time optimisation or inlining across units (the Debug build),
 # where each of these procedures is a call of its own; gfortran's and LLVM flang's symbol names
 # are both recognised.
@@ -51,10 +52,14 @@ calls_to() {
     END { print n + 0 }' "$1"
 }
 
-# expect CASE SIMPLIFIED MICROMECHANICAL SIMPLIFIED_FRACTURE MICROMECHANICAL_FRACTURE GENERAL: the
-# four paths' and the general path's calls, each "all" (every umat_ call) or "none"
+# expect CASE PATH: the path that must take every umat_ call of the case, by the name of its
+# module without interphase_umat_ (simplified, micromechanical, simplified_fracture,
+# micromechanical_fracture, each maybe with _3d), or "general": every other path's calls must
+# be none, and the general path's all (PATH general) or none
+PATHS="simplified micromechanical simplified_fracture micromechanical_fracture simplified_3d micromechanical_3d
+  simplified_fracture_3d micromechanical_fracture_3d"
 expect() {
-  local case=$1 out="$work/cg.$1" umat simplified micro simplified_fracture micro_fracture general name want got
+  local case=$1 want_path=$2 out="$work/cg.$1" umat general name got want summary
   if ! valgrind --tool=callgrind --compress-strings=no --compress-pos=no --callgrind-out-file="$out" \
        "$bench" "$calls" 1 "$case" >"$work/log.$case" 2>&1; then
     echo "check_umat_dispatch: case $case: the benchmark failed under valgrind:" >&2
@@ -63,42 +68,45 @@ expect() {
     return
   fi
   umat=$(calls_to "$out" '*' '^umat_$')
-  # (a module's procedure: __MODULE_MOD_NAME with gfortran, _QMmodulePname with flang)
-  simplified=$(calls_to "$out" umat_ 'interphase_umat_simplified(_MOD_|P)cohesive_path')
-  micro=$(calls_to "$out" umat_ 'interphase_umat_micromechanical(_MOD_|P)cohesive_path')
-  simplified_fracture=$(calls_to "$out" umat_ 'interphase_umat_simplified_fracture(_MOD_|P)cohesive_path')
-  micro_fracture=$(calls_to "$out" umat_ 'interphase_umat_micromechanical_fracture(_MOD_|P)cohesive_path')
-  general=$(calls_to "$out" umat_ 'interphase_kernel.*update_point')
   if [ "$umat" -lt "$calls" ]; then
     echo "FAIL case $case: callgrind saw $umat calls of umat_, the benchmark makes at least $calls" \
          "(symbol names not recognised?)"
     failed=1
     return
   fi
-  for name in simplified micro simplified_fracture micro_fracture general; do
-    case "$name" in
-      simplified) want=$2; got=$simplified ;;
-      micro) want=$3; got=$micro ;;
-      simplified_fracture) want=$4; got=$simplified_fracture ;;
-      micro_fracture) want=$5; got=$micro_fracture ;;
-      general) want=$6; got=$general ;;
-    esac
+  summary="case $case: umat_ $umat calls;"
+  for name in $PATHS; do
+    # (a module's procedure: __MODULE_MOD_NAME with gfortran, _QMmodulePname with flang; the
+    # pattern is anchored at the module's name, which the 2-D path's names are prefixes of)
+    got=$(calls_to "$out" umat_ "interphase_umat_${name}(_MOD_|P)cohesive_path")
+    want=none
+    [ "$name" = "$want_path" ] && want=all
     if { [ "$want" = all ] && [ "$got" -ne "$umat" ]; } || { [ "$want" = none ] && [ "$got" -ne 0 ]; }; then
-      echo "FAIL case $case: umat_ called $umat times, the $name update $got times (expected: $want)"
+      echo "FAIL case $case: umat_ called $umat times, the $name path $got times (expected: $want)"
       failed=1
     fi
+    [ "$got" -ne 0 ] && summary="$summary $name path $got,"
   done
-  echo "case $case: umat_ $umat calls; simplified path $simplified, micromechanical path $micro," \
-       "simplified fracture path $simplified_fracture, micromechanical fracture path $micro_fracture," \
-       "general path (update_point) $general"
+  general=$(calls_to "$out" umat_ 'interphase_kernel.*update_point')
+  want=none
+  [ "$want_path" = general ] && want=all
+  if { [ "$want" = all ] && [ "$general" -ne "$umat" ]; } || { [ "$want" = none ] && [ "$general" -ne 0 ]; }; then
+    echo "FAIL case $case: umat_ called $umat times, the general path (update_point) $general times (expected: $want)"
+    failed=1
+  fi
+  echo "$summary general path (update_point) $general"
 }
 
-expect 1 all none none none none
-expect 3 none all none none none
-expect 5 none none all none none
-expect 7 none none none all none
-expect 2 none none none none all
-expect 6 none none none none all
+expect 1 simplified
+expect 2 simplified_3d
+expect 3 micromechanical
+expect 4 micromechanical_3d
+expect 5 simplified_fracture
+expect 6 simplified_fracture_3d
+expect 7 micromechanical_fracture
+expect 8 micromechanical_fracture_3d
+expect 9 general
+expect 14 general
 if [ "$failed" -ne 0 ]; then
   echo "check_umat_dispatch: FAILED" >&2
   exit 1
