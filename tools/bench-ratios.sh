@@ -89,7 +89,7 @@ echo "interphase bench-ratios: $(date -u '+%Y-%m-%d %H:%M UTC'), commit $commit,
 
 # The one-file sources are compiled with the flags docs/abaqus.md recommends for gfortran, the
 # CMake Release build's inlining limits (INTERPHASE_INLINE_PARAMS of CMakeLists.txt) included.
-onefile_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200 --param=large-function-growth=400"
+onefile_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200 --param=large-function-growth=400 -fno-ipa-icf"
 # the UMAT in the one-file Abaqus/Standard source (make-user-file.sh), compiled ALONE with -O3
 # and without LTO as docs/abaqus.md recommends, linked with the benchmark driver: the build an
 # Abaqus/Standard host makes. Built twice: -march=native for the wall clock, -march=x86-64-v2

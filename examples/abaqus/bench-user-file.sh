@@ -34,7 +34,7 @@ if [ ${#flag_sets[@]} -eq 0 ]; then
                     "-O2") ;;
       *)
          # (GCC's inlining limits: those of the CMake Release build, CMakeLists.txt)
-         gcc_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200 --param=large-function-growth=400"
+         gcc_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200 --param=large-function-growth=400 -fno-ipa-icf"
          flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive $gcc_inline"
                     "-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive"
                     "-O3 -march=native -frecursive"

@@ -9,9 +9,9 @@
 !> writes the general path's outputs (cohesive_outputs, pack_statev), compiled here for that
 !> material alone: NTENS and the option parameters are constants, the response is inlined, the
 !> parameters and the state never leave this unit. The decision and the update are one source
-!> with the other three paths (interphase_umat_cohesive_path.inc, included in
-!> interphase_umat_micromechanical and in the fracture law's interphase_umat_simplified_fracture
-!> and interphase_umat_micromechanical_fracture too). The numbers are the general path's, bit for bit
+!> with the other seven paths (interphase_umat_cohesive_path.inc, included in
+!> interphase_umat_micromechanical, in the fracture law's interphase_umat_simplified_fracture
+!> and interphase_umat_micromechanical_fracture, and in the four's 3-D twins too). The numbers are the general path's, bit for bit
 !> (tests/test_umat_simplified_path.f90); every other call, and every call the general path
 !> would refuse, is left to the general path, which decides and reports. No module data; pure.
 module interphase_umat_simplified
