@@ -1,12 +1,7 @@
-!> The UMAT's path for the simplified model with the displacement-driven law and no option constants (NPROPS = 9)
-!> on a 3-D cohesive element (NDI = 1, NSHR = 2, NTENS = 3): the 3-D twin of
-!> interphase_umat_simplified (the 2-D element), the same decision and update from the same source
-!> (interphase_umat_cohesive_path.inc), compiled in a unit of its own for NTENS = 3 (one unit
-!> per element: with both in one unit the response is called from two places and not inlined,
-!> docs/performance.md). The numbers are the general path's, bit for bit
-!> (tests/test_umat_simplified_path.f90); every other call, every call the general path would
-!> refuse, and every call whose update fails is left to the general path, which decides and
-!> reports. No module data; pure.
+!> The 3-D twin of interphase_umat_simplified (src/abaqus/interphase_umat_simplified.f90 describes
+!> the material, the decision and the update): the same source, interphase_umat_cohesive_path.inc,
+!> compiled here for the 3-D cohesive element (NDI = 1, NSHR = 2, NTENS = 3), in a unit of its own
+!> (with both elements in one unit the response is called from two places and not inlined).
 module interphase_umat_simplified_3d
    ! (the names the shared path source needs: one list, interphase_umat_path_names)
    use interphase_umat_path_names
@@ -14,7 +9,8 @@ module interphase_umat_simplified_3d
    private
    public :: cohesive_path
 
-   !> The material the path serves: the simplified model, the displacement-driven law, no option constants.
+   !> The material the path serves: the simplified model, the displacement-driven law, no option
+   !> constants.
    integer, parameter :: PATH_MODEL = MODEL_SIMPLIFIED, PATH_DAMAGE_LAW = DAMAGE_DISPLACEMENT, &
       PATH_NPROPS = NPROPS_SIMPLIFIED
    !> The element the path serves: 3-D cohesive (NDI = 1, NSHR = 2).
