@@ -136,14 +136,14 @@ contains
          status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s(1:ntens))))
          return
       end if
-      ! the damage law's step, the response and the outputs (one source with the UMAT's 2-D paths)
+      ! the damage law's step, the response and the outputs (one source with the UMAT's paths)
       ! (update_law: interphase_law_update.inc's name of the damage law, DAMAGE_*)
       associate (update_law => params%damage_law)
          include 'interphase_law_update.inc'
       end associate
    end subroutine update_point
 
-   ! the fracture-mechanics law's step (one source with the UMAT's 2-D paths,
+   ! the fracture-mechanics law's step (one source with the UMAT's paths,
    ! interphase_umat_cohesive_path.inc)
    include 'interphase_fracture_update.inc'
 

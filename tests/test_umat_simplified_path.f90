@@ -7,8 +7,8 @@
 !>
 !> Every call is made twice from the same inputs: with the material's PROPS without options
 !> (NPROPS = 9 for the simplified model, 8 for the micromechanical one, 13 and 12 with the
-!> fracture law, a 2-D or 3-D cohesive element: the calls the paths may take) and with the same PROPS
-!> followed by the growth-slip option constant at its default, 0 (NPROPS one more: the same
+!> fracture law, a 2-D or 3-D cohesive element: the calls the paths may take) and with the same
+!> PROPS followed by the growth-slip option constant at its default, 0 (NPROPS one more: the same
 !> material, which only the general path serves). STRESS, DDSDDE, STATEV (every slot of NSTATV),
 !> SSE, SPD and PNEWDT, and the message the call reports (its count, severity and text), must
 !> agree bit for bit. Each path is also asked directly which calls it takes: every call the
@@ -26,12 +26,13 @@
 !> Part 1, histories: NMATERIALS random materials (mu exactly 0, tiny or up to 1.5; s0 and sf
 !> over three decades with sf/s0 from 1 + 2 eps to 100; K_N, K_T over six decades), each with a
 !> random history of NSTEPS steps built from segments that reach every regime: intact loading,
-!> damage growth, open, closed stick and slip, shear reversals and, on the 3-D element, turns of
-!> the shear's direction (a slip much larger than the
+!> damage growth, open, closed stick and slip, shear reversals (a slip much larger than the
 !> result: the return mapping's second step), holds and round-off-sized steps after a slip (the
-!> slip onset's round-off bound, docs/theory.md 'Slip onset'), closing at the slip, and breaking
-!> to D = 1.
+!> slip onset's round-off bound, docs/theory.md 'Slip onset'), closing at the slip, breaking to
+!> D = 1, and on the 3-D element shear in any direction, turned from the current one, or along an
+!> axis (the other component +0 or -0). The 3-D histories must reach slip in both components.
 !> Part 2, single calls from random incoming states: D in {+0, -0, 1, 1 - ulp, random}, slips,
+!> separations and increments (on the 3-D element a shear component sometimes +0 or -0),
 !> regime codes, STRESS, SSE and SPD, PNEWDT as Abaqus (large) and CalculiX (-1) pass it,
 !> NSTATV 4 to 8 with the slots beyond 4 random (left alone by both paths).
 !> Part 3, refused calls: one input of a valid call spoilt (NaN, Inf or out of range STRAN,
@@ -116,6 +117,10 @@ program test_umat_simplified_path
    !> reversals, round-off steps
    integer :: nregime(REGIME_INTACT:REGIME_SLIP) = 0, ngrowth = 0, nbroken = 0, nhold = 0, nreversal = 0, &
       nroundoff = 0, nclosing = 0, nsingle_ok = 0, ngrowth_fracture = 0, nbroken_fracture = 0
+   !> coverage of the 3-D element: accepted steps of part 1 ending in slip with both slip
+   !> components non-zero, steps whose shear direction turned (by more than 1e-3 rad) from the
+   !> step before, and single calls with a shear component +0 or -0 (part 2)
+   integer :: nslip_3d = 0, nturned_3d = 0, nzero_shear = 0
    integer :: imat, k, e, unit
    real(dp) :: props(NP_MAX)
 
@@ -177,6 +182,9 @@ program test_umat_simplified_path
       ' growing, ', nbroken_fracture, ' at D = 1'
    write (output_unit, '(a,i0,a,i0,a)') 'test_umat_simplified_path: single calls: ', nsingle_ok, ' of ', NSINGLE, &
       ' accepted'
+   write (output_unit, '(a,3(i0,a))') 'test_umat_simplified_path: 3-D element: ', nslip_3d, &
+      ' slip steps with both slip components non-zero, ', nturned_3d, ' steps with the shear turned; ', &
+      nzero_shear, ' single calls with a shear component +0 or -0'
    do k = 1, size(PATH_NP)
       write (output_unit, '(a,7(i0,a))') 'test_umat_simplified_path: '//trim(PATH_NAME(k))//' (NPROPS = ', &
          PATH_NP(k), '): ', nmodel(k), ' calls (', nmodel_ok(k), ' accepted), the 2-D path took ', ntaken(k, 1), &
@@ -200,6 +208,13 @@ program test_umat_simplified_path
          end if
       end do
    end do
+   ! (the 3-D element's histories reach what a 2-D one cannot: a generator that lost the second
+   ! shear component would compare the 3-D paths on 2-D loading only)
+   if (nslip_3d < NMATERIALS/10 .or. nturned_3d < NMATERIALS .or. nzero_shear < NSINGLE/20) then
+      write (error_unit, '(a)') 'test_umat_simplified_path: the 3-D element''s slip in two components, turning '// &
+         'shear or zero shear components were not reached'
+      error stop 1
+   end if
    if (nwrong_element > 0) then
       write (error_unit, '(a,i0,a)') 'test_umat_simplified_path: ', nwrong_element, &
          ' calls taken by the path of the other element'
@@ -576,6 +591,11 @@ contains
             write (where, '(a,i0,a,i0,a,i0)') 'material ', imat, ', NTENS ', n, ', step ', step
             call compare_paths(c, p, trim(where))
             if (c%reported > 0) exit
+            if (n == 3) then
+               if (nint(c%statev(SV_REGIME)) == REGIME_SLIP .and. abs(c%statev(SV_SLIP_1)) > 0.0_dp &
+                  .and. abs(c%statev(SV_SLIP_2)) > 0.0_dp) nslip_3d = nslip_3d + 1
+               if (turned(c%stran(2:3), c%dstran(2:3))) nturned_3d = nturned_3d + 1
+            end if
             c%stran(1:n) = c%stran(1:n) + c%dstran(1:n)
             nregime(nint(c%statev(SV_REGIME))) = nregime(nint(c%statev(SV_REGIME))) + 1
             if (c%statev(SV_DAMAGE) > d_old) ngrowth = ngrowth + 1
@@ -599,7 +619,8 @@ contains
 
    !> A unit direction for a shear target (its size, NSHR): 1 on the 2-D element; on the 3-D one a
    !> random direction, or the current shear's turned by a random angle of up to 90 degrees (in
-   !> four of ten draws), or the current shear's itself (two of ten; a random one at zero shear).
+   !> four of ten draws), or the current shear's itself (two of ten; a random one at zero shear),
+   !> or an axis with the other component +0 or -0 (one of ten).
    function shear_direction(c, s) result(dir)
       type(call_type), intent(in) :: c
       real(dp), intent(in) :: s(3)
@@ -618,7 +639,25 @@ contains
          if (r < 0.4_dp) angle = angle + between(-0.5_dp*PI, 0.5_dp*PI)
       end if
       dir = [cos(angle), sin(angle)]
+      if (r > 0.9_dp) then
+         ! (one draw a statement: the order of function calls in an expression is the compiler's)
+         dir(1) = sgn()
+         dir(2) = sgn()
+         dir(2) = dir(2)*0.0_dp
+         if (chance(0.5_dp)) dir = dir([2, 1])
+      end if
    end function shear_direction
+
+   !> The step ds turns the shear s (both the 3-D element's two components): the angle between
+   !> s and s + ds exceeds 1e-3 rad.
+   pure logical function turned(s, ds)
+      real(dp), intent(in) :: s(2), ds(2)
+      real(dp) :: e(2), cross, dot
+      e = s + ds
+      cross = s(1)*e(2) - s(2)*e(1)
+      dot = s(1)*e(1) + s(2)*e(2)
+      turned = abs(atan2(cross, dot)) > 1.0e-3_dp .and. hypot(s(1), s(2)) > 0.0_dp .and. hypot(e(1), e(2)) > 0.0_dp
+   end function turned
 
    ! ---- part 2 ----------------------------------------------------------------------------
 
@@ -660,6 +699,14 @@ contains
          c%stress(3) = signed(0.0_dp, 1.0_dp)*stiffness(2)*p(7)
       end if
       if (chance(0.1_dp)) c%dstran = 0.0_dp
+      ! a shear component +0 or -0 (the separation, its increment, the slip: each or all)
+      if (chance(0.15_dp)) then
+         i = pick(2, c%ntens)
+         if (chance(0.6_dp)) c%stran(i) = sgn()*0.0_dp
+         if (chance(0.6_dp)) c%dstran(i) = sgn()*0.0_dp
+         if (chance(0.6_dp)) c%statev(SV_SLIP_1 + i - 2) = sgn()*0.0_dp
+         nzero_shear = nzero_shear + 1
+      end if
       c%sse = between(0.0_dp, 10.0_dp)
       c%spd = between(-1.0_dp, 10.0_dp)
       c%pnewdt = merge(1.0e36_dp, -1.0_dp, chance(0.8_dp))

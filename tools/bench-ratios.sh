@@ -18,7 +18,7 @@
 #     mixed history) in DIR/callgrind, the no-LTO build for -march=x86-64-v2 (valgrind 3.19 does
 #     not decode every AVX instruction a -march=native build may use), if valgrind is installed;
 #   - the UMAT in the one-file Abaqus/Standard source (make-user-file.sh) compiled alone with
-#     -O3, the inlining limits and no LTO, as docs/abaqus.md recommends, and linked with the
+#     -O3, the inlining flags and no LTO, as docs/abaqus.md recommends, and linked with the
 #     benchmark driver (compiled with the flags the CMake Release build gives it, so that the
 #     builds are timed by the same loop): best ns per call (-march=native) and instructions per
 #     call (callgrind, -march=x86-64-v2);
@@ -88,8 +88,9 @@ echo "interphase bench-ratios: $(date -u '+%Y-%m-%d %H:%M UTC'), commit $commit,
 "$nolto/drivers/interphase-bench" "$calls" 5 >"$work/umat-nolto.txt"
 
 # The one-file sources are compiled with the flags docs/abaqus.md recommends for gfortran, the
-# CMake Release build's inlining limits (INTERPHASE_INLINE_PARAMS of CMakeLists.txt) included.
-onefile_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200 --param=large-function-growth=400 -fno-ipa-icf"
+# CMake Release build's inlining flags (INTERPHASE_INLINE_PARAMS of CMakeLists.txt) included.
+onefile_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200 --param=large-function-growth=400"
+onefile_inline+=" -fno-ipa-icf"
 # the UMAT in the one-file Abaqus/Standard source (make-user-file.sh), compiled ALONE with -O3
 # and without LTO as docs/abaqus.md recommends, linked with the benchmark driver: the build an
 # Abaqus/Standard host makes. Built twice: -march=native for the wall clock, -march=x86-64-v2

@@ -8,7 +8,7 @@
 # bench_user_file.f90 (one block of 4096 points in the L2 cache, 2000 increments of a cyclic shear
 # under compression, best of 5 runs) and LAPACK, and prints ns per point update for each set.
 # Default flag sets: the recommended one (docs/abaqus.md; with gfortran also without GCC's
-# inlining limits), -O3 -march=native without -fno-trapping-math (with flang: without
+# inlining flags), -O3 -march=native without -fno-trapping-math (with flang: without
 # -ffp-contract=off), and -O2. --build-dir: a configured and built interphase build directory
 # (default ./build/release), for the generated sources of the built-in table.
 set -euo pipefail
@@ -33,8 +33,9 @@ if [ ${#flag_sets[@]} -eq 0 ]; then
                     "-O3 -march=native"
                     "-O2") ;;
       *)
-         # (GCC's inlining limits: those of the CMake Release build, CMakeLists.txt)
-         gcc_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200 --param=large-function-growth=400 -fno-ipa-icf"
+         # (GCC's inlining flags: those of the CMake Release build, CMakeLists.txt)
+         gcc_inline="--param=max-inline-insns-auto=400 --param=inline-unit-growth=200"
+         gcc_inline+=" --param=large-function-growth=400 -fno-ipa-icf"
          flag_sets=("-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive $gcc_inline"
                     "-O3 -march=native -fno-trapping-math -ffp-contract=off -frecursive"
                     "-O3 -march=native -frecursive"

@@ -17,7 +17,7 @@ module interphase_umat_micromechanical
 
    !> The material the path serves: the micromechanical model, the displacement-driven law, no
    !> option constants.
-   integer, parameter :: PATH_MODEL = MODEL_MICROMECHANICAL, PATH_DAMAGE_LAW = DAMAGE_DISPLACEMENT, &
+   integer, parameter, public :: PATH_MODEL = MODEL_MICROMECHANICAL, PATH_DAMAGE_LAW = DAMAGE_DISPLACEMENT, &
       PATH_NPROPS = NPROPS_MICROMECHANICAL
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the simplified model's (the 3-D
    !> element: interphase_umat_micromechanical_3d).

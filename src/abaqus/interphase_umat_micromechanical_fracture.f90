@@ -19,7 +19,7 @@ module interphase_umat_micromechanical_fracture
 
    !> The material the path serves: the micromechanical model, the fracture-mechanics law, no
    !> option constants.
-   integer, parameter :: PATH_MODEL = MODEL_MICROMECHANICAL, PATH_DAMAGE_LAW = DAMAGE_FRACTURE, &
+   integer, parameter, public :: PATH_MODEL = MODEL_MICROMECHANICAL, PATH_DAMAGE_LAW = DAMAGE_FRACTURE, &
       PATH_NPROPS = NPROPS_MICROMECHANICAL + NPROPS_FRACTURE_EXTRA
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the other paths' (the 3-D
    !> element: interphase_umat_micromechanical_fracture_3d).

@@ -11,9 +11,10 @@
 !> parameters and the state never leave this unit. The decision and the update are one source
 !> with the other seven paths (interphase_umat_cohesive_path.inc, included in
 !> interphase_umat_micromechanical, in the fracture law's interphase_umat_simplified_fracture
-!> and interphase_umat_micromechanical_fracture, and in the four's 3-D twins too). The numbers are the general path's, bit for bit
-!> (tests/test_umat_simplified_path.f90); every other call, and every call the general path
-!> would refuse, is left to the general path, which decides and reports. No module data; pure.
+!> and interphase_umat_micromechanical_fracture, and in the four's 3-D twins too). The numbers
+!> are the general path's, bit for bit (tests/test_umat_simplified_path.f90); every other call,
+!> and every call the general path would refuse, is left to the general path, which decides and
+!> reports. No module data; pure.
 module interphase_umat_simplified
    ! (the names the shared path source needs: one list, interphase_umat_path_names)
    use interphase_umat_path_names
@@ -23,7 +24,7 @@ module interphase_umat_simplified
 
    !> The material the path serves: the simplified model, the displacement-driven law, no option
    !> constants.
-   integer, parameter :: PATH_MODEL = MODEL_SIMPLIFIED, PATH_DAMAGE_LAW = DAMAGE_DISPLACEMENT, &
+   integer, parameter, public :: PATH_MODEL = MODEL_SIMPLIFIED, PATH_DAMAGE_LAW = DAMAGE_DISPLACEMENT, &
       PATH_NPROPS = NPROPS_SIMPLIFIED
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1). (The 3-D element in the
    !> same unit, measured: the response is then called from two places and no longer inlined,

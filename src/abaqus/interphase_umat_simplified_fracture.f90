@@ -20,7 +20,7 @@ module interphase_umat_simplified_fracture
 
    !> The material the path serves: the simplified model, the fracture-mechanics law, no option
    !> constants.
-   integer, parameter :: PATH_MODEL = MODEL_SIMPLIFIED, PATH_DAMAGE_LAW = DAMAGE_FRACTURE, &
+   integer, parameter, public :: PATH_MODEL = MODEL_SIMPLIFIED, PATH_DAMAGE_LAW = DAMAGE_FRACTURE, &
       PATH_NPROPS = NPROPS_SIMPLIFIED + NPROPS_FRACTURE_EXTRA
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the other paths' (the 3-D
    !> element: interphase_umat_simplified_fracture_3d).

@@ -6,14 +6,12 @@
 module interphase_umat_simplified_fracture_3d
    ! (the names the shared path source needs: one list, interphase_umat_path_names)
    use interphase_umat_path_names
+   ! (the material: the 2-D twin's, so that the two serve the same one)
+   use interphase_umat_simplified_fracture, only: PATH_MODEL, PATH_DAMAGE_LAW, PATH_NPROPS
    implicit none
    private
    public :: cohesive_path
 
-   !> The material the path serves: the simplified model, the fracture-mechanics law, no option
-   !> constants.
-   integer, parameter :: PATH_MODEL = MODEL_SIMPLIFIED, PATH_DAMAGE_LAW = DAMAGE_FRACTURE, &
-      PATH_NPROPS = NPROPS_SIMPLIFIED + NPROPS_FRACTURE_EXTRA
    !> The element the path serves: 3-D cohesive (NDI = 1, NSHR = 2).
    integer, parameter, public :: PATH_NTENS = 3
 

@@ -14,8 +14,12 @@
 #   cases 3 and 4 (micromechanical model, displacement law): its path, as above;
 #   cases 5 and 6 (simplified model, fracture law): its fracture path, as above;
 #   cases 7 and 8 (micromechanical model, fracture law): its fracture path, as above;
-#   cases 9 and 14 (cases 1 and 6 with an option constant at its default): the general path every
-#   call, no path (which also shows that the check sees the general path's calls).
+#   cases 9 and 14 (cases 1 and 6 with an option constant at its default, NPROPS 10 and 14): the
+#   general path every call, no path asked (which also shows that the check sees the general
+#   path's calls);
+#   cases 11 and 12 (cases 3 and 4 with the option, NPROPS 9: the simplified model's count): the
+#   simplified path of the element asked at every call, which declines (another model), and
+#   then the general path every call.
 # Meant for a build without link-time optimisation or inlining across units (the Debug build),
 # where each of these procedures is a call of its own; gfortran's and LLVM flang's symbol names
 # are both recognised.
@@ -52,14 +56,15 @@ calls_to() {
     END { print n + 0 }' "$1"
 }
 
-# expect CASE PATH: the path that must take every umat_ call of the case, by the name of its
-# module without interphase_umat_ (simplified, micromechanical, simplified_fracture,
+# expect CASE PATH [ASKED]: the path that must take every umat_ call of the case, by the name of
+# its module without interphase_umat_ (simplified, micromechanical, simplified_fracture,
 # micromechanical_fracture, each maybe with _3d), or "general": every other path's calls must
-# be none, and the general path's all (PATH general) or none
+# be none, and the general path's all (PATH general) or none; with ASKED (and PATH general)
+# the path ASKED is called at every call too (and declines)
 PATHS="simplified micromechanical simplified_fracture micromechanical_fracture simplified_3d micromechanical_3d
   simplified_fracture_3d micromechanical_fracture_3d"
 expect() {
-  local case=$1 want_path=$2 out="$work/cg.$1" umat general name got want summary
+  local case=$1 want_path=$2 asked=${3:-} out="$work/cg.$1" umat general name got want summary
   if ! valgrind --tool=callgrind --compress-strings=no --compress-pos=no --callgrind-out-file="$out" \
        "$bench" "$calls" 1 "$case" >"$work/log.$case" 2>&1; then
     echo "check_umat_dispatch: case $case: the benchmark failed under valgrind:" >&2
@@ -81,6 +86,7 @@ expect() {
     got=$(calls_to "$out" umat_ "interphase_umat_${name}(_MOD_|P)cohesive_path")
     want=none
     [ "$name" = "$want_path" ] && want=all
+    [ "$name" = "$asked" ] && want=all
     if { [ "$want" = all ] && [ "$got" -ne "$umat" ]; } || { [ "$want" = none ] && [ "$got" -ne 0 ]; }; then
       echo "FAIL case $case: umat_ called $umat times, the $name path $got times (expected: $want)"
       failed=1
@@ -107,6 +113,8 @@ expect 7 micromechanical_fracture
 expect 8 micromechanical_fracture_3d
 expect 9 general
 expect 14 general
+expect 11 general simplified
+expect 12 general simplified_3d
 if [ "$failed" -ne 0 ]; then
   echo "check_umat_dispatch: FAILED" >&2
   exit 1
