@@ -3,7 +3,10 @@
 # docs/rve.md ('Exact identities').
 #
 #   bash rve_freefem/check-table.sh TABLE.dat [TABLE-diag.txt]
+#   bash rve_freefem/check-table.sh --help      (this text)
 #
+# What the reader refuses is named with the file and its line: 'mybrick.dat:47: column 3 (C_TT)
+# is not a finite number: 12,5'; the reading stops there, as the loader's does.
 # Checks (each prints its largest residual; any failure gives exit code 1):
 #   format     the table read as the loader reads it (rve_freefem/table-reader.awk, the reader
 #              of every rve_freefem tool): every header line '# key = value', a key the loader
@@ -47,7 +50,9 @@ TOL_POINT=1e-9
 # ~70 for other FreeFEM/UMFPACK/BLAS builds.
 TOL_BETTI=1e-10
 
-[ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: check-table.sh TABLE.dat [DIAG.txt]" >&2; exit 2; }
+# the help is the comment block at the top of this file
+case "${1:-}" in -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;; esac
+[ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: check-table.sh TABLE.dat [DIAG.txt] (or --help)" >&2; exit 2; }
 table=$1
 diag=${2:-}
 [ -r "$table" ] || { echo "check-table.sh: error: cannot read $table" >&2; exit 3; }
@@ -57,7 +62,7 @@ diag=${2:-}
 # the format checks, the one reader of the rve_freefem tools)
 canon=$(mktemp) || { echo "check-table.sh: error: cannot make a temporary file" >&2; exit 3; }
 trap 'rm -f "$canon"' EXIT
-if ! awk -f "$here/table-reader.awk" -v dest="$canon" "$table"; then
+if ! awk -f "$here/table-reader.awk" -v dest="$canon" -v file="$table" "$table"; then
   printf "%-10s %-4s %s\n" format FAIL "the table is not read as the loader reads it (above)"
   exit 1
 fi

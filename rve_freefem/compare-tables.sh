@@ -2,7 +2,13 @@
 # compare-tables.sh -- change of every coefficient between two RVE tables, row by row (same a).
 #
 #   bash rve_freefem/compare-tables.sh [--tol TOL] [--cols "C_TT C_NN ..."] REF.dat NEW.dat
+#   bash rve_freefem/compare-tables.sh --help      (this text)
 #
+# The order matters: every a of NEW must be an a of REF (REF may have more). To check your table
+# against a refined run of a few of its crack lengths, REF is your table and NEW the refined run:
+#   compare-tables.sh mybrick.dat mybrick-r2.dat
+# (each --a-over-b value of that run must be a crack length of your table; its rows a = 0 and
+# a = b are).
 # For each column: the largest relative change |new - ref| / max(|ref|, floor) over the rows whose
 # a appears in both tables (a matched to 1e-12 b), and the a where it occurs.  floor = 1e-6 times
 # the largest |ref| of the column's family (C: C, C^c, T^c, S^c columns; Dbar; C^f; T^f, S^f;
@@ -15,11 +21,12 @@
 # rve_freefem tool): the columns by the names of their '# columns:' line, in any order; a carriage
 # return ending a line is dropped, and a Fortran exponent letter d/D is read as e; what the loader
 # refuses (a row with a field missing or not a number, a repeated or unordered a, no columns
-# line, a bad header value) is named with its file, exit 2. T^f at a = 0, a placeholder the
-# loader does not use (the value of the smallest crack, copied), is not compared.
+# line, a bad header value) is named with its file and line, exit 2. T^f and ufbar at a = 0,
+# placeholders the loader does not use (the values of the table's smallest crack, copied: the
+# a0_row header line), are not compared.
 set -u
 export LC_ALL=C
-usage() { echo "usage: compare-tables.sh [--tol TOL] [--cols LIST] REF.dat NEW.dat" >&2; exit 2; }
+usage() { echo "usage: compare-tables.sh [--tol TOL] [--cols LIST] REF.dat NEW.dat (or --help)" >&2; exit 2; }
 tol=""
 cols=""
 given=" "
@@ -33,6 +40,8 @@ while [ $# -gt 0 ]; do
   case "$1" in
     --tol) [ $# -ge 2 ] || usage; tol=$2; shift 2 ;;
     --cols) [ $# -ge 2 ] || usage; cols=$2; shift 2 ;;
+    # the help is the comment block at the top of this file
+    -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
     -*) echo "compare-tables.sh: error: unknown option $1" >&2; usage ;;
     *) break ;;
   esac
@@ -52,8 +61,8 @@ trap 'rm -rf "$work"' EXIT
 k=0
 for f in "$1" "$2"; do
   k=$((k + 1))
-  if ! awk -f "$here/table-reader.awk" -v dest="$work/$k.dat" "$f" > "$work/$k.txt"; then
-    PREFIX="compare-tables.sh: error: $f: " awk '{ print ENVIRON["PREFIX"] $0 }' "$work/$k.txt" >&2
+  if ! awk -f "$here/table-reader.awk" -v dest="$work/$k.dat" -v file="$f" "$f" > "$work/$k.txt"; then
+    PREFIX="compare-tables.sh: error: " awk '{ print ENVIRON["PREFIX"] $0 }' "$work/$k.txt" >&2
     exit 2
   fi
 done
@@ -88,18 +97,24 @@ END {
   matched = 0
   for (i = 1; i <= nn; i++) {
     for (k = 1; k <= nr; k++) if (abs(R[k, 1] - N[i, 1]) <= 1e-12 * b) break
-    if (k > nr) continue
+    if (k > nr) { nmiss++; if (nmiss <= 5) missing = missing (nmiss > 1 ? ", " : "") sprintf("%.10g", N[i, 1]); else if (nmiss == 6) missing = missing ", ..."; continue }
     matched++
     for (j = 3; j <= last; j++) {
-      # (T^f at a = 0 is a placeholder, the value of the smallest crack copied: the loader does not use it)
-      if (j == 21 && N[i, 1] == 0) continue
+      # (T^f and ufbar at a = 0 are placeholders, the values of the smallest crack copied: the
+      # loader does not use them, and a table of other crack lengths copies other values)
+      if ((j == 21 || j == 23) && N[i, 1] == 0) continue
       fl = 1e-6 * S[fam[j]]; den = abs(R[k, j]); if (den < fl) den = fl; if (den == 0) den = 1
       r = abs(N[i, j] - R[k, j]) / den
       if (r > mx[j] || !(j in at)) { mx[j] = r; at[j] = N[i, 1] }
     }
   }
   if (matched == 0) { print "no common a values" > "/dev/stderr"; exit 2 }
-  if (matched < nn) { printf "%d rows of %s have no row with the same a in %s\n", nn - matched, new, ref > "/dev/stderr"; exit 2 }
+  if (matched < nn) {
+    printf "%d rows of %s have no row with the same a in %s (every a of the second table must be an a of the first)", nn - matched, new, ref > "/dev/stderr"
+    if (nn > nr) printf ": the order is REF NEW, the table with every crack length first; for a table and a refined run of a few of its crack lengths: compare-tables.sh %s %s\n", new, ref > "/dev/stderr"
+    else printf ": %s has no row at a = %s mm (a refined run'"'"'s --a-over-b values must be crack lengths of the table)\n", ref, missing > "/dev/stderr"
+    exit 2
+  }
   printf "%d common a values\n", matched
   printf "%-8s %14s %14s %s\n", "column", "max rel change", "at a (mm)", (tol != "" ? "check" : "")
   bad = 0; over = ""

@@ -99,7 +99,7 @@ trap 'rm -rf "$canon"' EXIT
 k=0
 for f in "$base" "$outdir/$name-r2.dat" "$outdir/$name-r4.dat"; do
   k=$((k + 1))
-  awk -f "$here/table-reader.awk" -v dest="$canon/$k.dat" "$f" || die 4 "$f: not read as the loader reads it (above)"
+  awk -f "$here/table-reader.awk" -v dest="$canon/$k.dat" -v file="$f" "$f" || die 4 "$f: not read as the loader reads it (above)"
 done
 awk -v key="$KEY" '
 function abs(x) { return x < 0 ? -x : x }

@@ -4,13 +4,16 @@
 # distributions D(x) and u^f(x) (Figs 9, 10, 15) from the side file, ufbar and the symmetry zeros.
 #
 #   bash rve_freefem/plot-coefficients.sh TABLE.dat OUTDIR
+#   bash rve_freefem/plot-coefficients.sh --help      (this text)
 #
 # The side file is TABLE-fields.dat (made by make-table.sh) when it exists.  Needs gnuplot
 # (Debian gnuplot-nox); without it, prints a message and exits 0.
 set -u
 export LC_ALL=C
 prog=plot-coefficients.sh
-[ $# -eq 2 ] || { echo "usage: $prog TABLE.dat OUTDIR" >&2; exit 2; }
+# the help is the comment block at the top of this file
+case "${1:-}" in -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;; esac
+[ $# -eq 2 ] || { echo "usage: $prog TABLE.dat OUTDIR (or --help)" >&2; exit 2; }
 table=$1
 out=$2
 if ! command -v gnuplot > /dev/null 2>&1; then
@@ -26,8 +29,8 @@ name=$(basename "${table%.dat}")
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 work=$(mktemp -d) || { echo "$prog: error: cannot make a temporary directory" >&2; exit 3; }
 trap 'rm -rf "$work"' EXIT
-if ! awk -f "$here/table-reader.awk" -v dest="$work/table.dat" "$table" > "$work/why.txt"; then
-  PREFIX="$prog: error: $table: " awk '{ print ENVIRON["PREFIX"] $0 }' "$work/why.txt" >&2
+if ! awk -f "$here/table-reader.awk" -v dest="$work/table.dat" -v file="$table" "$table" > "$work/why.txt"; then
+  PREFIX="$prog: error: " awk '{ print ENVIRON["PREFIX"] $0 }' "$work/why.txt" >&2
   exit 3
 fi
 source_table=$table

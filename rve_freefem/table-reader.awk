@@ -4,8 +4,10 @@
 # convergence.sh, so that they all take the columns by name, in any order, and refuse what the
 # loader refuses in the file's form.
 #
-#   awk -f table-reader.awk -v dest=CANONICAL.dat TABLE.dat
+#   awk -f table-reader.awk -v dest=CANONICAL.dat [-v file=NAME] TABLE.dat
 #
+# With file, each refusal names it: "NAME:LINE: what" (the file's line number) where the refusal
+# is about one line, "NAME: what" otherwise; without it, "line LINE: what" and "what".
 # Writes to dest the header lines as read (the numbers of the keys the loader reads as %.17g), the line "# columns: a D C_TT ... ufbar" (I_fNT last
 # where the table has it) and the rows with their numbers in that order (%.17g: the values read,
 # a Fortran d exponent read as e). Prints what it refuses, one line each, on standard output and
@@ -22,14 +24,23 @@
 # values the loader knows; b and h given; h = h_m + h_b (1e-12 h) where the layers are given; one "# columns:"
 # line naming the 23 columns of format 1 (and I_fNT, format 2), each once; every row as many
 # numbers, each 0 or of magnitude in [2.2250738585072014e-308, 1e100] (1e-400, 1e-310 refused), [sign](digits[.[digits]] | .digits)[(e|E|d|D)[sign]digits]; a strictly
-# ascending from 0 to b; at least 4 rows (the loader's not-a-knot spline); the a = 0 row's Dbar_TT
+# ascending from 0 to b (the reading stops at the first row it cannot read, a number missing or
+# one more, or a field not a number or out of range, as the loader stops: no follow-on errors,
+# such as an a out of order after "12,5" in the a column); at least 4 rows (the loader's not-a-knot spline); the a = 0 row's Dbar_TT
 # and Dbar_NN 0 (within 1e-8 h) with the elastic constants, else in [0, h].
 function abs(x) { return x < 0 ? -x : x }
 function isnumber(s) { return s ~ /^[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?$/ }
 # its value (a d/D exponent read as e); finite() is false beyond the range of a double
 function numval(s) { sub(/[dD]/, "e", s); return s + 0 }
 function finite(x) { return sprintf("%g", x) !~ /inf|nan/ }
-function refuse(text) { print text; bad = 1 }
+# a refusal "line N: what" is printed "FILE:N: what" and any other "FILE: what" when file is given
+function comma_to_point(s) { sub(/,/, ".", s); return s }
+function refuse(text) {
+  if (file != "") { if (text ~ /^line [0-9]+: /) { sub(/^line /, "", text); text = file ":" text } else text = file ": " text }
+  print text; bad = 1
+}
+# the name of column i of the file's "# columns:" line
+function colname(i) { return (i <= ncol) ? names[i] : "beyond the columns line" }
 # a literal whose digits are not all zero but whose value is below the smallest normal double
 # reads as 0 or a subnormal: the loader refuses it as out of range (a value, never its string,
 # is compared: mawk compares a field such as "1e-400" as a string)
@@ -164,19 +175,23 @@ NR == 1 && index($0, "\357\273\277") == 1 {
 NF == 0 { next }
 {
   n++
-  if (ncolsline == 0) { refuse("row " n " (line " NR ") comes before the # columns: line"); aborted = 1; exit 1 }
-  if (NF != ncol) refuse("row " n " has " NF " fields, the columns line names " ncol)
+  if (ncolsline == 0) { refuse("line " NR ": a data row (row " n ") comes before the # columns: line"); aborted = 1; exit 1 }
+  # (as the loader, the reading stops at the first row it cannot read: a value taken for an
+  # unreadable one would make follow-on errors, an a out of order among them)
+  if (NF != ncol) { refuse("line " NR ": " NF " numbers where the # columns: line names " ncol); aborted = 1; exit 1 }
   delete x
   for (i = 1; i <= NF; i++) {
-    if (!isnumber($i) || !finite(numval($i))) { refuse("row " n " field " i " not a finite number: " $i); x[i] = 0 }
-    else if (underflows($i)) { refuse("row " n " (line " NR ") field " i " is out of range (|x| < 2.2e-308): " $i); x[i] = 0 }
-    else if (abs(numval($i)) > 1e100) { refuse("row " n " (line " NR ") field " i " lies beyond 1e100 in magnitude: " $i); x[i] = 0 }
-    else x[i] = numval($i)
+    if (!isnumber($i) || !finite(numval($i)))
+      refuse("line " NR ": column " i " (" colname(i) ") is not a finite number: " $i ($i ~ /^[+-]?[0-9]*,[0-9]/ ? " (a decimal comma? write a point: " comma_to_point($i) ")" : ""))
+    else if (underflows($i)) refuse("line " NR ": column " i " (" colname(i) ") is out of range (|x| < 2.2e-308): " $i)
+    else if (abs(numval($i)) > 1e100) refuse("line " NR ": column " i " (" colname(i) ") lies beyond 1e100 in magnitude: " $i)
+    else { x[i] = numval($i); continue }
+    aborted = 1; exit 1
   }
   for (i = 1; i <= NF && i <= ncol; i++) if (pos[i] > 0) val[pos[i]] = x[i]
-  if (n > 1 && !(val[1] > a_prev)) refuse("row " n " (line " NR "): a = " val[1] " does not exceed the previous a = " a_prev)
+  if (n > 1 && !(val[1] > a_prev)) refuse("line " NR ": a = " val[1] " does not exceed the previous row's a = " a_prev " (line " a_prev_line ")")
   if (n == 1) { a_first = val[1]; dbar0["Dbar_TT"] = val[7]; dbar0["Dbar_NN"] = val[10]; dbar0_line = NR }
-  a_prev = val[1]
+  a_prev = val[1]; a_prev_line = NR
   out = ""; for (j = 1; j <= (withI ? 24 : 23); j++) out = out (j > 1 ? " " : "") sprintf("%.17g", val[j])
   print out > dest
 }

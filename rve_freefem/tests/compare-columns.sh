@@ -62,21 +62,41 @@ expect "a column not named" 2 'does not name Sc_N'
 rows() { awk -v prog="$1" '/^#/ || NF == 0 { print; next } { n++; if (prog == "short" && n == 3) $5 = ""; if (prog == "x" && n == 3) $5 = "1.0e-3x"; if (prog == "dup" && n == 3) print; print }' "$table"; }
 rows short > "$work/short.dat"
 cmp_ "$table" "$work/short.dat"; rc=$?
-expect "a row with a field missing" 2 'error: .*short[.]dat: row 3 has 23 fields, the columns line names 24'
+expect "a row with a field missing, named by file and line" 2 'error: .*short[.]dat:[0-9]+: 23 numbers where the # columns: line names 24'
 rows x > "$work/x.dat"
 cmp_ "$table" "$work/x.dat"; rc=$?
-expect "a field that is not one number (1.0e-3x)" 2 'x[.]dat: row 3 field 5 not a finite number: 1[.]0e-3x'
+expect "a field that is not one number (1.0e-3x)" 2 'x[.]dat:[0-9]+: column 5 [(]C_NT[)] is not a finite number: 1[.]0e-3x'
 rows dup > "$work/dup.dat"
 cmp_ "$table" "$work/dup.dat"; rc=$?
-expect "a row given twice" 2 'dup[.]dat: row 4 [(]line [0-9]+[)]: a = [0-9.e-]+ does not exceed the previous a'
+expect "a row given twice" 2 'dup[.]dat:[0-9]+: a = [0-9.e-]+ does not exceed the previous row.s a'
 grep -v '^# columns: ' "$table" > "$work/nocols.dat"
 cmp_ --tol 1e-3 "$work/nocols.dat" "$work/nocols.dat"; rc=$?
-expect "no # columns: line (not read as all zeros)" 2 'nocols[.]dat: .*before the # columns: line'
+expect "no # columns: line (not read as all zeros)" 2 'nocols[.]dat:[0-9]+: .*before the # columns: line'
 sed 's/^# E_m = .*/# E_m = -1000/' "$table" > "$work/negative.dat"
 cmp_ "$table" "$work/negative.dat"; rc=$?
-expect "a negative modulus in the header" 2 'negative[.]dat: line [0-9]+: E_m = "-1000" is not one positive number'
+expect "a negative modulus in the header" 2 'negative[.]dat:[0-9]+: E_m = "-1000" is not one positive number'
 # T^f at a = 0 is a placeholder the loader does not use: not compared
 awk '/^#/ || NF == 0 { print; next } { n++; if (n == 1) $21 = "-12345"; print }' "$table" > "$work/tf0.dat"
 cmp_ --tol 0 --cols Tf "$table" "$work/tf0.dat"; rc=$?
 expect "T^f at a = 0 (a placeholder) not compared" 0 '^ok: all checked columns within 0'
+# ufbar at a = 0 is a placeholder too (the smallest crack's, copied): a refined run of a few
+# crack lengths copies another one; with the T^f placeholder, not compared
+awk '/^#/ || NF == 0 { print; next } { n++; if (n == 1) { $21 = "-12345"; $23 = "0.5" } print }' "$table" > "$work/placeholders0.dat"
+cmp_ --tol 0 "$table" "$work/placeholders0.dat"; rc=$?
+expect "T^f and ufbar at a = 0 (placeholders) not compared" 0 '^ok: all checked columns within 0'
+# the order REF NEW: a refined run of a few crack lengths (NEW) against the table (REF); reversed,
+# or with an a the table lacks, exit 2 and a message that says which order or which a
+awk '/^#/ || NF == 0 { print; next } { last = $0; n++; if (n == 1 || n == 5 || n == 20) print } END { print last }' "$table" > "$work/few.dat"
+cmp_ --tol 0 "$table" "$work/few.dat"; rc=$?
+expect "a table and a subset of its crack lengths (REF NEW)" 0 '^4 common a values'
+cmp_ --tol 0 "$work/few.dat" "$table"; rc=$?
+expect "the order reversed: named, with the order to give" 2 "have no row with the same a in .*few[.]dat .*the order is REF NEW.*: compare-tables[.]sh $table $work/few[.]dat\$"
+awk '/^#/ || NF == 0 { print; next } { n++; if (n == 2) $1 = sprintf("%.17g", $1 * 1.001); print }' "$work/few.dat" > "$work/other-a.dat"
+cmp_ --tol 0 "$table" "$work/other-a.dat"; rc=$?
+expect "an a the table lacks: named" 2 'has no row at a = [0-9.e-]+ mm [(]a refined run.s --a-over-b values must be crack lengths of the table[)]'
+# --help and -h: the description, exit 0
+for opt in --help -h; do
+  cmp_ "$opt"; rc=$?
+  expect "$opt" 0 '^  bash rve_freefem/compare-tables[.]sh .*REF[.]dat NEW[.]dat'
+done
 exit $fail

@@ -2,6 +2,12 @@
 # plots.sh TABLE OUTDIR -- plot-coefficients.sh makes every PNG (skip, 77, without gnuplot).
 set -u
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+# --help and -h: the description on standard output, exit 0 (with or without gnuplot)
+for opt in --help -h; do
+  out=$(bash "$here/plot-coefficients.sh" "$opt" 2>&1) && grep -q '^  bash rve_freefem/plot-coefficients[.]sh TABLE[.]dat OUTDIR' <<< "$out" \
+    || { echo "FAIL plot-coefficients.sh $opt: no description or a non-zero exit"; printf '%s\n' "$out"; exit 1; }
+  echo "ok   plot-coefficients.sh $opt"
+done
 command -v gnuplot > /dev/null 2>&1 || { echo "gnuplot not found: plot test skipped"; exit 77; }
 rm -rf "$2"
 bash "$here/plot-coefficients.sh" "$1" "$2" || exit 1

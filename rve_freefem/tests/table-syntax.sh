@@ -39,7 +39,7 @@ data 3 20 1-3 > "$work/minus.dat"
 check "1-3 (no exponent letter) refused" fail "$work/minus.dat" 'not a finite number: 1-3'
 n=$(awk '!/^#/ && NF' "$table" | wc -l)
 awk -v n="$n" '/^#/ || NF == 0 { print; next } { k++; if (k == 1 || k == 2 || k == n) print }' "$table" > "$work/three.dat"
-check "3 rows (a = 0, one a, a = b) refused" fail "$work/three.dat" '^3 rows: a table needs at least 4'
+check "3 rows (a = 0, one a, a = b) refused" fail "$work/three.dat" 'three[.]dat: 3 rows: a table needs at least 4'
 awk -v n="$n" '/^#/ || NF == 0 { print; next } { k++; if (k == 1 || k == 2 || k == 3 || k == n) print }' "$table" > "$work/four.dat"
 check "4 rows accepted" pass "$work/four.dat" '4 rows of'
 # the header as the loader reads it: its numbers in range, a key it reads given once, h = h_m +
@@ -60,7 +60,7 @@ check "E_b given twice refused" fail "$work/Eb2.dat" 'key "E_b" given twice'
 printf '\357\273\277' | cat - "$table" > "$work/bom.dat"
 check "a byte-order mark refused and named" fail "$work/bom.dat" 'byte-order mark'
 awk '/^#/ || NF == 0 { print; next } { if (++k == 5) print; print }' "$table" > "$work/dup.dat"
-check "a repeated row named" fail "$work/dup.dat" '^row 6 [(]line [0-9]+[)]: a = [0-9.e-]+ does not exceed the previous a'
+check "a repeated row named" fail "$work/dup.dat" 'dup[.]dat:44: a = [0-9.e-]+ does not exceed the previous row.s a = [0-9.e-]+ [(]line 43[)]'
 # the header's forms the loader reads: blanks and tabs before and after "#", "#columns:" with no
 # blank; a key the loader reads after the columns line is refused, as the loader refuses it
 awk '/^# / { sub(/^# /, (NR % 2 ? "  #\t" : "#")) } { print }' "$table" > "$work/blanks.dat"
@@ -76,13 +76,13 @@ check "h not h_m + h_b refused without E and nu" fail "$work/h-no-elastic.dat" "
 # out of its window, a_Tf_limit out of [-1e20, 0] or against the elastic constants, a key
 # without its partner
 data 3 4 1e-400 > "$work/under.dat"
-check "1e-400 (underflows to 0) refused" fail "$work/under.dat" 'field 4 is out of range [(][|]x[|] < 2.2e-308[)]: 1e-400'
+check "1e-400 (underflows to 0) refused" fail "$work/under.dat" 'under[.]dat:41: column 4 [(]C_TN[)] is out of range [(][|]x[|] < 2.2e-308[)]: 1e-400'
 data 3 4 1e-310 > "$work/subnormal.dat"
-check "1e-310 (subnormal) refused" fail "$work/subnormal.dat" 'field 4 is out of range [(][|]x[|] < 2.2e-308[)]: 1e-310'
+check "1e-310 (subnormal) refused" fail "$work/subnormal.dat" 'column 4 [(]C_TN[)] is out of range [(][|]x[|] < 2.2e-308[)]: 1e-310'
 data 3 4 0.000e-999 > "$work/zero.dat"
 check "0.000e-999 (a zero) accepted" pass "$work/zero.dat"
 data 3 21 -1.7e308 > "$work/tfhuge.dat"
-check "Tf = -1.7e308 (beyond 1e100) refused" fail "$work/tfhuge.dat" 'field 21 lies beyond 1e100 in magnitude'
+check "Tf = -1.7e308 (beyond 1e100) refused" fail "$work/tfhuge.dat" 'column 21 [(]Tf[)] lies beyond 1e100 in magnitude'
 sed 's/^# h = 5$/&\n# B = 25/' "$table" > "$work/B.dat"
 check "key B (wrong case) refused" fail "$work/B.dat" 'unknown key "B": is it "b"'
 sed 's/^# h = 5$/&\n# fromat = x/' "$table" > "$work/fromat.dat"
@@ -104,4 +104,26 @@ data 1 10 3 > "$work/dbar0-three.dat"
 check "Dbar_NN = 3 at a = 0 refused" fail "$work/dbar0-three.dat" 'Dbar_NN = 3 at a = 0, where the limit a -> 0[+] is 0'
 data 1 7 1e-6 > "$work/dbar0-small.dat"
 check "Dbar_TT = 1e-6 at a = 0 refused (1e-8 h = 5e-8)" fail "$work/dbar0-small.dat" 'Dbar_TT = 1e-06 at a = 0'
+# a number the reader cannot read is named by the file, its line and the column's name, and the
+# reading stops there (as the loader's): a decimal comma in the a column gives no follow-on
+# "a = 0 does not exceed the previous a" (line 47: the 9th row of the committed table)
+data 9 3 12,5 > "$work/comma.dat"
+check "a decimal comma named by file, line and column" fail "$work/comma.dat" \
+  'comma[.]dat:47: column 3 [(]C_TT[)] is not a finite number: 12,5 [(]a decimal comma[?] write a point: 12[.]5[)]'
+data 9 1 12,5 > "$work/comma-a.dat"
+check "a decimal comma in the a column, no follow-on error" fail "$work/comma-a.dat" 'comma-a[.]dat:47: column 1 [(]a[)] is not a finite number'
+if grep -q 'does not exceed' "$work/out.txt" || [ "$(grep -c . "$work/out.txt")" -ne 2 ]; then
+  echo "FAIL more than the one refusal after the decimal comma:"; cat "$work/out.txt"; fail=1
+else
+  echo "ok   the reading stopped at the decimal comma"
+fi
+# --help and -h: the description, exit 0 (standard output)
+for opt in --help -h; do
+  bash "$here/check-table.sh" "$opt" > "$work/help.txt" 2>&1; rc=$?
+  if [ $rc -eq 0 ] && grep -q '^  bash rve_freefem/check-table[.]sh TABLE[.]dat' "$work/help.txt"; then
+    echo "ok   $opt"
+  else
+    echo "FAIL $opt: no description or a non-zero exit"; fail=1
+  fi
+done
 exit $fail
