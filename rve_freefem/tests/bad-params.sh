@@ -32,8 +32,8 @@ case_ E_negative      "'E_m' = -1000 must be positive" 's/^E_m = .*/E_m = -1000/
 case_ hmax_negative   "'hmax' = -1 must be positive"   's/^hmax = .*/hmax = -1/'
 case_ not_a_number    "is not a number"                's/^E_m = .*/E_m = soft/'
 case_ missing_key     "'nu_b' missing"                 '/^nu_b/d'
-case_ unknown_key     "unknown key"                    '$a thickness = 3'
-case_ syntax          "expected key = value"           '$a h_m 2'
+case_ unknown_key     '^make-table.sh: error: .*unknown_key[.]params:[0-9]+: unknown key "thickness"$' '$a thickness = 3'
+case_ syntax          '^make-table.sh: error: .*syntax[.]params:[0-9]+: expected key = value' '$a h_m 2'
 case_ ligament_tiny   "too short for this mesh"        's/^a_over_b_list = .*/a_over_b_list = 0.5 0.999999/'
 case_ E_infinite      "'E_m' = '1e400' is not a finite number" 's/^E_m = .*/E_m = 1e400/'
 case_ E_huge          "'E_b' = '1e200' is out of range"  's/^E_b = .*/E_b = 1e200/'
@@ -63,6 +63,11 @@ for opt in "--refine 1e-400|--refine = '1e-400' is out of range" \
   rc=$?
   if [ $rc -eq 2 ] && grep -q -- "$pat" "$work/opt.out"; then echo "ok   $args: exit 2"; else echo "FAIL $args (exit $rc)"; cat "$work/opt.out"; fail=1; fi
 done
+# --check names a misspelt key as every other error: "make-table.sh: error: FILE:LINE: ..."
+printf '%s\nhtipmx = 0.01\n' "$good" > "$work/misspelt.params"
+bash "$here/make-table.sh" --check "$work/misspelt.params" > "$work/opt.out" 2>&1
+rc=$?
+if [ $rc -eq 2 ] && grep -Eq '^make-table.sh: error: .*misspelt[.]params:[0-9]+: unknown key "htipmx"$' "$work/opt.out"; then echo "ok   --check, a misspelt key: exit 2"; else echo "FAIL --check, a misspelt key (exit $rc)"; cat "$work/opt.out"; fail=1; fi
 # leading zeros: --jobs 00002 and 08 are 2 and 8
 for args in "--jobs 00002" "--jobs 08"; do
   bash "$here/make-table.sh" --check $args "$work/good.params" > "$work/opt.out" 2>&1
