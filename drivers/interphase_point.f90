@@ -46,6 +46,10 @@ program interphase_point
       call exit_program(0)
    end if
    if (.not. ok) call fail(message, usage=.true.)
+   ! the hosts' start-up variables are not read here: a user who set one is told (standard error)
+   call note_unused_variable('INTERPHASE_TABLE', 'the RVE table is the case file''s table entry (the built-in '// &
+      'table when none)')
+   call note_unused_variable('INTERPHASE_RCURVE', 'the tabulated R-curve is the case file''s rcurve_file entry')
    case_path = cli%case_path
    output_dir = cli%output_dir
    no_plot = cli%no_plot
@@ -131,6 +135,19 @@ contains
       end if
       call exit_program(1)
    end subroutine fail
+
+   !> A note on standard error when the environment variable `name` is set (and not empty): the
+   !> hosts' start-up (UEXTERNALDB, VEXTERNALDB, the CalculiX hook) loads the file it names;
+   !> interphase-point does not read it, its case file (or replay file) names the file.
+   subroutine note_unused_variable(name, instead)
+      character(len=*), intent(in) :: name        !! the environment variable
+      character(len=*), intent(in) :: instead     !! where interphase-point takes the file from
+      integer :: length, stat
+      call get_environment_variable(name, length=length, status=stat)
+      if (stat /= 0 .or. length == 0) return
+      write (error_unit, '(a)') 'interphase-point: note: '//name//' is set, but interphase-point does not '// &
+         'read it: '//instead//'; a replay file names its own (drivers/README.md)'
+   end subroutine note_unused_variable
 
    !> Repeat the UMAT call of a replay file (`&replay`) and end: exit status 1 when it fails again.
    subroutine repeat_replay(path)
