@@ -18,6 +18,7 @@ module interphase_external_data
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, SEVERITY_INFO, SEVERITY_WARNING, SEVERITY_FATAL, status_message, &
       file_loader, message_path
    use interphase_enums, only: TABLE_CUSTOM_CODE
+   use interphase_layout, only: PROP_TABLE
    use interphase_micro_coefficients, only: load_custom_table, custom_table_source
    use interphase_rcurve, only: load_rcurve, rcurve_source
    use interphase_abaqus_interfaces, only: interphase_host_message
@@ -44,12 +45,19 @@ contains
       if (environment(caller, RCURVE_VARIABLE, 'R-curve', path)) call load_rcurve_file(caller, path, ok)
    end subroutine load_external_data
 
-   !> Load the custom RVE table from `path` (unless that file is loaded already) and report.
+   !> Load the custom RVE table from `path` (unless that file is loaded already) and report. The
+   !> report says which materials use it: a loaded table changes nothing for a material whose
+   !> table selector PROPS(8) is 0 (the built-in table), and a user who forgot PROPS(8) = 1 must
+   !> not read "loaded" as "in use".
    subroutine load_table_file(caller, path, ok)
       character(len=*), intent(in) :: caller, path
       logical, intent(out) :: ok
+      character(len=4) :: index_text
+      write (index_text, '(i0)') PROP_TABLE
       call load_named_file(caller, TABLE_VARIABLE, 'custom RVE table', path, &
-         custom_table_source(TABLE_CUSTOM_CODE), load_custom_table, ok)
+         custom_table_source(TABLE_CUSTOM_CODE), load_custom_table, ok, &
+         used_by='; used by the micromechanical materials with the table selector PROPS('//trim(index_text)// &
+         ') = 1 only (PROPS('//trim(index_text)//') = 0: the built-in table)')
    end subroutine load_table_file
 
    !> Load the tabulated R-curve from `path` (unless that file is loaded already) and report.
@@ -59,15 +67,20 @@ contains
       call load_named_file(caller, RCURVE_VARIABLE, 'R-curve', path, rcurve_source(), load_rcurve, ok)
    end subroutine load_rcurve_file
 
-   !> Call `loader` on `path` unless `loaded_from` is that path already; report success (info)
-   !> or failure (fatal, naming the variable, the file and the loader's message).
-   subroutine load_named_file(caller, variable, what, path, loaded_from, loader, ok)
+   !> Call `loader` on `path` unless `loaded_from` is that path already; report success (info,
+   !> followed by `used_by`) or failure (fatal, naming the variable, the file and the loader's
+   !> message).
+   subroutine load_named_file(caller, variable, what, path, loaded_from, loader, ok, used_by)
       character(len=*), intent(in) :: caller, variable, what, path
       character(len=*), intent(in) :: loaded_from       !! the file loaded now ('' or a note if none)
       procedure(file_loader) :: loader                  !! the loader to call
       logical, intent(out) :: ok
+      character(len=*), intent(in), optional :: used_by !! which materials use the file, for the report
       character(len=MESSAGE_LEN) :: message
+      character(len=:), allocatable :: users
       integer :: status
+      users = ''
+      if (present(used_by)) users = used_by
       ok = .true.
       if (loaded_from == path) then
          call interphase_host_message(SEVERITY_INFO, caller//': '//what//' '//message_path(tried_path(path))//' already loaded')
@@ -80,7 +93,9 @@ contains
             status_message(status)//': '//trim(message))
          return
       end if
-      call interphase_host_message(SEVERITY_INFO, caller//': '//what//' loaded from '//message_path(tried_path(path)))
+      ! (the path shortened so that the whole report fits in a message)
+      call interphase_host_message(SEVERITY_INFO, caller//': '//what//' loaded from '// &
+         message_path(tried_path(path), MESSAGE_LEN - len(caller) - len(what) - len(users) - 16)//users)
    end subroutine load_named_file
 
    !> The value of a non-empty environment variable. A variable that is set but empty names no
