@@ -887,7 +887,8 @@ static void test_run_history(const char *csv_path) {
   const double nan_value[6] = {0, 0, 0, NAN, 0, 0};
   status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, t3, nan_value, NULL, 10, 1e-12, 1, ROWS,
                                   NULL, NULL, NULL, NULL, NULL, NULL, NULL, &done, detail, sizeof detail);
-  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0 && strstr(detail, "value[3] (row 1, component 1)"),
+  CHECK(status == INTERPHASE_STATUS_BAD_HISTORY && done == 0
+            && strstr(detail, "value[3] (row 1, component 1: s_T) = NaN is not finite"),
         "a NaN in the history: status %d: %s", status, detail);
   const double back[3] = {0, 2, 1};
   status = interphase_run_history(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, 3, back, shear, control, 10, 1e-12, 1, ROWS,

@@ -167,7 +167,8 @@ def test_run_input_checks():
     with pytest.raises(ValueError, match="increments"):
         m.run([[0, 0], [0.01, 0]], increments=0)
     # a value that is not finite: refused before any update, naming its row and component
-    with pytest.raises(interphase.InterphaseError, match=r"value\[2\] \(row 1, component 0\) = NaN") as caught:
+    with pytest.raises(interphase.InterphaseError,
+                       match=re.escape("value[2] (row 1, component 0: s_N) = NaN is not finite")) as caught:
         m.run([[0, 0], [float("nan"), 0]])
     assert caught.value.status == interphase.STATUS_BAD_HISTORY
     with pytest.raises(ValueError, match="state must hold 4"):
@@ -432,9 +433,10 @@ def test_array_arguments_take_ints_and_floats():
         m.run([[0, 0], [10**400, 0]])
 
 
-@pytest.mark.parametrize("props, shape", [(np.ones((3, 3)), "(3, 3)"), (1.0, "()"), ([[1.0, 1.0]], "(1, 2)")])
+@pytest.mark.parametrize("props, shape", [(np.ones((3, 3)), "shape (3, 3)"), (1.0, "a scalar (1.0)"),
+                                          ([[1.0, 1.0]], "shape (1, 2)")])
 def test_props_must_be_one_dimensional(props, shape):
-    with pytest.raises(ValueError, match=re.escape(f"Material.from_props: PROPS must be one-dimensional, got shape {shape}")):
+    with pytest.raises(ValueError, match=re.escape(f"Material.from_props: PROPS must be one-dimensional, got {shape}")):
         interphase.Material.from_props(props)
 
 
@@ -514,6 +516,98 @@ def test_tangent_check_tolerance_below_one_and_no_step_compared():
     check = m.tangent_check(one_row, 1e-5)
     assert not check.passed and check.failure == ("the tangent check compared no step: the result has no step after "
                                                   "its first row")
+
+
+def test_tangent_check_failure_says_where():
+    """A failed check names the worst row, its time and its separation; away from s_N = 0 it says
+    nothing of the closed crack's exception (the exception itself: test_paper_cases.py, h2I)."""
+    m = interphase.Material(**SIMPLIFIED)
+    r = m.run([[0.0, 0.0], [0.002, 0.001]], increments=20)
+    check = m.tangent_check(r, 1e-5)
+    assert check.passed and check.exception_rows.size == 0
+    strict = m.tangent_check(r, 1e-14)
+    assert not strict.passed and strict.worst_row == int(np.nanargmax(strict.errors))
+    s_n, s_t = (interphase._files._real_text(v) for v in r.separation[strict.worst_row])
+    assert strict.failure.startswith(f"the tangent check failed: worst relative error "
+                                     f"{interphase._files._real_text(strict.worst)} at t = "
+                                     f"{interphase._files._real_text(strict.worst_time)} (row {strict.worst_row}, "
+                                     f"s_N = {s_n}, s_T = {s_t} mm) is above the tolerance 0.1E-13")
+    assert "exception" not in strict.failure
+
+
+def test_update_refuses_a_3d_state_in_2d():
+    """The dimension comes from the separation's length: a state with a second slip lambda_2 (a
+    3-D one) given to a 2-D update is refused, naming the value, where the library's 2-D update
+    (as the UMAT's) would not read it and return it as 0. lambda_2 = 0 (or -0) is a 2-D state, and
+    a 2-D state goes on in 3-D as the state with lambda_2 = 0 it is."""
+    m = interphase.Material(**SIMPLIFIED)
+    three = m.update([-0.001, 0.002, 0.003])
+    assert three.state[2] != 0.0
+    for lam2, text in ((three.state[2], repr(float(three.state[2]))), (float("nan"), "nan"), (-1e-300, "-1e-300")):
+        state = three.state.copy()
+        state[2] = lam2
+        with pytest.raises(interphase.InterphaseError, match=re.escape(
+                f"Material.update: STATEV(3) lambda_2 = {text} mm (state[2], the slip in the second shear "
+                "direction) is not zero, but the separation (s_N, s_T) is 2-D")) as caught:
+            m.update([-0.001, 0.002], state)
+        assert caught.value.status == interphase.STATUS_BAD_STATE
+    for zero in (0.0, -0.0):
+        state = three.state.copy()
+        state[2] = zero
+        assert m.update([-0.001, 0.002], state).state[2] == 0.0
+    two = m.update([-0.001, 0.002])
+    assert np.array_equal(m.update([-0.001, 0.002, 0.0], two.state).traction[:2],
+                          m.update([-0.001, 0.002], two.state).traction)
+
+
+def test_a_slip_without_damage_is_taken_as_the_umat_takes_it():
+    """D = 0 with a slip: the UMAT's STATEV reader checks ranges only and takes it; the update keeps
+    the slip while the point stays intact, and a crack that forms may start from it (fixed-lambda
+    growth): not a reset to the virgin state (docs/python.md, 'One point')."""
+    m = interphase.Material(**SIMPLIFIED)
+    slipped = [0.0, 0.01, 0.0, 0.0]
+    intact = m.update([0.0001, 0.0001], slipped)
+    assert intact.state.tolist() == [0.0, 0.01, 0.0, 0.0]
+    assert np.array_equal(intact.traction, m.update([0.0001, 0.0001]).traction)
+    fixed = interphase.Material(**dict(SIMPLIFIED, growth_slip="fixed-lambda"))
+    cracked = fixed.update([-0.001, 0.002], slipped)
+    virgin = fixed.update([-0.001, 0.002])
+    assert cracked.state[0] == virgin.state[0] > 0.0 and cracked.state[1] != virgin.state[1]
+    assert not np.array_equal(cracked.traction, virgin.traction)
+
+
+def test_shapes_and_ragged_arrays_are_named():
+    m = interphase.Material(**SIMPLIFIED)
+    for call, message in (
+            (lambda: m.update(0.001), "Material.update: separation must hold 2 (2-D) or 3 (3-D) components, got a "
+                                      "scalar (0.001)"),
+            (lambda: m.update([[0.001, 0.0]]), "Material.update: separation must hold 2 (2-D) or 3 (3-D) "
+                                               "components, got shape (1, 2)"),
+            (lambda: m.update([0.001, 0.0], 0.0), "Material.update: state must hold 4 values, got a scalar (0.0)"),
+            (lambda: m.update([0.001, 0.0], np.zeros(5)), "Material.update: state must hold 4 values, got shape (5,)"),
+            (lambda: m.run(0.5), "Material.run: history must be an (nrows, 2) or (nrows, 3) array, got a scalar "
+                                 "(0.5)"),
+            (lambda: m.run([0.0, 0.01]), "Material.run: history must be an (nrows, 2) or (nrows, 3) array, got "
+                                         "shape (2,)"),
+            (lambda: m.run(TWO_ROWS, time=1.0), "Material.run: time must hold 2 values, got a scalar (1.0)"),
+            (lambda: m.run(TWO_ROWS, control=[True]), "Material.run: control must have shape (2,) or (2, 2), got "
+                                                      "shape (1,)"),
+            (lambda: m.run([[0.0, 0.0], [0.001]]), "Material.run: history is ragged: its rows (or their entries) "
+                                                   "do not all have the same length"),
+            (lambda: m.run([[0.0, 0.0], [0.001, 0.0, 0.0]]), "Material.run: history is ragged"),
+            (lambda: m.run(TWO_ROWS, time=[0.0, [1.0, 2.0]]), "Material.run: time is ragged"),
+            (lambda: m.run(TWO_ROWS, control=[[True, False], [True]]), "Material.run: control is ragged"),
+            (lambda: m.update([0.001, [0.0, 0.0]]), "Material.update: separation is ragged"),
+            (lambda: interphase.Material.from_props(1.0), "Material.from_props: PROPS must be one-dimensional, got "
+                                                          "a scalar (1.0)")):
+        with pytest.raises(ValueError, match=re.escape(message)):
+            call()
+    # a value that is not finite is named as the out-of-range one is: the component's name
+    for history, control, name in (([[0, 0], [0, float("inf")]], None, "component 1: s_T) = Infinity"),
+                                   ([[0, 0, 0], [0, 0, float("nan")]], None, "component 2: s_T2) = NaN"),
+                                   ([[0, 0], [float("nan"), 0]], [True, False], "component 0: Sigma_N) = NaN")):
+        with pytest.raises(interphase.InterphaseError, match=re.escape(name + " is not finite")):
+            m.run(history, control=control)
 
 
 def test_threads_give_the_numbers_of_one():

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 import interphase
+from interphase._files import _real_text
 
 SIMPLIFIED = dict(model="simplified", mu=0.75, s0_n=0.00044, sf_n=0.04, s0_t=0.00072, sf_t=0.06,
                   k_n=482.69742679680568, k_t=198.75776397515528)
@@ -262,6 +263,16 @@ def test_tangent_check_finds_a_wrong_tangent(source_dir, tmp_path):
     assert not check.passed
     assert check.worst == pytest.approx(0.41, abs=0.01)
     assert check.worst_time == pytest.approx(4.0)
+    # the failure says where, and that it is the documented exception (a closed, damaged crack
+    # sticking at s_N = 0: t = 2 and t = 4), and what the check measures away from it
+    assert check.worst_row == 800 and check.exception_rows.tolist() == [400, 800]
+    assert check.failure.startswith("the tangent check failed: worst relative error 0.41")
+    assert ("at t = 4.0 (row 800, s_N = 0.0, s_T = 0.0 mm) is above the tolerance 0.1E-4; that row is the "
+            "tangent check's one documented exception: a closed, damaged crack that sticks at s_N = 0 exactly"
+            in check.failure)
+    assert check.failure.endswith("rows at this exception: 2; away from them the worst relative error is "
+                                  f"{_real_text(check.worst_elsewhere)} at t = 4.755 (row 951), within the tolerance")
+    assert check.worst_elsewhere < 1e-5
     c = interphase.read_case(tangent_case(source_dir, tmp_path, "mixed.txt", ", output_every = 10"))
     with pytest.raises(ValueError, match="output_every=1"):
         c.check_tangent(c.run())

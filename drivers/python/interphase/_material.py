@@ -114,8 +114,14 @@ def _numbers(name, value, who):
     Anything else raises TypeError naming the argument, where numpy would convert it in silence or
     with a mere warning: a string ('0.5' read as 0.5), a bool (True as 1.0), a complex number (its
     imaginary part dropped), a date or a time span (as a count of days or seconds), None (as NaN)
-    or another object."""
-    a = np.asarray(value)
+    or another object. Rows of different lengths (a ragged list) raise ValueError naming the
+    argument."""
+    try:
+        a = np.asarray(value)
+    except ValueError:
+        # (numpy's own words, "inhomogeneous shape after 1 dimensions", name no argument)
+        raise ValueError(f"{who}: {name} is ragged: its rows (or their entries) do not all have the same "
+                         "length") from None
     if a.dtype.kind in "fiu":
         # (a bool among numbers in a list, [0.001, True], comes out of numpy as a number)
         index = None if isinstance(value, np.ndarray) else _bool_at(value)
@@ -135,6 +141,14 @@ def _numbers(name, value, who):
     except OverflowError:
         # (an int beyond the double range, as _real names it)
         raise ValueError(f"{who}: {name} holds a number beyond the range of a double (about 1.8e308)") from None
+
+
+def _shape_text(a):
+    """How a message names what was given instead of the expected shape: a scalar and its value,
+    or the array's shape."""
+    if a.ndim == 0:
+        return f"a scalar ({a[()]!r})"
+    return f"shape {a.shape}"
 
 
 def _ascii_lower(text):
@@ -333,7 +347,7 @@ class Material:
         number raises TypeError, another shape ValueError)."""
         props = _numbers("PROPS", props, "Material.from_props")
         if props.ndim != 1:
-            raise ValueError(f"Material.from_props: PROPS must be one-dimensional, got shape {props.shape}")
+            raise ValueError(f"Material.from_props: PROPS must be one-dimensional, got {_shape_text(props)}")
         self = cls.__new__(cls)
         self.entries = {}
         self.props = props.copy()
@@ -369,15 +383,33 @@ class Material:
         state, stored_energy (N/mm)); `dt` (s) is the time increment, which viscous
         regularisation needs. Raises InterphaseError on a failed update; TypeError when the
         separation or the state holds anything but real numbers (ints and floats).
+
+        The separation's length makes the update 2-D or 3-D. A state whose second slip
+        state[2] (lambda_2) is not zero is a 3-D one: a 2-D update refuses it (InterphaseError,
+        STATUS_BAD_STATE), where the library's 2-D update (as the UMAT's) would ignore it and
+        return it as 0. A 2-D state goes on in 3-D as the state with lambda_2 = 0 it is. A state
+        with D = 0 and a slip is taken as the UMAT takes it: the slip is kept while D stays 0
+        (regime intact) and is the slip a crack that forms then starts from (docs/python.md).
         """
         self._prepare()
-        s, s_p = _as_c(_numbers("separation", separation, "Material.update"))
+        s = _numbers("separation", separation, "Material.update")
         if s.ndim != 1 or s.size not in (2, 3):
-            raise ValueError(f"separation must hold 2 (2-D) or 3 (3-D) components, got shape {s.shape}")
+            raise ValueError("Material.update: separation must hold 2 (2-D) or 3 (3-D) components, got "
+                             f"{_shape_text(s)}")
+        s, s_p = _as_c(s)
         n = s.size
-        old, old_p = _as_c(self.initial_state() if state is None else _numbers("state", state, "Material.update"))
+        old = self.initial_state() if state is None else _numbers("state", state, "Material.update")
         if old.shape != (self.nstate,):
-            raise ValueError(f"state must hold {self.nstate} values, got shape {old.shape}")
+            raise ValueError(f"Material.update: state must hold {self.nstate} values, got {_shape_text(old)}")
+        old, old_p = _as_c(old)
+        if n == 2 and not old[2] == 0.0:
+            # (the library's 2-D update, as the UMAT's, does not read STATEV(3) and writes it 0: a 3-D
+            # state would lose its second slip in silence)
+            raise InterphaseError(st.STATUS_BAD_STATE, f"Material.update: STATEV(3) lambda_2 = {float(old[2])!r} mm "
+                                  "(state[2], the slip in the second shear direction) is not zero, but the "
+                                  "separation (s_N, s_T) is 2-D: a 2-D update does not read lambda_2 and would "
+                                  "return it as 0. Go on in 3-D, separation (s_N, s_T1, s_T2), or pass a 2-D state "
+                                  "(state[2] = 0)")
         props, props_p = _as_c(self.props)
         traction = np.empty(n)
         tangent = np.empty((n, n))
@@ -434,14 +466,15 @@ class Material:
         self._prepare()
         value = _numbers("history", history, "Material.run")
         if value.ndim != 2 or value.shape[1] not in (2, 3):
-            raise ValueError(f"history must be an (nrows, 2) or (nrows, 3) array, got shape {value.shape}")
+            raise ValueError(f"Material.run: history must be an (nrows, 2) or (nrows, 3) array, got "
+                             f"{_shape_text(value)}")
         nrows, n = value.shape
         if nrows < 2:
             raise ValueError(f"Material.run: history must have at least 2 rows (one segment; interphase-point "
                              f"needs 2 data rows too), got {nrows}")
         t = np.arange(nrows, dtype=np.float64) if time is None else _numbers("time", time, "Material.run")
         if t.shape != (nrows,):
-            raise ValueError(f"time must hold {nrows} values, got shape {t.shape}")
+            raise ValueError(f"Material.run: time must hold {nrows} values, got {_shape_text(t)}")
         bad = np.flatnonzero(~np.isfinite(t))
         if bad.size:
             raise ValueError(f"Material.run: time[{bad[0]}] = {float(t[bad[0]])!r} is not finite")
@@ -458,12 +491,16 @@ class Material:
         if control is None:
             ctrl = None
         else:
-            c = np.asarray(control)
+            try:
+                c = np.asarray(control)
+            except ValueError:
+                raise ValueError("Material.run: control is ragged: its rows do not all have the same length") from None
             if c.dtype != np.bool_:
                 raise TypeError(f"Material.run: control must hold booleans (true: traction-controlled), got "
                                 f"{_kind_text(c.dtype)}")
             if c.shape not in ((n,), (nrows, n)):
-                raise ValueError(f"control must have shape ({n},) or ({nrows}, {n}), got {c.shape}")
+                raise ValueError(f"Material.run: control must have shape ({n},) or ({nrows}, {n}), got "
+                                 f"{_shape_text(c)}")
             ctrl = np.ascontiguousarray(np.broadcast_to(c, (nrows, n)), dtype=np.intc)
         value = np.ascontiguousarray(value)
         t = np.ascontiguousarray(t)
@@ -589,7 +626,8 @@ class Material:
             errors[k] = float(np.max(column_error)) / scale if scale > 0.0 else 0.0
             checked += 1
             kinks += int(kink)
-        return TangentCheck(result.time, errors, tolerance, step, checked, kinks, unchecked)
+        return TangentCheck(result.time, errors, tolerance, step, checked, kinks, unchecked,
+                            separation=result.separation, state=result.state, mu=float(self.props[2]))
 
 
     def _other_material(self, result):
@@ -629,21 +667,43 @@ class Update:
 class TangentCheck:
     """Material.tangent_check's outcome: errors (one per row of the Result: the relative error of
     the tangent at that step, NaN for the first row and for a step whose perturbed update failed),
-    worst and worst_time (the largest error and its row's time; 0 and NaN when none was checked),
-    checked, kinks (steps compared one-sided) and unchecked (steps not checked), tolerance and step,
-    as interphase-point's summary line reports them; passed (at least one step compared, and worst
-    <= tolerance) and, when it has not, failure: why, in the driver's words (a check that compared
-    no step fails: every perturbed update failed, or there was no step)."""
+    worst, worst_time and worst_row (the largest error, its row's time and index; 0, NaN and None
+    when none was checked), checked, kinks (steps compared one-sided) and unchecked (steps not
+    checked), tolerance and step, as interphase-point's summary line reports them; passed (at least
+    one step compared, and worst <= tolerance) and, when it has not, failure: why, in the driver's
+    words (a check that compared no step fails: every perturbed update failed, or there was no
+    step), with the worst row's separation and, where that row is the check's one documented
+    exception, that it is.
 
-    def __init__(self, time, errors, tolerance, step, checked, kinks, unchecked):
+    exception_rows: the checked rows at the tangent check's one documented exception
+    (drivers/README.md, 'The tangent check'; docs/theory.md, 'Slip onset'): a closed, damaged crack
+    (D > 0) that sticks at s_N = 0 exactly with mu > 0. There Sigma_N = 0, so a stick state has the
+    crack shear stress tau = 0 and phi = mu sigma + |tau| = 0 (the apex of the Coulomb cone): any
+    change of s_T makes the crack slip, and the tangent, the stick one, is not the derivative of
+    both sides (h2I at t = 4: relative error 0.41). worst_elsewhere and worst_elsewhere_row: the
+    largest error of the other checked rows (0 and None when there are none)."""
+
+    def __init__(self, time, errors, tolerance, step, checked, kinks, unchecked, separation=None, state=None,
+                 mu=None):
         self.errors, self.tolerance, self.step = errors, tolerance, step
         self.checked, self.kinks, self.unchecked = checked, kinks, unchecked
         valid = ~np.isnan(errors)
         if valid.any():
             k = int(np.flatnonzero(valid)[np.argmax(errors[valid])])
-            self.worst, self.worst_time = float(errors[k]), float(time[k])
+            self.worst, self.worst_time, self.worst_row = float(errors[k]), float(time[k]), k
         else:
-            self.worst, self.worst_time = 0.0, math.nan
+            self.worst, self.worst_time, self.worst_row = 0.0, math.nan, None
+        apex = np.zeros(errors.shape, dtype=bool)
+        if separation is not None and state is not None and mu is not None and mu > 0.0:
+            apex = (valid & (separation[:, 0] == 0.0) & (state[:, 0] > 0.0)
+                    & (state[:, 3] == REGIME_NAMES.index("stick")))
+        self.exception_rows = np.flatnonzero(apex)
+        elsewhere = valid & ~apex
+        if elsewhere.any():
+            j = int(np.flatnonzero(elsewhere)[np.argmax(errors[elsewhere])])
+            self.worst_elsewhere, self.worst_elsewhere_row = float(errors[j]), j
+        else:
+            self.worst_elsewhere, self.worst_elsewhere_row = 0.0, None
         self.passed = checked > 0 and self.worst <= tolerance
         from ._files import _real_text          # (the driver's writing of reals; _files imports this module)
         if checked == 0 and unchecked > 0:
@@ -652,8 +712,27 @@ class TangentCheck:
         elif checked == 0:
             self.failure = "the tangent check compared no step: the result has no step after its first row"
         elif not self.passed:
+            k = self.worst_row
+            where = f"row {k}"
+            if separation is not None:
+                names = ("s_N", "s_T") if separation.shape[1] == 2 else ("s_N", "s_T1", "s_T2")
+                where += ", " + ", ".join(f"{name} = {_real_text(v)}" for name, v in zip(names, separation[k])) + " mm"
             self.failure = (f"the tangent check failed: worst relative error {_real_text(self.worst)} at t = "
-                            f"{_real_text(self.worst_time)} is above the tolerance {_real_text(tolerance)}")
+                            f"{_real_text(self.worst_time)} ({where}) is above the tolerance {_real_text(tolerance)}")
+            if apex[k]:
+                self.failure += (
+                    "; that row is the tangent check's one documented exception: a closed, damaged crack that "
+                    "sticks at s_N = 0 exactly, where Sigma_N = 0 and tau = 0 (the apex of the Coulomb cone), so "
+                    "that any change of s_T makes it slip and its stick tangent is not the derivative of both "
+                    "sides (drivers/README.md, 'The tangent check'); ")
+                if self.worst_elsewhere_row is None:
+                    self.failure += "every row checked is such a row"
+                else:
+                    j = self.worst_elsewhere_row
+                    verdict = "within" if self.worst_elsewhere <= tolerance else "above"
+                    self.failure += (f"rows at this exception: {self.exception_rows.size}; away from them the worst "
+                                     f"relative error is {_real_text(self.worst_elsewhere)} at t = {_real_text(time[j])} "
+                                     f"(row {j}), {verdict} the tolerance")
         else:
             self.failure = None
 
