@@ -507,15 +507,19 @@ contains
          return
       end if
       traction_control = .false.
-      if (c_associated(control)) call c_f_pointer(control, controls, [int(n, c_size_t), nrows])
       do row = 1, nrows
          if (.not. ieee_is_finite(times(row))) then
             write (message, '(a,i0,a,es12.4,a)', iostat=ios) 'time[', row - 1, '] = ', times(row), ' is not finite'
          else if (.not. all(ieee_is_finite(values(:, row)))) then
             i = findloc(ieee_is_finite(values(:, row)), .false., dim=1)
             ! (named as the range check below names it: Sigma_ where the row imposes a traction)
+            ! (the controls associated where they are read: an optimising build's flow analysis
+            ! does not carry one test of c_associated over to another)
             imposed = .false.
-            if (c_associated(control)) imposed = controls(i, row) == 1
+            if (c_associated(control)) then
+               call c_f_pointer(control, controls, [int(n, c_size_t), nrows])
+               imposed = controls(i, row) == 1
+            end if
             write (message, '(a,i0,a,i0,a,i0,a)', iostat=ios) 'value[', (row - 1)*n + i - 1, '] (row ', &
                row - 1, ', component ', i - 1, ': '
             message = trim(message)//' '//component_name(i, imposed, n)//') = '//real_text(values(i, row))// &
@@ -535,6 +539,7 @@ contains
          if (len_trim(message) > 0) exit
       end do
       if (len_trim(message) == 0 .and. c_associated(control)) then
+         call c_f_pointer(control, controls, [int(n, c_size_t), nrows])
          if (any(controls /= 0 .and. controls /= 1)) then
             row = int(findloc(any(controls /= 0 .and. controls /= 1, dim=1), .true., dim=1), c_size_t)
             write (message, '(a,i0,a)', iostat=ios) 'control row ', row - 1, &
