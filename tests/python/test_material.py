@@ -560,20 +560,19 @@ def test_update_refuses_a_3d_state_in_2d():
                           m.update([-0.001, 0.002], two.state).traction)
 
 
-def test_a_slip_without_damage_is_taken_as_the_umat_takes_it():
-    """D = 0 with a slip: the UMAT's STATEV reader checks ranges only and takes it; the update keeps
-    the slip while the point stays intact, and a crack that forms may start from it (fixed-lambda
-    growth): not a reset to the virgin state (docs/python.md, 'One point')."""
-    m = interphase.Material(**SIMPLIFIED)
-    slipped = [0.0, 0.01, 0.0, 0.0]
-    intact = m.update([0.0001, 0.0001], slipped)
-    assert intact.state.tolist() == [0.0, 0.01, 0.0, 0.0]
-    assert np.array_equal(intact.traction, m.update([0.0001, 0.0001]).traction)
-    fixed = interphase.Material(**dict(SIMPLIFIED, growth_slip="fixed-lambda"))
-    cracked = fixed.update([-0.001, 0.002], slipped)
-    virgin = fixed.update([-0.001, 0.002])
-    assert cracked.state[0] == virgin.state[0] > 0.0 and cracked.state[1] != virgin.state[1]
-    assert not np.array_equal(cracked.traction, virgin.traction)
+def test_a_slip_without_damage_is_refused():
+    """D = 0 (or -0) with a slip, which no update writes (an intact point has no crack, so no
+    slip), is refused as the UMAT's STATEV reader refuses it, naming the values; D = 0 with a slip
+    of +-0 is the virgin state (docs/python.md, 'One point')."""
+    for model in (SIMPLIFIED, dict(SIMPLIFIED, growth_slip="fixed-lambda")):
+        m = interphase.Material(**model)
+        for d, slip, separation in ((0.0, [0.01, 0.0], [0.0001, 0.0001]), (-0.0, [-1e-300, 0.0], [0.0001, 0.0001]),
+                                    (0.0, [0.0, 0.002], [-0.001, 0.002, 0.0])):
+            with pytest.raises(interphase.InterphaseError, match="an intact point has no crack, so no slip") as caught:
+                m.update(separation, [d, slip[0], slip[1], 0.0])
+            assert caught.value.status == interphase.STATUS_BAD_STATE
+        virgin = m.update([0.0001, 0.0001])
+        assert np.array_equal(m.update([0.0001, 0.0001], [0.0, -0.0, 0.0, 0.0]).traction, virgin.traction)
 
 
 def test_shapes_and_ragged_arrays_are_named():
