@@ -30,8 +30,8 @@
  * lambda_1, lambda_2 (mm, |lambda_i| <= 1e30; in 2-D [2] is not read and is written 0); [3] the
  * regime of the last update, 0 intact, 1 open, 2 stick, 3 slip: an output, but checked on
  * input (exactly 0, 1, 2 or 3, and not -0.0); with viscous regularisation [4] the damage law's
- * own D, in [state[0], 1]. An incoming state outside these ranges is
- * INTERPHASE_STATUS_BAD_STATE, naming the slot.
+ * own D, in [state[0], 1]. An incoming state outside these ranges, or with a slip at D = 0 (an
+ * intact point has no crack, so no slip), is INTERPHASE_STATUS_BAD_STATE, naming the slot.
  *
  * Restart: an update depends on props, state_old, the separation and (interphase_update_dt) dt
  * only, and on the custom RVE table or tabulated R-curve the material selects; the library keeps
