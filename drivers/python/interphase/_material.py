@@ -388,8 +388,8 @@ class Material:
         state[2] (lambda_2) is not zero is a 3-D one: a 2-D update refuses it (InterphaseError,
         STATUS_BAD_STATE), where the library's 2-D update (as the UMAT's) would ignore it and
         return it as 0. A 2-D state goes on in 3-D as the state with lambda_2 = 0 it is. A state
-        with D = 0 and a slip is taken as the UMAT takes it: the slip is kept while D stays 0
-        (regime intact) and is the slip a crack that forms then starts from (docs/python.md).
+        with D = 0 and a slip is refused as the UMAT's STATEV reader refuses it (InterphaseError,
+        STATUS_BAD_STATE: an intact point has no crack, so no slip; docs/python.md).
         """
         self._prepare()
         s = _numbers("separation", separation, "Material.update")
