@@ -147,6 +147,8 @@ contains
       if (stat /= 0 .or. length == 0) return
       write (error_unit, '(a)') 'interphase-point: note: '//name//' is set, but interphase-point does not '// &
          'read it: '//instead//'; a replay file names its own (drivers/README.md)'
+      ! (at once: flang buffers standard error, which would put the note after the run's output)
+      flush (error_unit)
    end subroutine note_unused_variable
 
    !> Repeat the UMAT call of a replay file (`&replay`) and end: exit status 1 when it fails again.
