@@ -75,10 +75,9 @@ contains
    pure integer function count_invalid_states(n, nt, d, lam1, lam2, regime) result(nbad)
       integer, intent(in) :: n, nt
       real(dp), intent(in) :: d(n), lam1(n), lam2(n), regime(n)
-      integer(int64) :: bd, bl1, bl2, br, lam2_ignored, lam2_keep, nbad_bits
+      integer(int64) :: bd, bl1, bl2, br, lam2_keep, nbad_bits
       integer :: k
-      lam2_ignored = merge(1_int64, 0_int64, nt == 1)
-      ! the bits of lam2 that count, without its sign: none in 2-D
+      ! the bits of lam2 that count, without its sign: none in 2-D (lam2 read as +0 there)
       lam2_keep = merge(0_int64, huge(1_int64), nt == 1)
       nbad_bits = 0
       do k = 1, n
@@ -87,14 +86,14 @@ contains
          ! not vectorise; integers of another kind would cost conversions in every lane
          bd = transfer(d(k), 0_int64)
          bl1 = transfer(lam1(k), 0_int64)
-         bl2 = transfer(lam2(k), 0_int64)
+         bl2 = iand(transfer(lam2(k), 0_int64), lam2_keep)
          br = transfer(regime(k), 0_int64)
-         ! (an intact point, D = +-0, with a slip: state_unpack refuses it; in 2-D lam2 is not looked at)
-         ! (0/1 integers combined by iand, not products: AVX2 has no 64-bit multiply)
+         ! (an intact point, D = +-0, with a slip: state_unpack refuses it. 0/1 integers combined
+         ! by iand, not products: AVX2 has no 64-bit multiply)
          nbad_bits = nbad_bits + 1 - iand(iand(iand(damage_admissible(bd), slip_admissible(bl1)), &
-            iand(max(lam2_ignored, slip_admissible(bl2)), regime_known(br))), &
+            iand(slip_admissible(bl2), regime_known(br))), &
             ior(merge(1_int64, 0_int64, ibclr(bd, SIGN_BIT) /= 0_int64), &
-            merge(1_int64, 0_int64, ior(ibclr(bl1, SIGN_BIT), iand(bl2, lam2_keep)) == 0_int64)))
+            merge(1_int64, 0_int64, ior(ibclr(bl1, SIGN_BIT), bl2) == 0_int64)))
       end do
       nbad = int(nbad_bits)
    end function count_invalid_states

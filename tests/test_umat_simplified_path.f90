@@ -64,6 +64,22 @@ program test_umat_simplified_path
    use host_recorder, only: recorder_reset, recorded_count, recorded_severity, recorded_message
    implicit none
 
+   !> The paths' cohesive_path (interphase_umat_cohesive_path.inc), for a pointer to any of them.
+   abstract interface
+      pure subroutine cohesive_path_interface(nprops, props, ndi, nshr, ntens, nstatv, statev, stran, dstran, &
+            stress, ddsdde, sse, spd, taken)
+         import :: dp
+         integer, intent(in) :: nprops, ndi, nshr, ntens, nstatv
+         real(dp), intent(in) :: props(nprops)
+         real(dp), intent(inout) :: statev(nstatv)
+         real(dp), intent(in) :: stran(ntens), dstran(ntens)
+         real(dp), intent(inout) :: stress(ntens)
+         real(dp), intent(inout) :: ddsdde(ntens, ntens)
+         real(dp), intent(inout) :: sse, spd
+         logical, intent(out) :: taken
+      end subroutine cohesive_path_interface
+   end interface
+
    integer, parameter :: NMATERIALS = 12000, NSTEPS = 60, NSINGLE = 80000, NSPOILT = 24000, NUNLOADED = 200
    !> The largest NSTATV the test passes.
    integer, parameter :: NSTATV_MAX = 8
@@ -455,42 +471,31 @@ contains
       real(dp), intent(in) :: p(:)
       type(call_type) :: copy
       real(dp) :: ddsdde(c%ntens, c%ntens)   ! (contiguous: no temporary)
+      procedure(cohesive_path_interface), pointer :: path
       integer :: n
+      select case (m + 4*(e - 1))
+      case (1)
+         path => simplified_cohesive_path
+      case (2)
+         path => micromechanical_cohesive_path
+      case (3)
+         path => simplified_fracture_path
+      case (4)
+         path => micromechanical_fracture_path
+      case (5)
+         path => simplified_cohesive_path_3d
+      case (6)
+         path => micromechanical_cohesive_path_3d
+      case (7)
+         path => simplified_fracture_path_3d
+      case default
+         path => micromechanical_fracture_path_3d
+      end select
       copy = c
       n = copy%ntens
       ddsdde = c%ddsdde(1:n, 1:n)
-      select case (m + 4*(e - 1))
-      case (1)
-         call simplified_cohesive_path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, copy%statev(1:copy%nstatv), &
-            copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, copy%sse, copy%spd, taken)
-      case (2)
-         call micromechanical_cohesive_path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
-            copy%sse, copy%spd, taken)
-      case (3)
-         call simplified_fracture_path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, copy%statev(1:copy%nstatv), &
-            copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, copy%sse, copy%spd, taken)
-      case (4)
-         call micromechanical_fracture_path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
-            copy%sse, copy%spd, taken)
-      case (5)
-         call simplified_cohesive_path_3d(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
-            copy%sse, copy%spd, taken)
-      case (6)
-         call micromechanical_cohesive_path_3d(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
-            copy%sse, copy%spd, taken)
-      case (7)
-         call simplified_fracture_path_3d(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
-            copy%sse, copy%spd, taken)
-      case default
-         call micromechanical_fracture_path_3d(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, &
-            copy%statev(1:copy%nstatv), copy%stran(1:n), copy%dstran(1:n), copy%stress(1:n), ddsdde, &
-            copy%sse, copy%spd, taken)
-      end select
+      call path(size(p), p, copy%ndi, copy%nshr, n, copy%nstatv, copy%statev(1:copy%nstatv), copy%stran(1:n), &
+         copy%dstran(1:n), copy%stress(1:n), ddsdde, copy%sse, copy%spd, taken)
    end function path_takes
 
    !> x is -0.

@@ -101,7 +101,8 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    ! law without options, the simplified and the micromechanical model; also the
    ! displacement-driven law with option constants, 12 or 13 PROPS in all, which those paths'
    ! decisions leave to the general path, after the one-pass PROPS test they make). The two
-   ! elements' dispatches are the same but for the paths they call (docs/performance.md).
+   ! elements' dispatches are the same but for the paths they call: one dispatch for both, by a
+   ! path index and one select, cost 2-6 instructions a call more (docs/performance.md).
    if (ntens == NTENS_2D) then
       if (nprops <= NPROPS_SIMPLIFIED) then
          if (nprops == NPROPS_SIMPLIFIED) then
