@@ -19,7 +19,8 @@
 # src/*.f90, src/abaqus/*.f90 and <build-dir>/generated/*.f90. It is free-form Fortran 2008:
 #   abaqus job=couplet2d input=couplet2d_coh2d4.inp user=interphase_abaqus_standard.f90
 # (name it .f if your Abaqus version accepts only that suffix and add the free-form flag of your
-# compiler to abaqus_v6.env: ifort -free; gfortran -ffree-form). See docs/abaqus.md.
+# compiler to abaqus_v6.env: Intel -free; gfortran -ffree-form -ffree-line-length-132; flang
+# -ffree-form). See docs/abaqus.md.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
