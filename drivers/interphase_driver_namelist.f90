@@ -125,12 +125,16 @@ contains
       !> the last token was a comma (a comma after '=' or after another comma is an empty value,
       !> which the namelist read takes as 'unchanged' or misreads)
       logical :: after_comma
+      !> a comma came between the current entry's first and second values (a decimal comma,
+      !> 'mu = 0,75', reads as two values: the message then shows the number meant)
+      logical :: comma_after_first
 
       ok = .false.
       what = 'case file'
       if (present(file_kind)) what = file_kind
-      max_count = 1
-      if (size(known) > 0) max_count = max(1, maxval(known%count))
+      ! (at least the first three values are kept, so that 'needs one value, got 3' can show them)
+      max_count = 3
+      if (size(known) > 0) max_count = max(3, maxval(known%count))
       allocate (kinds_given(max_count))
       values_given = ''
       if (present(lines)) allocate (lines(0))
@@ -142,6 +146,7 @@ contains
       in_group = .false.
       in_entry = .false.
       after_comma = .false.
+      comma_after_first = .false.
       group = ''
       seen_groups = ' '
       seen_entries = ' '
@@ -231,6 +236,7 @@ contains
                      return
                   end if
                   after_comma = .true.
+                  if (in_entry .and. nvalues == 1) comma_after_first = .true.
                   i = i + 1
                else if (c == '=') then
                   call fail('&'//group//': "=" without an entry name')
@@ -278,6 +284,7 @@ contains
                         in_entry = .true.
                         entry_line = line_number
                         nvalues = 0
+                        comma_after_first = .false.
                         values_given = ''
                         i = k + 1
                         cycle
@@ -365,7 +372,7 @@ contains
          end if
          if (count == 1 .and. nvalues /= 1) then
             good = .false.
-            message = where//' needs one value, got '//int_to_string(nvalues)
+            message = where//' needs one value, got '//int_to_string(nvalues)//values_shown(kind)
             call close_text_file(unit)
             return
          else if (nvalues < 1 .or. nvalues > count) then
@@ -427,6 +434,48 @@ contains
          end do
          if (.not. good) call close_text_file(unit)
       end function finish_entry
+
+      !> The values of an entry that takes one but got several, as written (': 0 and 75', ': 1,
+      !> 2 and 3 more'), and, where a comma split a real in two ('mu = 0,75'), the number meant
+      !> with a decimal point; '' for no value.
+      function values_shown(kind) result(text)
+         integer, intent(in) :: kind                   !! the entry's kind (the hint: KIND_REAL only)
+         character(len=:), allocatable :: text
+         character(len=:), allocatable :: first_value, second_value, joined
+         integer :: j, start, past
+         real(dp) :: number
+         logical :: good
+         character(len=32) :: why
+         text = ''
+         first_value = ''
+         second_value = ''
+         if (nvalues < 2) return
+         start = 1
+         do j = 1, min(nvalues, 2, max_count)
+            past = start + index(values_given(start:), achar(10)) - 1
+            if (j == 1) first_value = values_given(start:past - 1)
+            if (j == 2) second_value = values_given(start:past - 1)
+            start = past + 1
+         end do
+         text = ': '//clip_text(first_value)
+         if (nvalues == 2) then
+            text = text//' and '//clip_text(second_value)
+         else
+            text = text//', '//clip_text(second_value)//' and '//int_to_string(nvalues - 2)//' more'
+         end if
+         if (kind /= KIND_REAL .or. nvalues /= 2 .or. .not. comma_after_first) return
+         if (kinds_given(1) /= 0 .or. kinds_given(2) /= 0) return
+         ! a whole number, a comma, then digits (with an exponent or not): '0,75', '-1,5e-3'
+         if (len(first_value) == 0 .or. len(second_value) == 0) return
+         if (verify(first_value(merge(2, 1, scan(first_value(1:1), '+-') > 0):), '0123456789') /= 0) return
+         if (scan(first_value(len(first_value):len(first_value)), '0123456789') == 0) return
+         if (scan(second_value(1:1), '0123456789') == 0) return
+         joined = first_value//'.'//second_value
+         call parse_real(joined, number, good, why)
+         if (.not. good) return
+         text = text//' (a comma separates two values in a namelist; for the number '//clip_text(first_value)// &
+            ','//clip_text(second_value)//' write a decimal point: '//clip_text(joined)//')'
+      end function values_shown
 
       !> The length of the text of a quoted string (`quoted`: its quotes around it, a doubled quote
       !> for one), as the namelist read stores it.

@@ -306,7 +306,11 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
     (tmp_path / "h1I.txt").write_text((source_dir / "drivers" / "cases" / "h1I.txt").read_text())
     mu_line = next(i for i, line in enumerate(good.splitlines(), 1) if line.strip() == "mu = 0.75")
     cases = {
-        "comma": (good.replace("mu = 0.75", "mu = 2,5"), r"comma.nml:\d+: &material: mu needs one value, got 2"),
+        "comma": (good.replace("mu = 0.75", "mu = 2,5"), r"comma.nml:\d+: &material: mu needs one value, got 2: 2 and 5 "
+                                                         r"\(a comma separates two values in a namelist; for the "
+                                                         r"number 2,5 write a decimal point: 2\.5\)"),
+        "two": (good.replace("mu = 0.75", "mu = 0.75 0.5"), r"two.nml:\d+: &material: mu needs one value, got 2: 0\.75 "
+                                                            r"and 0\.5$"),
         "typo": (good.replace("sf_t", "sf_tt"), r"typo.nml:\d+: &material: sf_tt is not an entry of &material; "
                                                 r"its entries: model, damage_law"),
         "group": (good.replace("&loading", "&load"), r"group.nml:\d+: &load is not a group of this case file"),

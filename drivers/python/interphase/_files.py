@@ -520,6 +520,26 @@ _GROUP_MARKER = re.compile(r"[&$]([A-Za-z0-9_]+)")
 _GROUP_OPENER = re.compile(r"[ \t]*&([A-Za-z0-9_]+)")
 
 
+def _values_shown(values, comma_after_first, real):
+    """The values of an entry that takes one but got several, as written (': 0 and 75', ': 1, 2
+    and 3 more'), and, where a comma split a real in two ('mu = 0,75'), the number meant with a
+    decimal point; '' for no value (the driver's values_shown)."""
+    if len(values) < 2:
+        return ""
+    (quoted_1, first), (quoted_2, second) = values[:2]
+    text = f": {_clip(first)} and {_clip(second)}" if len(values) == 2 else \
+        f": {_clip(first)}, {_clip(second)} and {len(values) - 2} more"
+    if not real or len(values) != 2 or not comma_after_first or quoted_1 or quoted_2:
+        return text
+    if not re.fullmatch(r"[+-]?[0-9]+", first) or not second[:1].isdigit() or not second[:1].isascii():
+        return text
+    joined = f"{first}.{second}"
+    if _parse_real(joined)[1] is not None:
+        return text
+    return (text + f" (a comma separates two values in a namelist; for the number {_clip(first)},{_clip(second)} "
+            f"write a decimal point: {_clip(joined)})")
+
+
 def _namelist_entries(path, known=None):
     """{group: {entry: (value, line)}} of a namelist file, read as strictly as the
     driver's pre-check reads it (drivers/interphase_driver_namelist.f90): one group of each name,
@@ -531,6 +551,7 @@ def _namelist_entries(path, known=None):
     groups = {}
     group, name, values, entry_line, number = None, None, [], 0, 0
     after_comma = False     # the last token was a comma (an empty value follows a second one)
+    comma_after_first = False   # a comma between the entry's first and second values ('mu = 0,75')
     lines = _text_lines(path, "case file")
     # the groups a '&name' inside a string could be taken for: those read (known), else those the
     # file opens
@@ -553,7 +574,8 @@ def _namelist_entries(path, known=None):
                              "entries: " + ", ".join(kinds))
         where = f"{path}:{entry_line}: &{group}: {name}"
         if len(values) != 1:
-            raise ValueError(f"{where} needs one value, got {len(values)}")
+            raise ValueError(f"{where} needs one value, got {len(values)}"
+                             + _values_shown(values, comma_after_first, kinds is not None and kinds[name] == "real"))
         quoted, text = values[0]
         value = _untyped(quoted, text, where) if kinds is None else _typed(kinds[name], quoted, text, where)
         groups[group][name] = (value, entry_line)
@@ -615,6 +637,8 @@ def _namelist_entries(path, known=None):
                     where = 'right after "="' if not values else "after a comma"
                     fail(f"&{group}: {name} has an empty value (a comma {where}): give one value")
                 after_comma = True
+                if name is not None and len(values) == 1:
+                    comma_after_first = True
                 i += 1
             elif c == "=":
                 fail(f'&{group}: "=" without an entry name')
@@ -641,6 +665,7 @@ def _namelist_entries(path, known=None):
                 if k < n and line[k] == "=":
                     finish()
                     name, values, entry_line = _lower(line[i:j]), [], number
+                    comma_after_first = False
                     if name in groups[group]:
                         fail(f"&{group}: entry {name} given twice")
                     i = k + 1
