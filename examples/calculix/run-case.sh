@@ -12,7 +12,8 @@
 #               joint's integral of sigma:d(eps), ccx's ELSE, stored + dissipated energy)
 #   NAME.point.csv  the replay element's first integration point: t, the strains (E11 ... E23,
 #               tensor shears as ccx prints them), the stresses S11 ... S23 (MPa) and STATEV
-#   NAME.png    shear force and mu x normal force against u (with gnuplot)
+#   NAME.png    shear force and mu x normal force against u (with gnuplot; mu is PROPS(3) of the
+#               deck's first @ABAQUS_... material)
 #   NAME.dat, NAME.sta, NAME.log  ccx's own output
 # Refuses a ccx without external-behaviour support, and a run whose joint carried no stress
 # (what such a ccx does with a material named @ABAQUS_...: "Job finished" with zero stress).
@@ -38,6 +39,22 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$deck" ] || { echo "run-case.sh: no deck given (try --help)" >&2; exit 2; }
 [ -f "$deck" ] || { echo "run-case.sh: deck '$deck' not found" >&2; exit 2; }
+# A material named ABAQUS... without the leading @ is CalculiX's own example UMAT (a linear
+# elastic law of PROPS(1), PROPS(2)), not interphase: such a run ends "Job finished" with
+# meaningless numbers, so it is refused before ccx runs
+abaqus_plain=$(grep -i -o -E '^\*MATERIAL *,.*NAME *= *ABAQUS[^ ,]*' "$deck" | sed -E 's/.*= *//' | head -n 1 || true)
+if [ -n "$abaqus_plain" ]; then
+   echo "run-case.sh: $deck: material $abaqus_plain has no leading @: CalculiX runs its own example UMAT" >&2
+   echo "  for it, not interphase; name it @ABAQUS_INTERPHASE_UMAT@<name> (docs/calculix.md, 'Material naming')" >&2
+   exit 1
+fi
+# mu of the deck's first interphase material (PROPS(3)), for the plot's mu x normal force line
+mu=$(awk '{ u = toupper($0) }
+   u ~ /^\*MATERIAL/ { inmat = (u ~ /NAME *= *@ABAQUS_/); next }
+   inmat && u ~ /^\*USER MATERIAL/ { want = 1; next }
+   want && /^\*/ { exit }
+   want && NF { n = split($0, f, ","); if (n >= 3) { gsub(/ /, "", f[3]); print f[3] + 0 }; exit }' "$deck")
+[ -n "$mu" ] || mu=0.75
 ccx=$cache/ccx
 if [ ! -x "$ccx" ] || ! grep -q -a "unable to load function" "$ccx"; then
    echo "run-case.sh: $ccx is missing or has no external-behaviour support: run examples/calculix/build-calculix.sh" >&2
@@ -110,7 +127,7 @@ what == "pv" && first {
 END { flush_row() }' "$name.dat"
 
 rows=$(($(wc -l < "$name.csv") - 1))
-[ "$rows" -ge 2 ] || { echo "run-case.sh: no load-displacement rows in $outdir/$name.dat" >&2; exit 1; }
+[ "$rows" -ge 2 ] || { echo "run-case.sh: no load-displacement rows in $outdir/$name.dat: run-case.sh reads the sets TOP, TOPREF and JOINT that make-deck.sh's couplet decks print (a deck of your own: run ccx itself, docs/calculix.md, 'Running a deck of your own')" >&2; exit 1; }
 # a ccx that did not call interphase (stock binary): the joint carried no stress
 # (its work, ccx's ELSE over the joint, and the replay element's stresses: the top face's
 # reactions are the loads whatever the joint does)
@@ -133,7 +150,7 @@ set ylabel 'force (N)'
 set key below
 set grid
 plot '$name.csv' every ::1 using (\$1 == 2 ? \$3 : 1/0):4 with lines lw 2 title 'shear force (CalculiX)', \
-     '' every ::1 using (\$1 == 2 ? \$3 : 1/0):(0.75*\$5) with lines dt 2 title 'mu x normal force', \
-     '' every ::1 using (\$1 == 2 ? \$3 : 1/0):(-0.75*\$5) with lines dt 2 notitle
+     '' every ::1 using (\$1 == 2 ? \$3 : 1/0):($mu*\$5) with lines dt 2 title 'mu x normal force (mu = $mu, PROPS(3) of the deck)', \
+     '' every ::1 using (\$1 == 2 ? \$3 : 1/0):(-$mu*\$5) with lines dt 2 notitle
 EOF
 fi
