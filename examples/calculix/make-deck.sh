@@ -4,8 +4,8 @@
 # thin continuum layer whose material is interphase's UMAT (docs/calculix.md).
 #
 #   examples/calculix/make-deck.sh --dim 2|3 --model simplified|micromechanical --history FILE
-#                                  [--thickness T] [--nx N] [--ny N] [--nz N] [--increments N]
-#                                  [--replay-element K] -o DECK.inp
+#                                  [--thickness T] [--mu MU] [--precompression P] [--nx N] [--ny N]
+#                                  [--nz N] [--increments N] [--replay-element K] -o DECK.inp
 #
 #   --dim 2          CPE4 (plane strain, 100 mm thick); 3: C3D8, 100 mm deep in z with the
 #                    out-of-plane displacement held (plane strain, as interphase-fe2d), nz elements
@@ -14,6 +14,8 @@
 #                    the viscosity eta = 0.001 s (couplet-micro-viscous-*)
 #   --history FILE   two columns t u_shear (mm), '#' comments: drivers/fe2d/cases/*.txt
 #   --thickness T    the joint layer's thickness t (mm), default 0.1; the bricks stay 50 mm high
+#   --mu MU          the joint's friction coefficient, PROPS(3) (default 0.75, as the fe2d cases)
+#   --precompression P  the pressure on the top face in step 1 (MPa, default 0.5; 0 for none)
 #   --nx, --ny, --nz elements per brick along x (16), y (4) and z (3-D only, 2)
 #   --increments N   nominal increments per history segment (default 20)
 #   --tolerance R    Newton's residual tolerance, relative to the mean force (default 1e-5; ccx's
@@ -21,7 +23,7 @@
 #   --replay-element K  also print strains, stresses and STATEV of joint element K (default 8,
 #                    mid-joint) at every increment, for the single-point replay
 #
-# Bricks 200 x 50 mm, E = 16000 MPa, nu = 0.15; 0.5 MPa precompression on the top face (step 1),
+# Bricks 200 x 50 mm, E = 16000 MPa, nu = 0.15; P = 0.5 MPa precompression on the top face (step 1),
 # then the top face's horizontal displacement follows the history (steps 2, 3, ...: one a history
 # segment) while it is free
 # vertically; the bottom face is fixed. The joint material's constants are interphase's PROPS
@@ -33,6 +35,8 @@ dim=""
 model=""
 history=""
 t=0.1
+mu=0.75
+precompression=0.5
 nx=16
 ny=4
 nz=2
@@ -46,6 +50,8 @@ while [ $# -gt 0 ]; do
       --model) model=$2; shift ;;
       --history) history=$2; shift ;;
       --thickness) t=$2; shift ;;
+      --mu) mu=$2; shift ;;
+      --precompression) precompression=$2; shift ;;
       --nx) nx=$2; shift ;;
       --ny) ny=$2; shift ;;
       --nz) nz=$2; shift ;;
@@ -68,24 +74,29 @@ for v in nx ny nz increments replay; do
 done
 [[ $tolerance =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || fail "--tolerance must be a positive number, got '$tolerance'"
 [[ $t =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || fail "--thickness must be a positive number, got '$t'"
+# (mu and P: numbers >= 0 written as they are given; interphase checks mu's range when ccx
+# calls it, and the end force of a shear test is mu x P x 200 mm x 100 mm)
+[[ $mu =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || fail "--mu must be a number >= 0 (digits, a decimal point, an exponent; no sign), got '$mu'"
+[[ $precompression =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || \
+   fail "--precompression must be a pressure >= 0 in MPa (digits, a decimal point, an exponent; no sign), got '$precompression'"
 [ "$replay" -le "$nx" ] || fail "--replay-element $replay: the joint has $nx elements (x 1 in 3-D: the first row)"
 
 # The joint's constants: the law's PROPS, then the option constants nb + 1 ... nb + 7 (growth slip,
 # contact band, viscosity, stiffness, layer thickness, normal axis, host)
 if [ "$model" = simplified ]; then
    # model 1, displacement law 1, mu, s0_N, sf_N, s0_T, sf_T (Table 1), K_N, K_T (docs/abaqus.md)
-   law="1., 1., 0.75, 0.00044, 0.04, 0.00072, 0.06, 482.69742679680568, 198.75776397515528"
+   law="1., 1., $mu, 0.00044, 0.04, 0.00072, 0.06, 482.69742679680568, 198.75776397515528"
    options="0., 0., 0., 2., $t, 2., 1."
    nstatv=4
 else
    # model 2, displacement law 1, mu, Table 1, built-in table 0
-   law="2., 1., 0.75, 0.00044, 0.04, 0.00072, 0.06, 0."
+   law="2., 1., $mu, 0.00044, 0.04, 0.00072, 0.06, 0."
    options="0., 0.6, 0.001, 2., $t, 2., 1."
    nstatv=5
 fi
 
 awk -v dim="$dim" -v model="$model" -v t="$t" -v nx="$nx" -v ny="$ny" -v nz="$nz" -v ninc="$increments" \
-    -v replay="$replay" -v tol="$tolerance" -v law="$law" -v options="$options" -v nstatv="$nstatv" -v hist="$history" '
+    -v replay="$replay" -v tol="$tolerance" -v law="$law" -v pressure="$precompression" -v options="$options" -v nstatv="$nstatv" -v hist="$history" '
 function node(i, j, k) { return k*nrow*ncol + j*ncol + i + 1 }
 # what run-case.sh reads: the total reaction of the top face, the displacement of its reference node,
 # the internal energy of the joint, and the strains, stresses and STATEV of the replay element
@@ -201,7 +212,7 @@ BEGIN {
    print "*BOUNDARY"
    print "TOP, 1, 1, 0."
    print "*DLOAD"
-   printf "TOPEL, P%d, 0.5\n", (dim == 3) ? 5 : 3
+   printf "TOPEL, P%d, %s\n", (dim == 3) ? 5 : 3, pressure
    outputs()
    # steps 2, 3, ...: the shear history, one step per segment, so that every increment sequence
    # ends on the break points of the history (the reversals of a cyclic history) as interphase-fe2d
