@@ -3,7 +3,7 @@
 !> so that the update, which every call runs, carries none of its frame.
 module interphase_umat_failure
    use interphase_kinds, only: dp
-   use interphase_status, only: MESSAGE_LEN, status_message
+   use interphase_status, only: MESSAGE_LEN, status_message, STATUS_BAD_NSTATV
    use interphase_abaqus_interfaces, only: interphase_host_message
    use interphase_replay_file, only: write_replay, replay_note
    implicit none
@@ -37,6 +37,9 @@ contains
       if (calculix) ddsdde = 0.0_dp
       write (full, '(a,a,i0,a,i0,a,a,a,a)') trim(cmname), ' element ', noel, ' point ', npt, &
          ': ', status_message(code), ': ', trim(message)
+      ! (the host's name for NSTATV, which the shared STATEV reader cannot give: the C API and
+      ! Python pass arrays)
+      if (code == STATUS_BAD_NSTATV) full = trim(full)//' (the deck''s *DEPVAR)'
       call write_replay('umat', trim(full), props, statev, stress, sse, spd, stran, dstran, time, dtime, &
          noel, npt, kinc, replay, ndi, nshr, why)
       ! (the replay file's note after the message, whole: no fixed length cuts the path short)
