@@ -338,6 +338,14 @@ static void test_failures(void) {
   CHECK(status == INTERPHASE_STATUS_BAD_STATE && strstr(detail, "STATEV(1)") != NULL, "D = 1.5: status %d, \"%s\"",
         status, detail);
 
+  /* bad old state: a slip that is not finite; the message says what the slot must hold */
+  const double nan_slip[INTERPHASE_NSTATE] = {0.5, NAN, 0.0, 2.0};
+  status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, nan_slip, s, traction, tangent, state_new, &psi,
+                             detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_STATE && strstr(detail, "STATEV(2:3) slip = ") != NULL &&
+            strstr(detail, "NaN") != NULL && strstr(detail, "must be finite with |lambda_i| <= 1.0E+30 mm") != NULL,
+        "slip NaN: status %d, \"%s\"", status, detail);
+
   /* 3-D call works and the shear components are independent of the detail buffer */
   double t3[3], k3[9];
   status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 3, state, (const double[3]){-0.001, 0.0003, 0.0002},
