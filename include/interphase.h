@@ -66,6 +66,12 @@ extern "C" {
 #define INTERPHASE_NSTATE_VISCOUS 5
 /** Number of PROPS of the simplified (spring) model. */
 #define INTERPHASE_NPROPS_SIMPLIFIED 9
+/** Number of PROPS of the micromechanical model (the RVE table's selector last). */
+#define INTERPHASE_NPROPS_MICROMECHANICAL 8
+/** PROPS the fracture-mechanics damage law appends to either model's (D0, R-curve, G_cI, G_cII). */
+#define INTERPHASE_NPROPS_FRACTURE_EXTRA 4
+/** Option constants that may follow a material's PROPS: at most this many (docs/abaqus.md). */
+#define INTERPHASE_NPROPS_OPTIONS 7
 /** Largest admissible separation component (mm): SEPARATION_MAX of src/interphase_params.f90. */
 #define INTERPHASE_SEPARATION_MAX 1.0e20
 
