@@ -193,14 +193,14 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          end if
          ! STRAN and DSTRAN in range: STRESS is not
          stress_text = es_fields(stress, 12, 3)
-         write (message, '(a,a,a,es9.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), &
+         write (message, '(a,a,a,es8.1e3,a)') 'incoming STRESS (MPa)', trim(stress_text), &
             ': the host must pass finite values within ', HOST_VALUE_MAX, ' (those the UMAT returned last)'
          status = STATUS_BAD_HOST_INPUT
          exit update
       end if
       if (host_energies) then
          if (.not. (is_within(sse, HOST_VALUE_MAX) .and. is_within(spd, HOST_VALUE_MAX))) then
-            write (message, '(a,a,a,a,a,es9.1e3,a)') 'incoming SSE ', es_fields([sse], 12, 3), ', SPD ', &
+            write (message, '(a,a,a,a,a,es8.1e3,a)') 'incoming SSE ', es_fields([sse], 12, 3), ', SPD ', &
                es_fields([spd], 12, 3), ': the host must pass finite values within ', HOST_VALUE_MAX, &
                ' (those the UMAT returned last; a host that does not keep them, such as CalculiX, needs the '// &
                'host option 1)'

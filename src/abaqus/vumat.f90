@@ -349,7 +349,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                if (ok(k)) cycle
                km = k0 + k - 1
                if (.not. all(is_within(ds(k, 1:ntens), HOST_INCREMENT_MAX))) then
-                  write (message, '(a,i0,a,a,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
+                  write (message, '(a,i0,a,a,a,es8.1e3,a)', iostat=ios) 'block point ', km, &
                      ': separation increment (mm)', es_list(ds(k, 1:ntens), 4), &
                      ' (T0 strainInc, tensor shears x 2): the host must pass finite increments within ', &
                      HOST_INCREMENT_MAX, ' mm'
@@ -357,7 +357,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   exit update
                end if
                if (.not. all(is_within(stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1), SEPARATION_MAX))) then
-                  write (message, '(a,i0,a,i0,a,i0,a,a,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
+                  write (message, '(a,i0,a,i0,a,i0,a,a,a,es8.1e3,a)', iostat=ios) 'block point ', km, &
                      ': incoming STATEV(', SV_SEP_N, ':', SV_SEP_N + ntens - 1, ') separation (mm)', &
                      es_list(stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1), 4), ': must be finite within ', SEPARATION_MAX, &
                      ' mm (what the VUMAT returned last)'
@@ -388,7 +388,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             k = min(k, n)
             km = k0 + k - 1
             ! (es_list: e3 exponents, values up to 1e150 and beyond are printed, each after a blank)
-            write (message, '(a,i0,a,a,a,a,a,a,a,es9.1e3,a,es9.1e3,a)', iostat=ios) 'block point ', km, &
+            write (message, '(a,i0,a,a,a,a,a,a,a,es8.1e3,a,es8.1e3,a)', iostat=ios) 'block point ', km, &
                ': stressOld (MPa)', es_list(stressold(km, :), 3), ', energies', &
                es_list([enerinternold(km), enerinelasold(km)], 3), ', increment (mm)', es_list(ds(k, 1:ntens), 3), &
                ': the host must pass finite values within ', &
