@@ -15,7 +15,7 @@ module interphase_fe2d_case
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
    use interphase_driver_history, only: carriage_return_message, parse_number, separator_hint, foreign_length_unit_after
-   use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
+   use interphase_driver_text, only: int_to_string, count_text, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words, text_file_type, open_line_file, close_text_file
    implicit none
    private
@@ -533,7 +533,7 @@ contains
          if (size(starts) == 0) cycle
          if (size(starts) /= 2) then
             message = shown//':'//int_to_string(line_number)//': found '// &
-               int_to_string(size(starts))//' columns; expected 2 (t u_shear)'//separator_hint(line)
+               count_text(size(starts), 'column')//'; expected 2 (t u_shear)'//separator_hint(line)
             call close_text_file(unit)
             return
          end if

@@ -792,7 +792,7 @@ def test_read_mixed_history(source_dir, tmp_path):
                               ("# t, s_T(mm), s_N(CM)\n0 0 0\n1 0.001 0\n", 1, "gives s_N the unit \\(CM\\)"),
                               ("# columns: t s_T Sigma_N\n# t s_T (\u00b5m) Sigma_N (MPa)\n0 0 0\n1 0 1\n", 2,
                                "gives s_T the unit \\(\u00b5m\\)"),
-                              ("# t, s_T, s_N\n0,0,0\n1,0,0.01\n", 2, "found 1 columns; expected 3 .* \\(the "
+                              ("# t, s_T, s_N\n0,0,0\n1,0,0.01\n", 2, "found 1 column; expected 3 .* \\(the "
                                "fields of a line are separated by blanks or tabs, not by ','"),
                               ("0,5;0;0\n1;0;0,01\n", 1, "not by ';': write the values with blanks between them, "
                                "and a point for the decimal comma\\)"),

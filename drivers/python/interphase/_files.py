@@ -61,6 +61,11 @@ def _before_comment(line):
     return line
 
 
+def _counted(count, noun):
+    """A count and its noun, singular for one: '1 column', '3 columns' (the driver's count_text)."""
+    return f"{count} {noun}" + ("" if count == 1 else "s")
+
+
 def _clip(text):
     """At most the first 60 bytes of `text`, with '...' when cut, and a control character other
     than a tab as '?' (the driver's clip_text, for messages)."""
@@ -243,7 +248,7 @@ def _column_names(text, where):
     _check_units(text[len("columns:"):], where)
     words = _words(_without_parentheses(text[len("columns:"):]))
     if len(words) not in (3, 4):
-        raise ValueError(f'{where}: "# columns:" names {len(words)} columns; expected t and 2 (2-D) or 3 '
+        raise ValueError(f'{where}: "# columns:" names {_counted(len(words), "column")}; expected t and 2 (2-D) or 3 '
                          '(3-D) components, e.g. "# columns: t s_T Sigma_N"')
     # (the driver keeps the first 16 bytes of a word)
     words = [w.encode("utf-8", errors="surrogateescape")[:16].decode("utf-8", errors="surrogateescape")
@@ -411,7 +416,7 @@ def read_history(path, control=False):
                                  f"'{head.strip(' ')}'): put the data row on a line of its own")
             ncolumns, named = _column_names(text, where)
             if rows and ncolumns != len(rows[0]):
-                raise ValueError(f'{where}: the "# columns:" line names {ncolumns} columns, but the data '
+                raise ValueError(f'{where}: the "# columns:" line names {_counted(ncolumns, "column")}, but the data '
                                  f'lines have {len(rows[0])}')
             names_line = number
             named = (ncolumns, named)
@@ -421,15 +426,16 @@ def read_history(path, control=False):
             continue
         if not rows:
             if len(words) not in (3, 4):
-                raise ValueError(f"{where}: found {len(words)} columns; expected 3 (t s_T s_N, 2-D) or 4 "
+                raise ValueError(f"{where}: found {_counted(len(words), 'column')}; expected 3 (t s_T s_N, 2-D) or 4 "
                                  f"(t s_T1 s_T2 s_N, 3-D){_separator_hint(head)}")
             first_line = number
             if named is not None and named[0] != len(words):
-                raise ValueError(f'{where}: found {len(words)} columns, but the "# columns:" line (line '
+                raise ValueError(f'{where}: found {_counted(len(words), "column")}, but the "# columns:" line (line '
                                  f'{names_line}) names {named[0]}')
         elif len(words) != len(rows[0]):
-            raise ValueError(f"{where}: found {len(words)} columns, but line {first_line} has {len(rows[0])}; "
-                             f"every data line must have the same number of columns{_separator_hint(head)}")
+            raise ValueError(f"{where}: found {_counted(len(words), 'column')}, but line {first_line} has "
+                             f"{len(rows[0])}; every data line must have the same number of columns"
+                             + _separator_hint(head))
         row = [_number(w, f"{where}: column {i}", _separator_hint("!") if "!" in w else "")
                for i, w in enumerate(words, 1)]
         controls = named[1] if named is not None else [False] * (len(words) - 1)
