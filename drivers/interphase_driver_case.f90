@@ -130,14 +130,16 @@ contains
    !> Fortran's namelist read: bounded lines and file size, one group of each name, each entry
    !> once and of its kind (`check_namelist_file`); a file that cannot be opened is named as the
    !> path tried.
-   subroutine precheck_case_file(path, known, ok, message, lines)
+   subroutine precheck_case_file(path, known, ok, message, lines, expected_groups)
       character(len=*), intent(in) :: path                 !! case file
       type(entry_kind_type), intent(in) :: known(:)        !! 'group.entry' names and kinds
       logical, intent(out) :: ok
       character(len=:), allocatable, intent(out) :: message  !! 'file:line: &group: ...' when not ok
       !> the entries' lines, for the messages of the checks after the namelist read
       type(entry_line_type), allocatable, intent(out), optional :: lines(:)
-      call check_namelist_file(path, known, ok, message, lines)
+      !> the groups a file without any needs (default: every group of `known`)
+      character(len=*), intent(in), optional :: expected_groups
+      call check_namelist_file(path, known, ok, message, lines, expected_groups=expected_groups)
       if (.not. ok) then
          if (index(message, path//': cannot open') == 1) message = tried_path(path)//message(len(path) + 1:)
       end if
@@ -175,12 +177,18 @@ contains
       character(len=512) :: iomsg
       type(entry_line_type), allocatable :: lines(:)
       logical :: with_loading
+      character(len=:), allocatable :: groups
 
       ok = .false.
       run%path = path
       run%name = stem_of(path)
-      ! bounded lines, one group of each name, each entry once and of its kind
-      call precheck_case_file(path, [material_entry_kinds('material'), LOADING_ENTRIES], ok, message, lines)
+      groups = '&material and &loading'
+      if (present(material_only)) then
+         if (material_only) groups = '&material'   ! (interphase-calibrate: &loading is optional)
+      end if
+      ! bounded lines, one group of each name, each entry once and of its kind (and a group at all)
+      call precheck_case_file(path, [material_entry_kinds('material'), LOADING_ENTRIES], ok, message, lines, &
+         expected_groups=groups)
       if (.not. ok) return
       ok = .false.
       call open_namelist_file(path, unit, ios, iomsg)
@@ -434,8 +442,15 @@ contains
          end if
          select case (rcurve)
          case ('constant')
-            if (is_unset(e%g_ci) .or. is_unset(e%g_cii)) then
+            ! (the toughnesses left out named, not both when one is given)
+            if (is_unset(e%g_ci) .and. is_unset(e%g_cii)) then
                message = where//"rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)"
+               return
+            else if (is_unset(e%g_ci)) then
+               message = where//"rcurve = 'constant' needs the entry g_ci (N/mm; g_cii is given)"
+               return
+            else if (is_unset(e%g_cii)) then
+               message = where//"rcurve = 'constant' needs the entry g_cii (N/mm; g_ci is given)"
                return
             end if
             if (.not. finite_entry('g_ci', e%g_ci)) return

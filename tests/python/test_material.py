@@ -52,7 +52,12 @@ def test_props_are_the_umat_layout():
     (dict(d0=0.1), interphase.STATUS_BAD_NPROPS, "d0 is an entry of damage_law = 'fracture' only"),
     (dict(damage_law="fracture"), interphase.STATUS_BAD_D0, "missing entry d0"),
     (dict(damage_law="fracture", d0=1.5, rcurve="equivalent"), interphase.STATUS_BAD_D0, "PROPS(10) D0"),
-    (dict(damage_law="fracture", d0=0.1, rcurve="constant", g_ci=0.01), interphase.STATUS_BAD_GC_II, "g_cii"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="constant", g_ci=0.01), interphase.STATUS_BAD_GC_II,
+     "rcurve = 'constant' needs the entry g_cii (N/mm; g_ci is given)"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="constant", g_cii=0.01), interphase.STATUS_BAD_GC_I,
+     "rcurve = 'constant' needs the entry g_ci (N/mm; g_cii is given)"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="constant"), interphase.STATUS_BAD_GC_I,
+     "rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)"),
     (dict(damage_law="fracture", d0=0.1, rcurve="equivalent", g_ci=0.01), interphase.STATUS_BAD_GC_I,
      "rcurve = 'constant' only"),
     (dict(damage_law="fracture", d0=0.1, rcurve="measured"), interphase.STATUS_BAD_RCURVE, "rcurve must be"),
@@ -1135,6 +1140,52 @@ def test_read_case_refuses_what_the_driver_refuses(point_driver, tmp_path, monke
     if name == "rcurve_file_refused":
         # (the detail holds the driver's line, status text included; str() names the status once)
         assert str(error).count(error.reason) == 1 and error.name in str(error)
+
+
+# Case files the driver refuses naming where the value came from (the entry and its line, the file
+# it names), and the read_case refusal that must give the same text: (the case's text, the files
+# written beside it: {name: text}).
+NAMED_CASES = {
+    # rcurve = 'constant' names the toughness left out, only that one
+    "constant_gci_only": (CASE.replace("damage_law = 'displacement'", "damage_law = 'fracture'\n  d0 = 0.05, "
+                                       "rcurve = 'constant', g_ci = 0.005"), {}),
+    "constant_gcii_only": (CASE.replace("damage_law = 'displacement'", "damage_law = 'fracture'\n  d0 = 0.05, "
+                                        "rcurve = 'constant', g_cii = 0.005"), {}),
+    # one field a line: "1 column", singular
+    "one_column": (CASE, {"h.txt": "0,0,0\n1,0,0.01\n"}),
+    # no group at all: said so, not "&material: group not found"
+    "empty": ("", {}),
+    "comments_only": ("! a case file of comments only\n\n   ! and blank lines\n", {}),
+}
+NAMED_MESSAGES = {
+    "constant_gci_only": r"case\.nml:\d+: &material: rcurve = 'constant' needs the entry g_cii \(N/mm; g_ci is given\)$",
+    "constant_gcii_only": r"case\.nml:\d+: &material: rcurve = 'constant' needs the entry g_ci \(N/mm; g_cii is given\)$",
+    "one_column": r"h\.txt:1: found 1 column; expected 3 ",
+    "empty": r"^case\.nml: no namelist group in the file \(expected &material and &loading\)$",
+    "comments_only": r"^case\.nml: no namelist group in the file \(expected &material and &loading\)$",
+}
+
+
+@pytest.mark.parametrize("name", sorted(NAMED_CASES))
+def test_read_case_names_where_a_value_came_from_as_the_driver_does(point_driver, tmp_path, monkeypatch, name):
+    """interphase-point and read_case on the same case: both refuse it with the same text, which
+    names the case file, the entry and its line (or the file named and its line)."""
+    case, files = NAMED_CASES[name]
+    write_case(tmp_path, case)
+    for file_name, text in files.items():
+        (tmp_path / file_name).write_text(text)
+    monkeypatch.chdir(tmp_path)
+    done = subprocess.run([point_driver, "case.nml", "--no-plot", "--output-dir", "out"], capture_output=True)
+    lines = done.stderr.decode("utf-8", errors="surrogateescape").split("\n")
+    assert done.returncode == 1
+    expected = next(line for line in lines if line.startswith("interphase-point: error: "))
+    expected = expected[len("interphase-point: error: "):]
+    assert re.search(NAMED_MESSAGES[name], expected), expected
+    with pytest.raises((ValueError, OSError)) as caught:
+        interphase.read_case("case.nml")
+    error = caught.value
+    got = error.detail if isinstance(error, interphase.InterphaseError) else str(error)
+    assert got == expected
 
 
 def test_read_case_names_a_missing_case_file_as_the_driver_does(point_driver, tmp_path, monkeypatch):

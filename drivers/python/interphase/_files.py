@@ -680,6 +680,11 @@ def _namelist_entries(path, known=None):
                 i = j
     if group is not None:
         raise ValueError(f'{path}: &{group} is not closed by "/"')
+    if known is not None and not groups:
+        # (an empty file, or one of comments only: said so, not as a first group not found)
+        names = ["&" + g for g in known]
+        expected = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+        raise ValueError(f"{path}: no namelist group in the file (expected {expected})")
     return groups
 
 
