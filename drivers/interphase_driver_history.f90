@@ -64,12 +64,15 @@ module interphase_driver_history
 
 contains
 
-   !> Read a history file. On failure `ok` is false and `message` names the file and line.
-   subroutine read_history(path, history, ok, message)
+   !> Read a history file. On failure `ok` is false and `message` names the file and line; a file
+   !> that cannot be opened is named after `named_by`, where the path came from (the case file,
+   !> the entry's line and the entry: 'case.nml:17: &loading: history: ').
+   subroutine read_history(path, history, ok, message, named_by)
       character(len=*), intent(in) :: path        !! history file
       type(history_type), intent(out) :: history  !! the table, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      character(len=*), intent(in), optional :: named_by   !! where the path was given
       character(len=:), allocatable :: line, where, shown
       integer, allocatable :: starts(:), ends(:)
       real(dp) :: values(4)
@@ -84,6 +87,7 @@ contains
       call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = shown//': cannot open the history file: '//trim(iomsg)
+         if (present(named_by)) message = named_by//message
          return
       end if
 

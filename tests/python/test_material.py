@@ -1145,7 +1145,17 @@ def test_read_case_refuses_what_the_driver_refuses(point_driver, tmp_path, monke
 # Case files the driver refuses naming where the value came from (the entry and its line, the file
 # it names), and the read_case refusal that must give the same text: (the case's text, the files
 # written beside it: {name: text}).
+RCURVE_TO_03 = "# D G_cI G_cII\n0.0 0.005 0.0085\n0.3 0.005 0.0085\n"
 NAMED_CASES = {
+    # a history that cannot be opened: the case file, the entry's line, the path tried
+    "history_missing": (CASE.replace("'h.txt'", "'missing.txt'"), {}),
+    # a tabulated R-curve that does not cover D0: refused with the case, under d0 and its line,
+    # with the file's D range and D0 (was: the UMAT's message at the first update)
+    "rcurve_not_d0": (CASE.replace("damage_law = 'displacement'", "damage_law = 'fracture'\n  d0 = 0.5, "
+                                   "rcurve = 'tabulated', rcurve_file = 'r.txt'"), {"r.txt": RCURVE_TO_03}),
+    # a table that cannot be read: the entry's line too
+    "table_missing": (CASE.replace("'simplified'", "'micromechanical', table = 'no.dat'").replace(
+        "  k_n = 482.69742679680568, k_t = 198.75776397515528\n", ""), {}),
     # rcurve = 'constant' names the toughness left out, only that one
     "constant_gci_only": (CASE.replace("damage_law = 'displacement'", "damage_law = 'fracture'\n  d0 = 0.05, "
                                        "rcurve = 'constant', g_ci = 0.005"), {}),
@@ -1158,6 +1168,10 @@ NAMED_CASES = {
     "comments_only": ("! a case file of comments only\n\n   ! and blank lines\n", {}),
 }
 NAMED_MESSAGES = {
+    "history_missing": r"case\.nml:\d+: &loading: history: .*/missing\.txt: cannot open the history file: ",
+    "rcurve_not_d0": r"case\.nml:\d+: &material: d0: tabulated R-curve does not cover the damage reached \(or D0\): "
+                     r"R-curve .*/r\.txt covers D from 0\.00000 to 0\.300000, not the initial crack D0 = 0\.500000$",
+    "table_missing": r"case\.nml:\d+: &material: table: RVE table file cannot be opened or read: .*/no\.dat",
     "constant_gci_only": r"case\.nml:\d+: &material: rcurve = 'constant' needs the entry g_cii \(N/mm; g_ci is given\)$",
     "constant_gcii_only": r"case\.nml:\d+: &material: rcurve = 'constant' needs the entry g_ci \(N/mm; g_cii is given\)$",
     "one_column": r"h\.txt:1: found 1 column; expected 3 ",
@@ -1186,6 +1200,10 @@ def test_read_case_names_where_a_value_came_from_as_the_driver_does(point_driver
     error = caught.value
     got = error.detail if isinstance(error, interphase.InterphaseError) else str(error)
     assert got == expected
+    if name == "rcurve_not_d0":
+        assert error.status == interphase.STATUS_RCURVE_OUT_OF_RANGE
+    if name == "history_missing":
+        assert isinstance(error, FileNotFoundError)
 
 
 def test_read_case_names_a_missing_case_file_as_the_driver_does(point_driver, tmp_path, monkeypatch):

@@ -850,18 +850,27 @@ def read_case(path):
             raise InterphaseError(error.status, f"{path}: &material: {error.detail}") from None
         raise InterphaseError(error.status, _at_entry(path, "material", f"{entry}: {error.detail}", lines)) from None
 
-    time, value, control = read_history(os.path.join(base, history), control=True)
+    try:
+        time, value, control = read_history(os.path.join(base, history), control=True)
+    except OSError as error:
+        # (a history that cannot be opened: named after the entry that names it, with its line)
+        raise type(error)(_at_entry(path, "loading", f"history: {error}", lines)) from None
     # the table and the R-curve, loaded and checked (as the driver does before the replay), a
-    # refusal named with the case file and the entry that names the file, as the driver names it
+    # refusal named with the case file, the entry that names the file and its line, as the driver
+    # names it; a tabulated R-curve that does not cover D0 (the update's check of the data loaded)
+    # under the entry d0, with the file's D range and D0
     try:
         material.update(np.zeros(2), dt=0.0)
     except InterphaseError as error:
         entry = {"table": "table", "rcurve": "rcurve_file"}.get(getattr(error, "file_kind", None))
+        if entry is None and error.status == _status.STATUS_RCURVE_OUT_OF_RANGE:
+            entry = "d0"
         if entry is None:
             raise
         # (detail: the driver's line; the text: the status named once, as for any InterphaseError)
-        wrapped = InterphaseError(error.status, f"{path}: &material: {entry}: {error.reason}: {error.detail}")
-        wrapped.args = (f"{path}: &material: {entry}: {error}",)
+        wrapped = InterphaseError(error.status, _at_entry(path, "material", f"{entry}: {error.reason}: "
+                                                                            f"{error.detail}", lines))
+        wrapped.args = (_at_entry(path, "material", f"{entry}: {error}", lines),)
         raise wrapped from None
     return Case(material, time, value, increments, output, control=control, traction_tolerance=float(tolerance),
                 output_every=output_every, tangent_check=float(tangent_check), tangent_step=float(tangent_step))
