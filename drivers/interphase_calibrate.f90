@@ -22,6 +22,7 @@ program interphase_calibrate
    use interphase_micro_coefficients, only: custom_table_source
    use interphase_layout, only: PROP_TABLE, SV_DAMAGE
    use interphase_driver_case, only: case_type, read_case, load_start_up_data, writes_an_input
+   use interphase_driver_namelist, only: with_entry_line
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
    use interphase_driver_text, only: int_to_string, real_to_string
    use interphase_params, only: law_params_type, from_props
@@ -119,8 +120,9 @@ program interphase_calibrate
    if (params%viscosity > 0.0_dp) call fail(case_path//': &material: viscosity = '// &
       real_to_string(params%viscosity)//' s: the calibration''s tests are quasi-static (rate-independent '// &
       'fracture energies): set it to 0')
-   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message)
-   if (.not. ok) call fail(message)
+   ! (the R-curve's coverage of D0 checked too; a refusal names the entry's line)
+   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message, props=run%props)
+   if (.not. ok) call fail(with_entry_line(message, case_path, run%lines))
 
    call monotonic(1, 'N', run%props(PROP_S0_N), run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)
    call monotonic(2, 'T', run%props(PROP_S0_T), run%props(PROP_SF_T), g_ii, k_t, peak_t, s_peak_t)

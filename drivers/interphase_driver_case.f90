@@ -24,6 +24,7 @@ module interphase_driver_case
       same_file
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
+   use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message, STATUS_BAD_MU, STATUS_BAD_S0_N, &
       STATUS_BAD_SF_N, STATUS_BAD_S0_T, STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_D0, &
       STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION
@@ -88,6 +89,9 @@ module interphase_driver_case
       real(dp), allocatable :: props(:)
       !> History file, resolved against the case file's directory.
       character(len=:), allocatable :: history_path
+      !> 'path:line: &loading: history: ' (the entry's line where the file gives it), to begin the
+      !> message of a history file that cannot be opened
+      character(len=:), allocatable :: history_entry
       !> CSV output path as written in the case file (resolved later against --output-dir).
       character(len=:), allocatable :: output
       !> 'path:line: &loading: output = '...'' (the entry's line where the file gives it), to
@@ -113,6 +117,9 @@ module interphase_driver_case
       real(dp) :: tangent_check = 0.0_dp
       !> Tangent check: the finite-difference step on each separation component (mm).
       real(dp) :: tangent_step = DEFAULT_TANGENT_STEP
+      !> Where each entry was given (the pre-check's lines): the messages about the files the
+      !> case names (`with_entry_line`) name the entry's line.
+      type(entry_line_type), allocatable :: lines(:)
    end type case_type
 
    !> The entries of interphase-point's `&loading` group and their kinds (checked before the
@@ -130,14 +137,16 @@ contains
    !> Fortran's namelist read: bounded lines and file size, one group of each name, each entry
    !> once and of its kind (`check_namelist_file`); a file that cannot be opened is named as the
    !> path tried.
-   subroutine precheck_case_file(path, known, ok, message, lines)
+   subroutine precheck_case_file(path, known, ok, message, lines, expected_groups)
       character(len=*), intent(in) :: path                 !! case file
       type(entry_kind_type), intent(in) :: known(:)        !! 'group.entry' names and kinds
       logical, intent(out) :: ok
       character(len=:), allocatable, intent(out) :: message  !! 'file:line: &group: ...' when not ok
       !> the entries' lines, for the messages of the checks after the namelist read
       type(entry_line_type), allocatable, intent(out), optional :: lines(:)
-      call check_namelist_file(path, known, ok, message, lines)
+      !> the groups a file without any needs (default: every group of `known`)
+      character(len=*), intent(in), optional :: expected_groups
+      call check_namelist_file(path, known, ok, message, lines, expected_groups=expected_groups)
       if (.not. ok) then
          if (index(message, path//': cannot open') == 1) message = tried_path(path)//message(len(path) + 1:)
       end if
@@ -175,13 +184,20 @@ contains
       character(len=512) :: iomsg
       type(entry_line_type), allocatable :: lines(:)
       logical :: with_loading
+      character(len=:), allocatable :: groups
 
       ok = .false.
       run%path = path
       run%name = stem_of(path)
-      ! bounded lines, one group of each name, each entry once and of its kind
-      call precheck_case_file(path, [material_entry_kinds('material'), LOADING_ENTRIES], ok, message, lines)
+      groups = '&material and &loading'
+      if (present(material_only)) then
+         if (material_only) groups = '&material'   ! (interphase-calibrate: &loading is optional)
+      end if
+      ! bounded lines, one group of each name, each entry once and of its kind (and a group at all)
+      call precheck_case_file(path, [material_entry_kinds('material'), LOADING_ENTRIES], ok, message, lines, &
+         expected_groups=groups)
       if (.not. ok) return
+      run%lines = lines
       ok = .false.
       call open_namelist_file(path, unit, ios, iomsg)
       if (ios /= 0) then
@@ -207,6 +223,7 @@ contains
       call check_material_props(path, 'material', run%props, ok, message, lines)
       if (allocated(run%output)) &
          run%output_entry = with_entry_line(path//': &loading: output = '''//run%output//'''', path, lines)
+      if (allocated(run%history_path)) run%history_entry = with_entry_line(path//': &loading: history: ', path, lines)
    end subroutine read_case
 
    !> The material's constants as the UMAT decodes them, checked when a case file is read (so that
@@ -434,8 +451,15 @@ contains
          end if
          select case (rcurve)
          case ('constant')
-            if (is_unset(e%g_ci) .or. is_unset(e%g_cii)) then
+            ! (the toughnesses left out named, not both when one is given)
+            if (is_unset(e%g_ci) .and. is_unset(e%g_cii)) then
                message = where//"rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)"
+               return
+            else if (is_unset(e%g_ci)) then
+               message = where//"rcurve = 'constant' needs the entry g_ci (N/mm; g_cii is given)"
+               return
+            else if (is_unset(e%g_cii)) then
+               message = where//"rcurve = 'constant' needs the entry g_cii (N/mm; g_ci is given)"
                return
             end if
             if (.not. finite_entry('g_ci', e%g_ci)) return
@@ -768,8 +792,12 @@ contains
 
    !> Start-up, as UEXTERNALDB does in Abaqus: read the custom RVE table and the tabulated R-curve
    !> a case names (empty path: none), once, before any update. A refusal names where the file
-   !> was given: `context` (the case file and group, e.g. 'case.nml: &material: '), then the entry.
-   subroutine load_start_up_data(table_path, rcurve_path, context, ok, message, rcurve_entry)
+   !> was given: `context` (the case file and group, e.g. 'case.nml: &material: '), then the entry
+   !> (`with_entry_line` then adds the entry's line). With `props`, the material's data are checked
+   !> as the UMAT checks them at its every call (check_run_time_data): a tabulated R-curve that
+   !> does not cover the initial crack D0 is refused here, under the entry d0, with the file's D
+   !> range and D0, rather than at the first update.
+   subroutine load_start_up_data(table_path, rcurve_path, context, ok, message, rcurve_entry, props)
       character(len=*), intent(in) :: table_path   !! custom RVE table, or ''
       character(len=*), intent(in) :: rcurve_path  !! tabulated R-curve, or ''
       character(len=*), intent(in) :: context      !! the case file and group that name them
@@ -777,8 +805,11 @@ contains
       character(len=:), allocatable, intent(out) :: message  !! the reason when not ok
       !> the entry that names the R-curve file (default rcurve_file, as &material and &joint)
       character(len=*), intent(in), optional :: rcurve_entry
+      !> the case's PROPS, to check the data loaded against (the R-curve's coverage of D0)
+      real(dp), intent(in), optional :: props(:)
       integer :: status
       character(len=MESSAGE_LEN) :: text
+      type(law_params_type) :: params
 
       ok = .true.
       message = ''
@@ -791,6 +822,16 @@ contains
          call load_rcurve(rcurve_path, status, text)
          message = context//'rcurve_file: '
          if (present(rcurve_entry)) message = context//rcurve_entry//': '
+      end if
+      if (status == STATUS_OK .and. len(rcurve_path) > 0 .and. present(props)) then
+         ! (the UMAT's own check and words; PROPS that do not decode were refused with the case)
+         call from_props(props, params, status, text)
+         if (status == STATUS_OK) then
+            call check_run_time_data(params, status, text)
+            message = context//'d0: '
+         else
+            status = STATUS_OK
+         end if
       end if
       ! (message holds where the last file read was named; it is kept only with its refusal)
       if (status == STATUS_OK) then

@@ -22,7 +22,7 @@
 module interphase_driver_history
    use, intrinsic :: iso_fortran_env, only: iostat_end, int64
    use interphase_kinds, only: dp
-   use interphase_driver_text, only: int_to_string, real_to_string, read_line, split_words, to_lower, &
+   use interphase_driver_text, only: int_to_string, count_text, real_to_string, read_line, split_words, to_lower, &
       text_file_type, open_line_file, close_text_file
    use interphase_text_input, only: parse_real, clip_text, tried_path, MAX_FILE_BYTES, next_parenthesised, &
       LENGTH_UNIT_WORDS
@@ -64,12 +64,15 @@ module interphase_driver_history
 
 contains
 
-   !> Read a history file. On failure `ok` is false and `message` names the file and line.
-   subroutine read_history(path, history, ok, message)
+   !> Read a history file. On failure `ok` is false and `message` names the file and line; a file
+   !> that cannot be opened is named after `named_by`, where the path came from (the case file,
+   !> the entry's line and the entry: 'case.nml:17: &loading: history: ').
+   subroutine read_history(path, history, ok, message, named_by)
       character(len=*), intent(in) :: path        !! history file
       type(history_type), intent(out) :: history  !! the table, valid when ok
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      character(len=*), intent(in), optional :: named_by   !! where the path was given
       character(len=:), allocatable :: line, where, shown
       integer, allocatable :: starts(:), ends(:)
       real(dp) :: values(4)
@@ -84,6 +87,7 @@ contains
       call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
          message = shown//': cannot open the history file: '//trim(iomsg)
+         if (present(named_by)) message = named_by//message
          return
       end if
 
@@ -164,8 +168,8 @@ contains
                end if
                ok = .false.
                if (ncolumns > 0 .and. named_columns /= ncolumns) then
-                  message = where//'the "# columns:" line names '//int_to_string(named_columns)// &
-                     ' columns, but the data lines have '//int_to_string(ncolumns)
+                  message = where//'the "# columns:" line names '//count_text(named_columns, 'column')// &
+                     ', but the data lines have '//int_to_string(ncolumns)
                   call close_text_file(unit)
                   return
                end if
@@ -179,7 +183,7 @@ contains
 
          if (ncolumns == 0) then
             if (size(starts) /= 3 .and. size(starts) /= 4) then
-               message = where//'found '//int_to_string(size(starts))//' columns; expected 3 '// &
+               message = where//'found '//count_text(size(starts), 'column')//'; expected 3 '// &
                   '(t s_T s_N, 2-D) or 4 (t s_T1 s_T2 s_N, 3-D)'//separator_hint(line)
                call close_text_file(unit)
                return
@@ -187,13 +191,13 @@ contains
             ncolumns = size(starts)
             first_data_line = line_number
             if (named_columns > 0 .and. named_columns /= ncolumns) then
-               message = where//'found '//int_to_string(ncolumns)//' columns, but the "# columns:" line '// &
+               message = where//'found '//count_text(ncolumns, 'column')//', but the "# columns:" line '// &
                   '(line '//int_to_string(names_line)//') names '//int_to_string(named_columns)
                call close_text_file(unit)
                return
             end if
          else if (size(starts) /= ncolumns) then
-            message = where//'found '//int_to_string(size(starts))//' columns, but line '// &
+            message = where//'found '//count_text(size(starts), 'column')//', but line '// &
                int_to_string(first_data_line)//' has '//int_to_string(ncolumns)// &
                '; every data line must have the same number of columns'//separator_hint(line)
             call close_text_file(unit)
@@ -494,7 +498,7 @@ contains
       call split_words(text, starts, ends)
       n = size(starts)
       if (n /= 3 .and. n /= 4) then
-         message = '"# columns:" names '//int_to_string(n)//' columns; expected t and 2 (2-D) or 3 (3-D) '// &
+         message = '"# columns:" names '//count_text(n, 'column')//'; expected t and 2 (2-D) or 3 (3-D) '// &
             'components, e.g. "# columns: t s_T Sigma_N"'
          return
       end if

@@ -97,7 +97,7 @@ contains
 
    !> Check `path` against `known` (entries of every group the program reads). ok = .false. with
    !> `message` ('path:line: &group: ...') on the first problem.
-   subroutine check_namelist_file(path, known, ok, message, lines, file_kind, subnormals)
+   subroutine check_namelist_file(path, known, ok, message, lines, file_kind, subnormals, expected_groups)
       character(len=*), intent(in) :: path
       type(entry_kind_type), intent(in) :: known(:)
       logical, intent(out) :: ok
@@ -110,6 +110,9 @@ contains
       !> a real may be a subnormal (default no: a case file's nonzero value below 2.2e-308 is
       !> refused; a replay file holds the host's values as the adapters wrote them, bit for bit)
       logical, intent(in), optional :: subnormals
+      !> the groups a file without any is told it needs, e.g. '&material and &loading' (default:
+      !> every group of `known`)
+      character(len=*), intent(in), optional :: expected_groups
       character(len=:), allocatable :: line, group, seen_groups, seen_entries, name, value, what
       !> the values of the current entry (its first max_count), each ended by a newline, and
       !> their kinds (KIND_STRING for a quoted string, else 0)
@@ -299,6 +302,15 @@ contains
       call close_text_file(unit)
       if (in_group) then
          message = path//': &'//group//' is not closed by "/"'
+         return
+      end if
+      ! an empty file, or one of comments only: said so, not as a first group not found
+      if (len_trim(seen_groups) == 0) then
+         if (present(expected_groups)) then
+            message = path//': no namelist group in the file (expected '//expected_groups//')'
+         else
+            message = path//': no namelist group in the file (expected '//known_groups(' and ')//')'
+         end if
          return
       end if
       ok = .true.
@@ -556,16 +568,23 @@ contains
       end function marked_group
 
       !> The groups of `known`, in order of first appearance ('&material, &loading').
-      function known_groups() result(list)
+      function known_groups(last_separator) result(list)
+         !> what goes before the last group (default ', ': '&a, &b, &c'; ' and ': '&a, &b and &c')
+         character(len=*), intent(in), optional :: last_separator
          character(len=:), allocatable :: list
-         integer :: j, dot
+         integer :: j, dot, last
          list = ''
+         last = 0
          do j = 1, size(known)
             dot = index(known(j)%name, '.')
             if (index(list//',', '&'//known(j)%name(:dot - 1)//',') > 0) cycle
-            if (len(list) > 0) list = list//', '
+            if (len(list) > 0) then
+               last = len(list)
+               list = list//', '
+            end if
             list = list//'&'//known(j)%name(:dot - 1)
          end do
+         if (present(last_separator) .and. last > 0) list = list(:last)//last_separator//list(last + 3:)
       end function known_groups
 
    end subroutine check_namelist_file

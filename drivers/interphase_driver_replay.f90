@@ -146,14 +146,24 @@ contains
       call system_clock(law%clock_start, law%clock_rate)
       law%clock_last = law%clock_start
 
-      ! Probe: a zero increment on the virgin state checks PROPS and sizes before anything else.
+      ! Probe: a zero increment on the virgin state checks PROPS, sizes and the data loaded at
+      ! start-up before anything else. Its refusal is the UMAT's fatal message, repeated as it is
+      ! (the driver maps no status to a cause of its own: a setup error may be PROPS, the sizes, or
+      ! the table or R-curve loaded, e.g. one that does not cover D0).
       trial = new_point(ntens, history%time(1))
+      call reset_fatal_message()
       call call_umat(run%props, trial, zero, history%time(1), pnewdt)
       law%counts%umat_calls = 1
       if (pnewdt < 1.0_dp) then
-         message = run%path//': the UMAT rejected the material data or sizes (NTENS = '// &
-            int_to_string(ntens)//', NPROPS = '//int_to_string(size(run%props))// &
-            '); see its message above'
+         if (fatal_message_reported()) then
+            message = run%path//': the UMAT stopped with a setup error at its first call (the zero increment '// &
+               'before the replay, NTENS = '//int_to_string(ntens)//', NPROPS = '//int_to_string(size(run%props))// &
+               '): '//last_fatal_message()
+         else
+            message = run%path//': the UMAT asked for a smaller increment at its first call (the zero increment '// &
+               'before the replay, NTENS = '//int_to_string(ntens)//', NPROPS = '//int_to_string(size(run%props))// &
+               '); see its message above'
+         end if
          if (present(report)) report = law%counts
          return
       end if

@@ -9,7 +9,7 @@ module interphase_driver_text
       TEXT_LINE, TEXT_END, to_lower
    implicit none
    private
-   public :: int_to_string, real_to_string, real_to_csv, to_lower
+   public :: int_to_string, count_text, real_to_string, real_to_csv, to_lower
    public :: text_file_type, open_line_file, read_line, close_text_file
    public :: split_words, directory_of, base_name, stem_of, join_path, shell_quote, gnuplot_quote, same_path, same_file
 
@@ -24,6 +24,17 @@ contains
       write (buffer, '(i0)') value
       text = trim(buffer)
    end function int_to_string
+
+   !> A count and its noun for messages, the noun singular for one: '1 column', '3 columns'
+   !> (`noun` singular; the plural adds an s).
+   pure function count_text(count, noun) result(text)
+      integer, intent(in) :: count                !! how many
+      character(len=*), intent(in) :: noun        !! the noun, singular
+      character(len=:), allocatable :: text
+
+      text = int_to_string(count)//' '//noun
+      if (count /= 1) text = text//'s'
+   end function count_text
 
    !> Text of a real for messages (`g0.17`, with its leading zero: the same with every compiler).
    function real_to_string(value) result(text)

@@ -19,6 +19,7 @@ program interphase_point
       gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output, remove_file, &
       open_failure, OPEN_MESSAGE_LEN
    use interphase_driver_history, only: history_type, read_history
+   use interphase_driver_namelist, only: with_entry_line
    use interphase_driver_output, only: csv_header, write_plot_script
    use interphase_driver_replay, only: replay_history, replay_report_type
    use interphase_driver_replay_call, only: replay_call_type, is_replay_file, read_replay_call, repeat_replay_call
@@ -60,11 +61,12 @@ program interphase_point
    ! ---- inputs ----
    call read_case(case_path, run, ok, message)
    if (.not. ok) call fail(message)
-   call read_history(run%history_path, history, ok, message)
+   call read_history(run%history_path, history, ok, message, named_by=run%history_entry)
    if (.not. ok) call fail(message)
-   ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does)
-   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message)
-   if (.not. ok) call fail(message)
+   ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does), and
+   ! the R-curve's coverage of D0 checked; a refusal names the entry's line
+   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message, props=run%props)
+   if (.not. ok) call fail(with_entry_line(message, case_path, run%lines))
    summary = material_summary(run%props)
    write (output_unit, '(a)') run%name//': '//summary
 

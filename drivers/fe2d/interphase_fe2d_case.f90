@@ -15,7 +15,7 @@ module interphase_fe2d_case
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
    use interphase_driver_history, only: carriage_return_message, parse_number, separator_hint, foreign_length_unit_after
-   use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, &
+   use interphase_driver_text, only: int_to_string, count_text, real_to_string, to_lower, directory_of, &
       stem_of, join_path, read_line, split_words, text_file_type, open_line_file, close_text_file
    implicit none
    private
@@ -72,6 +72,9 @@ module interphase_fe2d_case
       !> assemble only the symmetric part of DDSDDE (as CalculiX does, and Abaqus without
       !> UNSYMM): `&loading assembly = 'symmetric'`; default 'unsymmetric'
       logical :: symmetric_assembly = .false.
+      !> Where each entry was given (the pre-check's lines): the messages about the files the
+      !> case names (`with_entry_line`) name the entry's line.
+      type(entry_line_type), allocatable :: lines(:)
    end type fe2d_case_type
 
    !> The entries of the groups other than `&joint` (whose entries are the point driver's
@@ -125,7 +128,9 @@ contains
       if (.not. ok) message = with_entry_line(message, path, lines)
       if (ok) call check_material_props(path, 'joint', run%props, ok, message, lines)
       if (ok) run%output_entry = with_entry_line(path//': &loading: output = '''//run%output//'''', path, lines)
-      if (ok) call read_shear_history(run%history_path, run%history_t, run%history_u, ok, message)
+      run%lines = lines
+      if (ok) call read_shear_history(run%history_path, run%history_t, run%history_u, ok, message, &
+         named_by=with_entry_line(path//': &loading: history: ', path, lines))
    end subroutine read_fe2d_case
 
    subroutine read_geometry(unit, run, ok, message)
@@ -453,13 +458,15 @@ contains
    !> its messages clipping the field to 60 characters with control characters masked); a
    !> carriage return inside a line is refused as interphase-point refuses it. A `# columns:` line (interphase-point's
    !> mixed control, which this host does not have) is refused rather than read as a comment.
-   !> Errors name the file (as tried) and line.
-   subroutine read_shear_history(path, t, u, ok, message)
+   !> Errors name the file (as tried) and line; a file that cannot be opened is named after
+   !> `named_by`, where the path came from ('case.nml:20: &loading: history: ').
+   subroutine read_shear_history(path, t, u, ok, message, named_by)
       character(len=*), intent(in) :: path        !! history file
       real(dp), allocatable, intent(out) :: t(:)  !! times
       real(dp), allocatable, intent(out) :: u(:)  !! shear displacements (mm)
       logical, intent(out) :: ok                  !! true on success
       character(len=:), allocatable, intent(out) :: message  !! error text when not ok
+      character(len=*), intent(in), optional :: named_by   !! where the path was given
       character(len=:), allocatable :: line
       integer, allocatable :: starts(:), ends(:)
       integer :: ios, line_number, n, k
@@ -477,7 +484,11 @@ contains
       first_line = 0
       call open_line_file(path, unit, ios, iomsg)
       if (ios /= 0) then
-         message = tried_path(path)//': cannot open the shear history (&loading: history): '//trim(iomsg)
+         if (present(named_by)) then
+            message = named_by//tried_path(path)//': cannot open the shear history: '//trim(iomsg)
+         else
+            message = tried_path(path)//': cannot open the shear history (&loading: history): '//trim(iomsg)
+         end if
          return
       end if
       line_number = 0
@@ -533,7 +544,7 @@ contains
          if (size(starts) == 0) cycle
          if (size(starts) /= 2) then
             message = shown//':'//int_to_string(line_number)//': found '// &
-               int_to_string(size(starts))//' columns; expected 2 (t u_shear)'//separator_hint(line)
+               count_text(size(starts), 'column')//'; expected 2 (t u_shear)'//separator_hint(line)
             call close_text_file(unit)
             return
          end if

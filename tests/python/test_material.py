@@ -52,7 +52,12 @@ def test_props_are_the_umat_layout():
     (dict(d0=0.1), interphase.STATUS_BAD_NPROPS, "d0 is an entry of damage_law = 'fracture' only"),
     (dict(damage_law="fracture"), interphase.STATUS_BAD_D0, "missing entry d0"),
     (dict(damage_law="fracture", d0=1.5, rcurve="equivalent"), interphase.STATUS_BAD_D0, "PROPS(10) D0"),
-    (dict(damage_law="fracture", d0=0.1, rcurve="constant", g_ci=0.01), interphase.STATUS_BAD_GC_II, "g_cii"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="constant", g_ci=0.01), interphase.STATUS_BAD_GC_II,
+     "rcurve = 'constant' needs the entry g_cii (N/mm; g_ci is given)"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="constant", g_cii=0.01), interphase.STATUS_BAD_GC_I,
+     "rcurve = 'constant' needs the entry g_ci (N/mm; g_cii is given)"),
+    (dict(damage_law="fracture", d0=0.1, rcurve="constant"), interphase.STATUS_BAD_GC_I,
+     "rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)"),
     (dict(damage_law="fracture", d0=0.1, rcurve="equivalent", g_ci=0.01), interphase.STATUS_BAD_GC_I,
      "rcurve = 'constant' only"),
     (dict(damage_law="fracture", d0=0.1, rcurve="measured"), interphase.STATUS_BAD_RCURVE, "rcurve must be"),
@@ -792,7 +797,7 @@ def test_read_mixed_history(source_dir, tmp_path):
                               ("# t, s_T(mm), s_N(CM)\n0 0 0\n1 0.001 0\n", 1, "gives s_N the unit \\(CM\\)"),
                               ("# columns: t s_T Sigma_N\n# t s_T (\u00b5m) Sigma_N (MPa)\n0 0 0\n1 0 1\n", 2,
                                "gives s_T the unit \\(\u00b5m\\)"),
-                              ("# t, s_T, s_N\n0,0,0\n1,0,0.01\n", 2, "found 1 columns; expected 3 .* \\(the "
+                              ("# t, s_T, s_N\n0,0,0\n1,0,0.01\n", 2, "found 1 column; expected 3 .* \\(the "
                                "fields of a line are separated by blanks or tabs, not by ','"),
                               ("0,5;0;0\n1;0;0,01\n", 1, "not by ';': write the values with blanks between them, "
                                "and a point for the decimal comma\\)"),
@@ -1135,6 +1140,70 @@ def test_read_case_refuses_what_the_driver_refuses(point_driver, tmp_path, monke
     if name == "rcurve_file_refused":
         # (the detail holds the driver's line, status text included; str() names the status once)
         assert str(error).count(error.reason) == 1 and error.name in str(error)
+
+
+# Case files the driver refuses naming where the value came from (the entry and its line, the file
+# it names), and the read_case refusal that must give the same text: (the case's text, the files
+# written beside it: {name: text}).
+RCURVE_TO_03 = "# D G_cI G_cII\n0.0 0.005 0.0085\n0.3 0.005 0.0085\n"
+NAMED_CASES = {
+    # a history that cannot be opened: the case file, the entry's line, the path tried
+    "history_missing": (CASE.replace("'h.txt'", "'missing.txt'"), {}),
+    # a tabulated R-curve that does not cover D0: refused with the case, under d0 and its line,
+    # with the file's D range and D0 (was: the UMAT's message at the first update)
+    "rcurve_not_d0": (CASE.replace("damage_law = 'displacement'", "damage_law = 'fracture'\n  d0 = 0.5, "
+                                   "rcurve = 'tabulated', rcurve_file = 'r.txt'"), {"r.txt": RCURVE_TO_03}),
+    # a table that cannot be read: the entry's line too
+    "table_missing": (CASE.replace("'simplified'", "'micromechanical', table = 'no.dat'").replace(
+        "  k_n = 482.69742679680568, k_t = 198.75776397515528\n", ""), {}),
+    # rcurve = 'constant' names the toughness left out, only that one
+    "constant_gci_only": (CASE.replace("damage_law = 'displacement'", "damage_law = 'fracture'\n  d0 = 0.05, "
+                                       "rcurve = 'constant', g_ci = 0.005"), {}),
+    "constant_gcii_only": (CASE.replace("damage_law = 'displacement'", "damage_law = 'fracture'\n  d0 = 0.05, "
+                                        "rcurve = 'constant', g_cii = 0.005"), {}),
+    # one field a line: "1 column", singular
+    "one_column": (CASE, {"h.txt": "0,0,0\n1,0,0.01\n"}),
+    # no group at all: said so, not "&material: group not found"
+    "empty": ("", {}),
+    "comments_only": ("! a case file of comments only\n\n   ! and blank lines\n", {}),
+}
+NAMED_MESSAGES = {
+    "history_missing": r"case\.nml:\d+: &loading: history: .*/missing\.txt: cannot open the history file: ",
+    "rcurve_not_d0": r"case\.nml:\d+: &material: d0: tabulated R-curve does not cover the damage reached \(or D0\): "
+                     r"R-curve .*/r\.txt covers D from 0\.00000 to 0\.300000, not the initial crack D0 = 0\.500000$",
+    "table_missing": r"case\.nml:\d+: &material: table: RVE table file cannot be opened or read: .*/no\.dat",
+    "constant_gci_only": r"case\.nml:\d+: &material: rcurve = 'constant' needs the entry g_cii \(N/mm; g_ci is given\)$",
+    "constant_gcii_only": r"case\.nml:\d+: &material: rcurve = 'constant' needs the entry g_ci \(N/mm; g_cii is given\)$",
+    "one_column": r"h\.txt:1: found 1 column; expected 3 ",
+    "empty": r"^case\.nml: no namelist group in the file \(expected &material and &loading\)$",
+    "comments_only": r"^case\.nml: no namelist group in the file \(expected &material and &loading\)$",
+}
+
+
+@pytest.mark.parametrize("name", sorted(NAMED_CASES))
+def test_read_case_names_where_a_value_came_from_as_the_driver_does(point_driver, tmp_path, monkeypatch, name):
+    """interphase-point and read_case on the same case: both refuse it with the same text, which
+    names the case file, the entry and its line (or the file named and its line)."""
+    case, files = NAMED_CASES[name]
+    write_case(tmp_path, case)
+    for file_name, text in files.items():
+        (tmp_path / file_name).write_text(text)
+    monkeypatch.chdir(tmp_path)
+    done = subprocess.run([point_driver, "case.nml", "--no-plot", "--output-dir", "out"], capture_output=True)
+    lines = done.stderr.decode("utf-8", errors="surrogateescape").split("\n")
+    assert done.returncode == 1
+    expected = next(line for line in lines if line.startswith("interphase-point: error: "))
+    expected = expected[len("interphase-point: error: "):]
+    assert re.search(NAMED_MESSAGES[name], expected), expected
+    with pytest.raises((ValueError, OSError)) as caught:
+        interphase.read_case("case.nml")
+    error = caught.value
+    got = error.detail if isinstance(error, interphase.InterphaseError) else str(error)
+    assert got == expected
+    if name == "rcurve_not_d0":
+        assert error.status == interphase.STATUS_RCURVE_OUT_OF_RANGE
+    if name == "history_missing":
+        assert isinstance(error, FileNotFoundError)
 
 
 def test_read_case_names_a_missing_case_file_as_the_driver_does(point_driver, tmp_path, monkeypatch):

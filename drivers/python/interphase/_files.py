@@ -61,6 +61,11 @@ def _before_comment(line):
     return line
 
 
+def _counted(count, noun):
+    """A count and its noun, singular for one: '1 column', '3 columns' (the driver's count_text)."""
+    return f"{count} {noun}" + ("" if count == 1 else "s")
+
+
 def _clip(text):
     """At most the first 60 bytes of `text`, with '...' when cut, and a control character other
     than a tab as '?' (the driver's clip_text, for messages)."""
@@ -243,7 +248,7 @@ def _column_names(text, where):
     _check_units(text[len("columns:"):], where)
     words = _words(_without_parentheses(text[len("columns:"):]))
     if len(words) not in (3, 4):
-        raise ValueError(f'{where}: "# columns:" names {len(words)} columns; expected t and 2 (2-D) or 3 '
+        raise ValueError(f'{where}: "# columns:" names {_counted(len(words), "column")}; expected t and 2 (2-D) or 3 '
                          '(3-D) components, e.g. "# columns: t s_T Sigma_N"')
     # (the driver keeps the first 16 bytes of a word)
     words = [w.encode("utf-8", errors="surrogateescape")[:16].decode("utf-8", errors="surrogateescape")
@@ -411,7 +416,7 @@ def read_history(path, control=False):
                                  f"'{head.strip(' ')}'): put the data row on a line of its own")
             ncolumns, named = _column_names(text, where)
             if rows and ncolumns != len(rows[0]):
-                raise ValueError(f'{where}: the "# columns:" line names {ncolumns} columns, but the data '
+                raise ValueError(f'{where}: the "# columns:" line names {_counted(ncolumns, "column")}, but the data '
                                  f'lines have {len(rows[0])}')
             names_line = number
             named = (ncolumns, named)
@@ -421,15 +426,16 @@ def read_history(path, control=False):
             continue
         if not rows:
             if len(words) not in (3, 4):
-                raise ValueError(f"{where}: found {len(words)} columns; expected 3 (t s_T s_N, 2-D) or 4 "
+                raise ValueError(f"{where}: found {_counted(len(words), 'column')}; expected 3 (t s_T s_N, 2-D) or 4 "
                                  f"(t s_T1 s_T2 s_N, 3-D){_separator_hint(head)}")
             first_line = number
             if named is not None and named[0] != len(words):
-                raise ValueError(f'{where}: found {len(words)} columns, but the "# columns:" line (line '
+                raise ValueError(f'{where}: found {_counted(len(words), "column")}, but the "# columns:" line (line '
                                  f'{names_line}) names {named[0]}')
         elif len(words) != len(rows[0]):
-            raise ValueError(f"{where}: found {len(words)} columns, but line {first_line} has {len(rows[0])}; "
-                             f"every data line must have the same number of columns{_separator_hint(head)}")
+            raise ValueError(f"{where}: found {_counted(len(words), 'column')}, but line {first_line} has "
+                             f"{len(rows[0])}; every data line must have the same number of columns"
+                             + _separator_hint(head))
         row = [_number(w, f"{where}: column {i}", _separator_hint("!") if "!" in w else "")
                for i, w in enumerate(words, 1)]
         controls = named[1] if named is not None else [False] * (len(words) - 1)
@@ -674,6 +680,11 @@ def _namelist_entries(path, known=None):
                 i = j
     if group is not None:
         raise ValueError(f'{path}: &{group} is not closed by "/"')
+    if known is not None and not groups:
+        # (an empty file, or one of comments only: said so, not as a first group not found)
+        names = ["&" + g for g in known]
+        expected = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+        raise ValueError(f"{path}: no namelist group in the file (expected {expected})")
     return groups
 
 
@@ -839,18 +850,27 @@ def read_case(path):
             raise InterphaseError(error.status, f"{path}: &material: {error.detail}") from None
         raise InterphaseError(error.status, _at_entry(path, "material", f"{entry}: {error.detail}", lines)) from None
 
-    time, value, control = read_history(os.path.join(base, history), control=True)
+    try:
+        time, value, control = read_history(os.path.join(base, history), control=True)
+    except OSError as error:
+        # (a history that cannot be opened: named after the entry that names it, with its line)
+        raise type(error)(_at_entry(path, "loading", f"history: {error}", lines)) from None
     # the table and the R-curve, loaded and checked (as the driver does before the replay), a
-    # refusal named with the case file and the entry that names the file, as the driver names it
+    # refusal named with the case file, the entry that names the file and its line, as the driver
+    # names it; a tabulated R-curve that does not cover D0 (the update's check of the data loaded)
+    # under the entry d0, with the file's D range and D0
     try:
         material.update(np.zeros(2), dt=0.0)
     except InterphaseError as error:
         entry = {"table": "table", "rcurve": "rcurve_file"}.get(getattr(error, "file_kind", None))
+        if entry is None and error.status == _status.STATUS_RCURVE_OUT_OF_RANGE:
+            entry = "d0"
         if entry is None:
             raise
         # (detail: the driver's line; the text: the status named once, as for any InterphaseError)
-        wrapped = InterphaseError(error.status, f"{path}: &material: {entry}: {error.reason}: {error.detail}")
-        wrapped.args = (f"{path}: &material: {entry}: {error}",)
+        wrapped = InterphaseError(error.status, _at_entry(path, "material", f"{entry}: {error.reason}: "
+                                                                            f"{error.detail}", lines))
+        wrapped.args = (_at_entry(path, "material", f"{entry}: {error}", lines),)
         raise wrapped from None
     return Case(material, time, value, increments, output, control=control, traction_tolerance=float(tolerance),
                 output_every=output_every, tangent_check=float(tangent_check), tangent_step=float(tangent_step))

@@ -287,9 +287,14 @@ class Material:
                               "'constant', 'equivalent' or 'tabulated'")
             gc = [0.0, 0.0]
             if rcurve == RCURVE_CONSTANT:
+                # (the toughnesses left out named, not both when one is given: the driver's words)
+                if "g_ci" not in e and "g_cii" not in e:
+                    raise InterphaseError(st.STATUS_BAD_GC_I, "rcurve = 'constant' needs the entries g_ci and g_cii "
+                                          "(N/mm)")
                 if "g_ci" not in e or "g_cii" not in e:
-                    raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" not in e else st.STATUS_BAD_GC_II,
-                                          "rcurve = 'constant' needs the entries g_ci and g_cii (N/mm)")
+                    missing, given = ("g_ci", "g_cii") if "g_ci" not in e else ("g_cii", "g_ci")
+                    raise InterphaseError(st.STATUS_BAD_GC_I if missing == "g_ci" else st.STATUS_BAD_GC_II,
+                                          f"rcurve = 'constant' needs the entry {missing} (N/mm; {given} is given)")
                 gc = [_real("g_ci", e["g_ci"]), _real("g_cii", e["g_cii"])]
             if rcurve == RCURVE_TABULATED:
                 if "rcurve_file" not in e:
