@@ -528,6 +528,8 @@ contains
       character(len=*), intent(in) :: why
       logical :: is_open
       write (error_unit, '(a)') in_path // ':' // int_str(at_line) // ': error: ' // why
+      ! (before the STOP's own line, which would otherwise come first where standard error is buffered)
+      flush (error_unit)
       inquire (unit=out_unit, opened=is_open)
       if (is_open) close (out_unit, status='delete')
       stop 1
