@@ -370,7 +370,8 @@ contains
       if (.not. check_relative(where, 'displacement_tolerance', displacement_tolerance, message)) return
       if (.not. check_window(where, 'min_increment', min_increment, message)) return
       if (min_increment > 1.0_dp) then
-         message = where//'min_increment is a fraction of the nominal increment and must be <= 1'
+         message = where//'min_increment is a fraction of the nominal increment and must lie in [1e-20, 1], got '// &
+            real_to_string(min_increment)
          return
       end if
       run%precompression = precompression
