@@ -7,6 +7,7 @@
 # integration. Prints, per run, whether it completed, its increments / iterations / cut-backs,
 # the peak shear force and the energy the joint dissipated by the end (SPD, N mm).
 #   drivers/fe2d/band-study.sh [--build-dir DIR] [--band CHI] [--viscosity ETA] [--check]
+# --build-dir DIR  the build tree (default: build/release, the README's)
 # --band CHI       run with contact_band = CHI instead of the cases' value (0: the paper's law)
 # --viscosity ETA  run the viscous cases with viscosity = ETA (s) instead of theirs
 # --check     exit 1 unless every run completes and, in each series, the two finest runs'
@@ -18,11 +19,12 @@
 #             ctest runs)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-build="$here/../../build"
+build="$(cd "$here/../.." && pwd)/build/release"   # the README's build tree
 band=""
 viscosity=""
 check=0
-usage="usage: $0 [--build-dir DIR] [--band CHI] [--viscosity ETA] [--check]"
+usage="usage: $0 [--build-dir DIR] [--band CHI] [--viscosity ETA] [--check] | --help
+  --build-dir DIR  the build tree holding drivers/fe2d/interphase-fe2d (default: build/release)"
 die() { echo "band-study.sh: error: $*" >&2; exit 2; }
 given=" "
 while [ $# -gt 0 ]; do
@@ -33,6 +35,7 @@ while [ $# -gt 0 ]; do
     --check) given="$given$1 " ;;
   esac
   case "$1" in
+    -h|--help) echo "$usage"; exit 0 ;;
     --build-dir) build="$2"; shift 2 ;;
     --band) band="$2"; shift 2 ;;
     --viscosity) viscosity="$2"; shift 2 ;;
@@ -48,7 +51,7 @@ for option in band viscosity; do
     || die "--$option '$value' is not a number"
 done
 exe="$build/drivers/fe2d/interphase-fe2d"
-[ -x "$exe" ] || { echo "no $exe: build first (cmake --build $build --target interphase-fe2d)" >&2; exit 1; }
+[ -x "$exe" ] || { echo "band-study.sh: error: no $exe: build first (cmake -S $(cd "$here/../.." && pwd) -B $build -DCMAKE_BUILD_TYPE=Release && cmake --build $build -j2 --target interphase-fe2d), or name a build tree with --build-dir" >&2; exit 1; }
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 failed=0

@@ -3,12 +3,14 @@
 # mesh levels nx x ny = 4x1, 8x2, 16x4, 32x8 (and 64x16 with --fine) elements per brick;
 # prints the peak shear force, its change from the previous level and the final force.
 #   drivers/fe2d/mesh-study.sh [--build-dir DIR] [--case CASE.nml] [--fine]
+# --build-dir DIR  the build tree (default: build/release, the README's)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
-build="$here/../../build"
+build="$(cd "$here/../.." && pwd)/build/release"   # the README's build tree
 case_file="$here/cases/couplet-simplified-monotonic.nml"
 levels="4:1 8:2 16:4 32:8"
-usage="usage: $0 [--build-dir DIR] [--case CASE.nml] [--fine]"
+usage="usage: $0 [--build-dir DIR] [--case CASE.nml] [--fine] | --help
+  --build-dir DIR  the build tree holding drivers/fe2d/interphase-fe2d (default: build/release)"
 die() { echo "mesh-study.sh: error: $*" >&2; exit 2; }
 given=" "
 while [ $# -gt 0 ]; do
@@ -19,6 +21,7 @@ while [ $# -gt 0 ]; do
     --fine) given="$given$1 " ;;
   esac
   case "$1" in
+    -h|--help) echo "$usage"; exit 0 ;;
     --build-dir) build="$2"; shift 2 ;;
     --case)
       [ -f "$2" ] && [ -r "$2" ] || die "--case $2: cannot read the case file (no such file, or not a readable file)"
@@ -28,7 +31,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 exe="$build/drivers/fe2d/interphase-fe2d"
-[ -x "$exe" ] || { echo "no $exe: build first (cmake --build $build --target interphase-fe2d)" >&2; exit 1; }
+[ -x "$exe" ] || { echo "mesh-study.sh: error: no $exe: build first (cmake -S $(cd "$here/../.." && pwd) -B $build -DCMAKE_BUILD_TYPE=Release && cmake --build $build -j2 --target interphase-fe2d), or name a build tree with --build-dir" >&2; exit 1; }
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 case_dir="$(dirname "$case_file")"
