@@ -27,7 +27,7 @@ module interphase_driver_case
    use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message, STATUS_BAD_MU, STATUS_BAD_S0_N, &
       STATUS_BAD_SF_N, STATUS_BAD_S0_T, STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_D0, &
-      STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION
+      STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION, STATUS_RCURVE_OUT_OF_RANGE
    use interphase_layout, only: OPTION_SPECS, OPT_CONTACT_BAND, OPT_VISCOSITY
    use interphase_text_input, only: tried_path
    use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, &
@@ -828,7 +828,10 @@ contains
          call from_props(props, params, status, text)
          if (status == STATUS_OK) then
             call check_run_time_data(params, status, text)
-            message = context//'d0: '
+            ! (an R-curve that does not cover the initial crack is the entry d0's; any other
+            ! refusal of the data loaded is named by the group alone)
+            message = context
+            if (status == STATUS_RCURVE_OUT_OF_RANGE) message = context//'d0: '
          else
             status = STATUS_OK
          end if

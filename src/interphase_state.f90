@@ -88,7 +88,7 @@ contains
          bl1 = transfer(lam1(k), 0_int64)
          bl2 = iand(transfer(lam2(k), 0_int64), lam2_keep)
          br = transfer(regime(k), 0_int64)
-         ! (an intact point, D = +-0, with a slip: state_unpack refuses it. 0/1 integers combined
+         ! (an intact point, D = +-0, with a slip: unpack_statev refuses it. 0/1 integers combined
          ! by iand, not products: AVX2 has no 64-bit multiply)
          nbad_bits = nbad_bits + 1 - iand(iand(iand(damage_admissible(bd), slip_admissible(bl1)), &
             iand(slip_admissible(bl2), regime_known(br))), &

@@ -72,13 +72,16 @@ case "$model" in simplified|micromechanical) ;; *) fail "--model must be simplif
 for v in nx ny nz increments replay; do
    [[ ${!v} =~ ^[1-9][0-9]*$ ]] || fail "--$v must be a positive integer, got '${!v}'"
 done
-[[ $tolerance =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || fail "--tolerance must be a positive number, got '$tolerance'"
-[[ $t =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || fail "--thickness must be a positive number, got '$t'"
-# (mu and P: numbers >= 0 written as they are given; interphase checks mu's range when ccx
-# calls it, and the end force of a shear test is mu x P x 200 mm x 100 mm)
-[[ $mu =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || fail "--mu must be a number >= 0 (digits, a decimal point, an exponent; no sign), got '$mu'"
-[[ $precompression =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || \
-   fail "--precompression must be a pressure >= 0 in MPa (digits, a decimal point, an exponent; no sign), got '$precompression'"
+# an option's value: an unsigned number (digits, a decimal point, an exponent), written into the
+# deck as it is given
+unsigned_number() { [[ $2 =~ ^[0-9]+([.][0-9]*)?([eE][-+]?[0-9]+)?$ ]] || fail "--$1 must be $3, got '$2'"; }
+unsigned_number tolerance "$tolerance" "a positive number"
+unsigned_number thickness "$t" "a positive number"
+# (interphase checks mu's range when ccx calls it; the end force of a shear test is
+# mu x P x 200 mm x 100 mm)
+unsigned_number mu "$mu" "a number >= 0 (digits, a decimal point, an exponent; no sign)"
+unsigned_number precompression "$precompression" \
+   "a pressure >= 0 in MPa (digits, a decimal point, an exponent; no sign)"
 [ "$replay" -le "$nx" ] || fail "--replay-element $replay: the joint has $nx elements (x 1 in 3-D: the first row)"
 
 # The joint's constants: the law's PROPS, then the option constants nb + 1 ... nb + 7 (growth slip,
