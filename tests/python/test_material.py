@@ -8,6 +8,7 @@ import os
 import pathlib
 import re
 import subprocess
+import sys
 import threading
 import warnings
 
@@ -216,6 +217,56 @@ def test_tables_and_rcurves(source_dir, tmp_path):
         interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
                                    rcurve_file=tmp_path / "none.txt"))
     assert caught.value.status == interphase.STATUS_RCURVE_UNREADABLE
+
+
+def test_from_props_keeps_its_table_and_rcurve(source_dir, tmp_path):
+    """PROPS select a custom table or a tabulated R-curve but cannot name it: from_props takes the
+    file named (table=, rcurve_file=) or the one loaded when it is made, and keeps it when another
+    material loads another file (the library keeps one of each)."""
+    history = [[0, 0], [0.05, 0.01]]
+    resolution = source_dir / "tables" / "paper-resolution.dat"
+    custom = interphase.Material(**dict(MICRO, table=resolution))
+    expected = custom.run(history, increments=50).traction
+    bound = interphase.Material.from_props(custom.props)          # the table loaded now
+    named = interphase.Material.from_props(custom.props, table=resolution)
+    assert bound.table_path == named.table_path == str(resolution)
+    assert "table=" in repr(bound)
+    other = interphase.Material(**dict(MICRO, table=source_dir / "tables" / "paper-dense.dat"))
+    assert not np.array_equal(other.run(history, increments=50).traction, expected)
+    assert np.array_equal(bound.run(history, increments=50).traction, expected)
+    assert np.array_equal(named.run(history, increments=50).traction, expected)
+    first, second = tmp_path / "first.txt", tmp_path / "second.txt"
+    first.write_text("0.0 0.01 0.02\n1.0 0.015 0.03\n")
+    second.write_text("0.0 0.05 0.10\n1.0 0.06 0.12\n")
+    tab = interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
+                                     rcurve_file=first))
+    w_first = tab.run(history, increments=50).dissipated_energy[-1]
+    same = interphase.Material.from_props(tab.props)
+    interphase.load_rcurve(second)
+    assert same.rcurve_path == str(first)
+    assert same.run(history, increments=50).dissipated_energy[-1] == w_first
+    # a file for PROPS that select none, and none loaded in a fresh process
+    with pytest.raises(interphase.InterphaseError, match="table = 'x.dat' is given, but the PROPS do not select "
+                       "a custom RVE table") as caught:
+        interphase.Material.from_props(interphase.Material(**MICRO).props, table="x.dat")
+    assert caught.value.status == interphase.STATUS_BAD_TABLE_SELECTOR
+    with pytest.raises(interphase.InterphaseError, match="rcurve_file = 'x.txt' is given"):
+        interphase.Material.from_props(custom.props, rcurve_file="x.txt")
+    code = ("import interphase\n"
+            "for props in ([2, 1, 0.75, 0.00044, 0.04, 0.00072, 0.06, 1],\n"
+            "              [2, 2, 0.75, 0.00044, 0.04, 0.00072, 0.06, 0, 0.02, 3, 0, 0]):\n"
+            "    try:\n"
+            "        interphase.Material.from_props(props)\n"
+            "    except interphase.InterphaseError as e:\n"
+            "        print(e.status, e.detail)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.splitlines() == [
+        f"{interphase.STATUS_TABLE_NOT_LOADED} Material.from_props: PROPS(8) = 1.0 selects the custom RVE table, "
+        "but none is loaded: name it, Material.from_props(props, table=path), or load it first, "
+        "interphase.load_table(path)",
+        f"{interphase.STATUS_RCURVE_NOT_LOADED} Material.from_props: PROPS(10) = 3.0 selects the tabulated "
+        "R-curve, but none is loaded: name it, Material.from_props(props, rcurve_file=path), or load it "
+        "first, interphase.load_rcurve(path)"]
 
 
 def test_an_edited_file_is_loaded_again(tmp_path):

@@ -187,6 +187,13 @@ def _racy_digest(path, signature):
         return b""
 
 
+def loaded_path(kind):
+    """The absolute path of the table or R-curve this package loaded last ("table", "rcurve"), or
+    None when none is loaded (or its last load failed)."""
+    entry = _loaded[kind]
+    return None if entry is None else entry[0][0]
+
+
 def ensure_loaded(kind, path):
     """Load `path` as the table or R-curve unless it is the one loaded, unchanged since."""
     if path is None:

@@ -9,7 +9,8 @@ import ctypes
 import numpy as np
 
 from . import _status as st
-from ._library import lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded, _path_text
+from ._library import (lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded, loaded_path,
+                       _path_text)
 
 # ---- the codes of the PROPS layout (src/interphase_enums.f90, docs/abaqus.md) --------------
 MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL = 1, 2
@@ -346,10 +347,19 @@ class Material:
             raise InterphaseError(status, text_of(detail))
 
     @classmethod
-    def from_props(cls, props):
+    def from_props(cls, props, table=None, rcurve_file=None):
         """A material from a PROPS array (docs/abaqus.md), checked by the library: a
         one-dimensional array of real numbers (ints and floats; a string, a bool or a complex
-        number raises TypeError, another shape ValueError)."""
+        number raises TypeError, another shape ValueError).
+
+        table, rcurve_file: the custom RVE table and the tabulated R-curve the PROPS select
+        (PROPS(8) = 1 of the micromechanical model; the R-curve selector 3 of the fracture law),
+        which PROPS cannot name. Without them such a material takes the file loaded when it is
+        made (by another material or by load_table / load_rcurve) and keeps it, as a material made
+        with the keywords keeps its files: another file loaded later does not change its numbers.
+        None loaded: InterphaseError (STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED). A file
+        given for PROPS that do not select one: InterphaseError (STATUS_BAD_TABLE_SELECTOR,
+        STATUS_BAD_RCURVE)."""
         props = _numbers("PROPS", props, "Material.from_props")
         if props.ndim != 1:
             raise ValueError(f"Material.from_props: PROPS must be one-dimensional, got {_shape_text(props)}")
@@ -360,17 +370,50 @@ class Material:
         self.table_path = self.rcurve_path = None
         n = len(self.props)
         nb = 9 if n > 0 and self.props[0] == MODEL_SIMPLIFIED else 8
+        # the selectors of the files (PROPS(8) of the micromechanical model; the fracture law's
+        # R-curve selector, PROPS(nb + 2))
+        custom_table = n > 7 and self.props[0] == MODEL_MICROMECHANICAL and self.props[7] == TABLE_CUSTOM
+        rcurve_at = nb + 1
+        tabulated = n > rcurve_at and self.props[1] == DAMAGE_FRACTURE and self.props[rcurve_at] == RCURVE_TABULATED
         if n > 1 and self.props[1] == DAMAGE_FRACTURE:
             nb += 4
         self.viscous = n >= nb + 3 and self.props[nb + 2] > 0.0
         self.nstate = NSTATE_VISCOUS if self.viscous else NSTATE
         self.model = self.damage_law = None
+        for name, given, selected, status, what in (
+                ("table", table, custom_table, st.STATUS_BAD_TABLE_SELECTOR,
+                 "a custom RVE table (PROPS(8) = 1 of the micromechanical model)"),
+                ("rcurve_file", rcurve_file, tabulated, st.STATUS_BAD_RCURVE,
+                 "a tabulated R-curve (the fracture law's R-curve selector 3)")):
+            if given is not None and not selected:
+                raise InterphaseError(status, f"Material.from_props: {name} = "
+                                      f"{str(_path_text(name, given, 'Material.from_props'))!r} is given, but the "
+                                      f"PROPS do not select {what}")
+        if custom_table:
+            self.table_path = _path("table", table) if table is not None else loaded_path("table")
+        if tabulated:
+            self.rcurve_path = (_path("rcurve_file", rcurve_file) if rcurve_file is not None
+                                else loaded_path("rcurve"))
+        # the library checks the values first (as for a material of keywords), then the files
+        self._check_props()
+        for path, selected, status, slot, value, what, loader, name in (
+                (self.table_path, custom_table, st.STATUS_TABLE_NOT_LOADED, 8, self.props[7] if n > 7 else 0.0,
+                 "the custom RVE table", "load_table", "table"),
+                (self.rcurve_path, tabulated, st.STATUS_RCURVE_NOT_LOADED, rcurve_at + 1,
+                 self.props[rcurve_at] if n > rcurve_at else 0.0, "the tabulated R-curve", "load_rcurve",
+                 "rcurve_file")):
+            if selected and path is None:
+                raise InterphaseError(status, f"Material.from_props: PROPS({slot}) = {float(value)!r} selects {what}, "
+                                      f"but none is loaded: name it, Material.from_props(props, {name}=path), or "
+                                      f"load it first, interphase.{loader}(path)")
         self.update(np.zeros(2), dt=0.0)
         return self
 
     def __repr__(self):
         if not self.entries:
-            return f"Material.from_props({self.props.tolist()!r})"
+            files = "".join(f", {name}={path!r}" for name, path in (("table", self.table_path),
+                                                                      ("rcurve_file", self.rcurve_path)) if path)
+            return f"Material.from_props({self.props.tolist()!r}{files})"
         return "Material(" + ", ".join(f"{k}={v!r}" for k, v in self.entries.items()) + ")"
 
     def initial_state(self):
