@@ -620,6 +620,18 @@ def test_update_refuses_a_3d_state_in_2d():
                           m.update([-0.001, 0.002], two.state).traction)
 
 
+def test_an_update_in_place_of_its_state_is_named():
+    """m.update(s, u) for m.update(s, u.state), the usual slip in a loop: a TypeError that says
+    which attribute to pass, not the Update's whole repr."""
+    m = interphase.Material(**SIMPLIFIED)
+    u = m.update([0.001, 0.0])
+    with pytest.raises(TypeError) as caught:
+        m.update([0.002, 0.0], u)
+    assert str(caught.value) == ("Material.update: state must be the state array, got an Update: pass its state, "
+                                 "update(separation, u.state)")
+    assert np.array_equal(m.update([0.002, 0.0], u.state).state, m.update([0.002, 0.0], list(u.state)).state)
+
+
 def test_a_slip_without_damage_is_refused():
     """D = 0 (or -0) with a slip, which no update writes (an intact point has no crack, so no
     slip), is refused as the UMAT's STATEV reader refuses it, naming the values; D = 0 with a slip

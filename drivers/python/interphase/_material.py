@@ -446,6 +446,10 @@ class Material:
                              f"{_shape_text(s)}")
         s, s_p = _as_c(s)
         n = s.size
+        if isinstance(state, Update):
+            # (the update itself in place of its state: the usual slip of a loop u = m.update(s, u))
+            raise TypeError("Material.update: state must be the state array, got an Update: pass its state, "
+                            "update(separation, u.state)")
         old = self.initial_state() if state is None else _numbers("state", state, "Material.update")
         if old.shape != (self.nstate,):
             raise ValueError(f"Material.update: state must hold {self.nstate} values, got {_shape_text(old)}")
