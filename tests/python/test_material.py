@@ -681,6 +681,31 @@ def test_shapes_and_ragged_arrays_are_named():
             m.run(history, control=control)
 
 
+def test_errors_cross_process_boundaries():
+    """An InterphaseError pickles as itself, its status, detail and the rows of a failed run with
+    it, so that an error raised in a worker process (multiprocessing, concurrent.futures, scipy's
+    workers=) is raised in the caller: unpicklable, it broke a ProcessPoolExecutor and hung
+    multiprocessing.Pool's map."""
+    import multiprocessing
+    import pickle
+    m = interphase.Material(**SIMPLIFIED)
+    with pytest.raises(interphase.InterphaseError) as caught:
+        m.run([[0, 0], [0.5, 0]], increments=100, control=[True, False])
+    error = caught.value
+    again = pickle.loads(pickle.dumps(error))
+    assert type(again) is interphase.InterphaseError and str(again) == str(error)
+    assert (again.status, again.name, again.reason, again.detail) == (error.status, error.name, error.reason,
+                                                                      error.detail)
+    assert np.array_equal(again.result.traction, error.result.traction)
+    bad = list(m.props)
+    bad[2] = -1.0
+    with multiprocessing.get_context("fork").Pool(1) as pool:
+        pending = pool.apply_async(interphase.Material.from_props, (bad,))
+        with pytest.raises(interphase.InterphaseError, match=r"PROPS\(3\) mu = -1.00000E\+000") as caught:
+            pending.get(timeout=120)
+    assert caught.value.status == interphase.STATUS_BAD_MU
+
+
 def test_threads_give_the_numbers_of_one():
     """The C entry points keep no state: threads running at once get the serial numbers."""
     m = interphase.Material(**MICRO)

@@ -103,6 +103,13 @@ class InterphaseError(ValueError):
         text = f"{self.reason} ({self.name} = {self.status})"
         super().__init__(text + (": " + detail if detail else ""))
 
+    def __reduce__(self):
+        # (pickled as its status and detail, with its attributes, e.g. the rows of a failed run in
+        # `result`: the default would call InterphaseError(message) and fail on int(message), so an
+        # error raised in a worker process of multiprocessing or concurrent.futures would break the
+        # pool, or hang multiprocessing.Pool's map, instead of being raised in the caller)
+        return (type(self), (self.status, self.detail), dict(self.__dict__))
+
 
 def detail_buffer():
     return ctypes.create_string_buffer(DETAIL_LEN)
