@@ -660,6 +660,10 @@ def test_shapes_and_ragged_arrays_are_named():
                                  "(0.5)"),
             (lambda: m.run([0.0, 0.01]), "Material.run: history must be an (nrows, 2) or (nrows, 3) array, got "
                                          "shape (2,)"),
+            (lambda: m.run(np.zeros((2, 50))), "Material.run: history must be an (nrows, 2) or (nrows, 3) array, "
+                                               "got shape (2, 50): one row per point, (s_N, s_T) or (s_N, s_T1, "
+                                               "s_T2); for the components stacked as rows, as np.array([s_n, s_t]) "
+                                               "makes them, pass the transpose (history.T, shape (50, 2))"),
             (lambda: m.run(TWO_ROWS, time=1.0), "Material.run: time must hold 2 values, got a scalar (1.0)"),
             (lambda: m.run(TWO_ROWS, control=[True]), "Material.run: control must have shape (2,) or (2, 2), got "
                                                       "shape (1,)"),

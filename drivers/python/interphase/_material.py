@@ -518,8 +518,14 @@ class Material:
         self._prepare()
         value = _numbers("history", history, "Material.run")
         if value.ndim != 2 or value.shape[1] not in (2, 3):
+            hint = ""
+            if value.ndim == 2 and value.shape[0] in (2, 3):
+                # (the components stacked as rows, np.array([s_n, s_t]): one column per row)
+                hint = (f": one row per point, (s_N, s_T) or (s_N, s_T1, s_T2); for the components stacked as "
+                        f"rows, as np.array([s_n, s_t]) makes them, pass the transpose (history.T, shape "
+                        f"{value.shape[::-1]})")
             raise ValueError(f"Material.run: history must be an (nrows, 2) or (nrows, 3) array, got "
-                             f"{_shape_text(value)}")
+                             f"{_shape_text(value)}{hint}")
         nrows, n = value.shape
         if nrows < 2:
             raise ValueError(f"Material.run: history must have at least 2 rows (one segment; interphase-point "
