@@ -90,7 +90,13 @@ def main():
     parser.add_argument("--calibrate", help="the interphase-calibrate executable")
     args = parser.parse_args()
     out = pathlib.Path(args.output_dir)
-    out.mkdir(parents=True, exist_ok=True)
+    # (a file of that name, a path through one, no permission: said, not a traceback)
+    if out.exists() and not out.is_dir():
+        parser.error(f"--output-dir {out}: not a directory")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        parser.error(f"--output-dir {out}: cannot make the directory: {error.strerror}")
 
     micro = interphase.Material(**MICRO)
     # undamaged stiffnesses: the tangent at the origin

@@ -43,7 +43,13 @@ def main():
     parser.add_argument("--output-dir", default=".", help="where the figure goes (default: .)")
     args = parser.parse_args()
     out = pathlib.Path(args.output_dir)
-    out.mkdir(parents=True, exist_ok=True)
+    # (a file of that name, a path through one, no permission: said, not a traceback)
+    if out.exists() and not out.is_dir():
+        parser.error(f"--output-dir {out}: not a directory")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        parser.error(f"--output-dir {out}: cannot make the directory: {error.strerror}")
 
     fig, axes = plt.subplots(2, 2, figsize=(12, 9))
     print(f"{'model':16s} {'mu':>5s} {'p (MPa)':>8s} {'peak (MPa)':>11s} {'residual':>9s} {'mu p':>7s}")

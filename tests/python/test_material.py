@@ -710,6 +710,19 @@ def test_errors_cross_process_boundaries():
     assert caught.value.status == interphase.STATUS_BAD_MU
 
 
+@pytest.mark.parametrize("example", ["fit_simplified", "sweep_shear"])
+def test_an_example_refuses_an_output_dir_it_cannot_make(source_dir, tmp_path, example):
+    """--output-dir naming a file, or a path through one: the usage error of argparse (exit status
+    2), not a traceback."""
+    afile = tmp_path / "afile"
+    afile.write_text("")
+    for given, why in ((afile, "not a directory"), (afile / "sub", "cannot make the directory: Not a directory")):
+        done = subprocess.run([sys.executable, str(source_dir / "examples" / "python" / f"{example}.py"),
+                               "--output-dir", str(given)], capture_output=True, text=True)
+        assert done.returncode == 2 and "Traceback" not in done.stderr
+        assert done.stderr.strip().endswith(f"{example}.py: error: --output-dir {given}: {why}")
+
+
 def test_threads_give_the_numbers_of_one():
     """The C entry points keep no state: threads running at once get the serial numbers."""
     m = interphase.Material(**MICRO)
