@@ -390,9 +390,8 @@ contains
       !> Points per group: the groups' working arrays stay in the L1 cache.
       integer, parameter :: SUB = 64
       real(dp) :: sn_w(SUB), st1_w(SUB), st2_w(SUB), lam1_w(SUB), lam2_w(SUB), t_sq_w(SUB), d_w(SUB)
-      real(dp) :: m_w(SUB), bad_w(SUB), failc(SUB)
+      real(dp) :: m_w(SUB), fail_w(SUB), failc(SUB)
       real(dp), dimension(SUB) :: ck_n, ck_t, ckc_n, ckc_t, cdbar_n, cdbar_t, ctc_t, csc_n, ccf_t, ctf, cufbar
-      logical :: ok_w(SUB)
       real(dp) :: s_n_k, st1, st2, lam1_k, lam2_k, t_sq, sn_pos, x, r, alpha2, weighted
       real(dp) :: d_hat, d_k, num, den, kk_n, kk_t, cf_t, tf_k, kf, inv_kf, ufbar_k, sigma, tau1, tau2
       real(dp) :: lam1_step, lam2_step, tau1_end, tau2_end
@@ -426,7 +425,7 @@ contains
                   iand(transfer(st1, 0_int64), MAGNITUDE_MASK)) <= SEPARATION_MAX_BITS
                s_n_k = merge(s_n_k, 0.0_dp, ok_k)
                st1 = merge(st1, 0.0_dp, ok_k)
-               ok_w(i) = ok_k
+               fail_w(i) = merge(0.0_dp, 1.0_dp, ok_k)
                sn_w(i) = s_n_k
                st1_w(i) = st1
                lam1_w(i) = lam1_old(k)
@@ -445,7 +444,7 @@ contains
                s_n_k = merge(s_n_k, 0.0_dp, ok_k)
                st1 = merge(st1, 0.0_dp, ok_k)
                st2 = merge(st2, 0.0_dp, ok_k)
-               ok_w(i) = ok_k
+               fail_w(i) = merge(0.0_dp, 1.0_dp, ok_k)
                sn_w(i) = s_n_k
                st1_w(i) = st1
                st2_w(i) = st2
@@ -497,7 +496,7 @@ contains
                grown = d_w(i) > d_old(k)
                slipped = abs(lam1_w(i)) > 0.0_dp .or. abs(lam2_w(i)) > 0.0_dp
                m_w(i) = merge(d_old(k)*cufbar(i), 0.0_dp, d_old(k) > 0.0_dp)
-               ok_w(i) = ok_w(i) .and. (failc(i) < 0.5_dp .or. .not. (grown .and. slipped .and. d_old(k) > 0.0_dp))
+               fail_w(i) = max(fail_w(i), merge(failc(i), 0.0_dp, grown .and. slipped .and. d_old(k) > 0.0_dp))
             end do
          end if
 
@@ -557,7 +556,7 @@ contains
                regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
                open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
-               bad_w(i) = merge(1.0_dp, failc(i), .not. open .and. slipping .and. .not. (kf > 0.0_dp))
+               fail_w(i) = max(fail_w(i), merge(1.0_dp, failc(i), .not. open .and. slipping .and. .not. (kf > 0.0_dp)))
                d(k) = d_k
                t_n(k) = merge(tn_open, tn_closed, open)
                t_t1(k) = merge(tt1_open, tt1_closed, open)
@@ -622,7 +621,7 @@ contains
                regime_if_closed = merge(real(REGIME_SLIP, dp), real(REGIME_STICK, dp), slipping)
 
                open = d_k <= 0.0_dp .or. s_n_k > 0.0_dp
-               bad_w(i) = merge(1.0_dp, failc(i), .not. open .and. slipping .and. .not. (kf > 0.0_dp))
+               fail_w(i) = max(fail_w(i), merge(1.0_dp, failc(i), .not. open .and. slipping .and. .not. (kf > 0.0_dp)))
                d(k) = d_k
                t_n(k) = merge(tn_open, tn_closed, open)
                t_t1(k) = merge(tt1_open, tt1_closed, open)
@@ -637,9 +636,8 @@ contains
          ! (respond's check; a flag of its own so that pass 2 has no logical arrays to vectorise)
          do i = 1, m
             k = c0 + i - 1
-            ok_k = ok_w(i) .and. bad_w(i) < 0.5_dp
-            ok(k) = ok_k
-            nfailed_count = nfailed_count + merge(0_int64, 1_int64, ok_k)
+            ok(k) = fail_w(i) < 0.5_dp
+            nfailed_count = nfailed_count + merge(1_int64, 0_int64, fail_w(i) >= 0.5_dp)
          end do
       end do
       nfailed = int(nfailed_count)
