@@ -395,13 +395,13 @@ contains
       else if (.not. in_window(s0_n)) then
          call reject(STATUS_BAD_S0_N, PROP_S0_N, 's0_N', s0_n, 'must lie in '//WINDOW_TEXT//' mm', status, message)
       else if (.not. (finite_above(sf_n, s0_n) .and. in_window(sf_n))) then
-         call reject(STATUS_BAD_SF_N, PROP_SF_N, 'sf_N', sf_n, 'must be > s0_N = PROPS(4) and lie in '// &
-            WINDOW_TEXT//' mm', status, message)
+         call reject(STATUS_BAD_SF_N, PROP_SF_N, 'sf_N', sf_n, 'must be > s0_N = PROPS(4) = '//real_text(s0_n)// &
+            ' mm and lie in '//WINDOW_TEXT//' mm', status, message)
       else if (.not. in_window(s0_t)) then
          call reject(STATUS_BAD_S0_T, PROP_S0_T, 's0_T', s0_t, 'must lie in '//WINDOW_TEXT//' mm', status, message)
       else if (.not. (finite_above(sf_t, s0_t) .and. in_window(sf_t))) then
-         call reject(STATUS_BAD_SF_T, PROP_SF_T, 'sf_T', sf_t, 'must be > s0_T = PROPS(6) and lie in '// &
-            WINDOW_TEXT//' mm', status, message)
+         call reject(STATUS_BAD_SF_T, PROP_SF_T, 'sf_T', sf_t, 'must be > s0_T = PROPS(6) = '//real_text(s0_t)// &
+            ' mm and lie in '//WINDOW_TEXT//' mm', status, message)
       else if (model == MODEL_SIMPLIFIED .and. .not. in_window(k_n_used)) then
          call reject(STATUS_BAD_K_N, PROP_K_N, 'K_N', k_n_used, 'must lie in '//WINDOW_TEXT//' MPa/mm', status, message)
       else if (model == MODEL_SIMPLIFIED .and. .not. in_window(k_t_used)) then
@@ -478,10 +478,10 @@ contains
       real(dp), intent(in) :: value
       integer, intent(out) :: status
       character(len=MESSAGE_LEN), intent(out) :: message
-      character(len=13) :: value_text    ! a negative value needs 13 characters (-1.00000E+000)
       status = code
-      write (value_text, '(es13.5e3)') value
-      write (message, '(a,i0,a,a,a,a,a,a)') 'PROPS(', index, ') ', symbol, ' = ', trim(adjustl(value_text)), &
+      ! (the value as real_text writes it, as the model and damage-law messages do: -0.75, 0.1E-3,
+      ! NaN, the fewest digits that read back as the same number)
+      write (message, '(a,i0,a,a,a,a,a,a)') 'PROPS(', index, ') ', symbol, ' = ', real_text(value), &
          ' is out of range: ', rule
    end subroutine reject
 

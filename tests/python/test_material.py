@@ -38,8 +38,8 @@ def test_props_are_the_umat_layout():
 
 
 @pytest.mark.parametrize("change, status, words", [
-    (dict(sf_n=1e-4), interphase.STATUS_BAD_SF_N, "PROPS(5) sf_N = 1.00000E-004 is out of range"),
-    (dict(mu=-1.0), interphase.STATUS_BAD_MU, "PROPS(3) mu = -1.00000E+000 is out of range"),
+    (dict(sf_n=1e-4), interphase.STATUS_BAD_SF_N, "PROPS(5) sf_N = 0.1E-3 is out of range: must be > s0_N = PROPS(4) = 0.44E-3 mm"),
+    (dict(mu=-1.0), interphase.STATUS_BAD_MU, "PROPS(3) mu = -1.0 is out of range"),
     (dict(k_t=float("nan")), interphase.STATUS_BAD_K_T, "PROPS(9)"),
     (dict(s0_t=0.0), interphase.STATUS_BAD_S0_T, "PROPS(6)"),
     (dict(model="spring"), interphase.STATUS_BAD_MODEL, "model 'spring' is unknown"),
@@ -382,7 +382,7 @@ def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
                  r"bang.nml:\d+: a control character \(code 1\) in column 15"),
         # a constant the PROPS check refuses: named with its entry's line, as by interphase-point
         "range": (good.replace("mu = 0.75", "mu = -0.75"),
-                  rf"range.nml:{mu_line}: &material: mu: PROPS\(3\) mu = -7.50000E-001 is out of range"),
+                  rf"range.nml:{mu_line}: &material: mu: PROPS\(3\) mu = -0.75 is out of range"),
         # the step of a tangent check that is not made
         "tangent_step": (good.replace("increments = ", "tangent_step = 1e-7\n  increments = "),
                          r"tangent_step.nml:\d+: &loading: tangent_step is an entry of the tangent check only"),
@@ -705,7 +705,7 @@ def test_errors_cross_process_boundaries():
     bad[2] = -1.0
     with multiprocessing.get_context("fork").Pool(1) as pool:
         pending = pool.apply_async(interphase.Material.from_props, (bad,))
-        with pytest.raises(interphase.InterphaseError, match=r"PROPS\(3\) mu = -1.00000E\+000") as caught:
+        with pytest.raises(interphase.InterphaseError, match=r"PROPS\(3\) mu = -1\.0 is out of range") as caught:
             pending.get(timeout=120)
     assert caught.value.status == interphase.STATUS_BAD_MU
 
