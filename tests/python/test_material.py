@@ -187,6 +187,12 @@ def test_viscous_material_needs_time_increments():
             as caught:
         m.update([0.001, 0.0], m.initial_state())
     assert caught.value.status == interphase.STATUS_BAD_TIME_INCREMENT
+    # a state of the model without regularisation (4 values) says what the 5th is
+    with pytest.raises(ValueError, match=re.escape("state must hold 5 values (viscous regularisation: the 5th is "
+                                                   "the inviscid damage D_v, STATEV(5); initial_state() makes one), "
+                                                   "got shape (4,)")):
+        m.update([0.001, 0.0], np.zeros(4), dt=0.1)
+    assert m.run([[0, 0], [0.01, 0]], tangent=np.True_).tangent.shape == (2, 2, 2)
     slow = m.run([[0, 0], [0.01, 0]], time=[0, 100.0], increments=50)
     fast = m.run([[0, 0], [0.01, 0]], time=[0, 0.01], increments=50)
     assert fast.damage[-1] < slow.damage[-1]          # the damage lags behind when loaded fast
@@ -1130,6 +1136,9 @@ def test_reals_in_messages_are_written_as_the_driver_writes_them():
     (dict(output_every=np.True_), TypeError, "output_every must be an integer"),
     (dict(output_every=2**32), ValueError, "output_every = 4294967296 is too large"),
     (dict(traction_tolerance="1e-12"), TypeError, "traction_tolerance must be a number"),
+    (dict(tangent="no"), TypeError, "tangent must be True or False, got 'no'"),
+    (dict(tangent=0), TypeError, "tangent must be True or False, got 0"),
+    (dict(tangent=None), TypeError, "tangent must be True or False, got None"),
     (dict(history=[[0.0, 0.0]]), ValueError, "history must have at least 2 rows .*, got 1"),
     (dict(history=[["0", "0"], ["0.01", "0"]]), TypeError, "history must hold real numbers"),
     (dict(time=["0", "1"]), TypeError, "time must hold real numbers"),

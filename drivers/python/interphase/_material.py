@@ -452,7 +452,9 @@ class Material:
                             "update(separation, u.state)")
         old = self.initial_state() if state is None else _numbers("state", state, "Material.update")
         if old.shape != (self.nstate,):
-            raise ValueError(f"Material.update: state must hold {self.nstate} values, got {_shape_text(old)}")
+            why = (" (viscous regularisation: the 5th is the inviscid damage D_v, STATEV(5); initial_state() "
+                   "makes one)" if self.viscous else "")
+            raise ValueError(f"Material.update: state must hold {self.nstate} values{why}, got {_shape_text(old)}")
         old, old_p = _as_c(old)
         if n == 2 and not old[2] == 0.0:
             # (the library's 2-D update, as the UMAT's, does not read STATEV(3) and writes it 0: a 3-D
@@ -497,7 +499,8 @@ class Material:
         found by Newton's method on the tangent, to within traction_tolerance (MPa), in at most 25
         updates per step). time: nrows strictly increasing times (default 0, 1, 2, ...);
         increments: equal sub-increments per segment; output_every: a row every k-th converged step
-        (and at the end of every segment). The history has at least 2 rows (ValueError), as the
+        (and at the end of every segment); tangent: True to return each row's tangent (a bool:
+        anything else raises TypeError). The history has at least 2 rows (ValueError), as the
         driver's; the counts are integers (an int or a numpy integer: a bool, a float or a string
         raises TypeError, not rounded), increments at least 1 (ValueError), output_every at least 1
         (InterphaseError, STATUS_BAD_HISTORY); history, time and traction_tolerance hold real
@@ -542,6 +545,9 @@ class Material:
             i = bad[0] + 1
             raise ValueError(f"Material.run: time must increase strictly: time[{i}] = {float(t[i])!r} is not "
                              f"greater than time[{i - 1}] = {float(t[i - 1])!r}")
+        if not isinstance(tangent, (bool, np.bool_)):
+            # (not truth-tested: tangent='no' or tangent=0.0 would be taken as a wish, either way)
+            raise TypeError(f"Material.run: tangent must be True or False, got {tangent!r}")
         increments = _count("increments", increments, "Material.run")
         # (output_every < 1 and traction_tolerance are checked by the library: STATUS_BAD_HISTORY)
         output_every = _count("output_every", output_every, "Material.run", minimum=None)
