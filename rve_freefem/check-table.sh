@@ -58,8 +58,10 @@ case "${1:-}" in -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print;
 [ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: check-table.sh TABLE.dat [DIAG.txt] (or --help)" >&2; exit 2; }
 table=$1
 diag=${2:-}
-[ -r "$table" ] || { echo "check-table.sh: error: cannot read $table" >&2; exit 3; }
-[ -z "$diag" ] || [ -r "$diag" ] || { echo "check-table.sh: error: cannot read $diag" >&2; exit 3; }
+for f in "$table" ${diag:+"$diag"}; do
+  [ ! -d "$f" ] || { echo "check-table.sh: error: $f is a directory, not a file" >&2; exit 3; }
+  [ -r "$f" ] || { echo "check-table.sh: error: cannot read $f" >&2; exit 3; }
+done
 
 # the table as the loader reads it, in the canonical column order (rve_freefem/table-reader.awk:
 # the format checks, the one reader of the rve_freefem tools)

@@ -117,6 +117,17 @@ if grep -q 'does not exceed' "$work/out.txt" || [ "$(grep -c . "$work/out.txt")"
 else
   echo "ok   the reading stopped at the decimal comma"
 fi
+# a folder given for the table or the diag file: named as a folder, exit 3 (not awk's read error)
+mkdir -p "$work/folder.dat"
+for args in "$work/folder.dat" "$table $work/folder.dat"; do
+  # shellcheck disable=SC2086
+  bash "$here/check-table.sh" $args > "$work/out.txt" 2>&1; rc=$?
+  if [ $rc -eq 3 ] && grep -q "folder[.]dat is a directory, not a file" "$work/out.txt" && ! grep -q 'awk' "$work/out.txt"; then
+    echo "ok   a folder refused ($args)"
+  else
+    echo "FAIL a folder ($args): exit $rc, output:"; cat "$work/out.txt"; fail=1
+  fi
+done
 # --help and -h: the description, exit 0 (standard output)
 for opt in --help -h; do
   bash "$here/check-table.sh" "$opt" > "$work/help.txt" 2>&1; rc=$?
