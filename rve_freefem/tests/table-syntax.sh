@@ -28,6 +28,10 @@ grep -q '^[^#].*d-' "$work/d.dat" || { echo "FAIL no d exponent in the test tabl
 check "Fortran d exponents (every e written d)" pass "$work/d.dat"
 awk '/^#/ || NF == 0 { print; next } { gsub(/e/, "D"); print }' "$table" | sed 's/$/\r/' > "$work/D-crlf.dat"
 check "D exponents and CRLF" pass "$work/D-crlf.dat"
+# a tab in a header line is a blank, as the loader reads it ('# Chat_TT<TAB>= 1' is the key Chat_TT)
+sed '/^#/s/ /\t/g' "$table" > "$work/header-tabs.dat"
+grep -q '^#	Chat_TT	=	' "$work/header-tabs.dat" || { echo "FAIL no tab in the test table's header"; fail=1; }
+check "tabs for every blank of the header" pass "$work/header-tabs.dat" '^format +ok'
 # a d exponent is read as one: C_TT(0) = 1d3 is 1000, not 1 (and not the closed form)
 data 1 3 1d3 > "$work/d3.dat"
 check "C_TT(0) = 1d3 read as 1000 (closed form fails)" fail "$work/d3.dat" '^closed +FAIL'
