@@ -33,6 +33,9 @@
 #              (docs/rve.md, 'Betti relations'; residuals of (ii'), (iii') relative to the
 #              largest term of the relation, of (i) to Chat)
 #   signs      T^f < 0, 0 < ufbar <= 1, 0 <= C <= Chat, C_TT and C_NN non-increasing in a
+#   diag       (with the diag file) it is the table's: one data line per row with the row's a
+#              (to 1e-5 b) and the four residuals below as numbers (a missing one, nan, or the
+#              side file given instead fails here, not as a residual of 0)
 #   pointwise  (with the diag file) max over crack nodes of |t - Chat|/Chat in p2, of the
 #              p3 shear stress |t - T^f|/|T^f| (uniform crack stress) and of the p3 jump error
 #                                                                              tol TOL_POINT
@@ -55,8 +58,10 @@ case "${1:-}" in -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print;
 [ $# -ge 1 ] && [ $# -le 2 ] || { echo "usage: check-table.sh TABLE.dat [DIAG.txt] (or --help)" >&2; exit 2; }
 table=$1
 diag=${2:-}
-[ -r "$table" ] || { echo "check-table.sh: error: cannot read $table" >&2; exit 3; }
-[ -z "$diag" ] || [ -r "$diag" ] || { echo "check-table.sh: error: cannot read $diag" >&2; exit 3; }
+for f in "$table" ${diag:+"$diag"}; do
+  [ ! -d "$f" ] || { echo "check-table.sh: error: $f is a directory, not a file" >&2; exit 3; }
+  [ -r "$f" ] || { echo "check-table.sh: error: cannot read $f" >&2; exit 3; }
+done
 
 # the table as the loader reads it, in the canonical column order (rve_freefem/table-reader.awk:
 # the format checks, the one reader of the rve_freefem tools)
@@ -179,19 +184,37 @@ END {
   }
   report("signs", bad, 0, "T^f < 0, 0 < ufbar <= 1, C_TT and C_NN non-increasing and >= 0")
   if (diag != "") {
-    r1 = r2 = r3 = r4 = 0; nd = 0
+    # every data line of the diag file is one a of the table, in the order of its rows, with the
+    # four residuals as numbers: a missing key, a residual that is not a number (nan) or the
+    # side file given in its place must fail, not count as a residual of 0
+    r1 = r2 = r3 = r4 = 0; nd = 0; ln = 0; dbad = 0
+    num = "^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$"
+    nk = split("a= resTc= resSc= resTfpt= resuf=", dk, " ")
     while ((getline line < diag) > 0) {
-      if (line ~ /^#/) continue
-      m = split(line, f, " ")
-      for (k = 1; k < m; k++) {
-        if (f[k] == "resTc=" && f[k + 1] + 0 > r1) r1 = f[k + 1] + 0
-        if (f[k] == "resSc=" && f[k + 1] + 0 > r2) r2 = f[k + 1] + 0
-        if (f[k] == "resTfpt=" && f[k + 1] + 0 > r3) r3 = f[k + 1] + 0
-        if (f[k] == "resuf=" && f[k + 1] + 0 > r4) r4 = f[k + 1] + 0
-      }
+      ln++
+      sub(/\r$/, "", line)
+      if (line ~ /^#/ || line ~ /^[ \t]*$/) continue
       nd++
+      m = split(line, f, " ")
+      delete dv
+      for (k = 1; k < m; k++) if (f[k] ~ /=$/) dv[f[k]] = f[k + 1]
+      miss = ""; nan = ""
+      for (j = 1; j <= nk; j++)
+        if (!(dk[j] in dv)) miss = miss (miss == "" ? "" : " ") dk[j]
+        else if (dv[dk[j]] !~ num) nan = nan (nan == "" ? "" : ", ") dk[j] " " dv[dk[j]]
+      if (miss != "" && dbad++ < 5) printf "%s:%d: no %s on this line (a line of a diag file reads a= ... resTc= ... resSc= ... resTfpt= ... resuf= ...)\n", diag, ln, miss
+      if (nan != "" && dbad++ < 5) printf "%s:%d: not a number: %s\n", diag, ln, nan
+      if (nd <= n && ("a=" in dv) && dv["a="] ~ num && abs(dv["a="] - v[nd, 1]) > 1e-5 * b) {
+        if (dbad++ < 5) printf "%s:%d: a = %s, but the table\047s row %d has a = %.17g: the diag file of another table?\n", diag, ln, dv["a="], nd, v[nd, 1]
+      }
+      if (dv["resTc="] + 0 > r1) r1 = dv["resTc="] + 0
+      if (dv["resSc="] + 0 > r2) r2 = dv["resSc="] + 0
+      if (dv["resTfpt="] + 0 > r3) r3 = dv["resTfpt="] + 0
+      if (dv["resuf="] + 0 > r4) r4 = dv["resuf="] + 0
     }
-    if (nd != n) { printf "diag file has %d lines, table %d rows\n", nd, n; fail = 1 }
+    close(diag)
+    if (nd != n) { printf "%s: %d data lines, the table %d rows\n", diag, nd, n; dbad++ }
+    if (dbad) { report("diag", dbad, 0, "the diag file is the table\047s (one line per a, with the residuals)"); exit 1 }
     report("pointwise", (r1 > r2 ? r1 : r2), TP, "p2 crack stresses = Chat at every crack node")
     report("uniform", r3, TP, "p3 crack shear stress uniform (= T^f) at every crack node")
     report("p3jump", r4, TP, "p3 jump equals (u^f, 0) at every crack node")

@@ -23,7 +23,9 @@
 # refuses (a row with a field missing or not a number, a repeated or unordered a, no columns
 # line, a bad header value) is named with its file and line, exit 2. T^f and ufbar at a = 0,
 # placeholders the loader does not use (the values of the table's smallest crack, copied: the
-# a0_row header line), are not compared.
+# a0_row header line), are not compared. Tables of two different RVEs (their headers'
+# h_m h_b b E_m nu_m E_b nu_b differ, e.g. a parameter file edited between the two runs) are
+# compared all the same, with a note on standard error that names the values that differ.
 set -u
 export LC_ALL=C
 usage() { echo "usage: compare-tables.sh [--tol TOL] [--cols LIST] REF.dat NEW.dat (or --help)" >&2; exit 2; }
@@ -80,6 +82,8 @@ FNR == 1 { fi++ }
 /^# columns:/ { withI[fi] = (NF - 2 == 24); next }
 /^#/ {
   if ($0 ~ /^# b = /) b = $4 + 0
+  # (the RVE of each table: tables of two different RVEs are no mesh comparison)
+  if ($2 ~ /^(h_m|h_b|b|E_m|nu_m|E_b|nu_b)$/ && $3 == "=") rve[fi, $2] = $4
   next
 }
 NF == 0 { next }
@@ -108,10 +112,16 @@ END {
       if (r > mx[j] || !(j in at)) { mx[j] = r; at[j] = N[i, 1] }
     }
   }
+  nk = split("h_m h_b b E_m nu_m E_b nu_b", rk, " "); diff = ""
+  for (i = 1; i <= nk; i++)
+    if (((1, rk[i]) in rve) && ((2, rk[i]) in rve) && rve[1, rk[i]] + 0 != rve[2, rk[i]] + 0)
+      diff = diff (diff == "" ? "" : ", ") rk[i] " = " sprintf("%.10g", rve[1, rk[i]]) " and " sprintf("%.10g", rve[2, rk[i]])
+  if (diff != "") printf "compare-tables.sh: note: %s and %s are tables of different RVEs (%s): the changes are not those of a finer mesh\n", ref, new, diff > "/dev/stderr"
   if (matched == 0) { print "no common a values" > "/dev/stderr"; exit 2 }
   if (matched < nn) {
     printf "%d rows of %s have no row with the same a in %s (every a of the second table must be an a of the first)", nn - matched, new, ref > "/dev/stderr"
-    if (nn > nr) printf ": the order is REF NEW, the table with every crack length first; for a table and a refined run of a few of its crack lengths: compare-tables.sh %s %s\n", new, ref > "/dev/stderr"
+    if (diff != "") printf ": they are tables of different RVEs (above)\n" > "/dev/stderr"
+    else if (nn > nr) printf ": the order is REF NEW, the table with every crack length first; for a table and a refined run of a few of its crack lengths: compare-tables.sh %s %s\n", new, ref > "/dev/stderr"
     else printf ": %s has no row at a = %s mm (a refined run'"'"'s --a-over-b values must be crack lengths of the table)\n", ref, missing > "/dev/stderr"
     exit 2
   }

@@ -79,6 +79,10 @@ if [ -n "$out" ]; then
   [ -d "$out" ] && die 2 "the output '$out' is a directory: name the table file (e.g. ${out%/}/$(basename "${params%.params}").dat)"
   outdir=$(dirname "$out")
   [ -d "$outdir" ] && [ -w "$outdir" ] || die 3 "cannot write $out: its directory $outdir does not exist or is not writable"
+  # the table, its diag and side files must not overwrite the parameter file they are made from
+  for f in "$out" "${out%.dat}-diag.txt" "${out%.dat}-fields.dat"; do
+    [ "$f" -ef "$params" ] && die 2 "the output '$f' is the parameter file '$params' itself: name the table file (e.g. $(dirname "$params")/$(basename "${params%.params}").dat)"
+  done
 fi
 if [ "$check_only" = 0 ]; then
   command -v FreeFem++ >/dev/null 2>&1 || die 3 "FreeFem++ not found: install the Debian package freefem++"

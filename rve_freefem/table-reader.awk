@@ -118,8 +118,9 @@ NR == 1 && index($0, "\357\273\277") == 1 {
   sub(/^\357\273\277/, "")
 }
 /^[ \t]*#/ {
-  # (as the loader: blanks and tabs before and after the #; the line written as "# " and the rest)
-  rest = $0; sub(/^[ \t]*#[ \t]*/, "", rest)
+  # (as the loader: blanks and tabs before and after the #; the line written as "# " and the rest;
+  # a tab in a header line is a blank, so "# Chat_TT<TAB>= 1" is the key Chat_TT)
+  rest = $0; sub(/^[ \t]*#[ \t]*/, "", rest); gsub(/\t/, " ", rest)
   line = "# " rest
   if (rest ~ /^columns:/) {
     ncolsline++

@@ -92,6 +92,20 @@ mkdir -p "$work/a-directory.params"
 bash "$here/make-table.sh" "$work/a-directory.params" "$work/x.dat" > "$work/dir.out" 2>&1
 rc=$?
 if [ $rc -ne 0 ] && grep -q "cannot read parameter file" "$work/dir.out"; then echo "ok   directory_as_file: exit $rc"; else echo "FAIL directory_as_file"; cat "$work/dir.out"; fail=1; fi
+# the output named like the parameter file (or its diag file): refused before any run, the
+# parameter file left as it was
+printf '%s\n' "$good" > "$work/self.params"; cp "$work/self.params" "$work/self-diag.txt"
+for args in "$work/self.params $work/self.params" "$work/self-diag.txt $work/self.dat"; do
+  # shellcheck disable=SC2086
+  set -- $args
+  cp "$1" "$work/before.params"
+  bash "$here/make-table.sh" "$1" "$2" > "$work/self.out" 2>&1; rc=$?
+  if [ $rc -eq 2 ] && grep -q "is the parameter file" "$work/self.out" && cmp -s "$1" "$work/before.params" && [ ! -e "$work/self.dat" ]; then
+    echo "ok   output_is_params ($(basename "$1") $(basename "$2")): exit $rc"
+  else
+    echo "FAIL output_is_params ($args): exit $rc"; cat "$work/self.out"; fail=1
+  fi
+done
 # rve.edp itself validates its arguments
 printf '1\n30\n' > "$work/a.count"
 for args in "-nub 0.5" "-hm -2" "-Em 0" "-ftipp 0.05" "-Em 2500x" "-Em 1-2" "-Em 1e" "-Em ." "-Em 1e+" "-Em -" ; do

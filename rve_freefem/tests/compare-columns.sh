@@ -94,6 +94,17 @@ expect "the order reversed: named, with the order to give" 2 "have no row with t
 awk '/^#/ || NF == 0 { print; next } { n++; if (n == 2) $1 = sprintf("%.17g", $1 * 1.001); print }' "$work/few.dat" > "$work/other-a.dat"
 cmp_ --tol 0 "$table" "$work/other-a.dat"; rc=$?
 expect "an a the table lacks: named" 2 'has no row at a = [0-9.e-]+ mm [(]a refined run.s --a-over-b values must be crack lengths of the table[)]'
+# tables of two different RVEs (another E_m in the header): the note says so; with rows missing
+# the message names the different RVEs, not the order
+sed 's/^# E_m = .*/# E_m = 2000/' "$table" > "$work/other-rve.dat"
+cmp_ "$table" "$work/other-rve.dat"; rc=$?
+expect "another RVE: noted" 0 'note: .* are tables of different RVEs [(]E_m = 1000 and 2000[)]'
+sed 's/^# E_m = .*/# E_m = 2000/' "$work/few.dat" > "$work/few-other-rve.dat"
+cmp_ "$work/few-other-rve.dat" "$table"; rc=$?
+expect "another RVE with rows missing: named, not the order" 2 'have no row with the same a in .*: they are tables of different RVEs'
+if grep -q 'the order is REF NEW' "$work/out.txt"; then echo "FAIL the order named for tables of different RVEs"; fail=1; fi
+cmp_ "$table" "$table"; rc=$?
+if grep -q 'different RVEs' "$work/out.txt"; then echo "FAIL a table against itself noted as another RVE"; fail=1; fi
 # --help and -h: the description, exit 0
 for opt in --help -h; do
   cmp_ "$opt"; rc=$?

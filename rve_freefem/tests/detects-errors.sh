@@ -45,4 +45,15 @@ sed '/^# columns: /s/ Sc_N / /' "$table" > "$work/t14.dat"; expect_fail "a colum
 awk '!/^#/ && NF { n++; if (n == 2) next } { print }' "$table" | sed '/^0 0 /d' > "$work/t8.dat"; expect_fail "a = 0 row missing" "$work/t8.dat"
 awk '{ for (i = 1; i < NF; i++) if ($i == "resTfpt=" && ++k == 2) $(i + 1) = "2e-9"; print }' "$diag" > "$work/d9.txt"
 expect_fail "p3 crack shear stress not uniform (2e-9)" "$table" "$work/d9.txt"
+# a diag file that is not the table's: its residuals must not count as 0
+awk '{ for (i = 1; i < NF; i++) if ($i == "resuf=" && ++k == 2) $(i + 1) = "nan"; print }' "$diag" > "$work/d15.txt"
+expect_fail "a residual nan in the diag file" "$table" "$work/d15.txt"
+awk '{ for (i = 1; i < NF; i++) if ($i == "resTc=" && ++k == 2) { $i = ""; $(i + 1) = "" } print }' "$diag" > "$work/d16.txt"
+expect_fail "a residual missing in the diag file" "$table" "$work/d16.txt"
+awk '!/^#/ && NF && ++k == 2 { next } { print }' "$diag" > "$work/d17.txt"
+expect_fail "a line missing in the diag file" "$table" "$work/d17.txt"
+sed 's/^a= 0 /a= 0.5 /' "$diag" > "$work/d18.txt"
+expect_fail "the diag file of another table (a differs)" "$table" "$work/d18.txt"
+fields=${diag%-diag.txt}-fields.dat
+if [ -r "$fields" ]; then expect_fail "the side file given as the diag file" "$table" "$fields"; fi
 exit $fail

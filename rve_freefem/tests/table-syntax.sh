@@ -28,6 +28,10 @@ grep -q '^[^#].*d-' "$work/d.dat" || { echo "FAIL no d exponent in the test tabl
 check "Fortran d exponents (every e written d)" pass "$work/d.dat"
 awk '/^#/ || NF == 0 { print; next } { gsub(/e/, "D"); print }' "$table" | sed 's/$/\r/' > "$work/D-crlf.dat"
 check "D exponents and CRLF" pass "$work/D-crlf.dat"
+# a tab in a header line is a blank, as the loader reads it ('# Chat_TT<TAB>= 1' is the key Chat_TT)
+sed '/^#/s/ /\t/g' "$table" > "$work/header-tabs.dat"
+grep -q '^#	Chat_TT	=	' "$work/header-tabs.dat" || { echo "FAIL no tab in the test table's header"; fail=1; }
+check "tabs for every blank of the header" pass "$work/header-tabs.dat" '^format +ok'
 # a d exponent is read as one: C_TT(0) = 1d3 is 1000, not 1 (and not the closed form)
 data 1 3 1d3 > "$work/d3.dat"
 check "C_TT(0) = 1d3 read as 1000 (closed form fails)" fail "$work/d3.dat" '^closed +FAIL'
@@ -117,6 +121,17 @@ if grep -q 'does not exceed' "$work/out.txt" || [ "$(grep -c . "$work/out.txt")"
 else
   echo "ok   the reading stopped at the decimal comma"
 fi
+# a folder given for the table or the diag file: named as a folder, exit 3 (not awk's read error)
+mkdir -p "$work/folder.dat"
+for args in "$work/folder.dat" "$table $work/folder.dat"; do
+  # shellcheck disable=SC2086
+  bash "$here/check-table.sh" $args > "$work/out.txt" 2>&1; rc=$?
+  if [ $rc -eq 3 ] && grep -q "folder[.]dat is a directory, not a file" "$work/out.txt" && ! grep -q 'awk' "$work/out.txt"; then
+    echo "ok   a folder refused ($args)"
+  else
+    echo "FAIL a folder ($args): exit $rc, output:"; cat "$work/out.txt"; fail=1
+  fi
+done
 # --help and -h: the description, exit 0 (standard output)
 for opt in --help -h; do
   bash "$here/check-table.sh" "$opt" > "$work/help.txt" 2>&1; rc=$?
