@@ -3,6 +3,7 @@
 # the change of every coefficient.
 #
 #   bash rve_freefem/convergence.sh [--reuse] PARAMS OUTDIR [BASE.dat]
+#   bash rve_freefem/convergence.sh --help      (this text)
 #
 # --reuse: keep OUTDIR/NAME-r2.dat and -r4.dat if they exist (only redo the comparison).
 # Runs make-table.sh at refine x2 and x4 (every tip, far-field and segment size halved and the
@@ -30,7 +31,7 @@ positional=()
 for arg in "$@"; do
   case "$arg" in
     --reuse) [ "$reuse" = 0 ] || die 2 "--reuse given twice ($usage)"; reuse=1 ;;
-    -h|--help) echo "$usage"; exit 0 ;;
+    -h|--help) awk 'NR == 1 { next } /^#/ { sub(/^# ?/, ""); print; next } { exit }' "$0"; exit 0 ;;
     -*) die 2 "unknown option '$arg' ($usage)" ;;
     *) positional+=("$arg") ;;
   esac

@@ -21,6 +21,13 @@ expect() {   # expect WHAT CODE PATTERN: the last run's exit code and a line of 
 # (a small valid RVE: the edits below make it bad; its comment lines dropped)
 good=$(grep -v '^#' "$here/tests/two-cracks.params")
 
+# --help and -h: the description at the top (its exit codes), exit 0, no line of code
+for opt in --help -h; do
+  conv "$opt"
+  expect "$opt" 0 '^Exit code: 0 converged'
+  ! grep -q -e 'set -u' -e '^#' "$work/out.txt" || { echo "FAIL $opt printed code or comment marks"; fail=1; }
+done
+
 # a bad parameter file: exit 2 (make-table.sh's code), before any run
 printf '%s\nthickness = 3\n' "$good" > "$work/unknown.params"
 conv "$work/unknown.params" "$work/unknown"
