@@ -36,7 +36,7 @@ module interphase_driver_case
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, writes_an_input, &
       load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset, precheck_case_file, material_entry_kinds, &
-      check_material_props, material_summary
+      check_material_props, material_summary, data_files_summary
 
    !> Length of the character entries of the namelists (model names, paths).
    integer, parameter :: ENTRY_LEN = 1024
@@ -754,6 +754,20 @@ contains
          end if
       end function short
    end function material_summary
+
+   !> The files a material's PROPS cannot name, for consoles and logs beside material_summary:
+   !> 'custom RVE table PATH' and 'tabulated R-curve PATH' (the paths as resolved from the case
+   !> file), joined by '; ', or '' when the material uses neither.
+   function data_files_summary(table_path, rcurve_path) result(text)
+      character(len=*), intent(in) :: table_path, rcurve_path   !! '' when unused
+      character(len=:), allocatable :: text
+      text = ''
+      if (len_trim(table_path) > 0) text = 'custom RVE table '//trim(table_path)
+      if (len_trim(rcurve_path) > 0) then
+         if (len(text) > 0) text = text//'; '
+         text = text//'tabulated R-curve '//trim(rcurve_path)
+      end if
+   end function data_files_summary
 
    !> Whether writing `path` would replace an input of the run: the case file, its history (when
    !> &loading was read), RVE table or R-curve file (the paths resolved: same_file). One comparison

@@ -14,7 +14,8 @@
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_kinds, only: dp
-   use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary, writes_an_input
+   use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary, writes_an_input, &
+      data_files_summary
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output, remove_file, &
       open_failure, OPEN_MESSAGE_LEN
@@ -69,6 +70,9 @@ program interphase_point
    if (.not. ok) call fail(with_entry_line(message, case_path, run%lines))
    summary = material_summary(run%props)
    write (output_unit, '(a)') run%name//': '//summary
+   ! (the table and R-curve files the run read, which PROPS cannot name)
+   if (len(data_files_summary(run%table_path, run%rcurve_path)) > 0) write (output_unit, '(a)') &
+      run%name//': '//data_files_summary(run%table_path, run%rcurve_path)
 
    ! ---- replay into the CSV ----
    csv_path = join_path(output_dir, run%output)

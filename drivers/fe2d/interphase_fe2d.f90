@@ -16,7 +16,7 @@ program interphase_fe2d
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_layout, only: PROP_MU
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
-   use interphase_driver_case, only: load_start_up_data, material_summary
+   use interphase_driver_case, only: load_start_up_data, material_summary, data_files_summary
    use interphase_driver_namelist, only: with_entry_line
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot, exit_program, print_version, rename_file, refuse_special_output, &
@@ -62,6 +62,8 @@ program interphase_fe2d
    call build_mesh(run, mesh)
    ! the joint's material, as interphase-point names it (model, table, law, key parameters)
    write (output_unit, '(a)') run%name//': joint: '//material_summary(run%props)
+   if (len(data_files_summary(run%table_path, run%rcurve_path)) > 0) write (output_unit, '(a)') &
+      run%name//': joint: '//data_files_summary(run%table_path, run%rcurve_path)
 
    csv_path = join_path(output_dir, run%output)
    ! (before the run: an output that is a device would be replaced by the rename at its end)
@@ -82,6 +84,8 @@ program interphase_fe2d
       int_to_string(run%ny)//' elements per brick, '//int_to_string(mesh%nfree)// &
       ' free equations, half bandwidth '//int_to_string(mesh%bandwidth)
    write (options%log_unit, '(a)') 'joint: '//material_summary(run%props)
+   if (len(data_files_summary(run%table_path, run%rcurve_path)) > 0) write (options%log_unit, '(a)') &
+      'joint: '//data_files_summary(run%table_path, run%rcurve_path)
    write (options%log_unit, '(a)') 'residual = ||R_free|| / max(||F_ext||, |shear reaction|); '// &
       'correction = ||du|| / ||u_free||'
    call run_analysis(run, mesh, options, result)
