@@ -2,7 +2,11 @@
 !>
 !>   interphase-check-deck deck.inp [more.inp ...]
 !>
-!> For every *COHESIVE SECTION it checks what interphase requires (docs/abaqus.md):
+!> For every *COHESIVE SECTION, and every *SOLID SECTION whose material has a *USER MATERIAL (the
+!> job's one UMAT, interphase's, takes continuum elements only in its thin-layer mode: a layer
+!> thickness and normal axis are required; under Explicit such a section is refused; a material
+!> named as CalculiX names one, ABAQUS... or @..., marks a CalculiX deck, which is not checked),
+!> it checks what interphase requires (docs/abaqus.md):
 !> RESPONSE=TRACTION SEPARATION (or CONTINUUM), THICKNESS=SPECIFIED with constitutive thickness 1,
 !> or the material's layer thickness t when it sets one (a continuum response with THICKNESS=
 !> GEOMETRY gets a note: the value comes from the nodes), the layer normal axis 0, a material
@@ -32,7 +36,8 @@ program interphase_check_deck
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
       RCURVE_EQUIVALENT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
-      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
+      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, SV_DAMAGE, SV_SLIP_1, &
+      SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
       SV_FAILED
    use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count
@@ -127,6 +132,9 @@ program interphase_check_deck
    type :: section_type
       integer :: line = 0
       character(len=:), allocatable :: file    !! the file its line is in (the deck or an *INCLUDE)
+      !> a *SOLID SECTION (continuum elements) whose material has a *USER MATERIAL: the job's one
+      !> UMAT, interphase's, serves it only in the thin-layer mode
+      logical :: solid = .false.
       character(len=80) :: elset = '', material = '', response = '', thickness_mode = ''
       real(dp) :: thickness = -1.0_dp
       logical :: thickness_empty = .false.     !! the thickness an empty field (Abaqus reads 0)
@@ -177,7 +185,8 @@ contains
       integer, intent(in) :: unit                 !! where to print
       write (unit, '(a)') 'usage: interphase-check-deck DECK.inp [MORE.inp ...]', &
          '       interphase-check-deck --help | --version', &
-         '  Checks every *COHESIVE SECTION of an Abaqus deck that uses interphase: RESPONSE, THICKNESS,', &
+         '  Checks every *COHESIVE SECTION of an Abaqus deck that uses interphase (and every *SOLID SECTION', &
+         '  of a *USER MATERIAL: the thin-layer mode): RESPONSE, THICKNESS,', &
          '  *USER MATERIAL constants decoded as interphase PROPS, *DEPVAR (and its DELETE=), UNSYMM,', &
          '  *DENSITY (Explicit).', &
          '  *INCLUDE files are read where they stand (a relative INPUT= from the including file''s folder).', &
@@ -222,6 +231,7 @@ contains
       logical :: explicit, opened
       !> the first step procedure of each solver (line and keyword): one analysis runs one solver
       integer :: explicit_line, standard_line
+      logical, allocatable :: keep(:)          !! the sections interphase serves
       character(len=:), allocatable :: explicit_file, standard_file
       character(len=:), allocatable :: include_input !! an *INCLUDE's INPUT= as written
       character(len=:), allocatable :: include_path  !! the file it names, as opened
@@ -458,6 +468,13 @@ contains
                end if
             case ('STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION')
                current = 0
+               ! a solid section is checked when its material turns out to have a *USER MATERIAL
+               if (trim(keyword) == 'SOLIDSECTION') then
+                  if (len(label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL'))) > 0) &
+                     sections = [sections, section_type(line=lineno, file=path, solid=.true., &
+                        elset=label_value(parameter_value(parameter_names, parameter_values, 'ELSET')), &
+                        material=label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL')))]
+               end if
             end select
             call attribute_failures(nfail - nfail_line, keyword, current, materials, sections)
             cycle
@@ -547,9 +564,30 @@ contains
             ' at '//line_in(deck, standard_file, standard_line)//'): one analysis runs one solver (a Standard result '// &
             'goes to Explicit, or back, by an import between two decks)', nfail)
       end if
+      ! a solid section is interphase's when its material has a (mechanical) *USER MATERIAL: one
+      ! UMAT serves the job; the others (the bricks' *ELASTIC) are not
+      allocate (keep(size(sections)))
+      do i = 1, size(sections)
+         keep(i) = .not. sections(i)%solid
+         do k = 1, size(materials)
+            if (materials(k)%name == sections(i)%material .and. materials(k)%user_line /= 0) keep(i) = .true.
+         end do
+         ! CalculiX names the material of an Abaqus-style UMAT ABAQUS... or @... (a library), and
+         ! reads *USER MATERIAL otherwise (a temperature after the constants): not checked here
+         if (keep(i) .and. sections(i)%solid) then
+            if (index(sections(i)%material, 'ABAQUS') == 1 .or. index(sections(i)%material, '@') == 1) then
+               keep(i) = .false.
+               write (output_unit, '(a)') sections(i)%file//':'//int_to_string(sections(i)%line)//': note: '// &
+                  '*SOLID SECTION, ELSET='//trim(sections(i)%elset)//': material '//trim(sections(i)%material)// &
+                  ' is named as CalculiX names a user material (ABAQUS..., @...): a CalculiX deck, not checked '// &
+                  '(docs/calculix.md)'
+            end if
+         end if
+      end do
+      sections = pack(sections, keep)
       if (size(sections) == 0) then
-         write (output_unit, '(a)') deck//': no *COHESIVE SECTION: nothing for interphase to check (solid '// &
-            'sections with the thin-layer mode and CalculiX decks are not checked: docs/abaqus.md)'
+         write (output_unit, '(a)') deck//': no *COHESIVE SECTION, and no *SOLID SECTION of an Abaqus *USER '// &
+            'MATERIAL: nothing for interphase to check (CalculiX decks are not checked: docs/abaqus.md)'
          return
       end if
       do i = 1, size(sections)
@@ -578,10 +616,11 @@ contains
       nfail_before = nfail
       status = -1
       solver = merge('Abaqus/Explicit (VUMAT)', 'Abaqus/Standard (UMAT) ', explicit)
-      where = section%file//':'//int_to_string(section%line)//': *COHESIVE SECTION, ELSET='//trim(section%elset)
+      where = section%file//':'//int_to_string(section%line)//': *'// &
+         trim(merge('SOLID SECTION   ', 'COHESIVE SECTION', section%solid))//', ELSET='//trim(section%elset)
       section_where = where
       if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
-      if (section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') &
+      if (.not. section%solid .and. section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') &
          call record_failure(where//': RESPONSE='//trim(section%response)//' but interphase is a traction-separation '// &
             'law: RESPONSE=TRACTION SEPARATION, or CONTINUUM (its strains are the separations over the constitutive '// &
             'thickness T0: give the layer thickness option t = T0, docs/abaqus.md)', nfail)
@@ -610,7 +649,31 @@ contains
             end if
          end if
       end if
-      call check_thickness(section, section_where, t_layer, normal, notes, nfail)
+      if (.not. section%solid) then
+         call check_thickness(section, section_where, t_layer, normal, notes, nfail)
+      else if (explicit) then
+         call record_failure(where//': continuum elements, but the VUMAT takes cohesive elements only (*COHESIVE '// &
+            'SECTION, RESPONSE=TRACTION SEPARATION, constitutive thickness 1: docs/abaqus.md)', nfail)
+      else if (status == STATUS_OK) then
+         ! (the material's options as decoded; a material that does not decode is named below)
+         call constants_count(params%model, params%damage_law, nm, nconstants)
+         if (t_layer <= 0.0_dp) then
+            call record_failure(where//': continuum elements with material '//trim(section%material)//', whose '// &
+               'layer thickness PROPS('//int_to_string(nconstants + OPT_LAYER_THICKNESS)//') is 0: the UMAT takes a '// &
+               'continuum element only in the thin-layer mode (it would refuse every call): set the layer thickness t > 0 '// &
+               '(mm) in PROPS('//int_to_string(nconstants + OPT_LAYER_THICKNESS)//') and its normal axis in PROPS('// &
+               int_to_string(nconstants + OPT_LAYER_NORMAL)//'), or mesh the joint with cohesive elements under '// &
+               '*COHESIVE SECTION (docs/abaqus.md, ''Thin continuum layers'')', nfail)
+         else if (normal == 0) then
+            call record_failure(where//': continuum elements with material '//trim(section%material)//', whose '// &
+               'layer normal axis PROPS('//int_to_string(nconstants + OPT_LAYER_NORMAL)//') is 0 (a cohesive '// &
+               'element''s): give the axis of the layer''s normal, 1, 2 or 3 (1 or 2 in 2-D)', nfail)
+         else
+            notes = notes//'; note: *SOLID SECTION: thin continuum layer, t = '//real_to_string(t_layer)// &
+               ' mm, normal axis '//int_to_string(normal)//' (the element type is not checked: a 2-D element takes '// &
+               'axis 1 or 2)'
+         end if
+      end if
       hook = trim(merge('VEXTERNALDB', 'UEXTERNALDB', explicit))
       if (len_trim(section%material) == 0) then
          continue     ! named where the section is read
@@ -1106,6 +1169,9 @@ contains
          names = [character(len=NAME_LEN) :: 'DELETE']
       case ('INCLUDE')
          names = [character(len=NAME_LEN) :: 'INPUT', 'PASSWORD']
+      case ('SOLIDSECTION')
+         names = [character(len=NAME_LEN) :: 'COMPOSITE', 'CONTROLS', 'ELSET', 'LAYUP', 'MATERIAL', 'ORIENTATION', &
+            'REFNODE', 'STACKDIRECTION', 'SYMMETRIC']
       case default
          allocate (names(0))
       end select
