@@ -218,6 +218,9 @@ contains
       character(len=80) :: keyword, field, repeated
       character(len=:), allocatable :: ambiguous     !! an ambiguous abbreviation's reading, or ''
       character(len=80) :: keyword_text        !! the keyword as the deck writes it (for messages)
+      !> the keyword before an *INCLUDE line, which the included data lines continue
+      character(len=80) :: previous_keyword, previous_keyword_text
+      integer :: previous_data_lines
       character(len=512) :: bad_text           !! a data field that is not a number, as reported
       character(len=LINE_LEN) :: bad_item      !! that field
       character(len=32) :: bad_why             !! why it is not (parse_real)
@@ -256,6 +259,7 @@ contains
       standard_line = 0
       standard_keyword = ''
       keyword = ''
+      keyword_text = ''
       ! (set before the loop: gcc -O3 reports their lengths as maybe uninitialised otherwise)
       label = ''
       include_input = ''
@@ -310,6 +314,9 @@ contains
                end if
                line = trim(line)//' '//trim(held)
             end do
+            previous_keyword = keyword
+            previous_keyword_text = keyword_text
+            previous_data_lines = data_lines
             keyword_text = adjustl(text_before(line(2:), ','))
             ! the keyword, an abbreviation read as the keyword it abbreviates
             keyword = resolve_name(upper_compact(text_before(line(2:), ',')), [KEYWORDS_READ, KEYWORDS_BESIDE], ambiguous, &
@@ -408,6 +415,11 @@ contains
                         ' (Abaqus would stop here too)', nfail)
                   end if
                end if
+               ! an *INCLUDE does not end the keyword before it: data lines in the file are its own
+               ! (*USER MATERIAL, CONSTANTS=9 with its constants in a file of their own)
+               keyword = previous_keyword
+               keyword_text = previous_keyword_text
+               data_lines = previous_data_lines
             case ('USERMATERIAL')
                if (current > 0) then
                   materials(current)%user_line = lineno
