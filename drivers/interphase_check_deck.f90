@@ -128,7 +128,7 @@ program interphase_check_deck
       character(len=16), allocatable :: options_seen(:)   !! *USER MATERIAL, *DEPVAR, *DENSITY so far
    end type material_type
 
-   !> One *COHESIVE SECTION.
+   !> One *COHESIVE SECTION (or *SOLID SECTION of a *USER MATERIAL).
    type :: section_type
       integer :: line = 0
       character(len=:), allocatable :: file    !! the file its line is in (the deck or an *INCLUDE)
@@ -194,7 +194,7 @@ contains
          '  Documented in drivers/README.md and docs/abaqus.md.'
    end subroutine print_usage
 
-   !> Read one deck and check its cohesive sections; nfail counts the failed checks.
+   !> Read one deck (with its *INCLUDE files) and check its sections; nfail counts the failed checks.
    subroutine check_deck(deck, nfail, status)
       character(len=*), intent(in) :: deck
       integer, intent(inout) :: nfail
