@@ -2,7 +2,11 @@
 !>
 !>   interphase-check-deck deck.inp [more.inp ...]
 !>
-!> For every *COHESIVE SECTION it checks what interphase requires (docs/abaqus.md):
+!> For every *COHESIVE SECTION, and every *SOLID SECTION whose material has a *USER MATERIAL (the
+!> job's one UMAT, interphase's, takes continuum elements only in its thin-layer mode: a layer
+!> thickness and normal axis are required; under Explicit such a section is refused; a material
+!> named as CalculiX names one, ABAQUS... or @..., marks a CalculiX deck, which is not checked),
+!> it checks what interphase requires (docs/abaqus.md):
 !> RESPONSE=TRACTION SEPARATION (or CONTINUUM), THICKNESS=SPECIFIED with constitutive thickness 1,
 !> or the material's layer thickness t when it sets one (a continuum response with THICKNESS=
 !> GEOMETRY gets a note: the value comes from the nodes), the layer normal axis 0, a material
@@ -13,7 +17,8 @@
 !> Abaqus/Explicit, and no *DEPVAR, DELETE= among interphase's slots (which hold 0 at every intact
 !> point: Abaqus would delete it). It reads keywords (a keyword line that ends in a comma
 !> continued on the next; keywords, parameters and values abbreviated as Abaqus allows) and their
-!> data lines only (no *INCLUDE, no parts/assemblies
+!> data lines only, those of *INCLUDE files where they stand (a relative INPUT= from the folder of
+!> the file that includes it; an *INCLUDE that cannot be read is a failed check; no parts/assemblies
 !> resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) as
 !> Abaqus reads them: an empty data field is 0 (not skipped), a label in double quotes is taken
 !> as written; what Abaqus refuses in the lines it reads is a failed check (a line over 256
@@ -31,7 +36,8 @@ program interphase_check_deck
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
       RCURVE_EQUIVALENT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
-      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
+      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, SV_DAMAGE, SV_SLIP_1, &
+      SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
       SV_FAILED
    use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count
@@ -58,6 +64,14 @@ program interphase_check_deck
       'EFFMOD', 'HYBRIDFORMULATION', 'TYPE', 'UNSYMM']
    !> Most constants of one *USER MATERIAL.
    integer, parameter :: MAX_CONSTANTS = 64
+   !> Most *INCLUDE files open at once (one inside another): deeper is refused (a file that includes
+   !> itself is refused by name; a loop the names do not show would otherwise be read without end).
+   integer, parameter :: MAX_INCLUDE_DEPTH = 16
+
+   !> A path, in an array of them.
+   type :: path_type
+      character(len=:), allocatable :: text
+   end type path_type
 
    !> The keywords this check reads (upper case, blanks removed, as Abaqus compares them). Abaqus
    !> takes a keyword, a parameter and most parameter values abbreviated to any start that no
@@ -110,12 +124,17 @@ program interphase_check_deck
       integer :: density_line = 0              !! line of *DENSITY's value (0: none)
       logical :: density_empty = .false.       !! *DENSITY's value an empty field (Abaqus reads 0)
       integer :: line = 0                      !! line of *MATERIAL
+      character(len=:), allocatable :: file    !! the file its lines are in (the deck or an *INCLUDE)
       character(len=16), allocatable :: options_seen(:)   !! *USER MATERIAL, *DEPVAR, *DENSITY so far
    end type material_type
 
-   !> One *COHESIVE SECTION.
+   !> One *COHESIVE SECTION (or *SOLID SECTION of a *USER MATERIAL).
    type :: section_type
       integer :: line = 0
+      character(len=:), allocatable :: file    !! the file its line is in (the deck or an *INCLUDE)
+      !> a *SOLID SECTION (continuum elements) whose material has a *USER MATERIAL: the job's one
+      !> UMAT, interphase's, serves it only in the thin-layer mode
+      logical :: solid = .false.
       character(len=80) :: elset = '', material = '', response = '', thickness_mode = ''
       real(dp) :: thickness = -1.0_dp
       logical :: thickness_empty = .false.     !! the thickness an empty field (Abaqus reads 0)
@@ -166,23 +185,30 @@ contains
       integer, intent(in) :: unit                 !! where to print
       write (unit, '(a)') 'usage: interphase-check-deck DECK.inp [MORE.inp ...]', &
          '       interphase-check-deck --help | --version', &
-         '  Checks every *COHESIVE SECTION of an Abaqus deck that uses interphase: RESPONSE, THICKNESS,', &
+         '  Checks every *COHESIVE SECTION of an Abaqus deck that uses interphase (and every *SOLID SECTION', &
+         '  of a *USER MATERIAL: the thin-layer mode): RESPONSE, THICKNESS,', &
          '  *USER MATERIAL constants decoded as interphase PROPS, *DEPVAR (and its DELETE=), UNSYMM,', &
          '  *DENSITY (Explicit).', &
-         '  *INCLUDE files are not read (each is named: check it on its own).', &
+         '  *INCLUDE files are read where they stand (a relative INPUT= from the including file''s folder).', &
          '  Exit status: 0 all checks pass, 1 a check failed, 2 a file cannot be read.', &
          '  Documented in drivers/README.md and docs/abaqus.md.'
    end subroutine print_usage
 
-   !> Read one deck and check its cohesive sections; nfail counts the failed checks.
-   subroutine check_deck(path, nfail, status)
-      character(len=*), intent(in) :: path
+   !> Read one deck (with its *INCLUDE files) and check its sections; nfail counts the failed checks.
+   subroutine check_deck(deck, nfail, status)
+      character(len=*), intent(in) :: deck
       integer, intent(inout) :: nfail
       integer, intent(out) :: status     !! 0, or 2 when the file cannot be read
 
       type(material_type), allocatable :: materials(:)
       type(section_type), allocatable :: sections(:)
       type(text_file_type) :: file
+      !> the file being read (the deck, or an *INCLUDE file in it: messages name it) and the files
+      !> that include it, outermost first, with their paths
+      character(len=:), allocatable :: path
+      type(text_file_type) :: including(MAX_INCLUDE_DEPTH)
+      type(path_type) :: including_path(MAX_INCLUDE_DEPTH)
+      integer :: depth
       character(len=LINE_LEN) :: line
       !> a line read ahead (after a keyword line that ends in a comma) and its number
       character(len=LINE_LEN) :: held
@@ -192,6 +218,9 @@ contains
       character(len=80) :: keyword, field, repeated
       character(len=:), allocatable :: ambiguous     !! an ambiguous abbreviation's reading, or ''
       character(len=80) :: keyword_text        !! the keyword as the deck writes it (for messages)
+      !> the keyword before an *INCLUDE line, which the included data lines continue
+      character(len=80) :: previous_keyword, previous_keyword_text
+      integer :: previous_data_lines
       character(len=512) :: bad_text           !! a data field that is not a number, as reported
       character(len=LINE_LEN) :: bad_item      !! that field
       character(len=32) :: bad_why             !! why it is not (parse_real)
@@ -205,9 +234,17 @@ contains
       logical :: explicit, opened
       !> the first step procedure of each solver (line and keyword): one analysis runs one solver
       integer :: explicit_line, standard_line
+      logical, allocatable :: keep(:)          !! the sections interphase serves
+      character(len=:), allocatable :: explicit_file, standard_file
+      character(len=:), allocatable :: include_input !! an *INCLUDE's INPUT= as written
+      character(len=:), allocatable :: include_path  !! the file it names, as opened
       character(len=80) :: standard_keyword
 
       allocate (materials(0), sections(0))
+      path = deck
+      depth = 0
+      explicit_file = ''
+      standard_file = ''
       ! the readers' bounded line reader (interphase_text_input): lines and file size are limited,
       ! so that no file (/dev/zero, a line without end) is read forever
       call open_text_file(path, file, opened, message)
@@ -222,8 +259,11 @@ contains
       standard_line = 0
       standard_keyword = ''
       keyword = ''
-      ! (set before the loop: gcc -O3 reports its length as maybe uninitialised otherwise)
+      keyword_text = ''
+      ! (set before the loop: gcc -O3 reports their lengths as maybe uninitialised otherwise)
       label = ''
+      include_input = ''
+      include_path = ''
       current = 0
       data_lines = 0
       lineno = 0
@@ -235,7 +275,16 @@ contains
             length = held_length
             have_held = .false.
          else
-            if (.not. next_line(file, path, line, lineno, status, length)) exit
+            if (.not. next_line(file, path, line, lineno, status, length)) then
+               if (depth == 0) exit
+               ! the end of an *INCLUDE file: back to the file that includes it, after its
+               ! *INCLUDE line
+               call close_text_file(file)
+               file = including(depth)
+               path = including_path(depth)%text
+               depth = depth - 1
+               cycle
+            end if
          end if
          if (status /= 0) return
          if (len_trim(line) == 0 .or. line(1:min(2, len(line))) == '**') cycle
@@ -265,6 +314,9 @@ contains
                end if
                line = trim(line)//' '//trim(held)
             end do
+            previous_keyword = keyword
+            previous_keyword_text = keyword_text
+            previous_data_lines = data_lines
             keyword_text = adjustl(text_before(line(2:), ','))
             ! the keyword, an abbreviation read as the keyword it abbreviates
             keyword = resolve_name(upper_compact(text_before(line(2:), ',')), [KEYWORDS_READ, KEYWORDS_BESIDE], ambiguous, &
@@ -318,7 +370,7 @@ contains
                end if
                ! (a material without a name is kept, that the options after it are not read as
                ! another material's; no section can refer to it)
-               materials = [materials, material_type(name=label, line=lineno, &
+               materials = [materials, material_type(name=label, line=lineno, file=path, &
                   options_seen=[character(len=16) ::])]
                current = size(materials)
             case ('USERMATERIAL', 'DEPVAR', 'DENSITY')
@@ -333,9 +385,41 @@ contains
             end select
             select case (trim(keyword))
             case ('INCLUDE')
-               write (output_unit, '(a)') path//':'//int_to_string(lineno)//': note: *INCLUDE, INPUT='// &
-                  parameter_value(parameter_names, parameter_values, 'INPUT')//' is not read: what it holds is not checked '// &
-                  '(run interphase-check-deck on it too)'
+               ! its lines are read where it stands, as Abaqus reads them; a relative INPUT= from
+               ! the folder of the file that includes it (where Abaqus finds it when the job runs
+               ! in the deck's folder)
+               include_input = parameter_value(parameter_names, parameter_values, 'INPUT')
+               include_path = include_file(path, include_input)
+               if (len(include_path) == 0) then
+                  call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' without '// &
+                     'INPUT=: Abaqus requires the file to include', nfail)
+               else if (include_path == path .or. any([(including_path(k)%text == include_path, k = 1, depth)])) then
+                  call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//', INPUT='// &
+                     include_input//': the file includes itself (directly or through the files it includes): not read', &
+                     nfail)
+               else if (depth == MAX_INCLUDE_DEPTH) then
+                  call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//', INPUT='// &
+                     include_input//': *INCLUDE files nested more than '//int_to_string(MAX_INCLUDE_DEPTH)// &
+                     ' deep: not read', nfail)
+               else
+                  including(depth + 1) = file
+                  call open_text_file(include_path, file, opened, message)
+                  if (opened) then
+                     depth = depth + 1
+                     including_path(depth)%text = path
+                     path = include_path
+                  else
+                     file = including(depth + 1)
+                     call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//', INPUT='// &
+                        include_input//': cannot read '//tried_path(include_path)//': '//trim(message)// &
+                        ' (Abaqus would stop here too)', nfail)
+                  end if
+               end if
+               ! an *INCLUDE does not end the keyword before it: data lines in the file are its own
+               ! (*USER MATERIAL, CONSTANTS=9 with its constants in a file of their own)
+               keyword = previous_keyword
+               keyword_text = previous_keyword_text
+               data_lines = previous_data_lines
             case ('USERMATERIAL')
                if (current > 0) then
                   materials(current)%user_line = lineno
@@ -366,7 +450,7 @@ contains
                      call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' without '// &
                         trim(field)//'=: Abaqus requires it', nfail)
                end do
-               sections = [sections, section_type(line=lineno, &
+               sections = [sections, section_type(line=lineno, file=path, &
                   elset=label_value(parameter_value(parameter_names, parameter_values, 'ELSET')), &
                   material=label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL')), &
                   response=parameter_choice(parameter_names, parameter_values, 'RESPONSE', &
@@ -377,9 +461,13 @@ contains
                ! (an explicit dynamic step, with or without the temperatures: Abaqus/Explicit)
                if (any(parameter_names == 'EXPLICIT')) then
                   explicit = .true.
-                  if (explicit_line == 0) explicit_line = lineno
+                  if (explicit_line == 0) then
+                     explicit_line = lineno
+                     explicit_file = path
+                  end if
                else if (standard_line == 0) then
                   standard_line = lineno
+                  standard_file = path
                   standard_keyword = keyword_text
                end if
             case ('STATIC', 'VISCO', 'FREQUENCY', 'BUCKLE', 'GEOSTATIC', 'SOILS', 'HEATTRANSFER', &
@@ -387,10 +475,18 @@ contains
                ! an Abaqus/Standard procedure
                if (standard_line == 0) then
                   standard_line = lineno
+                  standard_file = path
                   standard_keyword = keyword_text
                end if
             case ('STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION')
                current = 0
+               ! a solid section is checked when its material turns out to have a *USER MATERIAL
+               if (trim(keyword) == 'SOLIDSECTION') then
+                  if (len(label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL'))) > 0) &
+                     sections = [sections, section_type(line=lineno, file=path, solid=.true., &
+                        elset=label_value(parameter_value(parameter_names, parameter_values, 'ELSET')), &
+                        material=label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL')))]
+               end if
             end select
             call attribute_failures(nfail - nfail_line, keyword, current, materials, sections)
             cycle
@@ -475,18 +571,39 @@ contains
       call close_text_file(file)
 
       if (explicit_line > 0 .and. standard_line > 0) then
-         call record_failure(path//': the deck has an Abaqus/Explicit step (*DYNAMIC, EXPLICIT at line '// &
-            int_to_string(explicit_line)//') and an Abaqus/Standard one (*'//trim(standard_keyword)//' at line '// &
-            int_to_string(standard_line)//'): one analysis runs one solver (a Standard result goes to Explicit, '// &
-            'or back, by an import between two decks)', nfail)
+         call record_failure(deck//': the deck has an Abaqus/Explicit step (*DYNAMIC, EXPLICIT at '// &
+            line_in(deck, explicit_file, explicit_line)//') and an Abaqus/Standard one (*'//trim(standard_keyword)// &
+            ' at '//line_in(deck, standard_file, standard_line)//'): one analysis runs one solver (a Standard result '// &
+            'goes to Explicit, or back, by an import between two decks)', nfail)
       end if
+      ! a solid section is interphase's when its material has a (mechanical) *USER MATERIAL: one
+      ! UMAT serves the job; the others (the bricks' *ELASTIC) are not
+      allocate (keep(size(sections)))
+      do i = 1, size(sections)
+         keep(i) = .not. sections(i)%solid
+         do k = 1, size(materials)
+            if (materials(k)%name == sections(i)%material .and. materials(k)%user_line /= 0) keep(i) = .true.
+         end do
+         ! CalculiX names the material of an Abaqus-style UMAT ABAQUS... or @... (a library), and
+         ! reads *USER MATERIAL otherwise (a temperature after the constants): not checked here
+         if (keep(i) .and. sections(i)%solid) then
+            if (index(sections(i)%material, 'ABAQUS') == 1 .or. index(sections(i)%material, '@') == 1) then
+               keep(i) = .false.
+               write (output_unit, '(a)') sections(i)%file//':'//int_to_string(sections(i)%line)//': note: '// &
+                  '*SOLID SECTION, ELSET='//trim(sections(i)%elset)//': material '//trim(sections(i)%material)// &
+                  ' is named as CalculiX names a user material (ABAQUS..., @...): a CalculiX deck, not checked '// &
+                  '(docs/calculix.md)'
+            end if
+         end if
+      end do
+      sections = pack(sections, keep)
       if (size(sections) == 0) then
-         write (output_unit, '(a)') path//': no *COHESIVE SECTION: nothing for interphase to check (solid '// &
-            'sections with the thin-layer mode and CalculiX decks are not checked: docs/abaqus.md)'
+         write (output_unit, '(a)') deck//': no *COHESIVE SECTION, and no *SOLID SECTION of an Abaqus *USER '// &
+            'MATERIAL: nothing for interphase to check (CalculiX decks are not checked: docs/abaqus.md)'
          return
       end if
       do i = 1, size(sections)
-         call check_section(path, sections(i), materials, explicit, nfail)
+         call check_section(deck, sections(i), materials, explicit, nfail)
       end do
 
    end subroutine check_deck
@@ -511,10 +628,11 @@ contains
       nfail_before = nfail
       status = -1
       solver = merge('Abaqus/Explicit (VUMAT)', 'Abaqus/Standard (UMAT) ', explicit)
-      where = path//':'//int_to_string(section%line)//': *COHESIVE SECTION, ELSET='//trim(section%elset)
+      where = section%file//':'//int_to_string(section%line)//': *'// &
+         trim(merge('SOLID SECTION   ', 'COHESIVE SECTION', section%solid))//', ELSET='//trim(section%elset)
       section_where = where
       if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
-      if (section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') &
+      if (.not. section%solid .and. section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') &
          call record_failure(where//': RESPONSE='//trim(section%response)//' but interphase is a traction-separation '// &
             'law: RESPONSE=TRACTION SEPARATION, or CONTINUUM (its strains are the separations over the constitutive '// &
             'thickness T0: give the layer thickness option t = T0, docs/abaqus.md)', nfail)
@@ -543,7 +661,31 @@ contains
             end if
          end if
       end if
-      call check_thickness(section, section_where, t_layer, normal, notes, nfail)
+      if (.not. section%solid) then
+         call check_thickness(section, section_where, t_layer, normal, notes, nfail)
+      else if (explicit) then
+         call record_failure(where//': continuum elements, but the VUMAT takes cohesive elements only (*COHESIVE '// &
+            'SECTION, RESPONSE=TRACTION SEPARATION, constitutive thickness 1: docs/abaqus.md)', nfail)
+      else if (status == STATUS_OK) then
+         ! (the material's options as decoded; a material that does not decode is named below)
+         call constants_count(params%model, params%damage_law, nm, nconstants)
+         if (t_layer <= 0.0_dp) then
+            call record_failure(where//': continuum elements with material '//trim(section%material)//', whose '// &
+               'layer thickness PROPS('//int_to_string(nconstants + OPT_LAYER_THICKNESS)//') is 0: the UMAT takes a '// &
+               'continuum element only in the thin-layer mode (it would refuse every call): set the layer thickness t > 0 '// &
+               '(mm) in PROPS('//int_to_string(nconstants + OPT_LAYER_THICKNESS)//') and its normal axis in PROPS('// &
+               int_to_string(nconstants + OPT_LAYER_NORMAL)//'), or mesh the joint with cohesive elements under '// &
+               '*COHESIVE SECTION (docs/abaqus.md, ''Thin continuum layers'')', nfail)
+         else if (normal == 0) then
+            call record_failure(where//': continuum elements with material '//trim(section%material)//', whose '// &
+               'layer normal axis PROPS('//int_to_string(nconstants + OPT_LAYER_NORMAL)//') is 0 (a cohesive '// &
+               'element''s): give the axis of the layer''s normal, 1, 2 or 3 (1 or 2 in 2-D)', nfail)
+         else
+            notes = notes//'; note: *SOLID SECTION: thin continuum layer, t = '//real_to_string(t_layer)// &
+               ' mm, normal axis '//int_to_string(normal)//' (the element type is not checked: a 2-D element takes '// &
+               'axis 1 or 2)'
+         end if
+      end if
       hook = trim(merge('VEXTERNALDB', 'UEXTERNALDB', explicit))
       if (len_trim(section%material) == 0) then
          continue     ! named where the section is read
@@ -553,7 +695,7 @@ contains
          call record_failure(where//': material '//trim(section%material)//' has no *USER MATERIAL', nfail)
       else
          associate (mat => materials(m))
-            where = path//':'//int_to_string(mat%user_line)//': *USER MATERIAL of '//trim(mat%name)
+            where = mat%file//':'//int_to_string(mat%user_line)//': *USER MATERIAL of '//trim(mat%name)
             status = -1
             decoded = .false.
             if (len_trim(mat%bad_data) > 0) call record_failure(trim(mat%bad_data), nfail)
@@ -652,11 +794,11 @@ contains
                ! (the VUMAT's own message says the same)
                if (explicit) why = ' (since 2026-12 slots 6-9 hold the separations and the failure flag, '// &
                   'docs/abaqus.md)'
-               call record_failure(path//':'//int_to_string(mat%depvar_line)//': *DEPVAR of '//trim(mat%name)//': '// &
+               call record_failure(mat%file//':'//int_to_string(mat%depvar_line)//': *DEPVAR of '//trim(mat%name)//': '// &
                   int_to_string(mat%depvar)//empty_field_note(mat%depvar_empty)//' but '//trim(solver)// &
                   ' needs at least '//int_to_string(depvar_needed)//why, nfail)
             end if
-            if (mat%delete_line > 0) call check_delete(path, mat, explicit, depvar_needed, notes, nfail)
+            if (mat%delete_line > 0) call check_delete(mat%file, mat, explicit, depvar_needed, notes, nfail)
             if (.not. explicit .and. .not. mat%unsymm) then
                if (.not. decoded) then
                   call record_failure(where//': no UNSYMM: the tangent DDSDDE is unsymmetric (friction, damage)', nfail)
@@ -670,7 +812,7 @@ contains
                if (mat%density_line == 0) then
                   call record_failure(where//': no *DENSITY > 0: the VUMAT energies are per unit mass', nfail)
                else
-                  call record_failure(path//':'//int_to_string(mat%density_line)//': *DENSITY of '//trim(mat%name)// &
+                  call record_failure(mat%file//':'//int_to_string(mat%density_line)//': *DENSITY of '//trim(mat%name)// &
                      ': '//real_to_string(mat%density)//empty_field_note(mat%density_empty)// &
                      ' but the VUMAT needs a density > 0: its energies are per unit mass', nfail)
                end if
@@ -823,6 +965,35 @@ contains
             empty_field_note(section%thickness_empty)//' but interphase needs '//rule, nfail)
       end if
    end subroutine check_thickness
+
+   !> The file an *INCLUDE's INPUT= names ('' when none): its double quotes dropped, and a relative
+   !> path taken from the folder of `from`, the file that includes it.
+   function include_file(from, input) result(name)
+      character(len=*), intent(in) :: from          !! the file with the *INCLUDE line
+      character(len=*), intent(in) :: input         !! INPUT= as written
+      character(len=:), allocatable :: name
+      integer :: slash
+      name = trim(adjustl(input))
+      if (len(name) >= 2) then
+         if (name(1:1) == '"' .and. name(len(name):len(name)) == '"') name = name(2:len(name) - 1)
+      end if
+      if (len(name) == 0) return
+      if (name(1:1) == '/') return
+      slash = index(from, '/', back=.true.)
+      if (slash > 0) name = from(1:slash)//name
+   end function include_file
+
+   !> 'line N' of the deck, or 'FILE:N' for a line of an *INCLUDE file.
+   function line_in(deck, file, number) result(text)
+      character(len=*), intent(in) :: deck, file
+      integer, intent(in) :: number
+      character(len=:), allocatable :: text
+      if (file == deck) then
+         text = 'line '//int_to_string(number)
+      else
+         text = file//':'//int_to_string(number)
+      end if
+   end function line_in
 
    !> The next line of the deck, left-adjusted, its number and its length as written (trailing
    !> blanks not counted); false at the end of the file. A line that cannot be read, or is longer
@@ -1010,6 +1181,9 @@ contains
          names = [character(len=NAME_LEN) :: 'DELETE']
       case ('INCLUDE')
          names = [character(len=NAME_LEN) :: 'INPUT', 'PASSWORD']
+      case ('SOLIDSECTION')
+         names = [character(len=NAME_LEN) :: 'COMPOSITE', 'CONTROLS', 'ELSET', 'LAYUP', 'MATERIAL', 'ORIENTATION', &
+            'REFNODE', 'STACKDIRECTION', 'SYMMETRIC']
       case default
          allocate (names(0))
       end select
