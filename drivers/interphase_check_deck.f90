@@ -35,16 +35,19 @@ program interphase_check_deck
    use interphase_finite, only: is_finite
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
-      RCURVE_EQUIVALENT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
+      RCURVE_EQUIVALENT, RCURVE_CONSTANT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
       GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, SV_DAMAGE, SV_SLIP_1, &
       SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
       SV_FAILED
    use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count
+   use interphase_coefficients, only: coefficient_set_type
+   use interphase_provider, only: coefficient_values_at
    use interphase_driver_cli, only: get_argument, exit_program, print_version
    use interphase_text_input, only: text_file_type, open_text_file, read_text_line, close_text_file, &
       tried_path, clip_text, parse_real, text_before, TEXT_LINE, TEXT_END
    use interphase_driver_text, only: int_to_string, real_to_string
+   use interphase_real_text, only: real_text
    implicit none
    !> The smallest contact band width chi that keeps the stored energy convex at every D of the
    !> built-in table (docs/theory.md, 'The contact band').
@@ -179,6 +182,49 @@ program interphase_check_deck
    end if
 
 contains
+
+   !> Notes on values that PROPS admit but no masonry joint has, which is what a length in m, a
+   !> stiffness in Pa/m or a toughness in J/m^2 look like in interphase's units (mm, MPa/mm, N/mm):
+   !> the peak tractions K s0 outside 0.001 to 100 MPa (the intact stiffness of the simplified
+   !> model's PROPS, or of the built-in table; a custom table's is not known before the run), mu
+   !> above 2 (a friction angle in degrees?), and a constant toughness more than 100 times above or
+   !> below 1/2 K s0 sf, the fracture energy of the displacement law with the same s0 and sf. Each
+   !> '; note: ...', or '' when none applies.
+   function units_notes(params) result(text)
+      type(law_params_type), intent(in) :: params
+      character(len=:), allocatable :: text
+      real(dp), parameter :: PEAK_MIN = 1.0e-3_dp, PEAK_MAX = 100.0_dp   ! (MPa)
+      real(dp), parameter :: MU_MAX = 2.0_dp, TOUGHNESS_RATIO = 100.0_dp
+      character(len=2), parameter :: MODE(2) = ['_N', '_T']
+      character(len=3), parameter :: ROMAN(2) = ['I  ', 'II ']
+      type(coefficient_set_type) :: c, unused_dc
+      real(dp) :: k(2), s0(2), sf(2), gc(2), peak, energy
+      integer :: status, i
+      text = ''
+      s0 = [params%s0_n, params%s0_t]
+      sf = [params%sf_n, params%sf_t]
+      gc = [params%gc_i, params%gc_ii]
+      call coefficient_values_at(params, 0.0_dp, c, unused_dc, status)
+      if (status == STATUS_OK) then
+         k = [c%k_n, c%k_t]
+         do i = 1, 2
+            peak = k(i)*s0(i)
+            if (peak < PEAK_MIN .or. peak > PEAK_MAX) text = text//'; note: the peak traction K'//MODE(i)// &
+               ' s0'//MODE(i)//' = '//real_text(peak, 3)//' MPa lies outside 0.001 to 100 MPa, where masonry '// &
+               'joints are: check the units (mm, MPa/mm)'
+            if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_CONSTANT) then
+               energy = 0.5_dp*k(i)*s0(i)*sf(i)
+               if (gc(i) > TOUGHNESS_RATIO*energy .or. gc(i) < energy/TOUGHNESS_RATIO) text = text// &
+                  '; note: G_c'//trim(ROMAN(i))//' = '//real_to_string(gc(i))//' N/mm is '// &
+                  real_text(gc(i)/energy, 2)//' x (1/2) K'//MODE(i)//' s0'//MODE(i)//' sf'//MODE(i)//' = '// &
+                  real_text(energy, 3)//' N/mm, the fracture energy of the displacement law with these s0 and sf: '// &
+                  'check the units (N/mm, and 1 J/m^2 = 0.001 N/mm)'
+            end if
+         end do
+      end if
+      if (params%mu > MU_MAX) text = text//'; note: mu = '//real_to_string(params%mu)//' is above 2, beyond '// &
+         'masonry joints (about 0.3 to 1.2): a friction angle in degrees? mu is its tangent'
+   end function units_notes
 
    !> How to call the program.
    subroutine print_usage(unit)
@@ -776,6 +822,7 @@ contains
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) &
                      notes = notes//'; note: tabulated R-curve: the run needs INTERPHASE_RCURVE set to the '// &
                      'R-curve file and '//hook//' linked (make-user-file.sh --uexternaldb)'
+                  notes = notes//units_notes(params)
                end if
             end if
             depvar_needed = merge(NSTATV_VUMAT, NSTATV_REQUIRED, explicit)
