@@ -748,6 +748,37 @@ def test_threads_give_the_numbers_of_one():
         assert np.array_equal(r.traction, expected.traction) and np.array_equal(r.state, expected.state)
 
 
+def test_threads_with_different_tables_get_their_own_numbers(source_dir):
+    """Materials on different custom tables used from threads at once: each run gets the numbers of
+    its own table, as when run alone (the package's data lock holds a material's table from its
+    loading through the library call; without it a thread's table was replaced under another's
+    run, and two loads at once could fail with a unit already open)."""
+    tables = [source_dir / "tables" / name for name in ("paper.dat", "paper-resolution.dat", "paper-dense.dat")]
+    materials = [interphase.Material(**dict(MICRO, table=t)) for t in tables]
+    path = np.array([[0, 0], [0.002, 0.004], [-0.001, 0.01]])
+    expected = [m.run(path, increments=40) for m in materials]
+    # (the tables' numbers differ, so a run on another's table would be seen)
+    assert not np.array_equal(expected[0].traction, expected[1].traction)
+    assert not np.array_equal(expected[1].traction, expected[2].traction)
+    failures = []
+
+    def work(k):
+        try:
+            for _ in range(30):
+                r = materials[k % 3].run(path, increments=40)
+                if not np.array_equal(r.traction, expected[k % 3].traction):
+                    failures.append(f"thread {k}: the numbers of another table")
+        except Exception as error:          # (reported below, not lost in the thread)
+            failures.append(f"thread {k}: {error!r}")
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(6)]
+    for th in threads:
+        th.start()
+    for th in threads:
+        th.join()
+    assert not failures, failures[:3]
+
+
 def test_the_umats_own_options_are_refused():
     """The thin-layer mode and the host conventions are options of the UMAT only: the C entry
     points, and so the package, take separations and refuse them (STATUS_BAD_OPTION)."""

@@ -12,6 +12,7 @@ import ctypes
 import hashlib
 import os
 import pathlib
+import threading
 import time
 
 from . import _status
@@ -120,11 +121,17 @@ def text_of(buffer):
 
 
 # The custom RVE table and the tabulated R-curve are library-wide data (the loaders are not
-# thread-safe): this package loads each file when a material that names it is used, again when
+# thread-safe, hence data_lock below): this package loads each file when a material that names it is used, again when
 # another file is named or the file has changed since it was loaded (its modification time, size
 # or inode; while it is recent, its contents: a file edited and saved under the same name), and
 # not otherwise.
 _loaded = {"table": None, "rcurve": None}
+
+#: Held while a table or an R-curve is loaded, and by a material that reads one (a custom table, a
+#: tabulated R-curve) from the loading of its files through its library calls: another thread's
+#: material can then neither replace the data under it nor load a file at the same time (the
+#: loaders share Fortran units). Materials that read no file do not take it and run in parallel.
+data_lock = threading.RLock()
 
 
 #: how recent a modification makes a loaded file count as changed at its next use (ns): two
@@ -167,6 +174,11 @@ def load_rcurve(path):
 
 
 def _load_file(kind, loader, path):
+    with data_lock:
+        _load_file_locked(kind, loader, path)
+
+
+def _load_file_locked(kind, loader, path):
     detail = detail_buffer()
     # (the signature and the digest before the read: an edit during it reloads)
     signature = _signature(path)
@@ -205,6 +217,11 @@ def ensure_loaded(kind, path):
     """Load `path` as the table or R-curve unless it is the one loaded, unchanged since."""
     if path is None:
         return
+    with data_lock:
+        _ensure_loaded_locked(kind, path)
+
+
+def _ensure_loaded_locked(kind, path):
     signature = _signature(path)
     entry = _loaded[kind]
     if signature[1] is None or entry is None or entry[0] != signature:

@@ -5,11 +5,12 @@ import numbers
 import os
 import struct
 import ctypes
+import functools
 
 import numpy as np
 
 from . import _status as st
-from ._library import (lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded, loaded_path,
+from ._library import (lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded, loaded_path, data_lock,
                        _path_text)
 
 # ---- the codes of the PROPS layout (src/interphase_enums.f90, docs/abaqus.md) --------------
@@ -185,6 +186,19 @@ def _keyword(name, value, choices, status, listed):
     return choices[word]
 
 
+
+def _holding_files(method):
+    """A Material method that loads the material's table or R-curve and calls the library holds
+    the package's data lock throughout, when the material reads such a file (data_lock,
+    interphase._library): threads may then use materials with different files at once."""
+    @functools.wraps(method)
+    def holding(self, *args, **kwargs):
+        if self.table_path is None and self.rcurve_path is None:
+            return method(self, *args, **kwargs)
+        with data_lock:
+            return method(self, *args, **kwargs)
+    return holding
+
 class Material:
     """An interface material from the entries of interphase-point's `&material` (drivers/README.md).
 
@@ -205,8 +219,9 @@ class Material:
     The values are checked by the library itself (the UMAT's decoder): a value out of range raises
     InterphaseError with the library's status code and message (which PROPS, which range). The
     table and the R-curve files are loaded (and checked) when the material is made, and again
-    whenever another file was loaded since or the file changed (they are library-wide data: not
-    thread-safe).
+    whenever another file was loaded since or the file changed (they are library-wide data: a
+    material that reads one holds the package's lock from loading it through its library call, so
+    threads may use materials with different files at once).
     """
 
     def __init__(self, **entries):
@@ -424,6 +439,7 @@ class Material:
         ensure_loaded("table", self.table_path)
         ensure_loaded("rcurve", self.rcurve_path)
 
+    @_holding_files
     def update(self, separation, state=None, dt=None):
         """One update at `separation` (s_N, s_T) or (s_N, s_T1, s_T2) (mm) from `state`.
 
@@ -486,6 +502,7 @@ class Material:
             raise InterphaseError(status, text_of(detail))
         return Update(traction, tangent, new, psi.value)
 
+    @_holding_files
     def run(self, history, time=None, increments=1, tangent=False, control=None,
             traction_tolerance=DEFAULT_TRACTION_TOLERANCE, output_every=1):
         """Replay a history at one point, as interphase-point does (drivers/README.md).
@@ -606,6 +623,7 @@ class Material:
         return result
 
 
+    @_holding_files
     def tangent_check(self, result, tolerance, step=DEFAULT_TANGENT_STEP):
         """interphase-point's tangent check (`tangent_check`, drivers/README.md) over a Result of
         this material's `run` made with output_every=1: at every step after the first the update
