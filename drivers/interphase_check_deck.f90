@@ -805,8 +805,8 @@ contains
                   ! files the run must load at start-up (docs/abaqus.md, 'RVE tables')
                   if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_CUSTOM_CODE) &
                      notes = notes//'; note: PROPS('//int_to_string(PROP_TABLE)//') = 1 (custom RVE table): '// &
-                     'the run needs INTERPHASE_TABLE set to the table file and '//hook//' linked '// &
-                     '(make-user-file.sh --uexternaldb)'
+                     'the run needs INTERPHASE_TABLE set to the table file (an absolute path: a relative one '// &
+                     'opens from the analysis'' working directory) and '//hook//' linked (make-user-file.sh --uexternaldb)'
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve /= RCURVE_EQUIVALENT) &
                      notes = notes//'; note: the toughness (PROPS or R-curve file) is energy per unit crack '// &
                      'area, as measured (interphase before 2026-12 read it per unit '// &
@@ -821,7 +821,7 @@ contains
                      'built-in table (docs/theory.md, ''The contact band'')'
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) &
                      notes = notes//'; note: tabulated R-curve: the run needs INTERPHASE_RCURVE set to the '// &
-                     'R-curve file and '//hook//' linked (make-user-file.sh --uexternaldb)'
+                     'R-curve file (an absolute path) and '//hook//' linked (make-user-file.sh --uexternaldb)'
                   notes = notes//units_notes(params)
                end if
             end if
