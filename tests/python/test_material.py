@@ -748,6 +748,25 @@ def test_threads_give_the_numbers_of_one():
         assert np.array_equal(r.traction, expected.traction) and np.array_equal(r.state, expected.state)
 
 
+def test_output_that_does_not_fit_names_what_asked_for_it(monkeypatch):
+    """A run whose rows of output cannot be allocated says how many rows, how much memory and which
+    arguments asked for them, not only numpy's shape (numpy's allocation is made to fail here for
+    large arrays: a real one of this size would depend on the machine's overcommit policy)."""
+    m = interphase.Material(**SIMPLIFIED)
+    real_empty = np.empty
+
+    def empty(shape, *args, **kwargs):
+        if (shape if isinstance(shape, int) else shape[0]) > 10**6:
+            raise MemoryError("Unable to allocate (numpy's message)")
+        return real_empty(shape, *args, **kwargs)
+
+    monkeypatch.setattr(np, "empty", empty)
+    with pytest.raises(MemoryError, match=r"Material.run: 11250018 rows of output \(.* GiB\) do not fit in memory: "
+                                          r"1 segment\(s\) x increments = 10000000 / output_every = 1 rows; ask for "
+                                          r"fewer rows"):
+        m.run([[0.0, 0.0], [0.01, 0.0]], increments=10**7)
+
+
 def test_threads_with_different_tables_get_their_own_numbers(source_dir):
     """Materials on different custom tables used from threads at once: each run gets the numbers of
     its own table, as when run alone (the package's data lock holds a material's table from its

@@ -592,13 +592,21 @@ class Material:
         capacity = 1 + ((nrows - 1) * increments) // output_every + (nrows - 1) if output_every >= 1 else 1
         capacity += capacity // 8 + 16
         while True:
-            out_t = np.empty(capacity)
-            out_s = np.empty((capacity, n))
-            out_tr = np.empty((capacity, n))
-            out_state = np.empty((capacity, self.nstate))
-            out_psi = np.empty(capacity)
-            out_w = np.empty(capacity)
-            out_k = np.empty((capacity, n, n)) if tangent else None
+            try:
+                out_t = np.empty(capacity)
+                out_s = np.empty((capacity, n))
+                out_tr = np.empty((capacity, n))
+                out_state = np.empty((capacity, self.nstate))
+                out_psi = np.empty(capacity)
+                out_w = np.empty(capacity)
+                out_k = np.empty((capacity, n, n)) if tangent else None
+            except MemoryError:
+                # (numpy's message names a shape, not what asked for it)
+                per_row = 8 * (1 + 2 * n + self.nstate + 2 + (n * n if tangent else 0))
+                raise MemoryError(f"Material.run: {capacity} rows of output ({capacity * per_row / 2**30:.3g} GiB) "
+                                  f"do not fit in memory: {nrows - 1} segment(s) x increments = {increments} / "
+                                  f"output_every = {output_every} rows; ask for fewer rows (a larger output_every "
+                                  f"or fewer increments)") from None
             done = ctypes.c_size_t(0)
             detail = detail_buffer()
             status = lib.interphase_run_history(
