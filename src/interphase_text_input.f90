@@ -159,6 +159,11 @@ contains
             if (len_trim(iomsg(k:)) > 0) iomsg = adjustl(iomsg(k:))
          end if
          message = 'cannot open: '//trim(iomsg)
+         ! (a file's path written as a folder's: 'mybrick.dat/' says 'Not a directory', or names no file)
+         if (len_trim(path) > 1) then
+            if (path(len_trim(path):len_trim(path)) == '/') message = trim(message)// &
+               " (the path ends in '/', as a folder's does: a file's path does not)"
+         end if
          return
       end if
       ! the size of a regular file; a device or a pipe has none (0 or -1): read byte by byte
