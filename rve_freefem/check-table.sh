@@ -8,7 +8,8 @@
 # What the reader refuses is named with the file and its line: 'mybrick.dat:47: column 3 (C_TT)
 # is not a finite number: 12,5'; the reading stops there, as the loader's does.
 # Checks (each prints its largest residual; any failure gives exit code 1):
-#   format     the table read as the loader reads it (rve_freefem/table-reader.awk, the reader
+#   format     (a note, not a failure, where the header's n_a is not the number of rows)
+#              the table read as the loader reads it (rve_freefem/table-reader.awk, the reader
 #              of every rve_freefem tool): every header line '# key = value', a key the loader
 #              reads given once, its numbers in range (b, h, the layers' E and h positive, nu in
 #              (-1, 0.5), h = h_m + h_b), one '# columns:' line (the 23 columns of format 1, or
@@ -96,6 +97,9 @@ END {
   for (i = 1; i <= nreq; i++) if (!(req[i] in hdr)) { printf "missing header key %s\n", req[i]; fmt = 1 }
   report("format", fmt, 0, "header, columns line, " n " rows of " ncol " numbers, a = 0 .. b ascending")
   if (fmt) exit 1
+  # (information only: the row count of the provenance against the rows, e.g. rows deleted by hand)
+  if (("n_a" in hdr) && hdr["n_a"] + 0 != n)
+    printf "note: the header says n_a = %s but the table has %d rows: the provenance (command, params) no longer describes all of it\n", hdr["n_a"], n
   hm = hdr["h_m"] + 0; hb = hdr["h_b"] + 0; b = hdr["b"] + 0; Em = hdr["E_m"] + 0; nm = hdr["nu_m"] + 0
   Eb = hdr["E_b"] + 0; nb = hdr["nu_b"] + 0
   h = hm + hb

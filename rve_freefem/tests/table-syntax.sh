@@ -21,6 +21,11 @@ check() {   # check WHAT WANT(pass|fail) FILE [PATTERN]
 }
 data() { awk -v row="$1" -v col="$2" -v val="$3" '/^#/ || NF == 0 { print; next } { if (++n == row) $col = val; print }' "$table"; }
 check "the table as committed" pass "$table"
+grep -q '^note: the header says n_a' "$work/out.txt" && { echo "FAIL the committed table's n_a is noted"; fail=1; }
+# rows deleted by hand (the 10th to the 14th): the header's n_a no longer counts them, a note
+awk '/^#/ || NF == 0 { print; next } { if (++n < 10 || n > 14) print }' "$table" > "$work/rows-deleted.dat"
+check "rows deleted: n_a noted, still passes" pass "$work/rows-deleted.dat" \
+  '^note: the header says n_a = [0-9]+ but the table has [0-9]+ rows: the provenance'
 sed 's/$/\r/' "$table" > "$work/crlf.dat"
 check "CRLF line ends" pass "$work/crlf.dat" '^format +ok'
 awk '/^#/ || NF == 0 { print; next } { gsub(/e/, "d"); print }' "$table" > "$work/d.dat"
