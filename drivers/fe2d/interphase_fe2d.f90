@@ -25,7 +25,8 @@ program interphase_fe2d
    use interphase_fe2d_solver, only: fe2d_options_type, fe2d_result_type, run_analysis, &
       CSV_COLUMNS, COL_SHEAR, COL_NORMAL, COL_STEP
    use interphase_fe2d_output, only: write_curve_csv, write_curve_plot_script
-   use interphase_driver_text, only: int_to_string, real_to_string, directory_of, base_name, &
+   use interphase_real_text, only: real_text
+   use interphase_driver_text, only: int_to_string, directory_of, base_name, &
       stem_of, join_path
    implicit none
 
@@ -107,10 +108,11 @@ program interphase_fe2d
       int_to_string(result%roundoff_increments)//' increments converged only to the round-off '// &
       'of the assembly, above tolerance x the reference force (a vanishing load or an '// &
       'ill-conditioned brick; see the log)'
+   ! (7 significant digits: the CSV holds every digit)
    write (output_unit, '(a)') run%name//': peak |shear force| '// &
-      real_to_string(abs(result%rows(COL_SHEAR, peak)))//' N; final shear force '// &
-      real_to_string(result%rows(COL_SHEAR, result%nrows))//' N at normal force '// &
-      real_to_string(result%rows(COL_NORMAL, result%nrows))//' N (step '// &
+      real_text(abs(result%rows(COL_SHEAR, peak)), 7)//' N; final shear force '// &
+      real_text(result%rows(COL_SHEAR, result%nrows), 7)//' N at normal force '// &
+      real_text(result%rows(COL_NORMAL, result%nrows), 7)//' N (step '// &
       int_to_string(nint(result%rows(COL_STEP, result%nrows)))//')'
    ! the gnuplot script whenever the case plots (with --no-plot too: `gnuplot SCRIPT` draws the
    ! figure later), the PNG unless --no-plot
