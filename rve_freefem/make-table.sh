@@ -326,9 +326,14 @@ else
   # Above NMAX_EDGES the mesh of one a takes gigabytes: grow = 1, or a grow
   # close to 1, keeps the spacing at the tip size along the whole line (grow = 1 with ftip = 0.05
   # and a = 0.05 mm: 14 000 elements, > 12 GB per FreeFEM process).
+  # (where the crack lengths were given, for the message of one the mesh cannot take)
+  asrc=''
+  for k in a_over_b_list a_over_b_uniform ligament_over_b a_list_mm; do
+    get "$k" > /dev/null && asrc="${asrc:+$asrc, }$(loc "$k")$k"
+  done
   printf '%s\n' "$alist" | awk -v b="$bval" -v hm="${P[h_m]}" -v hb="${P[h_b]}" -v hmax="${P[hmax]}" -v ftip="${P[ftip]}" \
       -v htipmax="${P[htipmax]}" -v grow="${P[grow]}" -v fseg="${P[fseg]}" -v refine="$refine" -v rm="$refine_mult" \
-      -v nmax="$NMAX_EDGES" -v ncap=10000000 '
+      -v nmax="$NMAX_EDGES" -v ncap=10000000 -v asrc="$asrc" '
     function min(x, y) { return x < y ? x : y }
     function max(x, y) { return x > y ? x : y }
     # the number of intervals of rve.edp grade(p, L, s0, g, smax) (counting stops at ncap);
@@ -345,8 +350,8 @@ else
       if (a > 0 && a < b) {
         L1 = b - a; htip = min(htipmax, ftip * min(L1, a)) / refine
         if (htip < hlim) {
-          printf "make-table.sh: error: a = %s mm (b - a = %.6g mm): crack or ligament too short for this mesh (tip spacing %.3g mm < %.3g mm, FreeFEM'"'"'s limit) at refine %s; need min(a, b - a) >= %.3g mm, or a larger ftip%s\n", \
-            $1, L1, htip, hlim, refine, hlim * refine / ftip, (rm != 1 ? " or a lower --refine" : "") > "/dev/stderr"
+          printf "make-table.sh: error: a = %s mm (b - a = %.6g mm): crack or ligament too short for this mesh (tip spacing %.3g mm < %.3g mm, FreeFEM'"'"'s limit) at refine %s; need min(a, b - a) >= %.3g mm, or a larger ftip%s (the crack lengths: %s)\n", \
+            $1, L1, htip, hlim, refine, hlim * refine / ftip, (rm != 1 ? " or a lower --refine" : ""), asrc > "/dev/stderr"
           exit 1
         }
         ni = grade(L1, htip, gr, min(hfar, fseg * L1 / refine)); sL = last
