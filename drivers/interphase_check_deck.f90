@@ -36,7 +36,7 @@ program interphase_check_deck
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
       RCURVE_EQUIVALENT, RCURVE_CONSTANT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
-      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, SV_DAMAGE, SV_SLIP_1, &
+      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, OPT_CONTACT_BAND, OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, SV_DAMAGE, SV_SLIP_1, &
       SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
       SV_FAILED
    use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
@@ -819,6 +819,15 @@ contains
                      notes = notes//'; note: contact band chi = '//real_to_string(params%contact_band)// &
                      ' is below 0.55, the width that keeps the stored energy convex up to D = 1 - 1e-7 on the '// &
                      'built-in table (docs/theory.md, ''The contact band'')'
+                  if (params%model == MODEL_MICROMECHANICAL .and. .not. (params%contact_band > 0.0_dp)) then
+                     ! (the paper's two-state law, the default: what a structural run should know)
+                     call constants_count(params%model, params%damage_law, nm, nconstants)
+                     notes = notes//'; note: contact band 0, the paper''s two-state law: the shear traction '// &
+                        'jumps where a crack closes under shear, and a cycle through s_N = 0 returns work that no '// &
+                        'friction pays for (docs/theory.md, ''Open and closed at s_N = 0''): the contact band '// &
+                        'PROPS('//int_to_string(nconstants + OPT_CONTACT_BAND)//') = 0.6 makes the traction '// &
+                        'continuous and the law hyperelastic at fixed damage'
+                  end if
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) &
                      notes = notes//'; note: tabulated R-curve: the run needs INTERPHASE_RCURVE set to the '// &
                      'R-curve file (an absolute path) and '//hook//' linked (make-user-file.sh --uexternaldb)'

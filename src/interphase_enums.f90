@@ -48,7 +48,8 @@ module interphase_enums
    !> PROPS(nb + OPT_STIFFNESS) value: DDSDDE is the consistent tangent's symmetric part.
    integer, parameter, public :: STIFFNESS_SYMMETRIC = 1
    !> PROPS(nb + OPT_STIFFNESS) value: DDSDDE is the tangent at fixed damage, without the
-   !> friction's coupling of the shear traction to s_N: symmetric and positive semi-definite
+   !> friction's coupling of the shear traction to s_N: symmetric, and positive semi-definite
+   !> (with the contact band only where chi >= chi_min(D), docs/theory.md 'The contact band')
    !> (for hosts that assemble only a symmetric stiffness; Newton then converges linearly).
    integer, parameter, public :: STIFFNESS_FIXED_DAMAGE = 2
    !> PROPS(nb + OPT_HOST) value, the default: Abaqus's conventions (SSE and SPD are the values

@@ -75,7 +75,8 @@ module interphase_layout
    integer, parameter, public :: OPT_VISCOSITY = 3
    !> Option offset: which stiffness DDSDDE is (STIFFNESS_*): the consistent tangent (0, the
    !> default), its symmetric part (1), or the tangent at fixed damage without the friction's
-   !> normal coupling (2, symmetric and positive semi-definite). The traction is the same.
+   !> normal coupling (2, symmetric, and positive semi-definite: with the contact band where chi >=
+   !> chi_min(D), docs/theory.md). The traction is the same.
    integer, parameter, public :: OPT_STIFFNESS = 4
    !> Option offset: the thickness t (mm) of a thin continuum joint layer (the UMAT's layer
    !> mode, docs/abaqus.md 'Thin continuum layers'): the UMAT reads STRAN and DSTRAN as strains
