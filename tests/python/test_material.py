@@ -798,6 +798,30 @@ def test_threads_with_different_tables_get_their_own_numbers(source_dir):
     assert not failures, failures[:3]
 
 
+def test_every_library_call_of_a_material_with_a_table_holds_the_data_lock(source_dir, monkeypatch):
+    """A material that reads a custom table calls the library only under the package's data lock,
+    the check of its values at construction (_check_props, which reads the loaded table at D = 0)
+    included: another thread's load would otherwise replace the table under that call."""
+    from interphase import _library, _material
+    unlocked = []
+
+    class Checked:
+        def __getattr__(self, name):
+            function = getattr(_library.lib, name)
+
+            def call(*args):
+                if not _library.data_lock._is_owned():
+                    unlocked.append(name)
+                return function(*args)
+            return call
+
+    monkeypatch.setattr(_material, "lib", Checked())
+    m = interphase.Material(**dict(MICRO, table=source_dir / "tables" / "paper.dat"))
+    m.run(np.array([[0, 0], [0.002, 0.004]]), increments=4)
+    interphase.Material.from_props(m.props, table=source_dir / "tables" / "paper.dat")
+    assert not unlocked, unlocked
+
+
 def test_the_umats_own_options_are_refused():
     """The thin-layer mode and the host conventions are options of the UMAT only: the C entry
     points, and so the package, take separations and refuse them (STATUS_BAD_OPTION)."""

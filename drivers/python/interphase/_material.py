@@ -344,6 +344,7 @@ class Material:
         self.nstate = NSTATE_VISCOUS if self.viscous else NSTATE
         self.model, self.damage_law = model, law
 
+    @_holding_files
     def _check_props(self):
         """The library's check of the values (its decoder, from_props), before any file is loaded:
         an update of a virgin point without loading the table or the R-curve. What only the loaded
