@@ -254,6 +254,11 @@ contains
       character(len=:), allocatable :: path
       type(text_file_type) :: including(MAX_INCLUDE_DEPTH)
       type(path_type) :: including_path(MAX_INCLUDE_DEPTH)
+      !> a keyword line of the including file read ahead (after an *INCLUDE line that ends in a
+      !> comma), read after the included file: its text, number and length, and whether there is one
+      character(len=LINE_LEN) :: including_held(MAX_INCLUDE_DEPTH)
+      integer :: including_held_lineno(MAX_INCLUDE_DEPTH), including_held_length(MAX_INCLUDE_DEPTH)
+      logical :: including_have_held(MAX_INCLUDE_DEPTH)
       integer :: depth
       character(len=LINE_LEN) :: line
       !> a line read ahead (after a keyword line that ends in a comma) and its number
@@ -328,6 +333,12 @@ contains
                call close_text_file(file)
                file = including(depth)
                path = including_path(depth)%text
+               have_held = including_have_held(depth)
+               if (have_held) then
+                  held = including_held(depth)
+                  held_lineno = including_held_lineno(depth)
+                  held_length = including_held_length(depth)
+               end if
                depth = depth - 1
                cycle
             end if
@@ -454,6 +465,14 @@ contains
                      depth = depth + 1
                      including_path(depth)%text = path
                      path = include_path
+                     ! (a keyword line read ahead of the included file's lines comes after them)
+                     including_have_held(depth) = have_held
+                     if (have_held) then
+                        including_held(depth) = held
+                        including_held_lineno(depth) = held_lineno
+                        including_held_length(depth) = held_length
+                        have_held = .false.
+                     end if
                   else
                      file = including(depth + 1)
                      call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//', INPUT='// &
