@@ -17,8 +17,8 @@
 !> Abaqus/Explicit, and no *DEPVAR, DELETE= among interphase's slots (which hold 0 at every intact
 !> point: Abaqus would delete it). It reads keywords (a keyword line that ends in a comma
 !> continued on the next; keywords, parameters and values abbreviated as Abaqus allows) and their
-!> data lines only, those of *INCLUDE files where they stand (a relative INPUT= from the folder of
-!> the file that includes it; an *INCLUDE that cannot be read is a failed check; no parts/assemblies
+!> data lines only, those of *INCLUDE files where they stand (a relative INPUT= from the deck's
+!> folder, the job's working directory, in nested files too; an *INCLUDE that cannot be read is a failed check; no parts/assemblies
 !> resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) as
 !> Abaqus reads them: an empty data field is 0 (not skipped), a label in double quotes is taken
 !> as written; what Abaqus refuses in the lines it reads is a failed check (a line over 256
@@ -235,7 +235,7 @@ contains
          '  of a *USER MATERIAL: the thin-layer mode): RESPONSE, THICKNESS,', &
          '  *USER MATERIAL constants decoded as interphase PROPS, *DEPVAR (and its DELETE=), UNSYMM,', &
          '  *DENSITY (Explicit).', &
-         '  *INCLUDE files are read where they stand (a relative INPUT= from the including file''s folder).', &
+         '  *INCLUDE files are read where they stand (a relative INPUT= from the deck''s folder, as the job''s).', &
          '  Exit status: 0 all checks pass, 1 a check failed, 2 a file cannot be read.', &
          '  Documented in drivers/README.md and docs/abaqus.md.'
    end subroutine print_usage
@@ -443,10 +443,10 @@ contains
             select case (trim(keyword))
             case ('INCLUDE')
                ! its lines are read where it stands, as Abaqus reads them; a relative INPUT= from
-               ! the folder of the file that includes it (where Abaqus finds it when the job runs
-               ! in the deck's folder)
+               ! the deck's folder, in an included file too (Abaqus takes it from the directory the
+               ! job runs in, not from the including file's: the job runs in the deck's folder)
                include_input = parameter_value(parameter_names, parameter_values, 'INPUT')
-               include_path = include_file(path, include_input)
+               include_path = include_file(deck, include_input)
                if (len(include_path) == 0) then
                   call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' without '// &
                      'INPUT=: Abaqus requires the file to include', nfail)
@@ -1042,9 +1042,10 @@ contains
    end subroutine check_thickness
 
    !> The file an *INCLUDE's INPUT= names ('' when none): its double quotes dropped, and a relative
-   !> path taken from the folder of `from`, the file that includes it.
+   !> path taken from the folder of `from`, the deck (the job's working directory, where Abaqus
+   !> resolves every relative INPUT=, an included file's too).
    function include_file(from, input) result(name)
-      character(len=*), intent(in) :: from          !! the file with the *INCLUDE line
+      character(len=*), intent(in) :: from          !! the deck
       character(len=*), intent(in) :: input         !! INPUT= as written
       character(len=:), allocatable :: name
       integer :: slash
