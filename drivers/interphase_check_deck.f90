@@ -420,8 +420,8 @@ contains
                   do k = 1, size(materials)
                      if (materials(k)%name == label) then
                         call record_failure(path//':'//int_to_string(lineno)//': *MATERIAL, NAME='// &
-                           trim(materials(k)%name)//' defined a second time (first at line '// &
-                           int_to_string(materials(k)%line)//')', nfail)
+                           trim(materials(k)%name)//' defined a second time (first at '// &
+                           line_in(path, materials(k)%file, materials(k)%line)//')', nfail)
                      end if
                   end do
                end if
