@@ -283,6 +283,7 @@ contains
       integer :: nfail_line                    !! nfail before the line (its failures are attributed)
       character(len=:), allocatable :: label
       logical :: explicit, opened
+      logical :: already_open          !! an *INCLUDE's file open already (in a file that includes it)
       !> the first step procedure of each solver (line and keyword): one analysis runs one solver
       integer :: explicit_line, standard_line
       logical, allocatable :: keep(:)          !! the sections interphase serves
@@ -447,10 +448,18 @@ contains
                ! job runs in, not from the including file's: the job runs in the deck's folder)
                include_input = parameter_value(parameter_names, parameter_values, 'INPUT')
                include_path = include_file(deck, include_input)
+               ! (a file open already, in the deck or a file that includes this one, is a loop of
+               ! *INCLUDEs whatever its name's spelling, ./deck.inp for deck.inp: where the
+               ! run-time library tells, as gfortran's does, rather than 'cannot open: already opened')
+               already_open = .false.
+               ios = 0
+               if (len(include_path) > 0) inquire (file=include_path, opened=already_open, iostat=ios)
+               if (ios /= 0) already_open = .false.
                if (len(include_path) == 0) then
                   call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' without '// &
                      'INPUT=: Abaqus requires the file to include', nfail)
-               else if (include_path == path .or. any([(including_path(k)%text == include_path, k = 1, depth)])) then
+               else if (include_path == path .or. already_open .or. &
+                  any([(including_path(k)%text == include_path, k = 1, depth)])) then
                   call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//', INPUT='// &
                      include_input//': the file includes itself (directly or through the files it includes): not read', &
                      nfail)
