@@ -18,9 +18,10 @@
 !> point: Abaqus would delete it). It reads keywords (a keyword line that ends in a comma
 !> continued on the next; keywords, parameters and values abbreviated as Abaqus allows) and their
 !> data lines only, those of *INCLUDE files where they stand (a relative INPUT= from the deck's
-!> folder, the job's working directory, in nested files too; an *INCLUDE that cannot be read is a failed check; no parts/assemblies
-!> resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) as
-!> Abaqus reads them: an empty data field is 0 (not skipped), a label in double quotes is taken
+!> folder, the job's working directory, in nested files too; an *INCLUDE that cannot be read is
+!> a failed check; no parts/assemblies resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is
+!> not interphase's and is skipped) as Abaqus reads them: an empty data field is 0 (not skipped),
+!> a label in double quotes is taken
 !> as written; what Abaqus refuses in the lines it reads is a failed check (a line over 256
 !> characters, more than 8 constants on a *USER MATERIAL data line, a parameter *USER MATERIAL
 !> does not have, *MATERIAL without NAME=, *COHESIVE SECTION without ELSET= or MATERIAL=), and
