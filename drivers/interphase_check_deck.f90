@@ -556,11 +556,13 @@ contains
             case ('STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION')
                current = 0
                ! a solid section is checked when its material turns out to have a *USER MATERIAL
+               ! (with the failed checks of its line so far: it is then not said to be ok)
                if (trim(keyword) == 'SOLIDSECTION') then
                   if (len(label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL'))) > 0) &
                      sections = [sections, section_type(line=lineno, file=path, solid=.true., &
                         elset=label_value(parameter_value(parameter_names, parameter_values, 'ELSET')), &
-                        material=label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL')))]
+                        material=label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL')), &
+                        refused=nfail - nfail_line)]
                end if
             end select
             call attribute_failures(nfail - nfail_line, keyword, current, materials, sections)
