@@ -10,6 +10,7 @@ import re
 import subprocess
 import sys
 import threading
+import time
 import warnings
 
 import numpy as np
@@ -820,6 +821,46 @@ def test_every_library_call_of_a_material_with_a_table_holds_the_data_lock(sourc
     m.run(np.array([[0, 0], [0.002, 0.004]]), increments=4)
     interphase.Material.from_props(m.props, table=source_dir / "tables" / "paper.dat")
     assert not unlocked, unlocked
+
+
+def test_a_child_forked_while_another_thread_holds_the_data_lock_can_use_a_table(source_dir):
+    """A process forked while another thread holds the data lock (loading a table, or running a
+    material with one) starts with a free lock: its materials with tables run (the inherited lock,
+    held by a thread the child does not have, would make it wait for ever)."""
+    from interphase import _library
+    holding, release = threading.Event(), threading.Event()
+
+    def hold():
+        with _library.data_lock:
+            holding.set()
+            release.wait(60)
+
+    holder = threading.Thread(target=hold)
+    holder.start()
+    try:
+        assert holding.wait(10)
+        pid = os.fork()
+        if pid == 0:                                    # the child: a material with a table, then out
+            code = 1
+            try:
+                m = interphase.Material(**dict(MICRO, table=source_dir / "tables" / "paper.dat"))
+                code = 0 if m.run([[0, 0], [0.002, 0.004]], increments=4).traction.shape == (5, 2) else 1
+            finally:
+                os._exit(code)
+        deadline = time.monotonic() + 60
+        while True:
+            done, status = os.waitpid(pid, os.WNOHANG)
+            if done:
+                break
+            if time.monotonic() > deadline:
+                os.kill(pid, 9)
+                os.waitpid(pid, 0)
+                pytest.fail("the forked child waited for the data lock for 60 s")
+            time.sleep(0.05)
+        assert os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0, status
+    finally:
+        release.set()
+        holder.join()
 
 
 def test_the_umats_own_options_are_refused():

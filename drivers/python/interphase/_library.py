@@ -121,10 +121,10 @@ def text_of(buffer):
 
 
 # The custom RVE table and the tabulated R-curve are library-wide data (the loaders are not
-# thread-safe, hence data_lock below): this package loads each file when a material that names it is used, again when
-# another file is named or the file has changed since it was loaded (its modification time, size
-# or inode; while it is recent, its contents: a file edited and saved under the same name), and
-# not otherwise.
+# thread-safe, hence data_lock below): this package loads each file when a material that names it
+# is used, again when another file is named or the file has changed since it was loaded (its
+# modification time, size or inode; while it is recent, its contents: a file edited and saved
+# under the same name), and not otherwise.
 _loaded = {"table": None, "rcurve": None}
 
 #: Held while a table or an R-curve is loaded, and by a material that reads one (a custom table, a
@@ -132,6 +132,17 @@ _loaded = {"table": None, "rcurve": None}
 #: material can then neither replace the data under it nor load a file at the same time (the
 #: loaders share Fortran units). Materials that read no file do not take it and run in parallel.
 data_lock = threading.RLock()
+
+
+def _new_data_lock():
+    # (in a child process forked while another thread held the lock, the lock would stay held for
+    # ever: the child starts with a free one; a load the fork interrupted left _loaded[kind] None,
+    # so the child loads that file again before using it)
+    global data_lock
+    data_lock = threading.RLock()
+
+
+os.register_at_fork(after_in_child=_new_data_lock)
 
 
 #: how recent a modification makes a loaded file count as changed at its next use (ns): two

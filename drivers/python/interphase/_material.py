@@ -10,7 +10,8 @@ import functools
 import numpy as np
 
 from . import _status as st
-from ._library import (lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded, loaded_path, data_lock,
+from . import _library
+from ._library import (lib, InterphaseError, detail_buffer, text_of, DETAIL_LEN, ensure_loaded, loaded_path,
                        _path_text)
 
 # ---- the codes of the PROPS layout (src/interphase_enums.f90, docs/abaqus.md) --------------
@@ -186,18 +187,19 @@ def _keyword(name, value, choices, status, listed):
     return choices[word]
 
 
-
 def _holding_files(method):
     """A Material method that loads the material's table or R-curve and calls the library holds
     the package's data lock throughout, when the material reads such a file (data_lock,
-    interphase._library): threads may then use materials with different files at once."""
+    interphase._library, looked up at each call: a forked child has a new one): threads may then
+    use materials with different files at once."""
     @functools.wraps(method)
     def holding(self, *args, **kwargs):
         if self.table_path is None and self.rcurve_path is None:
             return method(self, *args, **kwargs)
-        with data_lock:
+        with _library.data_lock:
             return method(self, *args, **kwargs)
     return holding
+
 
 class Material:
     """An interface material from the entries of interphase-point's `&material` (drivers/README.md).
