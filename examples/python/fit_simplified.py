@@ -29,6 +29,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+from example_output import output_dir
 import interphase
 
 HERE = pathlib.Path(__file__).resolve().parent
@@ -89,14 +90,7 @@ def main():
     parser.add_argument("--output-dir", default=".", help="where the figure goes (default: .)")
     parser.add_argument("--calibrate", help="the interphase-calibrate executable")
     args = parser.parse_args()
-    out = pathlib.Path(args.output_dir)
-    # (a file of that name, a path through one, no permission: said, not a traceback)
-    if out.exists() and not out.is_dir():
-        parser.error(f"--output-dir {out}: not a directory")
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as error:
-        parser.error(f"--output-dir {out}: cannot make the directory: {error.strerror}")
+    out = output_dir(parser, args.output_dir)
 
     micro = interphase.Material(**MICRO)
     # undamaged stiffnesses: the tangent at the origin

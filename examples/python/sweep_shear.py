@@ -15,13 +15,13 @@ residual shear traction after full damage is the Coulomb value mu p.
 """
 
 import argparse
-import pathlib
 
 import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+from example_output import output_dir
 import interphase
 
 # the paper's Table 1 data; the simplified model with the calibrated s0 of interphase-calibrate
@@ -42,14 +42,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--output-dir", default=".", help="where the figure goes (default: .)")
     args = parser.parse_args()
-    out = pathlib.Path(args.output_dir)
-    # (a file of that name, a path through one, no permission: said, not a traceback)
-    if out.exists() and not out.is_dir():
-        parser.error(f"--output-dir {out}: not a directory")
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as error:
-        parser.error(f"--output-dir {out}: cannot make the directory: {error.strerror}")
+    out = output_dir(parser, args.output_dir)
 
     fig, axes = plt.subplots(2, 2, figsize=(12, 9))
     print(f"{'model':16s} {'mu':>5s} {'p (MPa)':>8s} {'peak (MPa)':>11s} {'residual':>9s} {'mu p':>7s}")
