@@ -633,7 +633,8 @@ contains
             end do
          end if
          ! ok: the separation and the table at D (and D_n), and the return mapping's -T^f > 0
-         ! (respond's check; a flag of its own so that pass 2 has no logical arrays to vectorise)
+         ! (respond's check): one real flag a point, 1 where any pass failed it (max), so that no
+         ! pass has logical arrays to vectorise and this one no branches
          do i = 1, m
             k = c0 + i - 1
             ok(k) = fail_w(i) < 0.5_dp
