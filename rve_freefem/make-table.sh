@@ -27,7 +27,10 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 prog="make-table.sh"
 die() { local code=$1; shift; echo "$prog: error: $*" >&2; exit "$code"; }
 note() { echo "$prog: note: $*" >&2; }
-warn() { echo "$prog: warning: $*" >&2; }
+# a warning goes to standard error and into the table's header (# warning = ...), so that a table
+# made from implausible parameters carries it
+warnings=()
+warn() { echo "$prog: warning: $*" >&2; warnings+=("$*"); }
 
 # the command as given, for the table's '# command =' line: each argument as the shell reads it
 # back (quoted when it has blanks or characters the shell would take otherwise)
@@ -468,6 +471,7 @@ set -- $chat
   echo "# params_file = $params"
   echo "# params_sha256 = $params_sha"
   printf '%s\n' "$parsed" | awk -F'\t' '{ printf "# params_line = %s = %s\n", $1, $2 }'
+  for w in "${warnings[@]}"; do echo "# warning = $w"; done
   echo "# script = rve_freefem/rve.edp"
   echo "# script_sha256 = $sha"
   echo "# freefem_version = $ffver (Debian package freefem++ $debver)"

@@ -107,7 +107,7 @@ BEGIN {
   nread = split("b h a_Tf_limit E_m nu_m E_b nu_b h_m h_b Chat_TT Chat_NN format interpolation_variable", readkeys, " ")
   for (i = 1; i <= nread; i++) isread[readkeys[i]] = 1
   split("b h h_m h_b E_m E_b Chat_TT Chat_NN", poskeys, " "); for (i in poskeys) positive[poskeys[i]] = 1
-  np = split("title command params_file params_sha256 params_line script script_sha256 freefem_version date units model crack_jump element mesh hmax ftip htipmax grow fseg huni refine smallest_tip_spacing unknowns_min unknowns_max n_a a0_row crack_means I_fNT wall_time_s", pk, " ")
+  np = split("title command params_file params_sha256 params_line script script_sha256 freefem_version date units model crack_jump element mesh hmax ftip htipmax grow fseg huni refine smallest_tip_spacing unknowns_min unknowns_max n_a a0_row crack_means I_fNT wall_time_s warning", pk, " ")
   for (i = 1; i <= np; i++) provenance[pk[i]] = 1
   if (dest == "") { print "table-reader.awk: dest (the canonical table to write) not given"; exit 2 }
   printf "" > dest

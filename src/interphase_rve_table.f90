@@ -634,11 +634,11 @@ contains
       character(len=:), allocatable :: near
       character(len=*), parameter :: READ_KEYS(13) = [character(len=22) :: 'b', 'h', 'a_Tf_limit', 'E_m', &
          'nu_m', 'E_b', 'nu_b', 'h_m', 'h_b', 'Chat_TT', 'Chat_NN', 'format', 'interpolation_variable']
-      character(len=*), parameter :: PROVENANCE_KEYS(29) = [character(len=21) :: 'title', 'command', &
+      character(len=*), parameter :: PROVENANCE_KEYS(30) = [character(len=21) :: 'title', 'command', &
          'params_file', 'params_sha256', 'params_line', 'script', 'script_sha256', 'freefem_version', 'date', &
          'units', 'model', 'crack_jump', 'element', 'mesh', 'hmax', 'ftip', 'htipmax', 'grow', 'fseg', 'huni', &
          'refine', 'smallest_tip_spacing', 'unknowns_min', 'unknowns_max', 'n_a', 'a0_row', 'crack_means', &
-         'I_fNT', 'wall_time_s']
+         'I_fNT', 'wall_time_s', 'warning']
       integer :: k
       near = ''
       if (len_trim(key) == 0) return
