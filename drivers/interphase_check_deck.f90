@@ -72,10 +72,16 @@ program interphase_check_deck
    !> itself is refused by name; a loop the names do not show would otherwise be read without end).
    integer, parameter :: MAX_INCLUDE_DEPTH = 16
 
-   !> A path, in an array of them.
-   type :: path_type
-      character(len=:), allocatable :: text
-   end type path_type
+   !> A file that includes the one being read, as it was left at its *INCLUDE line: the file, its
+   !> path, and the keyword line it had read ahead (after an *INCLUDE line that ends in a comma),
+   !> which is read after the included file: its text, number and length.
+   type :: include_frame_type
+      type(text_file_type) :: file
+      character(len=:), allocatable :: path
+      logical :: have_held = .false.
+      character(len=LINE_LEN) :: held = ''
+      integer :: held_lineno = 0, held_length = 0
+   end type include_frame_type
 
    !> The keywords this check reads (upper case, blanks removed, as Abaqus compares them). Abaqus
    !> takes a keyword, a parameter and most parameter values abbreviated to any start that no
@@ -253,13 +259,7 @@ contains
       !> the file being read (the deck, or an *INCLUDE file in it: messages name it) and the files
       !> that include it, outermost first, with their paths
       character(len=:), allocatable :: path
-      type(text_file_type) :: including(MAX_INCLUDE_DEPTH)
-      type(path_type) :: including_path(MAX_INCLUDE_DEPTH)
-      !> a keyword line of the including file read ahead (after an *INCLUDE line that ends in a
-      !> comma), read after the included file: its text, number and length, and whether there is one
-      character(len=LINE_LEN) :: including_held(MAX_INCLUDE_DEPTH)
-      integer :: including_held_lineno(MAX_INCLUDE_DEPTH), including_held_length(MAX_INCLUDE_DEPTH)
-      logical :: including_have_held(MAX_INCLUDE_DEPTH)
+      type(include_frame_type) :: including(MAX_INCLUDE_DEPTH)
       integer :: depth
       character(len=LINE_LEN) :: line
       !> a line read ahead (after a keyword line that ends in a comma) and its number
@@ -333,13 +333,13 @@ contains
                ! the end of an *INCLUDE file: back to the file that includes it, after its
                ! *INCLUDE line
                call close_text_file(file)
-               file = including(depth)
-               path = including_path(depth)%text
-               have_held = including_have_held(depth)
+               file = including(depth)%file
+               path = including(depth)%path
+               have_held = including(depth)%have_held
                if (have_held) then
-                  held = including_held(depth)
-                  held_lineno = including_held_lineno(depth)
-                  held_length = including_held_length(depth)
+                  held = including(depth)%held
+                  held_lineno = including(depth)%held_lineno
+                  held_length = including(depth)%held_length
                end if
                depth = depth - 1
                cycle
@@ -460,7 +460,7 @@ contains
                   call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//' without '// &
                      'INPUT=: Abaqus requires the file to include', nfail)
                else if (include_path == path .or. already_open .or. &
-                  any([(including_path(k)%text == include_path, k = 1, depth)])) then
+                  any([(including(k)%path == include_path, k = 1, depth)])) then
                   call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//', INPUT='// &
                      include_input//': the file includes itself (directly or through the files it includes): not read', &
                      nfail)
@@ -469,22 +469,22 @@ contains
                      include_input//': *INCLUDE files nested more than '//int_to_string(MAX_INCLUDE_DEPTH)// &
                      ' deep: not read', nfail)
                else
-                  including(depth + 1) = file
+                  including(depth + 1)%file = file
                   call open_text_file(include_path, file, opened, message)
                   if (opened) then
                      depth = depth + 1
-                     including_path(depth)%text = path
+                     including(depth)%path = path
                      path = include_path
                      ! (a keyword line read ahead of the included file's lines comes after them)
-                     including_have_held(depth) = have_held
+                     including(depth)%have_held = have_held
                      if (have_held) then
-                        including_held(depth) = held
-                        including_held_lineno(depth) = held_lineno
-                        including_held_length(depth) = held_length
+                        including(depth)%held = held
+                        including(depth)%held_lineno = held_lineno
+                        including(depth)%held_length = held_length
                         have_held = .false.
                      end if
                   else
-                     file = including(depth + 1)
+                     file = including(depth + 1)%file
                      call record_failure(path//':'//int_to_string(lineno)//': *'//trim(keyword_text)//', INPUT='// &
                         include_input//': cannot read '//tried_path(include_path)//': '//trim(message)// &
                         ' (Abaqus would stop here too)', nfail)

@@ -29,6 +29,8 @@ program interphase_point
    implicit none
 
    character(len=:), allocatable :: case_path, output_dir, csv_path, part_path, message, summary
+   !> the table and R-curve files the run read ('' when none)
+   character(len=:), allocatable :: files
    type(run_arguments_type) :: cli
    type(replay_report_type) :: report
    type(case_type) :: run
@@ -71,8 +73,8 @@ program interphase_point
    summary = material_summary(run%props)
    write (output_unit, '(a)') run%name//': '//summary
    ! (the table and R-curve files the run read, which PROPS cannot name)
-   if (len(data_files_summary(run%table_path, run%rcurve_path)) > 0) write (output_unit, '(a)') &
-      run%name//': '//data_files_summary(run%table_path, run%rcurve_path)
+   files = data_files_summary(run%table_path, run%rcurve_path)
+   if (len(files) > 0) write (output_unit, '(a)') run%name//': '//files
 
    ! ---- replay into the CSV ----
    csv_path = join_path(output_dir, run%output)

@@ -31,6 +31,8 @@ program interphase_fe2d
    implicit none
 
    character(len=:), allocatable :: case_path, output_dir, csv_path, log_path, message
+   !> the table and R-curve files the run read ('' when none)
+   character(len=:), allocatable :: files
    type(run_arguments_type) :: cli
    type(fe2d_case_type) :: run
    type(fe2d_mesh_type) :: mesh
@@ -63,8 +65,9 @@ program interphase_fe2d
    call build_mesh(run, mesh)
    ! the joint's material, as interphase-point names it (model, table, law, key parameters)
    write (output_unit, '(a)') run%name//': joint: '//material_summary(run%props)
-   if (len(data_files_summary(run%table_path, run%rcurve_path)) > 0) write (output_unit, '(a)') &
-      run%name//': joint: '//data_files_summary(run%table_path, run%rcurve_path)
+   ! (the table and R-curve files the run read, which PROPS cannot name; in the log too)
+   files = data_files_summary(run%table_path, run%rcurve_path)
+   if (len(files) > 0) write (output_unit, '(a)') run%name//': joint: '//files
 
    csv_path = join_path(output_dir, run%output)
    ! (before the run: an output that is a device would be replaced by the rename at its end)
@@ -85,8 +88,7 @@ program interphase_fe2d
       int_to_string(run%ny)//' elements per brick, '//int_to_string(mesh%nfree)// &
       ' free equations, half bandwidth '//int_to_string(mesh%bandwidth)
    write (options%log_unit, '(a)') 'joint: '//material_summary(run%props)
-   if (len(data_files_summary(run%table_path, run%rcurve_path)) > 0) write (options%log_unit, '(a)') &
-      'joint: '//data_files_summary(run%table_path, run%rcurve_path)
+   if (len(files) > 0) write (options%log_unit, '(a)') 'joint: '//files
    write (options%log_unit, '(a)') 'residual = ||R_free|| / max(||F_ext||, |shear reaction|); '// &
       'correction = ||du|| / ||u_free||'
    call run_analysis(run, mesh, options, result)

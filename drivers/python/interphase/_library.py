@@ -186,21 +186,17 @@ def load_rcurve(path):
 
 def _load_file(kind, loader, path):
     with data_lock:
-        _load_file_locked(kind, loader, path)
-
-
-def _load_file_locked(kind, loader, path):
-    detail = detail_buffer()
-    # (the signature and the digest before the read: an edit during it reloads)
-    signature = _signature(path)
-    digest = _racy_digest(path, signature)
-    _loaded[kind] = None                                          # (after a failed load the next use tries again)
-    status = loader(os.fsencode(path), detail, DETAIL_LEN)      # (the bytes of the name, any encoding)
-    if status != _status.STATUS_OK:
-        error = InterphaseError(status, text_of(detail))
-        error.file_kind = kind          # (which file: read_case names its entry)
-        raise error
-    _loaded[kind] = (signature, digest)
+        detail = detail_buffer()
+        # (the signature and the digest before the read: an edit during it reloads)
+        signature = _signature(path)
+        digest = _racy_digest(path, signature)
+        _loaded[kind] = None                                      # (after a failed load the next use tries again)
+        status = loader(os.fsencode(path), detail, DETAIL_LEN)  # (the bytes of the name, any encoding)
+        if status != _status.STATUS_OK:
+            error = InterphaseError(status, text_of(detail))
+            error.file_kind = kind          # (which file: read_case names its entry)
+            raise error
+        _loaded[kind] = (signature, digest)
 
 
 def _racy_digest(path, signature):
@@ -229,18 +225,14 @@ def ensure_loaded(kind, path):
     if path is None:
         return
     with data_lock:
-        _ensure_loaded_locked(kind, path)
-
-
-def _ensure_loaded_locked(kind, path):
-    signature = _signature(path)
-    entry = _loaded[kind]
-    if signature[1] is None or entry is None or entry[0] != signature:
-        (load_table if kind == "table" else load_rcurve)(path)
-    elif entry[1] is not None:
-        # loaded when it had just been modified: its contents decide while it is that recent
-        digest = _racy_digest(path, signature)
-        if digest is None:
-            _loaded[kind] = (signature, None)
-        elif digest != entry[1]:
+        signature = _signature(path)
+        entry = _loaded[kind]
+        if signature[1] is None or entry is None or entry[0] != signature:
             (load_table if kind == "table" else load_rcurve)(path)
+        elif entry[1] is not None:
+            # loaded when it had just been modified: its contents decide while it is that recent
+            digest = _racy_digest(path, signature)
+            if digest is None:
+                _loaded[kind] = (signature, None)
+            elif digest != entry[1]:
+                (load_table if kind == "table" else load_rcurve)(path)
