@@ -24,9 +24,9 @@
 #                    mid-joint) at every increment, for the single-point replay
 #
 # Bricks 200 x 50 mm, E = 16000 MPa, nu = 0.15; P = 0.5 MPa precompression on the top face (step 1),
-# then the top face's horizontal displacement follows the history (steps 2, 3, ...: one a history
-# segment) while it is free
-# vertically; the bottom face is fixed. The joint material's constants are interphase's PROPS
+# then the top face's horizontal displacement follows the history (steps 2, 3, ...: one for each
+# run of segments in one direction and of one duration, a new step at each reversal) while it is
+# free vertically; the bottom face is fixed. The joint material's constants are interphase's PROPS
 # (docs/abaqus.md) with the options: stiffness 2 (CalculiX assembles a symmetric stiffness), layer
 # thickness t, normal axis 2, host 1 (CalculiX: SSE and SPD are not kept).
 set -euo pipefail
@@ -217,20 +217,42 @@ BEGIN {
    print "*DLOAD"
    printf "TOPEL, P%d, %s\n", (dim == 3) ? 5 : 3, pressure
    outputs()
-   # steps 2, 3, ...: the shear history, one step per segment, so that every increment sequence
-   # ends on the break points of the history (the reversals of a cyclic history) as interphase-fe2d
-   # does; the amplitude runs in total time (the precompression step takes 0 to 1)
-   for (h = 2; h <= nh; h++) {
+   # steps 2, 3, ...: the shear history, one step per run of segments that load in the same
+   # direction over the same duration (the fine and the coarse segment of a monotonic history:
+   # one step), a new step at every reversal, so that every increment sequence ends on the
+   # reversals as interphase-fe2d does, with the same increment (the duration of a segment / N)
+   # throughout. Not one step per segment: ccx solves the first iteration of the first increment
+   # of a step linearly (nonlingeo.c, "first iteration in first increment: elastic tangent"), and
+   # on a crack near D = 1 under precompression that iteration opened every joint point by about
+   # 8 um, whatever the increment, so that cut-backs could not help (docs/calculix.md, When ccx
+   # cuts back at the start of a step). The amplitude runs in total time (the precompression step
+   # takes 0 to 1).
+   h = 2
+   while (h <= nh) {
       seg = ht[h] - ht[h - 1]
+      dir = (hu[h] > hu[h - 1]) - (hu[h] < hu[h - 1])
+      last = h
+      while (last < nh && dir != 0) {
+         next_seg = ht[last + 1] - ht[last]
+         next_dir = (hu[last + 1] > hu[last]) - (hu[last + 1] < hu[last])
+         if (next_dir != dir || next_seg < seg*(1 - 1.0e-12) || next_seg > seg*(1 + 1.0e-12)) break
+         last++
+      }
       dt = seg/ninc
-      printf "** shear segment %d: t = %.10g to %.10g, u = %.10g to %.10g mm\n", h - 1, ht[h - 1], ht[h], hu[h - 1], hu[h]
+      span = ht[last] - ht[h - 1]
+      if (last == h)
+         printf "** shear segment %d: t = %.10g to %.10g, u = %.10g to %.10g mm\n", h - 1, ht[h - 1], ht[h], hu[h - 1], hu[h]
+      else
+         printf "** shear segments %d to %d (one direction, one duration): t = %.10g to %.10g, u = %.10g to %.10g mm\n", \
+            h - 1, last - 1, ht[h - 1], ht[last], hu[h - 1], hu[last]
       print "*STEP, INC=100000"
       controls()
       print "*STATIC"
-      printf "%.10g, %.10g, %.10g, %.10g\n", dt, seg, seg*1.0e-6, dt
+      printf "%.10g, %.10g, %.10g, %.10g\n", dt, span, span*1.0e-6, dt
       print "*BOUNDARY, AMPLITUDE=SHEAR"
       print "TOP, 1, 1, 1."
       outputs()
+      h = last + 1
    }
 }' > "$output"
 [ -s "$output" ] || fail "writing $output failed"
