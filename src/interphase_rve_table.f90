@@ -32,7 +32,7 @@ module interphase_rve_table
    implicit none
    private
    public :: rve_table_type, read_rve_table, check_rve_table, interpolation_data, crack_variable, &
-      short_crack_a_tf, oscillation_index, state_columns
+      short_crack_a_tf, oscillation_index
 
    !> Interpolation variables: w = 1/(1 - ln(1 - D)) (default) or D itself.
    integer, parameter, public :: VARIABLE_LOG_LIGAMENT = 1
@@ -1066,32 +1066,6 @@ contains
    ! (the source is shared with interphase_micro_coefficients, which includes it where it can be
    ! inlined)
    include 'interphase_crack_variable.inc'
-
-   !> The interpolated columns (IC_* order) at the intact state D = +0 (state 1) and the broken
-   !> state D = 1 (state 2), with the status of each: the interpolation variable x(D)
-   !> (crack_variable: x = 1 and 0 for the log-ligament variable), cubic_locate's interval and
-   !> cubic_eval's Horner form, the operations of every guided lookup of
-   !> interphase_micro_coefficients (so the same bits). Evaluated once per table (the built-in
-   !> table's at build time by interphase-table-codegen, a custom table's at its load), because
-   !> most of a structure's interface points are at one of these two damages (docs/performance.md,
-   !> 2026-12-06, twelfth session). A column's values are 0 where its status is not STATUS_OK
-   !> (a table that does not reach that damage: STATUS_SPLINE_OUT_OF_RANGE).
-   pure subroutine state_columns(variable, knots, coef_table, columns, status)
-      integer, intent(in) :: variable                        !! VARIABLE_* of the knots
-      real(dp), intent(in) :: knots(:)                       !! knots, ascending
-      real(dp), intent(in) :: coef_table(:, 0:, :)           !! cubic coefficients (column, power, interval)
-      real(dp), intent(out) :: columns(N_COEFFICIENTS, 2)    !! the columns at D = +0 and at D = 1
-      integer, intent(out) :: status(2)                      !! STATUS_OK or cubic_locate's failure, each
-      real(dp), parameter :: STATE_DAMAGES(2) = [0.0_dp, 1.0_dp]
-      real(dp) :: x, dx_dd, d2x_dd2, derivatives(N_COEFFICIENTS)
-      integer :: k, interval
-      columns = 0.0_dp
-      do k = 1, 2
-         call crack_variable(variable, STATE_DAMAGES(k), x, dx_dd, d2x_dd2)
-         call cubic_locate(knots, x, interval, status(k))
-         if (status(k) == STATUS_OK) call cubic_eval(knots, coef_table, interval, x, columns(:, k), derivatives)
-      end do
-   end subroutine state_columns
 
    !> Split a line at blanks (spaces, tabs) into fields text(starts(i):ends(i)); nfields counts
    !> them all, but only the first size(starts) are stored.

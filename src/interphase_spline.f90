@@ -48,7 +48,6 @@ module interphase_spline
    public :: spline_type, spline_build, spline_locate, spline_eval, spline_value
    public :: spline_points, spline_columns, spline_domain
    public :: cubic_locate, cubic_eval, spline_export
-   public :: guide_build, GUIDE_CELLS_MAX
 
    !> C2 cubic spline, natural ends (S'' = 0 at x(1) and x(n)); needs n >= 2.
    integer, parameter, public :: SPLINE_NATURAL = 1
@@ -57,8 +56,6 @@ module interphase_spline
    !> C1 monotone piecewise cubic Hermite (Fritsch-Carlson); needs n >= 2.
    integer, parameter, public :: SPLINE_MONOTONE = 3
 
-   !> Largest number of cells of an interval guide (`guide_build`).
-   integer, parameter :: GUIDE_CELLS_MAX = 8192
 
 
    !> m interpolated columns on n shared knots. Set by `spline_build` only (the components are
@@ -291,54 +288,6 @@ contains
       end if
       call cubic_locate(spline%x, x, interval, status, hint)
    end subroutine spline_locate
-
-   !> An interval guide for `knots`: the range [knots(1), knots(n)] cut into cells of equal
-   !> width, 1/scale, and for each cell g the interval guide(g) of its left end, so that the
-   !> interval of any x (cubic_locate's: the largest i <= n - 1 with knots(i) <= x) is found from
-   !> its cell g = min(ncells, max(1, int((x - knots(1))*scale) + 1)), starting at guide(g), by
-   !> `steps` forward comparisons (interval = i + 1 while knots(i + 1) <= x and i + 1 <= n - 1),
-   !> where a binary search takes log2(n) of them (interphase_micro_coefficients uses it). The
-   !> cells are at most half the smallest knot spacing wide (up to
-   !> GUIDE_CELLS_MAX cells): a cell then holds at most one knot and steps is 1. Each cell's
-   !> range is widened by a millionth of a cell on both sides, far beyond the rounding of the
-   !> cell index (x - knots(1))*scale, so the interval found is always cubic_locate's.
-   pure subroutine guide_build(knots, guide, scale, steps)
-      real(dp), intent(in) :: knots(:)              !! strictly increasing, size >= 2
-      integer, allocatable, intent(out) :: guide(:) !! first candidate interval of each cell
-      real(dp), intent(out) :: scale                !! cells per unit of x
-      integer, intent(out) :: steps                 !! comparisons that reach any x's interval
-      real(dp), parameter :: MARGIN = 1.0e-6_dp     ! of a cell
-      real(dp) :: range, spacing, x_lo, x_hi
-      integer :: n, ncells, g, last
-      n = size(knots)
-      range = knots(n) - knots(1)
-      spacing = minval(knots(2:n) - knots(1:n - 1))
-      if (range > 0.5_dp*spacing*real(GUIDE_CELLS_MAX, dp)) then
-         ncells = GUIDE_CELLS_MAX
-      else
-         ncells = max(1, ceiling(2.0_dp*range/spacing))
-      end if
-      scale = real(ncells, dp)/range
-      allocate (guide(ncells))
-      steps = 0
-      do g = 1, ncells
-         x_lo = knots(1) + (real(g - 1, dp) - MARGIN)/scale
-         x_hi = knots(1) + (real(g, dp) + MARGIN)/scale
-         guide(g) = interval_of(x_lo)
-         last = interval_of(x_hi)
-         steps = max(steps, last - guide(g))
-      end do
-   contains
-      !> cubic_locate's interval of y clamped to the knots (a linear scan: built once)
-      pure integer function interval_of(y) result(i)
-         real(dp), intent(in) :: y
-         i = 1
-         do while (i < n - 1)
-            if (knots(i + 1) > y) exit
-            i = i + 1
-         end do
-      end function interval_of
-   end subroutine guide_build
 
    !> `spline_locate` on bare knots (for interpolants stored as parameter data, e.g. the
    !> compiled-in RVE table): the interval of x among knots(1:n), n >= 2, strictly increasing.
