@@ -38,6 +38,10 @@ module interphase_fracture
    ! (growth_point: public for the tests, which check the search's roots against g itself)
    public :: crack_load_type, growth_point_type, grow_crack, growth_point
 
+   !> The model the included coefficient providers serve (interphase_coefficients_at.inc): every
+   !> model, the one PROPS select.
+   integer, parameter :: PATH_MODEL = 0
+
    !> What the crack sees in the increment: the separation at its end and the slip at its
    !> start (the friction step at each trial D starts from it, or from the slip that conserves
    !> pi = m lambda: `growth_trial_slip`). No default initialisation (the update's hot path: it

@@ -47,6 +47,10 @@ module interphase_kernel
    private
    public :: interface_update, update_point
 
+   !> The model the included coefficient providers serve (interphase_coefficients_at.inc): every
+   !> model, the one PROPS select.
+   integer, parameter :: PATH_MODEL = 0
+
 contains
 
    !> Update one interface point from the old state and the separation at the end of the

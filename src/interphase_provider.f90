@@ -20,6 +20,10 @@ module interphase_provider
    private
    public :: coefficients_at, coefficient_values_at, ufbar_at, check_run_time_data
 
+   !> The model the included coefficient providers serve (interphase_coefficients_at.inc): every
+   !> model, the one PROPS select.
+   integer, parameter :: PATH_MODEL = 0
+
 contains
 
    include 'interphase_coefficients_at.inc'
