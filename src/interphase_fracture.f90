@@ -527,7 +527,8 @@ contains
    !> growth_point gives there (g < 0, g's derivatives zero, the response, whose dtrac_dd, read
    !> only by a growing crack's tangent, is formed from zeros). arrested = .false.: g >= 0 (or
    !> NaN), or the response finds the crack closed at D_n (s_N <= 0 at D_n > 0 is not tried; the
-   !> table's Dbar_NN <= 0, which check_interpolant refuses only at its samples): growth_point
+   !> table's Dbar_NN <= 0, which check_interpolant refuses only at its samples of the table
+   !> grid): growth_point
    !> decides, and `at` is undefined. (The provider's and the response module's entries, out of
    !> line: a second call of this module's own copies would keep the compiler from inlining them
    !> into growth_point.)
