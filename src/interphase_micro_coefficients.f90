@@ -468,7 +468,8 @@ contains
       real(dp), intent(out), dimension(n) :: k_n, k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar
       real(dp), intent(out) :: fail(n)
       real(dp) :: s(BLOCK_CHUNK), t(BLOCK_CHUNK), v(N_COEFFICIENTS, BLOCK_CHUNK), s_i
-      integer :: cell(BLOCK_CHUNK), i, j, k, c0, m
+      integer(int64) :: cell(BLOCK_CHUNK)
+      integer :: i, j, k, c0, m
       do c0 = 1, n, BLOCK_CHUNK
          m = min(BLOCK_CHUNK, n - c0 + 1)
          call block_cells(grid_index, domain, m, d(c0:c0 + m - 1), cell, s, fail(c0:c0 + m - 1))
@@ -548,7 +549,8 @@ contains
       real(dp), intent(in) :: d(n)
       real(dp), intent(out) :: ufbar(n), fail(n)
       real(dp) :: s(BLOCK_CHUNK), s_i
-      integer :: cell(BLOCK_CHUNK), i, c0, m
+      integer(int64) :: cell(BLOCK_CHUNK)
+      integer :: i, c0, m
       do c0 = 1, n, BLOCK_CHUNK
          m = min(BLOCK_CHUNK, n - c0 + 1)
          call block_cells(grid_index, domain, m, d(c0:c0 + m - 1), cell, s, fail(c0:c0 + m - 1))
@@ -572,25 +574,30 @@ contains
       real(dp), intent(in) :: domain(2)                      !! the table's [D_first, D_last]
       integer, intent(in) :: m
       real(dp), intent(in) :: d(m)
-      integer, intent(out) :: cell(BLOCK_CHUNK)
+      integer(int64), intent(out) :: cell(BLOCK_CHUNK)
       real(dp), intent(out) :: s(BLOCK_CHUNK)
       real(dp), intent(out) :: fail(m)
-      real(dp) :: v, vc
-      integer(int64) :: bits
-      integer :: i, e, idx, packed, sh
-      logical :: d_side
+      real(dp) :: v(BLOCK_CHUNK), vc
+      ! (64-bit integers throughout, the index copied to them: with 32-bit ones beside the 64-bit
+      ! bit patterns gfortran 12 did not vectorise the loop)
+      integer(int64) :: index64(GRID_INDEX_SIZE), bits, e, idx, packed, sh
+      integer :: i
+      index64 = int(grid_index, int64)
       do i = 1, m
-         d_side = d(i) < 0.5_dp
-         v = abs(merge(d(i), 1.0_dp - d(i), d_side))
-         bits = transfer(v, 0_int64)
-         e = int(ishft(bits, -52))
-         idx = min(GRID_INDEX_SIZE, merge(max(e, GRID_E_D_FIRST) - GRID_E_D_FIRST, &
-            max(e, GRID_E_Y_FIRST) - GRID_E_Y_FIRST + GRID_Y_OFFSET, d_side) + 1)
-         packed = grid_index(idx)
-         sh = iand(packed, 63)
-         cell(i) = ishft(packed, -6) + int(ishft(iand(bits, GRID_MANTISSA_MASK), -sh))
+         v(i) = abs(merge(d(i), 1.0_dp - d(i), d(i) < 0.5_dp))
+      end do
+      do i = 1, m
+         bits = transfer(v(i), 0_int64)
+         e = ishft(bits, -52)
+         idx = min(int(GRID_INDEX_SIZE, int64), merge(max(e, int(GRID_E_D_FIRST, int64)) - GRID_E_D_FIRST, &
+            max(e, int(GRID_E_Y_FIRST, int64)) - GRID_E_Y_FIRST + GRID_Y_OFFSET, d(i) < 0.5_dp) + 1)
+         packed = index64(idx)
+         sh = iand(packed, 63_int64)
+         cell(i) = ishft(packed, -6) + ishft(iand(bits, GRID_MANTISSA_MASK), -sh)
          vc = transfer(iand(bits, ishft(-1_int64, sh)), 0.0_dp)
-         s(i) = merge(v - vc, vc - v, d_side)
+         s(i) = merge(v(i) - vc, vc - v(i), d(i) < 0.5_dp)
+      end do
+      do i = 1, m
          fail(i) = merge(1.0_dp, 0.0_dp, (d(i) > 0.0_dp .and. d(i) < D_MIN_CRACK) .or. &
             .not. (d(i) >= domain(1) .and. d(i) <= domain(2)))
       end do
