@@ -40,7 +40,7 @@ module interphase_fracture
 
    !> The model the included coefficient providers serve (interphase_coefficients_at.inc): every
    !> model, the one PROPS select.
-   integer, parameter :: PATH_MODEL = 0
+   integer, parameter :: PROVIDER_MODEL = 0
 
    !> What the crack sees in the increment: the separation at its end and the slip at its
    !> start (the friction step at each trial D starts from it, or from the slip that conserves

@@ -49,7 +49,7 @@ module interphase_kernel
 
    !> The model the included coefficient providers serve (interphase_coefficients_at.inc): every
    !> model, the one PROPS select.
-   integer, parameter :: PATH_MODEL = 0
+   integer, parameter :: PROVIDER_MODEL = 0
 
 contains
 

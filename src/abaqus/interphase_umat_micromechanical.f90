@@ -22,6 +22,9 @@ module interphase_umat_micromechanical
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the simplified model's (the 3-D
    !> element: interphase_umat_micromechanical_3d).
    integer, parameter, public :: PATH_NTENS = 2
+   !> The model the path's coefficient providers serve (interphase_coefficients_at.inc): the
+   !> path's, a constant (interphase_umat_simplified).
+   integer, parameter, public :: PROVIDER_MODEL = PATH_MODEL
 
 contains
 

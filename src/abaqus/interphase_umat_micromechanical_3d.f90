@@ -7,7 +7,7 @@ module interphase_umat_micromechanical_3d
    ! (the names the shared path source needs: one list, interphase_umat_path_names)
    use interphase_umat_path_names
    ! (the material: the 2-D twin's, so that the two serve the same one)
-   use interphase_umat_micromechanical, only: PATH_MODEL, PATH_DAMAGE_LAW, PATH_NPROPS
+   use interphase_umat_micromechanical, only: PATH_MODEL, PATH_DAMAGE_LAW, PATH_NPROPS, PROVIDER_MODEL
    implicit none
    private
    public :: cohesive_path

@@ -24,6 +24,9 @@ module interphase_umat_micromechanical_fracture
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the other paths' (the 3-D
    !> element: interphase_umat_micromechanical_fracture_3d).
    integer, parameter, public :: PATH_NTENS = 2
+   !> The model the path's coefficient providers serve (interphase_coefficients_at.inc): the
+   !> path's, a constant (interphase_umat_simplified).
+   integer, parameter, public :: PROVIDER_MODEL = PATH_MODEL
 
 contains
 

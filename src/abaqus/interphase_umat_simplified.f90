@@ -31,6 +31,11 @@ module interphase_umat_simplified
    !> which costs the 2-D path about 170 instructions a call; docs/performance.md. The 3-D
    !> element has its twin, interphase_umat_simplified_3d.)
    integer, parameter, public :: PATH_NTENS = 2
+   !> The model the path's coefficient providers serve (interphase_coefficients_at.inc): the
+   !> path's, a constant, so that the compiler drops the other model's branch (measured: with the
+   !> micromechanical lookup beside it, GCC stopped inlining the update into this path in the
+   !> one-file source, 78 instructions a call more; docs/performance.md).
+   integer, parameter, public :: PROVIDER_MODEL = PATH_MODEL
 
 contains
 
