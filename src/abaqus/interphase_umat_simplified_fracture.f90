@@ -25,11 +25,9 @@ module interphase_umat_simplified_fracture
    !> The element the path serves: 2-D cohesive (NDI = 1, NSHR = 1), as the other paths' (the 3-D
    !> element: interphase_umat_simplified_fracture_3d).
    integer, parameter, public :: PATH_NTENS = 2
-   !> The model the path's coefficient providers serve (interphase_coefficients_at.inc): every
-   !> model (the one PROPS select, which the decision has made this path's). Folded to the
-   !> simplified model, GCC 12's -O3 uninitialised-use analysis took the response of the 3-D twin
-   !> for unset where the update writes the outputs from it (-Werror builds failed).
-   integer, parameter, public :: PROVIDER_MODEL = 0
+   !> The model the path's coefficient providers serve (interphase_coefficients_at.inc): the
+   !> path's, a constant (interphase_umat_simplified; the 3-D twin has its own).
+   integer, parameter, public :: PROVIDER_MODEL = PATH_MODEL
 
 contains
 
