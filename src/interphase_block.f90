@@ -367,8 +367,8 @@ contains
    !> state at its start: `simplified_block_update` with the table's coefficients at each
    !> point's D (`micro_block_coefficients`, values only) in place of the spring model's. The
    !> same arguments and conventions; exactly the numbers of `interface_update`, bit for bit.
-   !> ok = .false. also where the point update fails on the table (a D in (0, D_MIN_CRACK), the
-   !> variable outside a custom table's knots, a closed crack slipping with T^f >= 0).
+   !> ok = .false. also where the point update fails on the table (a D in (0, D_MIN_CRACK), a D
+   !> outside a custom table's rows, a closed crack slipping with T^f >= 0).
    pure subroutine micromechanical_block_update(params, n, nt, s_n, s_t1, s_t2, d_old, lam1_old, &
          lam2_old, t_n, t_t1, t_t2, d, lam1, lam2, regime, psi, ok, nfailed)
       type(law_params_type), intent(in) :: params    !! the micromechanical model, displacement law

@@ -5,8 +5,9 @@
 !> The interpolant the updates use is the table grid (interphase_table_grid): the table's cubic
 !> spline in its interpolation variable, resampled onto cells indexed by the bits of D (and of
 !> 1 - D above D = 1/2), a cubic in D on each cell, C1 across the cells and within the grid's
-!> tolerances of the spline (docs/theory.md, 'The table grid'). A lookup is a subtraction, shifts
-!> and masks, one cell's cubics: no logarithm, no division, no search. The spline itself
+!> tolerances of the spline wherever 256 cells a binade reach them (docs/theory.md, 'The table
+!> grid'). A lookup is a subtraction, shifts and masks, one cell's cubics: no logarithm, no
+!> division for the interpolation variable, no search. The spline itself
 !> (`table_coefficients`) is the grid's source and the reference of the tests.
 !>
 !> Two tables can serve: the default one, compiled in as generated `parameter` data

@@ -11,12 +11,14 @@
 !>
 !> **Cubics.** On each cell every column is the cubic Hermite interpolant of the spline: the
 !> spline's value and first derivative in D at both ends of the cell. So the grid is the spline at
-!> every cell end, continuous with a continuous first derivative everywhere (C1; the spline is C2),
+!> every cell end, continuous with a continuous first derivative on (0, 1) (C1; the spline is C2;
+!> but for a round-off step at D = 2^-19, where the short cracks' cells below meet the others),
 !> and between the ends it differs from the spline by O(h^4) in value and O(h^3) in slope. Each
 !> cubic is written in s = D - D_0, D_0 the cell's end nearest to the binade's origin (D_cell for
 !> D < 1/2, 1 - y_cell above), so that s is exact. The cells of their own hold the spline's
 !> Taylor terms at D = 0, at D = 1/2 (where only s = 0 is used) and the value at D = 1 with zero
-!> derivatives (the spline's convention there: dw/dD is infinite at D = 1).
+!> derivatives (the log-ligament variable's convention there: dw/dD is infinite at D = 1; a table
+!> in D gets them too, which no caller reads).
 !>
 !> **Short cracks.** Below D = 2^-19 (1.9e-6) each binade of D is one cell holding the spline's
 !> Taylor terms at D = 0 (value, slope, curvature): the spline takes its variable w from 1 - D,
@@ -96,8 +98,9 @@ contains
 
    !> The grid of a table's spline (module header): grid(column, power, cell), the cubics'
    !> coefficients of s^0 ... s^3, and grid_index, each binade's first cell and mantissa shift
-   !> packed as first*64 + shift. status: STATUS_OK, or the spline's failure where it cannot be
-   !> evaluated on [0, 1] (a table that does not cover D = 0 ... 1).
+   !> packed as first*64 + shift. status: STATUS_OK, or a failure of the spline's evaluation,
+   !> passed on (not expected for a spline that spline_build accepted: its evaluation here is
+   !> clamped to the knots).
    subroutine grid_build(variable, knots, values, coef, grid, grid_index, domain, status)
       integer, intent(in) :: variable                        !! VARIABLE_* of the knots
       real(dp), intent(in) :: knots(:)                       !! the spline's knots, ascending
@@ -123,10 +126,14 @@ contains
       if (variable == VARIABLE_DAMAGE) then
          domain = [knots(1), knots(size(knots))]
       else
+         ! (w decreases with D: the first D whose w is at most the last knot, and the last D whose
+         ! w is at least the first, as the spline's own lookup decided, from D = 1 - exp(1 - 1/w)
+         ! by steps of one ulp)
          domain(1) = 0.0_dp
-         if (knots(size(knots)) < 1.0_dp) domain(1) = 1.0_dp - exp(1.0_dp - 1.0_dp/knots(size(knots)))
+         if (knots(size(knots)) < 1.0_dp) domain(1) = domain_end(1.0_dp - exp(1.0_dp - 1.0_dp/knots(size(knots))), &
+            knots(size(knots)), -1.0_dp)
          domain(2) = 1.0_dp
-         if (knots(1) > 0.0_dp) domain(2) = 1.0_dp - exp(1.0_dp - 1.0_dp/knots(1))
+         if (knots(1) > 0.0_dp) domain(2) = domain_end(1.0_dp - exp(1.0_dp - 1.0_dp/knots(1)), knots(1), 1.0_dp)
       end if
       ! the columns' scales: their largest magnitudes at the rows and at D = 0 and 1
       do j = 1, N_COEFFICIENTS
@@ -185,6 +192,48 @@ contains
 
    contains
 
+
+      !> Where the spline's log-ligament variable w(D) (crack_variable) passes the knot w_end, as
+      !> the spline's lookup decides it (w decreases with D): with toward = -1 the smallest D with
+      !> w(D) <= w_end, with +1 the largest D with w(D) >= w_end. By bisection between 0 or 1 and
+      !> a D on the knot's side near the estimate d_guess = 1 - exp(1 - 1/w_end), to adjacent
+      !> binary64 numbers (many D share one w near D = 0, where 1 - D rounds).
+      pure real(dp) function domain_end(d_guess, w_end, toward) result(d_end)
+         real(dp), intent(in) :: d_guess, w_end, toward
+         real(dp) :: d_in, d_out, d_mid, gap
+         integer :: k
+         ! d_out: the far end of [0, 1] (outside the knots); d_in: a D inside, near the estimate
+         d_out = merge(0.0_dp, 1.0_dp, toward < 0.0_dp)
+         gap = 1.0e-12_dp
+         d_in = min(max(d_guess - toward*gap, 0.0_dp), 1.0_dp)
+         do k = 1, 40
+            if (inside_of(d_in, w_end, toward)) exit
+            gap = 2.0_dp*gap
+            d_in = min(max(d_guess - toward*gap, 0.0_dp), 1.0_dp)
+         end do
+         do k = 1, 200
+            d_mid = d_in + 0.5_dp*(d_out - d_in)
+            if (binary64_bits(d_mid) == binary64_bits(d_in) .or. binary64_bits(d_mid) == binary64_bits(d_out)) exit
+            if (inside_of(d_mid, w_end, toward)) then
+               d_in = d_mid
+            else
+               d_out = d_mid
+            end if
+         end do
+         d_end = d_in
+      end function domain_end
+
+      !> Whether D's w lies on the knots' side of w_end (domain_end's).
+      pure logical function inside_of(d, w_end, toward) result(yes)
+         real(dp), intent(in) :: d, w_end, toward
+         real(dp) :: x, dx_dd, d2x_dd2
+         call crack_variable(variable, d, x, dx_dd, d2x_dd2)
+         if (toward < 0.0_dp) then
+            yes = x <= w_end
+         else
+            yes = x >= w_end
+         end if
+      end function inside_of
 
       !> The spline's columns, dX/dD and d2X/dD2 at D (interphase_rve_table's crack variable); at a
       !> knot the columns are the data there (the spline's cubic gives them only to its round-off:

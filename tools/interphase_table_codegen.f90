@@ -105,8 +105,8 @@ program interphase_table_codegen
    do i = 1, size(grid, 3)
       call write_array('CELL_'//int_text(i), reshape(grid(:, :, i), [size(grid(:, :, i))]), public=.false.)
    end do
-   ! (in groups of 64 cells, eight names a line, and the groups ten a line: a statement may have
-   ! at most 255 continuation lines)
+   ! (in groups of 64 cells, eight names a line, and the groups eight a line: a statement may
+   ! have at most 255 continuation lines)
    ngroups = (size(grid, 3) + 63)/64
    do g = 1, ngroups
       first = 64*(g - 1) + 1
@@ -124,9 +124,9 @@ program interphase_table_codegen
    end do
    write (unit, '(a,i0,a,i0,a)') '   real(dp), parameter, public :: DEFAULT_TABLE_GRID(', N_COEFFICIENTS, &
       ', 0:3, ', size(grid, 3), ') = reshape([ &'
-   do g = 1, ngroups, 10
-      write (unit, '(6x,*(a,:,", "))', advance='no') ('GROUP_'//int_text(k), k=g, min(ngroups, g + 9))
-      if (g + 10 <= ngroups) then
+   do g = 1, ngroups, 8
+      write (unit, '(6x,*(a,:,", "))', advance='no') ('GROUP_'//int_text(k), k=g, min(ngroups, g + 7))
+      if (g + 8 <= ngroups) then
          write (unit, '(a)') ', &'
       else
          write (unit, '(a,i0,a,i0,a)') '], [', N_COEFFICIENTS, ', 4, ', size(grid, 3), '])'
@@ -165,7 +165,7 @@ contains
       integer, intent(in) :: i
       character(len=:), allocatable :: text
       character(len=12) :: buffer
-      write (buffer, '(i4.4)') i
+      write (buffer, '(i5.5)') i
       text = trim(buffer)
    end function int_text
 
