@@ -127,8 +127,7 @@ contains
          domain = [knots(1), knots(size(knots))]
       else
          ! (w decreases with D: the first D whose w is at most the last knot, and the last D whose
-         ! w is at least the first, as the spline's own lookup decided, from D = 1 - exp(1 - 1/w)
-         ! by steps of one ulp)
+         ! w is at least the first, as the spline's own lookup decided: domain_end)
          domain(1) = 0.0_dp
          if (knots(size(knots)) < 1.0_dp) domain(1) = domain_end(1.0_dp - exp(1.0_dp - 1.0_dp/knots(size(knots))), &
             knots(size(knots)), -1.0_dp)
