@@ -68,10 +68,18 @@ module interphase_micro_coefficients
    !> The bit pattern of D = 1, the broken state (the intact state D = +0 is the pattern 0).
    integer(int64), parameter :: BROKEN_BITS = int(z'3FF0000000000000', int64)
 
+   !> The built-in table grid's index in 64-bit integers, as the block providers read it
+   !> (`custom_grid_index64` below).
+   integer(int64), parameter :: DEFAULT_GRID_INDEX64(GRID_INDEX_SIZE) = int(DEFAULT_TABLE_GRID_INDEX, int64)
+
    !> The custom table: written once by `load_custom_table` before any update, then read only:
    !> its grid (interphase_table_grid's grid_build) and the grid's index
    real(dp), allocatable, protected :: custom_grid(:, :, :)
    integer, protected :: custom_grid_index(GRID_INDEX_SIZE) = 0
+   !> the same index in 64-bit integers, as the block providers read it (block_cells: their loop
+   !> vectorises only in 64-bit integers, and a conversion at every call costs more than the
+   !> lookup of a point)
+   integer(int64), protected :: custom_grid_index64(GRID_INDEX_SIZE) = 0
    !> the damages of its first and last rows (grid_build's domain)
    real(dp), protected :: custom_domain(2) = [0.0_dp, 1.0_dp]
    !> its columns at D = +0 and D = 1, and the status of each (interphase_table_grid's
@@ -432,11 +440,11 @@ contains
       end if
       n_eval = merge(1, n, one_damage(n, d))
       if (table == TABLE_CUSTOM_CODE) then
-         call block_values(size(custom_grid, 3), custom_grid, custom_grid_index, custom_domain, n_eval, d, &
+         call block_values(size(custom_grid, 3), custom_grid, custom_grid_index64, custom_domain, n_eval, d, &
             k_n, k_t, kc_n, kc_t, &
             dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, fail)
       else
-         call block_values(size(DEFAULT_TABLE_GRID, 3), DEFAULT_TABLE_GRID, DEFAULT_TABLE_GRID_INDEX, &
+         call block_values(size(DEFAULT_TABLE_GRID, 3), DEFAULT_TABLE_GRID, DEFAULT_GRID_INDEX64, &
             DEFAULT_TABLE_DOMAIN, n_eval, d, k_n, &
             k_t, kc_n, kc_t, dbar_n, dbar_t, tc_t, sc_n, cf_t, tf, ufbar, fail)
       end if
@@ -462,7 +470,7 @@ contains
          cf_t, tf, ufbar, fail)
       integer, intent(in) :: n_cells
       real(dp), intent(in) :: grid(N_COEFFICIENTS, 0:3, n_cells)
-      integer, intent(in) :: grid_index(GRID_INDEX_SIZE)
+      integer(int64), intent(in) :: grid_index(GRID_INDEX_SIZE)   !! the index in 64-bit integers
       real(dp), intent(in) :: domain(2)
       integer, intent(in) :: n
       real(dp), intent(in) :: d(n)
@@ -528,9 +536,9 @@ contains
       end if
       n_eval = merge(1, n, one_damage(n, d))
       if (table == TABLE_CUSTOM_CODE) then
-         call block_ufbar(size(custom_grid, 3), custom_grid, custom_grid_index, custom_domain, n_eval, d, ufbar, fail)
+         call block_ufbar(size(custom_grid, 3), custom_grid, custom_grid_index64, custom_domain, n_eval, d, ufbar, fail)
       else
-         call block_ufbar(size(DEFAULT_TABLE_GRID, 3), DEFAULT_TABLE_GRID, DEFAULT_TABLE_GRID_INDEX, &
+         call block_ufbar(size(DEFAULT_TABLE_GRID, 3), DEFAULT_TABLE_GRID, DEFAULT_GRID_INDEX64, &
             DEFAULT_TABLE_DOMAIN, n_eval, d, ufbar, &
             fail)
       end if
@@ -544,7 +552,7 @@ contains
    pure subroutine block_ufbar(n_cells, grid, grid_index, domain, n, d, ufbar, fail)
       integer, intent(in) :: n_cells
       real(dp), intent(in) :: grid(N_COEFFICIENTS, 0:3, n_cells)
-      integer, intent(in) :: grid_index(GRID_INDEX_SIZE)
+      integer(int64), intent(in) :: grid_index(GRID_INDEX_SIZE)   !! the index in 64-bit integers
       real(dp), intent(in) :: domain(2)
       integer, intent(in) :: n
       real(dp), intent(in) :: d(n)
@@ -571,7 +579,9 @@ contains
    !> the table's domain), else 0.
    !> One source for the block evaluations of the set and of ufbar alone.
    pure subroutine block_cells(grid_index, domain, m, d, cell, s, fail)
-      integer, intent(in) :: grid_index(GRID_INDEX_SIZE)
+      !> the grid's index in 64-bit integers (with 32-bit ones beside the 64-bit bit patterns
+      !> gfortran 12 does not vectorise the loop; a copy made here would cost more than a lookup)
+      integer(int64), intent(in) :: grid_index(GRID_INDEX_SIZE)
       real(dp), intent(in) :: domain(2)                      !! the table's [D_first, D_last]
       integer, intent(in) :: m
       real(dp), intent(in) :: d(m)
@@ -579,11 +589,8 @@ contains
       real(dp), intent(out) :: s(BLOCK_CHUNK)
       real(dp), intent(out) :: fail(m)
       real(dp) :: v(BLOCK_CHUNK), vc
-      ! (64-bit integers throughout, the index copied to them: with 32-bit ones beside the 64-bit
-      ! bit patterns gfortran 12 did not vectorise the loop)
-      integer(int64) :: index64(GRID_INDEX_SIZE), bits, e, idx, packed, sh
+      integer(int64) :: bits, e, idx, packed, sh
       integer :: i
-      index64 = int(grid_index, int64)
       do i = 1, m
          v(i) = abs(merge(d(i), 1.0_dp - d(i), d(i) < 0.5_dp))
       end do
@@ -592,7 +599,7 @@ contains
          e = ishft(bits, -52)
          idx = min(int(GRID_INDEX_SIZE, int64), merge(max(e, int(GRID_E_D_FIRST, int64)) - GRID_E_D_FIRST, &
             max(e, int(GRID_E_Y_FIRST, int64)) - GRID_E_Y_FIRST + GRID_Y_OFFSET, d(i) < 0.5_dp) + 1)
-         packed = index64(idx)
+         packed = grid_index(idx)
          sh = iand(packed, 63_int64)
          cell(i) = ishft(packed, -6) + ishft(iand(bits, GRID_MANTISSA_MASK), -sh)
          vc = transfer(iand(bits, ishft(-1_int64, sh)), 0.0_dp)
@@ -604,21 +611,18 @@ contains
       end do
    end subroutine block_cells
 
-   !> Whether the n damages D(1:n) are one value bit for bit (equal numbers of the same sign, NaN
-   !> counted as different): then a block evaluation of the table is made once and copied, which
-   !> gives the same bits, since each value depends on D alone.
+   !> Whether the n damages D(1:n) have one bit pattern: then a block evaluation of the table is
+   !> made once and copied, which gives the same bits, since each value depends on the bits of D
+   !> alone. (Compared as 64-bit integers: a vectorised compare a point.)
    pure logical function one_damage(n, d)
       integer, intent(in) :: n
       real(dp), intent(in) :: d(n)
-      integer(int64) :: ndiff
-      real(dp) :: d1, sign1
+      integer(int64) :: ndiff, bits1
       integer :: i
-      d1 = d(1)
-      sign1 = sign(1.0_dp, d1)
+      bits1 = transfer(d(1), 0_int64)
       ndiff = 0
       do i = 1, n
-         ndiff = ndiff + merge(0_int64, 1_int64, abs(d(i) - d1) <= 0.0_dp .and. sign(1.0_dp, d(i)) >= sign1 &
-            .and. sign(1.0_dp, d(i)) <= sign1)
+         ndiff = ndiff + merge(1_int64, 0_int64, transfer(d(i), 0_int64) /= bits1)
       end do
       one_damage = ndiff == 0
    end function one_damage
@@ -750,6 +754,7 @@ contains
       call grid_state_columns(grid, grid_index, domain, custom_state_columns, custom_state_status)
       call move_alloc(grid, custom_grid)
       custom_grid_index = grid_index
+      custom_grid_index64 = int(grid_index, int64)
       custom_domain = domain
       ! the file as it was tried (a relative path resolved against the current directory)
       custom_source = table%source
