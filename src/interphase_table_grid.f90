@@ -117,7 +117,7 @@ contains
       real(dp) :: scale(N_COEFFICIENTS), f(N_COEFFICIENTS), g(N_COEFFICIENTS), h2(N_COEFFICIENTS)
       real(dp) :: best_excess, excess
       integer :: idx, ncell, m, m_max, best_m, j
-      logical :: d_side
+      logical :: d_side, special
 
       allocate (work(N_COEFFICIENTS, 0:3, MAX_CELLS))
       grid_index = 0
@@ -147,17 +147,18 @@ contains
       ncell = 0
       do idx = 1, GRID_INDEX_SIZE
          d_side = idx <= GRID_Y_OFFSET
-         if (idx == 1 .or. idx == GRID_Y_OFFSET + 1 .or. idx == GRID_INDEX_SIZE) then
-            ! the cells of their own: D < 2^-100 (D = 0), y = 0 (D = 1), y in [1/2, 1) (D = 1/2)
-            call special_cell(idx, ncell + 1, status)
-            if (status /= STATUS_OK) return
-            grid_index(idx) = (ncell + 1)*64 + 52
-            ncell = ncell + 1
-            cycle
-         end if
-         j = binade_of(idx)
-         if (d_side .and. j >= GRID_TAYLOR_BINADE) then
-            call taylor_cell(j, ncell + 1, status)
+         special = idx == 1 .or. idx == GRID_Y_OFFSET + 1 .or. idx == GRID_INDEX_SIZE
+         j = 0
+         if (.not. special) j = binade_of(idx)
+         if (special .or. (d_side .and. j >= GRID_TAYLOR_BINADE)) then
+            ! one cell for the whole entry: the cells of their own, D < 2^-100 (D = 0), y = 0
+            ! (D = 1) and y in [1/2, 1) (D = 1/2); or a short crack's binade, the spline's Taylor
+            ! terms at D = 0
+            if (special) then
+               call special_cell(idx, ncell + 1, status)
+            else
+               call taylor_cell(j, ncell + 1, status)
+            end if
             if (status /= STATUS_OK) return
             grid_index(idx) = (ncell + 1)*64 + 52
             ncell = ncell + 1
