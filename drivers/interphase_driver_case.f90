@@ -9,6 +9,10 @@
 !>       history = 'h1I.txt', increments = 200, output = 'h1I.csv', plot = .true.
 !>     /
 !>
+!> The material may be given as the UMAT's PROPS instead (`props = 1, 1, 0.75, ...`: 1 to 20
+!> values; drivers/README.md, 'The material as PROPS'), with `table` and `rcurve_file` only where
+!> PROPS select those files.
+!>
 !> Every `&material` entry is required; `&loading` needs `history`, `increments` and `output`
 !> (`plot` defaults to true). The driver only packs the material data into PROPS: range checks
 !> are the UMAT's. Nothing is stopped here: errors come back as a message.
@@ -28,7 +32,8 @@ module interphase_driver_case
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message, STATUS_BAD_MU, STATUS_BAD_S0_N, &
       STATUS_BAD_SF_N, STATUS_BAD_S0_T, STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_D0, &
       STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION, STATUS_RCURVE_OUT_OF_RANGE
-   use interphase_layout, only: OPTION_SPECS, OPT_CONTACT_BAND, OPT_VISCOSITY
+   use interphase_layout, only: OPTION_SPECS, OPT_CONTACT_BAND, OPT_VISCOSITY, NPROPS_SIMPLIFIED, NPROPS_FRACTURE_EXTRA, &
+      NPROPS_OPTIONS, NPROPS_MICROMECHANICAL, LFM_RCURVE
    use interphase_text_input, only: tried_path
    use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, &
       KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING, open_namelist_file
@@ -44,6 +49,9 @@ module interphase_driver_case
    real(dp), parameter :: UNSET_REAL = -huge(1.0_dp)
    !> Marks an integer entry the case file did not set.
    integer, parameter :: UNSET_INTEGER = -huge(1)
+   !> The most values the `props` entry of a material group takes: the longest PROPS the UMAT
+   !> decodes (the simplified model with the fracture law and every option constant).
+   integer, parameter, public :: PROPS_ENTRY_MAX = NPROPS_SIMPLIFIED + NPROPS_FRACTURE_EXTRA + NPROPS_OPTIONS
    !> Default of `traction_tolerance` (MPa): a few units in the last place of tractions of order
    !> 1 MPa, so that an imposed traction is met to round-off.
    real(dp), parameter, public :: DEFAULT_TRACTION_TOLERANCE = 1.0e-12_dp
@@ -77,6 +85,9 @@ module interphase_driver_case
       !> option: which stiffness DDSDDE is, 'consistent' (the default), 'symmetric' (its
       !> symmetric part) or 'fixed-damage' (symmetric, positive semi-definite)
       character(len=ENTRY_LEN) :: stiffness = ''
+      !> the material as the UMAT's PROPS (docs/abaqus.md), in place of the entries above but
+      !> `table` and `rcurve_file`; unset values are UNSET_REAL
+      real(dp) :: props(PROPS_ENTRY_MAX) = UNSET_REAL
    end type material_entries_type
 
    !> Everything the driver needs from one case file.
@@ -156,7 +167,7 @@ contains
    !> of interphase-fe2d: the same entries, packed by `material_props`) and their kinds.
    pure function material_entry_kinds(group) result(kinds)
       character(len=*), intent(in) :: group                !! the group's name, lower case
-      type(entry_kind_type) :: kinds(19)
+      type(entry_kind_type) :: kinds(20)
       character(len=*), parameter :: STRINGS(7) = [character(len=11) :: 'model', 'damage_law', 'table', &
          'rcurve', 'rcurve_file', 'growth_slip', 'stiffness']
       character(len=*), parameter :: REALS(12) = [character(len=12) :: 'mu', 's0_n', 'sf_n', 's0_t', 'sf_t', &
@@ -168,6 +179,7 @@ contains
       do i = 1, size(REALS)
          kinds(size(STRINGS) + i) = entry_kind_type(group//'.'//trim(REALS(i)), KIND_REAL)
       end do
+      kinds(20) = entry_kind_type(group//'.props', KIND_REAL, count=PROPS_ENTRY_MAX)
    end function material_entry_kinds
 
    !> Read and check a case file. On failure `ok` is false and `message` says what and where,
@@ -296,8 +308,9 @@ contains
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
       real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band, viscosity
       character(len=ENTRY_LEN) :: stiffness
+      real(dp) :: props(PROPS_ENTRY_MAX)
       namelist /material/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity, stiffness
+         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity, stiffness, props
       character(len=:), allocatable :: where
       integer :: ios
       character(len=512) :: iomsg
@@ -310,6 +323,7 @@ contains
       contact_band = e%contact_band
       viscosity = e%viscosity
       stiffness = e%stiffness
+      props = e%props
       read (unit, nml=material, iostat=ios, iomsg=iomsg)
       if (ios == iostat_end) then
          message = where//'group not found (expected "&material ... /")'
@@ -324,6 +338,7 @@ contains
       e%contact_band = contact_band
       e%viscosity = viscosity
       e%stiffness = stiffness
+      e%props = props
       call material_props(e, where, directory_of(run%path), run%props, run%table_path, run%rcurve_path, &
          ok, message)
    end subroutine read_material
@@ -370,6 +385,10 @@ contains
       message = ''
       table_path = ''
       rcurve_path = ''
+      if (.not. all(is_unset(e%props))) then
+         call props_material(e, where, base_dir, props, table_path, rcurve_path, ok, message)
+         return
+      end if
       model = to_lower(trim(adjustl(e%model)))
       law = to_lower(trim(adjustl(e%damage_law)))
       rcurve = to_lower(trim(adjustl(e%rcurve)))
@@ -578,6 +597,92 @@ contains
 
    end subroutine material_props
 
+   !> The material given as the UMAT's PROPS (the `props` entry of a material group): the values
+   !> one after another from PROPS(1), as an Abaqus *USER MATERIAL lists them, decoded by the
+   !> UMAT's own decoder (its message, naming the PROPS index, on failure). The other entries
+   !> are left out but the files PROPS cannot hold: `table` where PROPS select a custom RVE table,
+   !> `rcurve_file` where they select a tabulated R-curve (each needed there, and refused
+   !> elsewhere), resolved against `base_dir`.
+   subroutine props_material(e, where, base_dir, props, table_path, rcurve_path, ok, message)
+      type(material_entries_type), intent(in) :: e   !! the entries as read, props given
+      character(len=*), intent(in) :: where          !! message prefix: 'file: &group: '
+      character(len=*), intent(in) :: base_dir       !! folder of the case file
+      real(dp), allocatable, intent(out) :: props(:)
+      character(len=:), allocatable, intent(inout) :: table_path, rcurve_path   !! '' when unused
+      logical, intent(out) :: ok
+      character(len=:), allocatable, intent(inout) :: message
+      type(law_params_type) :: p
+      character(len=:), allocatable :: given
+      character(len=MESSAGE_LEN) :: why
+      integer :: n, status
+
+      ok = .false.
+      ! (the pre-check takes the values as one list from PROPS(1): `props(3) = ...` is not an
+      ! entry; a value left unset inside the list is refused all the same)
+      n = PROPS_ENTRY_MAX
+      do while (is_unset(e%props(n)))
+         n = n - 1
+      end do
+      if (any(is_unset(e%props(1:n)))) then
+         message = where//'props: PROPS(1) to PROPS('//int_to_string(n)//') must all be given'
+         return
+      end if
+      given = ''
+      if (len_trim(e%model) > 0) call add_name(given, 'model')
+      if (len_trim(e%damage_law) > 0) call add_name(given, 'damage_law')
+      if (.not. is_unset(e%mu)) call add_name(given, 'mu')
+      if (.not. is_unset(e%s0_n)) call add_name(given, 's0_n')
+      if (.not. is_unset(e%sf_n)) call add_name(given, 'sf_n')
+      if (.not. is_unset(e%s0_t)) call add_name(given, 's0_t')
+      if (.not. is_unset(e%sf_t)) call add_name(given, 'sf_t')
+      if (.not. is_unset(e%k_n)) call add_name(given, 'k_n')
+      if (.not. is_unset(e%k_t)) call add_name(given, 'k_t')
+      if (.not. is_unset(e%d0)) call add_name(given, 'd0')
+      if (len_trim(e%rcurve) > 0) call add_name(given, 'rcurve')
+      if (.not. is_unset(e%g_ci)) call add_name(given, 'g_ci')
+      if (.not. is_unset(e%g_cii)) call add_name(given, 'g_cii')
+      if (len_trim(e%growth_slip) > 0) call add_name(given, 'growth_slip')
+      if (.not. is_unset(e%contact_band)) call add_name(given, 'contact_band')
+      if (.not. is_unset(e%viscosity)) call add_name(given, 'viscosity')
+      if (len_trim(e%stiffness) > 0) call add_name(given, 'stiffness')
+      if (len(given) > 0) then
+         message = where//'props gives the whole material as the UMAT''s PROPS: leave out '//given// &
+            ' (or give the material by its entries, without props)'
+         return
+      end if
+      props = e%props(1:n)
+      call from_props(props, p, status, why)
+      if (status /= STATUS_OK) then
+         message = where//'props: '//trim(why)
+         return
+      end if
+      if (p%model == MODEL_MICROMECHANICAL .and. p%table == TABLE_CUSTOM_CODE) then
+         if (len_trim(e%table) == 0) then
+            message = where//'props: PROPS(8) = 1 selects a custom RVE table: give its file as the entry table'
+            return
+         end if
+         table_path = join_path(base_dir, trim(adjustl(e%table)))
+      else if (len_trim(e%table) > 0) then
+         message = where//'table is read only where props select a custom RVE table (the micromechanical '// &
+            'model with PROPS(8) = 1)'
+         return
+      end if
+      if (p%damage_law == DAMAGE_FRACTURE .and. p%rcurve == RCURVE_TABULATED) then
+         if (len_trim(e%rcurve_file) == 0) then
+            message = where//'props: PROPS('//int_to_string(merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, &
+               p%model == MODEL_MICROMECHANICAL) + LFM_RCURVE)//') = 3 selects a tabulated R-curve: give its file '// &
+               'as the entry rcurve_file'
+            return
+         end if
+         rcurve_path = join_path(base_dir, trim(adjustl(e%rcurve_file)))
+      else if (len_trim(e%rcurve_file) > 0) then
+         message = where//'rcurve_file is read only where props select a tabulated R-curve (the fracture law '// &
+            'with its R-curve code 3)'
+         return
+      end if
+      ok = .true.
+   end subroutine props_material
+
    !> Read the `&loading` group.
    subroutine read_loading(unit, run, ok, message)
       integer, intent(in) :: unit                 !! open case file
@@ -782,7 +887,7 @@ contains
    end function writes_an_input
 
    !> True when a real entry still holds UNSET_REAL (a NaN from the file is not "unset").
-   pure logical function is_unset(value)
+   elemental logical function is_unset(value)
       real(dp), intent(in) :: value               !! the entry after the namelist read
 
       if (ieee_is_nan(value)) then

@@ -188,7 +188,8 @@ contains
          '  writes a CSV table (and a PNG of the curves if gnuplot is on PATH).', &
          '  CASE.nml: &material  model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t (simplified),', &
          '                       table, d0, rcurve, rcurve_file, g_ci, g_cii, growth_slip,', &
-         '                       contact_band, viscosity, stiffness', &
+         '                       contact_band, viscosity, stiffness;', &
+         '                       or props (the UMAT''s PROPS, 1 to 20 values) with table, rcurve_file', &
          '            &loading   history, increments, output, plot, traction_tolerance,', &
          '                       output_every, tangent_check, tangent_step', &
          '  History: columns t s_T s_N (3-D: t s_T1 s_T2 s_N); a line "# columns: t s_T Sigma_N"', &

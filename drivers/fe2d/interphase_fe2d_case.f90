@@ -11,7 +11,7 @@ module interphase_fe2d_case
    use interphase_finite, only: difference_is_finite
    use interphase_text_input, only: tried_path, clip_text
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
-      ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props
+      ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props, PROPS_ENTRY_MAX, is_unset
    use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
    use interphase_driver_history, only: carriage_return_message, parse_number, separator_hint, foreign_length_unit_after
@@ -283,28 +283,32 @@ contains
       character(len=ENTRY_LEN) :: model, damage_law, table, rcurve, rcurve_file, growth_slip
       real(dp) :: mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, d0, g_ci, g_cii, contact_band, viscosity
       character(len=ENTRY_LEN) :: stiffness
+      real(dp) :: props(PROPS_ENTRY_MAX)
       namelist /joint/ model, damage_law, mu, s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, &
-         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity, stiffness
+         rcurve_file, g_ci, g_cii, growth_slip, contact_band, viscosity, stiffness, props
       integer :: ios
       character(len=512) :: iomsg
 
-      e%damage_law = 'displacement'
       call unpack_entries(e, model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, sf_t, &
          k_n, k_t, d0, g_ci, g_cii)
       growth_slip = e%growth_slip
       contact_band = e%contact_band
       viscosity = e%viscosity
       stiffness = e%stiffness
+      props = e%props
       rewind (unit)
       read (unit, nml=joint, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'joint', ios, iomsg, ok, message)
       if (.not. ok) return
+      ! (damage_law's default where the joint is given by its entries: with props, PROPS(2) is it)
+      if (len_trim(damage_law) == 0 .and. all(is_unset(props))) damage_law = 'displacement'
       e = material_entries_type(model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, &
          sf_t, k_n, k_t, d0, g_ci, g_cii)
       e%growth_slip = growth_slip
       e%contact_band = contact_band
       e%viscosity = viscosity
       e%stiffness = stiffness
+      e%props = props
       call material_props(e, run%path//': &joint: ', directory_of(run%path), run%props, run%table_path, &
          run%rcurve_path, ok, message)
    end subroutine read_joint

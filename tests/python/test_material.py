@@ -363,6 +363,22 @@ def test_read_history(source_dir, tmp_path):
         interphase.read_history(cr)
 
 
+def test_read_case_takes_the_material_as_props(source_dir, tmp_path):
+    """A &material given as the UMAT's PROPS (props = ...) is the material its entries give: the
+    same PROPS, bit for bit, and the same run; the micromechanical fracture law of
+    drivers/cases/fracture/mixed-constant.nml too, with the growth-slip option constant appended at
+    its default."""
+    by_entries = interphase.read_case(write_case(tmp_path, CASE))
+    by_props = interphase.read_case(write_case(tmp_path, CASE.replace(CASE_MATERIAL, PROPS_MATERIAL), name="p.nml"))
+    assert by_props.material.props.tobytes() == by_entries.material.props.tobytes()
+    assert np.array_equal(by_props.run().traction, by_entries.run().traction)
+    named = interphase.read_case(source_dir / "drivers" / "cases" / "fracture" / "mixed-constant.nml")
+    given = interphase.read_case(source_dir / "tests" / "driver" / "inputs" / "props_fracture.nml")
+    assert given.material.props.tolist() == named.material.props.tolist() + [0.0]
+    s = [[0, 0], [0.004, -0.005]]
+    assert np.array_equal(given.material.run(s, increments=20).traction, named.material.run(s, increments=20).traction)
+
+
 def test_read_case_checks_as_the_driver_does(source_dir, tmp_path):
     """read_case refuses what interphase-point refuses, with the same file, line and entry."""
     good = (source_dir / "drivers" / "cases" / "h1I.nml").read_text()
@@ -1074,6 +1090,12 @@ CASE = """&material
 /
 """
 HISTORY = "# t s_T s_N\n0 0 0\n1 0 0.01\n"
+# CASE's material entries, and the same material as the UMAT's PROPS (the entry props)
+CASE_MATERIAL = ("  model = 'simplified', damage_law = 'displacement',\n"
+                 "  mu = 0.75, s0_n = 0.00044, sf_n = 0.04, s0_t = 0.00072, sf_t = 0.06,\n"
+                 "  k_n = 482.69742679680568, k_t = 198.75776397515528\n")
+PROPS_MATERIAL = "  props = 1, 1, 0.75, 0.00044, 0.04, 0.00072, 0.06, 482.69742679680568, 198.75776397515528\n"
+assert CASE_MATERIAL in CASE
 
 
 def write_case(tmp_path, case=CASE, history=HISTORY, name="case.nml"):
@@ -1344,6 +1366,21 @@ DRIVER_CASES = {
     "history_missing": ("history = 'h.txt'", "history = 'missing.txt'", None),
     "rcurve_file_refused": ("damage_law = 'displacement'", "damage_law = 'fracture', d0 = 0.05, rcurve = 'tabulated', "
                             "rcurve_file = 'h.txt'", None),
+    # the material as the UMAT's PROPS (the entry props): taken; refused beside an entry PROPS
+    # hold, with a value the decoder refuses, without the file PROPS select or with one they do
+    # not select, with more values than the longest PROPS, with a value that is not a number
+    "props": (CASE_MATERIAL, PROPS_MATERIAL, None),
+    "props_with_entries": (CASE_MATERIAL, PROPS_MATERIAL + "  mu = 0.6, stiffness = 'symmetric'\n", None),
+    "props_bad_value": (CASE_MATERIAL, PROPS_MATERIAL.replace("0.04,", "0.0001,"), None),
+    "props_custom_table": (CASE_MATERIAL, "  props = 2, 1, 0.75, 0.00044, 0.04, 0.00072, 0.06, 1\n", None),
+    "props_table_not_read": (CASE_MATERIAL, "  props = 2, 1, 0.75, 0.00044, 0.04, 0.00072, 0.06, 0\n"
+                             "  table = 'x.dat'\n", None),
+    "props_tabulated_without_file": (CASE_MATERIAL, PROPS_MATERIAL.replace("1, 1,", "1, 2,").replace(
+        "198.75776397515528", "198.75776397515528, 0.05, 3, 0, 0"), None),
+    "props_rcurve_file_not_read": (CASE_MATERIAL, PROPS_MATERIAL + "  rcurve_file = 'h.txt'\n", None),
+    "props_too_many": (CASE_MATERIAL, PROPS_MATERIAL.replace("198.75776397515528", "198.75776397515528" + ", 0" * 12),
+                       None),
+    "props_not_a_number": (CASE_MATERIAL, PROPS_MATERIAL.replace("0.75,", "abc,"), None),
 }
 
 

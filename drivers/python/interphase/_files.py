@@ -9,7 +9,7 @@ import numpy as np
 
 from . import _status
 from ._library import InterphaseError
-from ._material import Material, DEFAULT_TRACTION_TOLERANCE, DEFAULT_TANGENT_STEP, _count
+from ._material import Material, DEFAULT_TRACTION_TOLERANCE, DEFAULT_TANGENT_STEP, _count, _path
 
 _NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?")
 # why a nonzero literal below the smallest normal double is refused (interphase_text_input's UNDERFLOW_WHY)
@@ -579,6 +579,18 @@ def _namelist_entries(path, known=None):
             raise ValueError(f"{path}:{entry_line}: &{group}: {_clip(name)} is not an entry of &{group}; its "
                              "entries: " + ", ".join(kinds))
         where = f"{path}:{entry_line}: &{group}: {name}"
+        if kinds is not None and kinds[name] == "reals":
+            # (a list of reals: each value named by its place, 'props = 1e400 (value 3) is not finite')
+            if not 1 <= len(values) <= PROPS_ENTRY_MAX:
+                raise ValueError(f"{where} takes 1 to {PROPS_ENTRY_MAX} values, got {len(values)}")
+            reals = []
+            for j, (quoted, text) in enumerate(values, 1):
+                value, why = (None, "not a number") if quoted else _parse_real(text)
+                if why is not None:
+                    raise ValueError(f"{where} = {_clip(text)} (value {j}) is {why}")
+                reals.append(value)
+            groups[group][name] = (reals, entry_line)
+            return
         if len(values) != 1:
             raise ValueError(f"{where} needs one value, got {len(values)}"
                              + _values_shown(values, comma_after_first, kinds is not None and kinds[name] == "real"))
@@ -701,8 +713,12 @@ def read_namelist(path):
 _MATERIAL_WORDS = ("model", "damage_law", "table", "rcurve", "rcurve_file", "growth_slip", "stiffness")
 _MATERIAL_REALS = ("mu", "s0_n", "sf_n", "s0_t", "sf_t", "k_n", "k_t", "d0", "g_ci", "g_cii", "contact_band",
                    "viscosity")
+# (props: the material as the UMAT's PROPS, 1 to PROPS_ENTRY_MAX reals, the driver's
+# entry_kind_type count; the longest PROPS the UMAT decodes)
+PROPS_ENTRY_MAX = 20
 _KINDS = {
-    "material": dict([(k, "string") for k in _MATERIAL_WORDS] + [(k, "real") for k in _MATERIAL_REALS]),
+    "material": dict([(k, "string") for k in _MATERIAL_WORDS] + [(k, "real") for k in _MATERIAL_REALS]
+                     + [("props", "reals")]),
     "loading": {"history": "string", "output": "string", "increments": "integer", "plot": "logical",
                 "traction_tolerance": "real", "output_every": "integer", "tangent_check": "real",
                 "tangent_step": "real"},
@@ -733,6 +749,54 @@ def _props_entry(error):
     if error.status == _status.STATUS_BAD_OPTION:
         return next((entry for symbol, entry in _OPTION_ENTRY.items() if f") {symbol} =" in error.detail), None)
     return _PROPS_ENTRY.get(error.status)
+
+
+# the entries that PROPS hold, in the driver's order (props_material): none of them beside props
+_PROPS_HELD = ("model", "damage_law", "mu", "s0_n", "sf_n", "s0_t", "sf_t", "k_n", "k_t", "d0", "rcurve", "g_ci",
+               "g_cii", "growth_slip", "contact_band", "viscosity", "stiffness")
+
+
+def _props_material(path, entries, base, lines):
+    """The material of a &material group that gives it as the UMAT's PROPS (the entry props), as
+    interphase-point's props_material checks it: no entry that PROPS hold beside props, the values
+    decoded by the library (its message, under props), the files PROPS cannot name (table where
+    they select a custom RVE table, rcurve_file where they select a tabulated R-curve) given
+    exactly there. The files are not loaded (read_case loads them after the history)."""
+    def blank(v):
+        return isinstance(v, str) and v.strip(" ") == ""
+    given = [k for k in _PROPS_HELD if k in entries and not blank(entries[k])]
+    if given:
+        raise InterphaseError(_status.STATUS_BAD_NPROPS, _at_entry(
+            path, "material", "props gives the whole material as the UMAT's PROPS: leave out " + ", ".join(given)
+            + " (or give the material by its entries, without props)", lines))
+    material, custom_table, tabulated, rcurve_at = Material._of_props(entries["props"], "read_case")
+    try:
+        material._check_props()
+    except InterphaseError as error:
+        raise InterphaseError(error.status, _at_entry(path, "material", f"props: {error.detail}", lines)) from None
+    table = entries.get("table", "")
+    rcurve_file = entries.get("rcurve_file", "")
+    if custom_table:
+        if blank(table):
+            raise InterphaseError(_status.STATUS_TABLE_NOT_LOADED, _at_entry(
+                path, "material", "props: PROPS(8) = 1 selects a custom RVE table: give its file as the entry table",
+                lines))
+        material.table_path = _path("table", table, base)
+    elif not blank(table):
+        raise InterphaseError(_status.STATUS_BAD_TABLE_SELECTOR, _at_entry(
+            path, "material", "table is read only where props select a custom RVE table (the micromechanical model "
+            "with PROPS(8) = 1)", lines))
+    if tabulated:
+        if blank(rcurve_file):
+            raise InterphaseError(_status.STATUS_RCURVE_NOT_LOADED, _at_entry(
+                path, "material", f"props: PROPS({rcurve_at + 1}) = 3 selects a tabulated R-curve: give its file as "
+                "the entry rcurve_file", lines))
+        material.rcurve_path = _path("rcurve_file", rcurve_file, base)
+    elif not blank(rcurve_file):
+        raise InterphaseError(_status.STATUS_BAD_RCURVE, _at_entry(
+            path, "material", "rcurve_file is read only where props select a tabulated R-curve (the fracture law "
+            "with its R-curve code 3)", lines))
+    return material
 
 
 class Case:
@@ -795,9 +859,15 @@ def read_case(path):
             raise ValueError(f'{path}: &{group}: group not found (expected "&{group} ... /")')
         return values[group]
 
-    # &material: which entries are given, and their words (the driver's material_props)
+    # &material: which entries are given, and their words (the driver's material_props), or the
+    # material as the UMAT's PROPS (its props_material)
+    if "props" in found("material"):
+        material = _props_material(path, values["material"], base, lines)
+    else:
+        material = None
     try:
-        material = Material._unchecked(found("material"), base)
+        if material is None:
+            material = Material._unchecked(found("material"), base)
     except TypeError as error:          # a missing entry
         text = str(error)
         raise TypeError(_at_entry(path, "material", text[len("Material: "):] if text.startswith("Material: ")

@@ -378,26 +378,8 @@ class Material:
         None loaded: InterphaseError (STATUS_TABLE_NOT_LOADED, STATUS_RCURVE_NOT_LOADED). A file
         given for PROPS that do not select one: InterphaseError (STATUS_BAD_TABLE_SELECTOR,
         STATUS_BAD_RCURVE)."""
-        props = _numbers("PROPS", props, "Material.from_props")
-        if props.ndim != 1:
-            raise ValueError(f"Material.from_props: PROPS must be one-dimensional, got {_shape_text(props)}")
-        self = cls.__new__(cls)
-        self.entries = {}
-        self.props = props.copy()
-        self.props.flags.writeable = False
-        self.table_path = self.rcurve_path = None
+        self, custom_table, tabulated, rcurve_at = cls._of_props(props, "Material.from_props")
         n = len(self.props)
-        nb = 9 if n > 0 and self.props[0] == MODEL_SIMPLIFIED else 8
-        # the selectors of the files (PROPS(8) of the micromechanical model; the fracture law's
-        # R-curve selector, PROPS(nb + 2))
-        custom_table = n > 7 and self.props[0] == MODEL_MICROMECHANICAL and self.props[7] == TABLE_CUSTOM
-        rcurve_at = nb + 1
-        tabulated = n > rcurve_at and self.props[1] == DAMAGE_FRACTURE and self.props[rcurve_at] == RCURVE_TABULATED
-        if n > 1 and self.props[1] == DAMAGE_FRACTURE:
-            nb += 4
-        self.viscous = n >= nb + 3 and self.props[nb + 2] > 0.0
-        self.nstate = NSTATE_VISCOUS if self.viscous else NSTATE
-        self.model = self.damage_law = None
         for name, given, selected, status, what in (
                 ("table", table, custom_table, st.STATUS_BAD_TABLE_SELECTOR,
                  "a custom RVE table (PROPS(8) = 1 of the micromechanical model)"),
@@ -426,6 +408,34 @@ class Material:
                                       f"load it first, interphase.{loader}(path)")
         self.update(np.zeros(2), dt=0.0)
         return self
+
+    @classmethod
+    def _of_props(cls, props, who):
+        """A material of the PROPS array `props` (checked to be one-dimensional real numbers,
+        naming `who`), its values not checked by the library and no file named: the material,
+        whether PROPS select a custom RVE table and a tabulated R-curve, and the R-curve
+        selector's index (0-based)."""
+        props = _numbers("PROPS", props, who)
+        if props.ndim != 1:
+            raise ValueError(f"{who}: PROPS must be one-dimensional, got {_shape_text(props)}")
+        self = cls.__new__(cls)
+        self.entries = {}
+        self.props = props.copy()
+        self.props.flags.writeable = False
+        self.table_path = self.rcurve_path = None
+        n = len(self.props)
+        nb = 9 if n > 0 and self.props[0] == MODEL_SIMPLIFIED else 8
+        # the selectors of the files (PROPS(8) of the micromechanical model; the fracture law's
+        # R-curve selector, PROPS(nb + 2))
+        custom_table = n > 7 and self.props[0] == MODEL_MICROMECHANICAL and self.props[7] == TABLE_CUSTOM
+        rcurve_at = nb + 1
+        tabulated = n > rcurve_at and self.props[1] == DAMAGE_FRACTURE and self.props[rcurve_at] == RCURVE_TABULATED
+        if n > 1 and self.props[1] == DAMAGE_FRACTURE:
+            nb += 4
+        self.viscous = n >= nb + 3 and self.props[nb + 2] > 0.0
+        self.nstate = NSTATE_VISCOUS if self.viscous else NSTATE
+        self.model = self.damage_law = None
+        return self, custom_table, tabulated, rcurve_at
 
     def __repr__(self):
         if not self.entries:
