@@ -656,31 +656,41 @@ contains
          message = where//'props: '//trim(why)
          return
       end if
-      if (p%model == MODEL_MICROMECHANICAL .and. p%table == TABLE_CUSTOM_CODE) then
-         if (len_trim(e%table) == 0) then
-            message = where//'props: PROPS(8) = 1 selects a custom RVE table: give its file as the entry table'
-            return
-         end if
-         table_path = join_path(base_dir, trim(adjustl(e%table)))
-      else if (len_trim(e%table) > 0) then
-         message = where//'table is read only where props select a custom RVE table (the micromechanical '// &
-            'model with PROPS(8) = 1)'
-         return
-      end if
-      if (p%damage_law == DAMAGE_FRACTURE .and. p%rcurve == RCURVE_TABULATED) then
-         if (len_trim(e%rcurve_file) == 0) then
-            message = where//'props: PROPS('//int_to_string(merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, &
-               p%model == MODEL_MICROMECHANICAL) + LFM_RCURVE)//') = 3 selects a tabulated R-curve: give its file '// &
-               'as the entry rcurve_file'
-            return
-         end if
-         rcurve_path = join_path(base_dir, trim(adjustl(e%rcurve_file)))
-      else if (len_trim(e%rcurve_file) > 0) then
-         message = where//'rcurve_file is read only where props select a tabulated R-curve (the fracture law '// &
-            'with its R-curve code 3)'
-         return
-      end if
+      ! the files PROPS cannot name: each given exactly where PROPS select it
+      if (.not. file_entry(p%model == MODEL_MICROMECHANICAL .and. p%table == TABLE_CUSTOM_CODE, e%table, &
+         'props: PROPS(8) = 1 selects a custom RVE table: give its file as the entry table', &
+         'table is read only where props select a custom RVE table (the micromechanical model with PROPS(8) = 1)', &
+         table_path)) return
+      if (.not. file_entry(p%damage_law == DAMAGE_FRACTURE .and. p%rcurve == RCURVE_TABULATED, e%rcurve_file, &
+         'props: PROPS('//int_to_string(merge(NPROPS_MICROMECHANICAL, NPROPS_SIMPLIFIED, p%model == MODEL_MICROMECHANICAL) &
+         + LFM_RCURVE)//') = 3 selects a tabulated R-curve: give its file as the entry rcurve_file', &
+         'rcurve_file is read only where props select a tabulated R-curve (the fracture law with its R-curve code 3)', &
+         rcurve_path)) return
       ok = .true.
+
+   contains
+
+      !> A file entry (`value`, '' when left out) where PROPS select its file (`selected`): needed
+      !> there (else the message `missing`), its path resolved against base_dir; refused elsewhere
+      !> (the message `refused`). False where the message is set.
+      logical function file_entry(selected, value, missing, refused, path) result(good)
+         logical, intent(in) :: selected
+         character(len=*), intent(in) :: value, missing, refused
+         character(len=:), allocatable, intent(inout) :: path
+         good = .false.
+         if (selected) then
+            if (len_trim(value) == 0) then
+               message = where//missing
+               return
+            end if
+            path = join_path(base_dir, trim(adjustl(value)))
+         else if (len_trim(value) > 0) then
+            message = where//refused
+            return
+         end if
+         good = .true.
+      end function file_entry
+
    end subroutine props_material
 
    !> Read the `&loading` group.
