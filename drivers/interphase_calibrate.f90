@@ -21,7 +21,7 @@ program interphase_calibrate
       MODEL_MICROMECHANICAL
    use interphase_micro_coefficients, only: custom_table_source
    use interphase_layout, only: PROP_TABLE, SV_DAMAGE
-   use interphase_driver_case, only: case_type, read_case, load_start_up_data, writes_an_input
+   use interphase_driver_case, only: case_type, read_case, load_start_up_data, d0_entry_of, writes_an_input
    use interphase_driver_namelist, only: with_entry_line
    use interphase_driver_replay, only: point_state_type, new_point, call_umat
    use interphase_driver_text, only: int_to_string, real_to_string
@@ -121,7 +121,8 @@ program interphase_calibrate
       real_to_string(params%viscosity)//' s: the calibration''s tests are quasi-static (rate-independent '// &
       'fracture energies): set it to 0')
    ! (the R-curve's coverage of D0 checked too; a refusal names the entry's line)
-   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message, props=run%props)
+   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message, props=run%props, &
+      d0_entry=d0_entry_of(run%lines, 'material'))
    if (.not. ok) call fail(with_entry_line(message, case_path, run%lines))
 
    call monotonic(1, 'N', run%props(PROP_S0_N), run%props(PROP_SF_N), g_i, k_n, peak_n, s_peak_n)

@@ -23,7 +23,7 @@ module interphase_driver_case
    use interphase_enums, only: MODEL_SIMPLIFIED, MODEL_MICROMECHANICAL, DAMAGE_DISPLACEMENT, DAMAGE_FRACTURE, &
       RCURVE_CONSTANT, RCURVE_EQUIVALENT, RCURVE_TABULATED, TABLE_DEFAULT_CODE, TABLE_CUSTOM_CODE, &
       GROWTH_FIXED_PI, GROWTH_FIXED_LAMBDA, STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE
-   use interphase_params, only: law_params_type, to_props, from_props
+   use interphase_params, only: law_params_type, to_props, from_props, refuse_umat_options
    use interphase_driver_text, only: int_to_string, real_to_string, to_lower, directory_of, stem_of, join_path, &
       same_file
    use interphase_micro_coefficients, only: load_custom_table
@@ -35,13 +35,13 @@ module interphase_driver_case
    use interphase_layout, only: OPTION_SPECS, OPT_CONTACT_BAND, OPT_VISCOSITY, NPROPS_SIMPLIFIED, NPROPS_FRACTURE_EXTRA, &
       NPROPS_OPTIONS, NPROPS_MICROMECHANICAL, LFM_RCURVE
    use interphase_text_input, only: tried_path
-   use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, &
+   use interphase_driver_namelist, only: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, given_values, &
       KIND_REAL, KIND_INTEGER, KIND_LOGICAL, KIND_STRING, open_namelist_file
    implicit none
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, writes_an_input, &
       load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset, precheck_case_file, material_entry_kinds, &
-      check_material_props, material_summary, data_files_summary
+      check_material_props, material_summary, data_files_summary, d0_entry_of
 
    !> Length of the character entries of the namelists (model names, paths).
    integer, parameter :: ENTRY_LEN = 1024
@@ -86,8 +86,10 @@ module interphase_driver_case
       !> symmetric part) or 'fixed-damage' (symmetric, positive semi-definite)
       character(len=ENTRY_LEN) :: stiffness = ''
       !> the material as the UMAT's PROPS (docs/abaqus.md), in place of the entries above but
-      !> `table` and `rcurve_file`; unset values are UNSET_REAL
-      real(dp) :: props(PROPS_ENTRY_MAX) = UNSET_REAL
+      !> `table` and `rcurve_file`: its first props_count values (the pre-check's count of the
+      !> values given: a value is never taken for a marker of one left out)
+      real(dp) :: props(PROPS_ENTRY_MAX) = 0.0_dp
+      integer :: props_count = 0
    end type material_entries_type
 
    !> Everything the driver needs from one case file.
@@ -167,11 +169,12 @@ contains
    !> of interphase-fe2d: the same entries, packed by `material_props`) and their kinds.
    pure function material_entry_kinds(group) result(kinds)
       character(len=*), intent(in) :: group                !! the group's name, lower case
-      type(entry_kind_type) :: kinds(20)
       character(len=*), parameter :: STRINGS(7) = [character(len=11) :: 'model', 'damage_law', 'table', &
          'rcurve', 'rcurve_file', 'growth_slip', 'stiffness']
       character(len=*), parameter :: REALS(12) = [character(len=12) :: 'mu', 's0_n', 'sf_n', 's0_t', 'sf_t', &
          'k_n', 'k_t', 'd0', 'g_ci', 'g_cii', 'contact_band', 'viscosity']
+      !> (the strings, the reals, and props)
+      type(entry_kind_type) :: kinds(size(STRINGS) + size(REALS) + 1)
       integer :: i
       do i = 1, size(STRINGS)
          kinds(i) = entry_kind_type(group//'.'//trim(STRINGS(i)), KIND_STRING, ENTRY_LEN)
@@ -179,7 +182,7 @@ contains
       do i = 1, size(REALS)
          kinds(size(STRINGS) + i) = entry_kind_type(group//'.'//trim(REALS(i)), KIND_REAL)
       end do
-      kinds(20) = entry_kind_type(group//'.props', KIND_REAL, count=PROPS_ENTRY_MAX)
+      kinds(size(kinds)) = entry_kind_type(group//'.props', KIND_REAL, count=PROPS_ENTRY_MAX)
    end function material_entry_kinds
 
    !> Read and check a case file. On failure `ok` is false and `message` says what and where,
@@ -339,6 +342,7 @@ contains
       e%viscosity = viscosity
       e%stiffness = stiffness
       e%props = props
+      e%props_count = given_values(run%lines, 'material.props')
       call material_props(e, where, directory_of(run%path), run%props, run%table_path, run%rcurve_path, &
          ok, message)
    end subroutine read_material
@@ -385,7 +389,7 @@ contains
       message = ''
       table_path = ''
       rcurve_path = ''
-      if (.not. all(is_unset(e%props))) then
+      if (e%props_count > 0) then
          call props_material(e, where, base_dir, props, table_path, rcurve_path, ok, message)
          return
       end if
@@ -617,16 +621,9 @@ contains
       integer :: n, status
 
       ok = .false.
-      ! (the pre-check takes the values as one list from PROPS(1): `props(3) = ...` is not an
-      ! entry; a value left unset inside the list is refused all the same)
-      n = PROPS_ENTRY_MAX
-      do while (is_unset(e%props(n)))
-         n = n - 1
-      end do
-      if (any(is_unset(e%props(1:n)))) then
-         message = where//'props: PROPS(1) to PROPS('//int_to_string(n)//') must all be given'
-         return
-      end if
+      ! (the pre-check took the values as one list from PROPS(1), 1 to PROPS_ENTRY_MAX of them:
+      ! `props(3) = ...` is not an entry)
+      n = e%props_count
       given = ''
       if (len_trim(e%model) > 0) call add_name(given, 'model')
       if (len_trim(e%damage_law) > 0) call add_name(given, 'damage_law')
@@ -652,6 +649,9 @@ contains
       end if
       props = e%props(1:n)
       call from_props(props, p, status, why)
+      ! (the thin-layer mode and the host conventions would read the history's separations as
+      ! strains or change what the outputs mean: the drivers refuse them, as the C API does)
+      if (status == STATUS_OK) call refuse_umat_options(p, 'this driver', status, why)
       if (status /= STATUS_OK) then
          message = where//'props: '//trim(why)
          return
@@ -692,6 +692,16 @@ contains
       end function file_entry
 
    end subroutine props_material
+
+   !> The entry of material group `group` that holds D0 in a case file whose pre-check found
+   !> `lines`: 'props' where the material is given as PROPS, else 'd0'.
+   pure function d0_entry_of(lines, group) result(entry)
+      type(entry_line_type), intent(in) :: lines(:)
+      character(len=*), intent(in) :: group                !! 'material' or 'joint'
+      character(len=:), allocatable :: entry
+      entry = 'd0'
+      if (given_values(lines, group//'.props') > 0) entry = 'props'
+   end function d0_entry_of
 
    !> Read the `&loading` group.
    subroutine read_loading(unit, run, ok, message)
@@ -924,9 +934,9 @@ contains
    !> was given: `context` (the case file and group, e.g. 'case.nml: &material: '), then the entry
    !> (`with_entry_line` then adds the entry's line). With `props`, the material's data are checked
    !> as the UMAT checks them at its every call (check_run_time_data): a tabulated R-curve that
-   !> does not cover the initial crack D0 is refused here, under the entry d0, with the file's D
-   !> range and D0, rather than at the first update.
-   subroutine load_start_up_data(table_path, rcurve_path, context, ok, message, rcurve_entry, props)
+   !> does not cover the initial crack D0 is refused here, under the entry d0 (or `d0_entry`),
+   !> with the file's D range and D0, rather than at the first update.
+   subroutine load_start_up_data(table_path, rcurve_path, context, ok, message, rcurve_entry, props, d0_entry)
       character(len=*), intent(in) :: table_path   !! custom RVE table, or ''
       character(len=*), intent(in) :: rcurve_path  !! tabulated R-curve, or ''
       character(len=*), intent(in) :: context      !! the case file and group that name them
@@ -936,6 +946,8 @@ contains
       character(len=*), intent(in), optional :: rcurve_entry
       !> the case's PROPS, to check the data loaded against (the R-curve's coverage of D0)
       real(dp), intent(in), optional :: props(:)
+      !> the entry that holds D0 (default d0; props where the case gives the material as PROPS)
+      character(len=*), intent(in), optional :: d0_entry
       integer :: status
       character(len=MESSAGE_LEN) :: text
       type(law_params_type) :: params
@@ -960,7 +972,10 @@ contains
             ! (an R-curve that does not cover the initial crack is the entry d0's; any other
             ! refusal of the data loaded is named by the group alone)
             message = context
-            if (status == STATUS_RCURVE_OUT_OF_RANGE) message = context//'d0: '
+            if (status == STATUS_RCURVE_OUT_OF_RANGE) then
+               message = context//'d0: '
+               if (present(d0_entry)) message = context//d0_entry//': '
+            end if
          else
             status = STATUS_OK
          end if

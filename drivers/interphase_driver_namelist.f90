@@ -19,7 +19,7 @@ module interphase_driver_namelist
       close_text_file
    implicit none
    private
-   public :: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
+   public :: check_namelist_file, entry_kind_type, entry_line_type, with_entry_line, given_values, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
 
    !> The characters of a Fortran name (a group's, an entry's).
@@ -615,5 +615,17 @@ contains
          end if
       end do
    end function with_entry_line
+
+   !> How many values the entry `name` ('group.entry', lower case) was given in the file whose
+   !> pre-check found `lines`: 0 where it was not given.
+   pure integer function given_values(lines, name) result(n)
+      type(entry_line_type), intent(in) :: lines(:)
+      character(len=*), intent(in) :: name
+      integer :: j
+      n = 0
+      do j = 1, size(lines)
+         if (trim(lines(j)%name) == name) n = lines(j)%values
+      end do
+   end function given_values
 
 end module interphase_driver_namelist

@@ -14,7 +14,7 @@
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_kinds, only: dp
-   use interphase_driver_case, only: case_type, read_case, load_start_up_data, material_summary, writes_an_input, &
+   use interphase_driver_case, only: case_type, read_case, load_start_up_data, d0_entry_of, material_summary, writes_an_input, &
       data_files_summary
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output, remove_file, &
@@ -68,7 +68,8 @@ program interphase_point
    if (.not. ok) call fail(message)
    ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does), and
    ! the R-curve's coverage of D0 checked; a refusal names the entry's line
-   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message, props=run%props)
+   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &material: ', ok, message, props=run%props, &
+      d0_entry=d0_entry_of(run%lines, 'material'))
    if (.not. ok) call fail(with_entry_line(message, case_path, run%lines))
    summary = material_summary(run%props)
    write (output_unit, '(a)') run%name//': '//summary

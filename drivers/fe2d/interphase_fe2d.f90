@@ -16,7 +16,7 @@ program interphase_fe2d
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_layout, only: PROP_MU
    use interphase_fe2d_case, only: fe2d_case_type, read_fe2d_case
-   use interphase_driver_case, only: load_start_up_data, material_summary, data_files_summary
+   use interphase_driver_case, only: load_start_up_data, d0_entry_of, material_summary, data_files_summary
    use interphase_driver_namelist, only: with_entry_line
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot, exit_program, print_version, rename_file, refuse_special_output, &
@@ -60,7 +60,8 @@ program interphase_fe2d
    if (.not. ok) call fail(message)
    ! start-up: custom RVE table and R-curve read once, before any update (as UEXTERNALDB does)
    ! (and the R-curve's coverage of D0 checked; a refusal names the entry's line)
-   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &joint: ', ok, message, props=run%props)
+   call load_start_up_data(run%table_path, run%rcurve_path, case_path//': &joint: ', ok, message, props=run%props, &
+      d0_entry=d0_entry_of(run%lines, 'joint'))
    if (.not. ok) call fail(with_entry_line(message, case_path, run%lines))
    call build_mesh(run, mesh)
    ! the joint's material, as interphase-point names it (model, table, law, key parameters)

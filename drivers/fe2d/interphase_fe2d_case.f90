@@ -11,8 +11,8 @@ module interphase_fe2d_case
    use interphase_finite, only: difference_is_finite
    use interphase_text_input, only: tried_path, clip_text
    use interphase_driver_case, only: material_entries_type, material_props, unpack_entries, &
-      ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props, PROPS_ENTRY_MAX, is_unset
-   use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, KIND_REAL, KIND_INTEGER, &
+      ENTRY_LEN, precheck_case_file, material_entry_kinds, check_material_props, PROPS_ENTRY_MAX
+   use interphase_driver_namelist, only: entry_kind_type, entry_line_type, with_entry_line, given_values, KIND_REAL, KIND_INTEGER, &
       KIND_LOGICAL, KIND_STRING, open_namelist_file
    use interphase_driver_history, only: carriage_return_message, parse_number, separator_hint, foreign_length_unit_after
    use interphase_driver_text, only: int_to_string, count_text, real_to_string, to_lower, directory_of, &
@@ -112,6 +112,8 @@ contains
       ! once and of its kind
       call precheck_case_file(path, [FE2D_ENTRIES, material_entry_kinds('joint')], ok, message, lines)
       if (.not. ok) return
+      ! (the entries' lines, kept before the groups are read: read_joint counts props' values)
+      run%lines = lines
       ok = .false.
       call open_namelist_file(path, unit, ios, iomsg)
       if (ios /= 0) then
@@ -128,7 +130,6 @@ contains
       if (.not. ok) message = with_entry_line(message, path, lines)
       if (ok) call check_material_props(path, 'joint', run%props, ok, message, lines)
       if (ok) run%output_entry = with_entry_line(path//': &loading: output = '''//run%output//'''', path, lines)
-      run%lines = lines
       if (ok) call read_shear_history(run%history_path, run%history_t, run%history_u, ok, message, &
          named_by=with_entry_line(path//': &loading: history: ', path, lines))
    end subroutine read_fe2d_case
@@ -273,7 +274,8 @@ contains
    end subroutine read_brick
 
    !> `&joint`: the interface material, as the `&material` group of interphase-point (the same
-   !> entries and the same decoder, `material_props`); damage_law defaults to 'displacement'.
+   !> entries and the same decoder, `material_props`); damage_law defaults to 'displacement' where
+   !> the joint is given by its entries (not by props, the UMAT's PROPS).
    subroutine read_joint(unit, run, ok, message)
       integer, intent(in) :: unit                 !! open case file
       type(fe2d_case_type), intent(inout) :: run  !! receives props, table_path, rcurve_path
@@ -300,8 +302,9 @@ contains
       read (unit, nml=joint, iostat=ios, iomsg=iomsg)
       call group_status(run%path, 'joint', ios, iomsg, ok, message)
       if (.not. ok) return
-      ! (damage_law's default where the joint is given by its entries: with props, PROPS(2) is it)
-      if (len_trim(damage_law) == 0 .and. all(is_unset(props))) damage_law = 'displacement'
+      ! (damage_law's default where the joint is given by its entries, also for damage_law = '',
+      ! an entry left out; with props, PROPS(2) is it)
+      if (len_trim(damage_law) == 0 .and. given_values(run%lines, 'joint.props') == 0) damage_law = 'displacement'
       e = material_entries_type(model, damage_law, table, rcurve, rcurve_file, mu, s0_n, sf_n, s0_t, &
          sf_t, k_n, k_t, d0, g_ci, g_cii)
       e%growth_slip = growth_slip
@@ -309,6 +312,7 @@ contains
       e%viscosity = viscosity
       e%stiffness = stiffness
       e%props = props
+      e%props_count = given_values(run%lines, 'joint.props')
       call material_props(e, run%path//': &joint: ', directory_of(run%path), run%props, run%table_path, &
          run%rcurve_path, ok, message)
    end subroutine read_joint

@@ -371,6 +371,8 @@ def test_read_case_takes_the_material_as_props(source_dir, tmp_path):
     by_entries = interphase.read_case(write_case(tmp_path, CASE))
     by_props = interphase.read_case(write_case(tmp_path, CASE.replace(CASE_MATERIAL, PROPS_MATERIAL), name="p.nml"))
     assert by_props.material.props.tobytes() == by_entries.material.props.tobytes()
+    assert interphase.read_namelist(tmp_path / "p.nml")["material"]["props"] == [
+        1, 1, 0.75, 0.00044, 0.04, 0.00072, 0.06, 482.69742679680568, 198.75776397515528]
     assert np.array_equal(by_props.run().traction, by_entries.run().traction)
     named = interphase.read_case(source_dir / "drivers" / "cases" / "fracture" / "mixed-constant.nml")
     given = interphase.read_case(source_dir / "tests" / "driver" / "inputs" / "props_fracture.nml")
@@ -1381,6 +1383,16 @@ DRIVER_CASES = {
     "props_too_many": (CASE_MATERIAL, PROPS_MATERIAL.replace("198.75776397515528", "198.75776397515528" + ", 0" * 12),
                        None),
     "props_not_a_number": (CASE_MATERIAL, PROPS_MATERIAL.replace("0.75,", "abc,"), None),
+    # the UMAT's own options (layer thickness, layer normal, host): refused, as the C API refuses them
+    "props_layer_thickness": (CASE_MATERIAL, PROPS_MATERIAL.replace("198.75776397515528",
+                                                                    "198.75776397515528, 0, 0, 0, 0, 2.0"), None),
+    "props_host": (CASE_MATERIAL, PROPS_MATERIAL.replace("198.75776397515528",
+                                                         "198.75776397515528, 0, 0, 0, 0, 0, 0, 1"), None),
+    # a value equal to the drivers' marker of an entry left out (-huge) is a value all the same
+    "props_huge_negative": (CASE_MATERIAL, PROPS_MATERIAL.replace("0.75,", "-1.7976931348623157e308,"), None),
+    "props_huge_negative_last": (CASE_MATERIAL, PROPS_MATERIAL.replace("198.75776397515528",
+                                                                       "198.75776397515528, -1.7976931348623157e308"),
+                                 None),
 }
 
 
@@ -1427,6 +1439,10 @@ NAMED_CASES = {
                                        "rcurve = 'constant', g_ci = 0.005"), {}),
     "constant_gcii_only": (CASE.replace("damage_law = 'displacement'", "damage_law = 'fracture'\n  d0 = 0.05, "
                                         "rcurve = 'constant', g_cii = 0.005"), {}),
+    # the same through props: named under props and its line
+    "props_rcurve_not_d0": (CASE.replace(CASE_MATERIAL, PROPS_MATERIAL.replace("1, 1,", "1, 2,").replace(
+        "198.75776397515528", "198.75776397515528, 0.5, 3, 0, 0") + "  rcurve_file = 'r.txt'\n"),
+                            {"r.txt": RCURVE_TO_03}),
     # one field a line: "1 column", singular
     "one_column": (CASE, {"h.txt": "0,0,0\n1,0,0.01\n"}),
     # no group at all: said so, not "&material: group not found"
@@ -1440,6 +1456,9 @@ NAMED_MESSAGES = {
     "table_missing": r"case\.nml:\d+: &material: table: RVE table file cannot be opened or read: .*/no\.dat",
     "constant_gci_only": r"case\.nml:\d+: &material: rcurve = 'constant' needs the entry g_cii \(N/mm; g_ci is given\)$",
     "constant_gcii_only": r"case\.nml:\d+: &material: rcurve = 'constant' needs the entry g_ci \(N/mm; g_cii is given\)$",
+    "props_rcurve_not_d0": r"case\.nml:2: &material: props: tabulated R-curve does not cover the damage reached "
+                           r"\(or D0\): R-curve .*/r\.txt covers D from 0\.00000 to 0\.300000, not the initial crack "
+                           r"D0 = 0\.500000$",
     "one_column": r"h\.txt:1: found 1 column; expected 3 ",
     "empty": r"^case\.nml: no namelist group in the file \(expected &material and &loading\)$",
     "comments_only": r"^case\.nml: no namelist group in the file \(expected &material and &loading\)$",
@@ -1466,7 +1485,7 @@ def test_read_case_names_where_a_value_came_from_as_the_driver_does(point_driver
     error = caught.value
     got = error.detail if isinstance(error, interphase.InterphaseError) else str(error)
     assert got == expected
-    if name == "rcurve_not_d0":
+    if name in ("rcurve_not_d0", "props_rcurve_not_d0"):
         assert error.status == interphase.STATUS_RCURVE_OUT_OF_RANGE
     if name == "history_missing":
         assert isinstance(error, FileNotFoundError)

@@ -549,11 +549,13 @@ def _values_shown(values, comma_after_first, real):
 def _namelist_entries(path, known=None):
     """{group: {entry: (value, line)}} of a namelist file, read as strictly as the
     driver's pre-check reads it (drivers/interphase_driver_namelist.f90): one group of each name,
-    each entry once and with one value (a quoted string, a number, .true./.false.), nothing outside
+    each entry once and with a value (a quoted string, a number, .true./.false.), nothing outside
     a group, a group closed by "/" (or &end) before the next one. With `known` ({group: {entry:
-    kind}}, the kinds "string", "real", "integer", "logical"), a group or an entry not in it and a
-    value not of its entry's kind are refused as well, where and as the driver refuses them, and the
-    values are of their kinds; without, numbers are int when written as integers, else float."""
+    kind}}, the kinds "string", "real", "integer", "logical", and "reals", a list of 1 to
+    PROPS_ENTRY_MAX reals), a group or an entry not in it, an entry of one value given several and
+    a value not of its entry's kind are refused as well, where and as the driver refuses them, and
+    the values are of their kinds; without, numbers are int when written as integers, else float,
+    and an entry given several values is their list."""
     groups = {}
     group, name, values, entry_line, number = None, None, [], 0, 0
     after_comma = False     # the last token was a comma (an empty value follows a second one)
@@ -580,7 +582,7 @@ def _namelist_entries(path, known=None):
                              "entries: " + ", ".join(kinds))
         where = f"{path}:{entry_line}: &{group}: {name}"
         if kinds is not None and kinds[name] == "reals":
-            # (a list of reals: each value named by its place, 'props = 1e400 (value 3) is not finite')
+            # (a list of reals: each value named by its place, 'props = abc (value 3) is not a number')
             if not 1 <= len(values) <= PROPS_ENTRY_MAX:
                 raise ValueError(f"{where} takes 1 to {PROPS_ENTRY_MAX} values, got {len(values)}")
             reals = []
@@ -590,6 +592,10 @@ def _namelist_entries(path, known=None):
                     raise ValueError(f"{where} = {_clip(text)} (value {j}) is {why}")
                 reals.append(value)
             groups[group][name] = (reals, entry_line)
+            return
+        if kinds is None and len(values) > 1:
+            # (read_namelist: an entry given several values, as props = 1, 1, 0.75, ..., is their list)
+            groups[group][name] = ([_untyped(quoted, text, where) for quoted, text in values], entry_line)
             return
         if len(values) != 1:
             raise ValueError(f"{where} needs one value, got {len(values)}"
@@ -702,9 +708,10 @@ def _namelist_entries(path, known=None):
 
 def read_namelist(path):
     """{group: {entry: value}} of a namelist file: quoted strings (str), numbers (int when written
-    as integers, else float) and logicals (bool), one value each; the file is read as strictly as
-    the driver's pre-check reads it (a group or an entry given twice, an entry with no value or
-    with several, text outside a group: ValueError naming the file and the line)."""
+    as integers, else float) and logicals (bool); an entry given several values (`props = 1, 1,
+    0.75, ...`) their list. The file is read as strictly as the driver's pre-check reads it (a
+    group or an entry given twice, an entry with no value, text outside a group: ValueError naming
+    the file and the line)."""
     return {g: {k: v for k, (v, _) in entries.items()} for g, entries in _namelist_entries(path).items()}
 
 
@@ -761,19 +768,26 @@ def _props_material(path, entries, base, lines):
     interphase-point's props_material checks it: no entry that PROPS hold beside props, the values
     decoded by the library (its message, under props), the files PROPS cannot name (table where
     they select a custom RVE table, rcurve_file where they select a tabulated R-curve) given
-    exactly there. The files are not loaded (read_case loads them after the history)."""
+    exactly there. The files are not loaded (read_case loads them after the history). The UMAT's
+    own options (layer thickness and normal, host) are refused, as the driver refuses them."""
     def blank(v):
         return isinstance(v, str) and v.strip(" ") == ""
     given = [k for k in _PROPS_HELD if k in entries and not blank(entries[k])]
     if given:
-        raise InterphaseError(_status.STATUS_BAD_NPROPS, _at_entry(
+        raise ValueError(_at_entry(
             path, "material", "props gives the whole material as the UMAT's PROPS: leave out " + ", ".join(given)
             + " (or give the material by its entries, without props)", lines))
     material, custom_table, tabulated, rcurve_at = Material._of_props(entries["props"], "read_case")
     try:
         material._check_props()
     except InterphaseError as error:
-        raise InterphaseError(error.status, _at_entry(path, "material", f"props: {error.detail}", lines)) from None
+        # (the library's check is the C API's, which refuses the UMAT's own options naming itself;
+        # the driver names itself: 'this driver takes separations')
+        detail = error.detail
+        if error.status == _status.STATUS_BAD_OPTION:
+            detail = detail.replace("; the C API takes separations: leave it 0",
+                                    "; this driver takes separations: leave it 0")
+        raise InterphaseError(error.status, _at_entry(path, "material", f"props: {detail}", lines)) from None
     table = entries.get("table", "")
     rcurve_file = entries.get("rcurve_file", "")
     if custom_table:
@@ -934,7 +948,8 @@ def read_case(path):
     except InterphaseError as error:
         entry = {"table": "table", "rcurve": "rcurve_file"}.get(getattr(error, "file_kind", None))
         if entry is None and error.status == _status.STATUS_RCURVE_OUT_OF_RANGE:
-            entry = "d0"
+            # (D0 is the entry d0's, or props' where the material is given as PROPS)
+            entry = "props" if "props" in values["material"] else "d0"
         if entry is None:
             raise
         # (detail: the driver's line; the text: the status named once, as for any InterphaseError)
