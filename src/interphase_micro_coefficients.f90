@@ -257,12 +257,11 @@ contains
       real(dp), intent(in) :: d
       real(dp), intent(in) :: v(N_COEFFICIENTS), dv(N_COEFFICIENTS)
       type(coefficient_set_type), intent(out) :: coef, dcoef_dd
-      real(dp) :: tf, dtf, dcf
-      tf = -huge(1.0_dp)
-      if (d > 0.0_dp) tf = v(IC_DTF)/d
-      coef = as_set(v, tf, reciprocal_cf(v(IC_TC_T), d, v(IC_UFBAR)))
+      real(dp) :: dtf, dcf
+      ! (the values as every provider forms them)
+      call columns_set(v, d, coef)
       dtf = 0.0_dp
-      if (d > 0.0_dp) dtf = (dv(IC_DTF) - tf)/d
+      if (d > 0.0_dp) dtf = (dv(IC_DTF) - coef%tf)/d
       dcf = -(dv(IC_TC_T)*(d*v(IC_UFBAR)) + v(IC_TC_T)*(v(IC_UFBAR) + d*dv(IC_UFBAR)))
       dcoef_dd = as_set(dv, dtf, dcf)
    end subroutine form_sets
