@@ -15,14 +15,15 @@
 !> viscous regularisation) or 9 (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for
 !> Abaqus/Standard with the consistent tangent (stiffness option 0), a *DENSITY > 0 for
 !> Abaqus/Explicit, and no *DEPVAR, DELETE= among interphase's slots (which hold 0 at every intact
-!> point: Abaqus would delete it). It reads keywords (a keyword line that ends in a comma
-!> continued on the next; keywords, parameters and values abbreviated as Abaqus allows) and their
-!> data lines only, those of *INCLUDE files where they stand (a relative INPUT= from the deck's
-!> folder, the job's working directory, in nested files too; an *INCLUDE that cannot be read is
-!> a failed check; no parts/assemblies resolution; *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is
-!> not interphase's and is skipped) as Abaqus reads them: an empty data field is 0 (not skipped),
-!> a label in double quotes is taken
-!> as written; what Abaqus refuses in the lines it reads is a failed check (a line over 256
+!> point: Abaqus would delete it), and the element sets' initial state variables (*INITIAL
+!> CONDITIONS, TYPE=SOLUTION) as the UMAT's and VUMAT's STATEV reader checks them. It reads
+!> keywords (a keyword line that ends in a comma continued on the next; keywords, parameters and
+!> values abbreviated as Abaqus allows) and their data lines only, those of *INCLUDE files where
+!> they stand (a relative INPUT= from the deck's folder, the job's working directory, in nested
+!> files too; an *INCLUDE that cannot be read is a failed check; no parts/assemblies resolution;
+!> *USER MATERIAL, TYPE=THERMAL, a UMATHT's, is not interphase's and is skipped) as Abaqus reads
+!> them: an empty data field is 0 (not skipped), a label in double quotes is taken as written;
+!> what Abaqus refuses in the lines it reads is a failed check (a line over 256
 !> characters, more than 8 constants on a *USER MATERIAL data line, a parameter *USER MATERIAL
 !> does not have, *MATERIAL without NAME=, *COHESIVE SECTION without ELSET= or MATERIAL=), and
 !> a section whose own or material's lines fail is not said to be ok. It prints one line per
@@ -39,8 +40,9 @@ program interphase_check_deck
       RCURVE_EQUIVALENT, RCURVE_CONSTANT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
       GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, OPT_CONTACT_BAND, OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, SV_DAMAGE, SV_SLIP_1, &
       SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
-      SV_FAILED
+      SV_FAILED, SV_SEP_N, SV_SEP_T1, SV_SEP_T2
    use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
+   use interphase_state, only: interface_state_type, unpack_statev
    use interphase_params, only: law_params_type, from_props, refuse_umat_options, constants_count
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficient_values_at
@@ -87,9 +89,21 @@ program interphase_check_deck
    !> takes a keyword, a parameter and most parameter values abbreviated to any start that no
    !> other one shares (its input syntax rules): `resolve_name` reads such an abbreviation as the
    !> name it abbreviates, against these and the Abaqus keywords beside them (KEYWORDS_BESIDE).
-   character(len=NAME_LEN), parameter :: KEYWORDS_READ(16) = [character(len=NAME_LEN) :: 'MATERIAL', &
+   character(len=NAME_LEN), parameter :: KEYWORDS_READ(17) = [character(len=NAME_LEN) :: 'MATERIAL', &
       'USERMATERIAL', 'DEPVAR', 'DENSITY', 'COHESIVESECTION', 'DYNAMIC', 'DYNAMICTEMPERATURE-DISPLACEMENT', &
-      'INCLUDE', 'STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION']
+      'INCLUDE', 'STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION', &
+      'INITIALCONDITIONS']
+   !> The values of *INITIAL CONDITIONS' TYPE= (Abaqus Keywords Guide), against which an
+   !> abbreviation is read: only TYPE=SOLUTION, the state variables, is checked.
+   character(len=NAME_LEN), parameter :: INITIAL_CONDITION_TYPES(*) = [character(len=NAME_LEN) :: &
+      'ACOUSTICSTATICPRESSURE', 'ACTIVATION', 'CONCENTRATION', 'CONTACT', 'CURE', 'DAMAGEINITIATION', 'ENRICHMENT', &
+      'FIELD', 'FLUIDPRESSURE', 'HARDENING', 'INITIALGAP', 'IONCONCENTRATION', 'MASSFLOWRATE', &
+      'NORMALIZEDCONCENTRATION', 'PLASTICSTRAIN', 'POREPRESSURE', 'POROSITY', 'PRESSURESTRESS', 'RATIO', &
+      'REFCOORDINATE', 'RELATIVEDENSITY', 'ROTATINGVELOCITY', 'SATURATION', 'SOLUTION', 'SPECIFICENERGY', &
+      'SPUDCANEMBEDMENT', 'STRESS', 'TEMPERATURE', 'VELOCITY', 'VOLUMEFRACTION']
+   !> *INITIAL CONDITIONS, TYPE=SOLUTION: the values on an element set's first data line (its label
+   !> takes the first of eight fields) and on each line after it (Abaqus Keywords Guide).
+   integer, parameter :: SOLUTION_FIRST_LINE_VALUES = 7, SOLUTION_LINE_VALUES = 8
    !> Abaqus keywords that begin as a keyword of KEYWORDS_READ does: an abbreviation that could be
    !> one of them as well is ambiguous (Abaqus refuses it), not one this check reads. (The ones
    !> known here; a start shared with a keyword missing from this list is read as the keyword of
@@ -151,6 +165,23 @@ program interphase_check_deck
       character(len=512) :: bad_data = ''      !! a field of its data line that is not a number
       integer :: refused = 0                   !! failed checks on its own lines (reported as read)
    end type section_type
+
+   !> A data line of *INITIAL CONDITIONS, TYPE=SOLUTION, kept until the deck is read: where one
+   !> element set's values end depends on its material's *DEPVAR, which may come later.
+   type :: solution_line_type
+      character(len=:), allocatable :: file
+      integer :: line = 0
+      integer :: block = 0                     !! which *INITIAL CONDITIONS it belongs to
+      character(len=LINE_LEN) :: text = ''
+   end type solution_line_type
+
+   !> The initial state variables one *INITIAL CONDITIONS, TYPE=SOLUTION gives an element set.
+   type :: initial_state_type
+      character(len=:), allocatable :: file
+      integer :: line = 0                      !! its first data line
+      character(len=80) :: elset = ''
+      real(dp), allocatable :: values(:)       !! STATEV(1:*DEPVAR) (mm for the slips)
+   end type initial_state_type
 
    character(len=:), allocatable :: path
    integer :: iarg, nfail, status
@@ -241,7 +272,7 @@ contains
          '  Checks every *COHESIVE SECTION of an Abaqus deck that uses interphase (and every *SOLID SECTION', &
          '  of a *USER MATERIAL: the thin-layer mode): RESPONSE, THICKNESS,', &
          '  *USER MATERIAL constants decoded as interphase PROPS, *DEPVAR (and its DELETE=), UNSYMM,', &
-         '  *DENSITY (Explicit).', &
+         '  *DENSITY (Explicit), *INITIAL CONDITIONS, TYPE=SOLUTION (initial state variables).', &
          '  *INCLUDE files are read where they stand (a relative INPUT= from the deck''s folder, as the job''s).', &
          '  Exit status: 0 all checks pass, 1 a check failed, 2 a file cannot be read.', &
          '  Documented in drivers/README.md and docs/abaqus.md.'
@@ -292,8 +323,15 @@ contains
       character(len=:), allocatable :: include_input !! an *INCLUDE's INPUT= as written
       character(len=:), allocatable :: include_path  !! the file it names, as opened
       character(len=80) :: standard_keyword
+      !> the data lines of *INITIAL CONDITIONS, TYPE=SOLUTION, the one being read (0: none) and
+      !> the number read so far, and the element sets' values read from them
+      type(solution_line_type), allocatable :: solution_lines(:)
+      integer :: solution_block, solution_blocks
+      type(initial_state_type), allocatable :: states(:)
 
-      allocate (materials(0), sections(0))
+      allocate (materials(0), sections(0), solution_lines(0))
+      solution_block = 0
+      solution_blocks = 0
       path = deck
       depth = 0
       explicit_file = ''
@@ -442,6 +480,8 @@ contains
                      trim(keyword)]
                end if
             end select
+            ! (the data lines after an *INCLUDE line continue the keyword before it)
+            if (trim(keyword) /= 'INCLUDE') solution_block = 0
             select case (trim(keyword))
             case ('INCLUDE')
                ! its lines are read where it stands, as Abaqus reads them; a relative INPUT= from
@@ -532,6 +572,24 @@ contains
                      [character(len=NAME_LEN) :: 'TRACTIONSEPARATION', 'CONTINUUM', 'GASKET']), &
                   thickness_mode=parameter_choice(parameter_names, parameter_values, 'THICKNESS', &
                      [character(len=NAME_LEN) :: 'GEOMETRY', 'SPECIFIED']))]
+            case ('INITIALCONDITIONS')
+               ! the state variables' initial values: read after the deck (read_initial_states)
+               if (parameter_choice(parameter_names, parameter_values, 'TYPE', INITIAL_CONDITION_TYPES) == 'SOLUTION') then
+                  if (any(parameter_names == 'USER')) then
+                     write (output_unit, '(a)') path//':'//int_to_string(lineno)//': note: *'//trim(keyword_text)// &
+                        ', TYPE=SOLUTION, USER: the user subroutine SDVINI gives the state variables, which this '// &
+                        'check cannot see: interphase''s slots must start as docs/abaqus.md says (STATEV)'
+                  else if (any(parameter_names == 'REBAR')) then
+                     continue     ! rebars' state variables: not interphase's (a cohesive element has no rebar)
+                  else if (len(parameter_value(parameter_names, parameter_values, 'INPUT')) > 0) then
+                     write (output_unit, '(a)') path//':'//int_to_string(lineno)//': note: *'//trim(keyword_text)// &
+                        ', TYPE=SOLUTION, INPUT='//parameter_value(parameter_names, parameter_values, 'INPUT')// &
+                        ': the state variables in that file are not checked'
+                  else
+                     solution_blocks = solution_blocks + 1
+                     solution_block = solution_blocks
+                  end if
+               end if
             case ('DYNAMIC', 'DYNAMICTEMPERATURE-DISPLACEMENT')
                ! (an explicit dynamic step, with or without the temperatures: Abaqus/Explicit)
                if (any(parameter_names == 'EXPLICIT')) then
@@ -570,6 +628,10 @@ contains
          end if
          ! a data line of the current keyword
          data_lines = data_lines + 1
+         if (trim(keyword) == 'INITIALCONDITIONS' .and. solution_block > 0) then
+            solution_lines = [solution_lines, solution_line_type(file=path, line=lineno, block=solution_block, text=line)]
+            cycle
+         end if
          call parse_numbers(line, values, empty, nvalues, bad_field, bad_item, bad_why)
          ! at most eight constants on one *USER MATERIAL data line (Abaqus Keywords Guide)
          if ((trim(keyword) == 'USERMATERIAL' .or. trim(keyword) == 'USERMATERIAL,THERMAL') .and. &
@@ -679,19 +741,21 @@ contains
             'MATERIAL: nothing for interphase to check (CalculiX decks are not checked: docs/abaqus.md)'
          return
       end if
+      call read_initial_states(solution_lines, sections, materials, states, nfail)
       do i = 1, size(sections)
-         call check_section(deck, sections(i), materials, explicit, nfail)
+         call check_section(deck, sections(i), materials, explicit, states, nfail)
       end do
 
    end subroutine check_deck
 
    !> The checks of one cohesive section and its material; one line of output, plus one line per
    !> failed check.
-   subroutine check_section(path, section, materials, explicit, nfail)
+   subroutine check_section(path, section, materials, explicit, states, nfail)
       character(len=*), intent(in) :: path
       type(section_type), intent(in) :: section
       type(material_type), intent(in) :: materials(:)
       logical, intent(in) :: explicit
+      type(initial_state_type), intent(in) :: states(:)   !! the deck's initial state variables
       integer, intent(inout) :: nfail
 
       type(law_params_type) :: params
@@ -906,6 +970,8 @@ contains
             end if
             if (decoded .and. any(mat%constant_empty(1:min(mat%nread, MAX_CONSTANTS)))) &
                notes = notes//'; note: '//empty_fields(mat, .true.)//' read as 0, as Abaqus reads an empty data field'
+            if (decoded .and. mat%depvar >= depvar_needed) &
+               call check_initial_states(section%elset, states, params, explicit, notes, nfail)
          end associate
       end if
       ! failed checks on the section's or its material's own lines are named where they are read
@@ -916,6 +982,203 @@ contains
             trim(section%material)//', '//trim(solver)//': '//summary//': ok'//notes
       end if
    end subroutine check_section
+
+   !> The element sets' initial state variables from the data lines of *INITIAL CONDITIONS,
+   !> TYPE=SOLUTION (Abaqus Keywords Guide): an element set's label and the values of its first
+   !> seven state variables on one line, eight more on each line after it, as many values as its
+   !> material's *DEPVAR count. An element set is known here by the ELSET= of a section interphase
+   !> serves: where a line names an element (by number) or another set, the values' end is not
+   !> known, and that *INITIAL CONDITIONS is not read further (a note). A field that is not a
+   !> number, a line with more values than Abaqus reads, or a count of values other than *DEPVAR's
+   !> is a failed check (and ends the reading of that *INITIAL CONDITIONS).
+   subroutine read_initial_states(lines, sections, materials, states, nfail)
+      type(solution_line_type), intent(in) :: lines(:)
+      !> the sections interphase serves (a failed check of an element set's values is its section's)
+      type(section_type), intent(inout) :: sections(:)
+      type(material_type), intent(in) :: materials(:)
+      type(initial_state_type), allocatable, intent(out) :: states(:)
+      integer, intent(inout) :: nfail
+      real(dp) :: buffer(LINE_LEN + 1), x
+      logical :: empty(LINE_LEN + 1), ok
+      real(dp), allocatable :: got(:)
+      type(initial_state_type), allocatable :: grown(:)
+      character(len=LINE_LEN) :: first, rest, bad_item
+      character(len=32) :: why
+      character(len=:), allocatable :: where, label
+      integer :: i, i0, c, s, m, k, n, nvalues, bad_field, limit, nfail_before
+      logical :: failed
+
+      allocate (states(0), got(0))
+      i = 1
+      do while (i <= size(lines))
+         i0 = i
+         where = lines(i0)%file//':'//int_to_string(lines(i0)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION'
+         c = comma_outside_quotes(lines(i0)%text)
+         if (c > 0) then
+            first = lines(i0)%text(1:c - 1)
+            rest = lines(i0)%text(c + 1:)
+         else
+            first = lines(i0)%text
+            rest = ''
+         end if
+         call parse_real(first, x, ok, why)
+         if (ok) then
+            write (output_unit, '(a)') where//': note: element '//trim(adjustl(first))//': the state variables '// &
+               'of single elements are not checked (this check knows elements by their section''s ELSET=), nor the '// &
+               'lines after them in this *INITIAL CONDITIONS'
+            call next_block(lines, lines(i0)%block, i)
+            cycle
+         end if
+         label = label_value(first)
+         s = 0
+         do k = 1, size(sections)
+            if (sections(k)%elset == label) then
+               s = k
+               exit
+            end if
+         end do
+         m = 0
+         if (s > 0) then
+            do k = 1, size(materials)
+               if (materials(k)%name == sections(s)%material) m = k
+            end do
+         end if
+         if (s == 0) then
+            write (output_unit, '(a)') where//': note: ELSET='//label//' is not the ELSET= of a section interphase '// &
+               'serves (a set of other elements, or one this check cannot resolve: it reads no *ELSET): not checked, '// &
+               'nor the lines after it in this *INITIAL CONDITIONS'
+            call next_block(lines, lines(i0)%block, i)
+            cycle
+         else if (m == 0) then
+            call next_block(lines, lines(i0)%block, i)     ! (the section's missing material is its own failed check)
+            cycle
+         else if (materials(m)%depvar < 1) then
+            call next_block(lines, lines(i0)%block, i)     ! (no *DEPVAR count: the material's own failed check)
+            cycle
+         end if
+         n = materials(m)%depvar
+         where = where//' of ELSET='//label
+         nfail_before = nfail
+         failed = .false.
+         deallocate (got)
+         allocate (got(0))
+         limit = SOLUTION_FIRST_LINE_VALUES
+         do
+            if (i == i0) then
+               call parse_numbers(rest, buffer, empty, nvalues, bad_field, bad_item, why)
+               if (bad_field > 0) bad_field = bad_field + 1   ! (the label is the line's first field)
+            else
+               call parse_numbers(lines(i)%text, buffer, empty, nvalues, bad_field, bad_item, why)
+               ! a line whose first field is not a number: the next element set's
+               if (bad_field == 1) exit
+            end if
+            if (bad_field > 0) then
+               call record_failure(lines(i)%file//':'//int_to_string(lines(i)%line)//': *INITIAL CONDITIONS, '// &
+                  'TYPE=SOLUTION data line of ELSET='//label//': field '//int_to_string(bad_field)//" '"// &
+                  clip_text(trim(adjustl(bad_item)))//"' is "//trim(why), nfail)
+               failed = .true.
+               exit
+            end if
+            if (nvalues > limit) then
+               call record_failure(lines(i)%file//':'//int_to_string(lines(i)%line)//': *INITIAL CONDITIONS, '// &
+                  'TYPE=SOLUTION data line of ELSET='//label//': '//int_to_string(nvalues)//' values, but Abaqus '// &
+                  'reads '//int_to_string(SOLUTION_FIRST_LINE_VALUES)//' on the line of the element set and '// &
+                  int_to_string(SOLUTION_LINE_VALUES)//' on each line after it', nfail)
+               failed = .true.
+               exit
+            end if
+            got = [got, buffer(1:nvalues)]
+            limit = SOLUTION_LINE_VALUES
+            i = i + 1
+            if (size(got) >= n .or. i > size(lines)) exit
+            if (lines(i)%block /= lines(i0)%block) exit
+         end do
+         if (.not. failed .and. size(got) /= n) then
+            call record_failure(where//': '//int_to_string(size(got))//' value(s), but *DEPVAR of '// &
+               trim(materials(m)%name)//' is '//int_to_string(n)//': Abaqus reads a value for each state variable, '// &
+               int_to_string(SOLUTION_FIRST_LINE_VALUES)//' on the line of the element set and '// &
+               int_to_string(SOLUTION_LINE_VALUES)//' on each line after it', nfail)
+            failed = .true.
+         end if
+         if (failed) then
+            sections(s)%refused = sections(s)%refused + (nfail - nfail_before)
+            call next_block(lines, lines(i0)%block, i)
+            cycle
+         end if
+         ! (grown by hand: an array constructor of this type with allocatable components is
+         ! miscompiled by gfortran 12)
+         allocate (grown(size(states) + 1))
+         grown(1:size(states)) = states
+         grown(size(grown))%file = lines(i0)%file
+         grown(size(grown))%line = lines(i0)%line
+         grown(size(grown))%elset = label
+         grown(size(grown))%values = got
+         call move_alloc(grown, states)
+      end do
+
+   end subroutine read_initial_states
+
+   !> Move i past the lines of `lines` of *INITIAL CONDITIONS number `block` (to the first line of
+   !> the next one, or past the end when none).
+   pure subroutine next_block(lines, block, i)
+      type(solution_line_type), intent(in) :: lines(:)
+      integer, intent(in) :: block
+      integer, intent(inout) :: i
+      do while (i <= size(lines))
+         if (lines(i)%block /= block) exit
+         i = i + 1
+      end do
+   end subroutine next_block
+
+   !> The initial state variables the deck gives the section's element set, checked as the UMAT's
+   !> and VUMAT's STATEV reader checks them at the first call (unpack_statev: the same messages),
+   !> as a 2-D point reads them; what only a 3-D point refuses (STATEV(3), the second slip) is a
+   !> note. For the VUMAT (explicit), STATEV(6:8) are the total separations it adds each increment
+   !> to: an element starts at rest, so they must start at 0.
+   subroutine check_initial_states(elset, states, params, explicit, notes, nfail)
+      character(len=*), intent(in) :: elset
+      type(initial_state_type), intent(in) :: states(:)
+      type(law_params_type), intent(in) :: params         !! the section's material, decoded
+      logical, intent(in) :: explicit
+      character(len=:), allocatable, intent(inout) :: notes
+      integer, intent(inout) :: nfail
+      type(interface_state_type) :: state
+      character(len=MESSAGE_LEN) :: message
+      character(len=:), allocatable :: where
+      integer :: k, status, nchecked
+      logical :: viscous
+
+      viscous = params%viscosity > 0.0_dp
+      nchecked = 0
+      do k = 1, size(states)
+         if (states(k)%elset /= elset) cycle
+         associate (v => states(k)%values)
+            where = states(k)%file//':'//int_to_string(states(k)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION of '// &
+               'ELSET='//trim(elset)
+            call unpack_statev(size(v), v, 2, viscous, state, status, message)
+            if (status /= STATUS_OK) then
+               call record_failure(where//': '//trim(message)//' (the '//trim(merge('VUMAT', 'UMAT ', explicit))// &
+                  ' refuses it at the first increment: docs/abaqus.md, STATEV)', nfail)
+               cycle
+            end if
+            call unpack_statev(size(v), v, 3, viscous, state, status, message)
+            if (status /= STATUS_OK) notes = notes//'; note: '//where//': '//trim(message)//' in a 3-D element (a '// &
+               '2-D one does not read STATEV(3))'
+            if (explicit .and. size(v) >= SV_SEP_T2) then
+               if (.not. all(abs(v(SV_SEP_N:SV_SEP_T2)) <= 0.0_dp)) then
+                  call record_failure(where//': STATEV(6:8) = '//real_to_string(v(SV_SEP_N))//', '// &
+                     real_to_string(v(SV_SEP_T1))//', '//real_to_string(v(SV_SEP_T2))//' mm, but these are the '// &
+                     'VUMAT''s total separations, to which it adds each increment''s: an element at rest starts from 0 '// &
+                     '(another value would offset its traction; docs/abaqus.md, VUMAT)', nfail)
+                  cycle
+               end if
+            end if
+         end associate
+         nchecked = nchecked + 1
+         if (nchecked == 1) notes = notes//'; note: initial state variables (*INITIAL CONDITIONS at '// &
+            states(k)%file//':'//int_to_string(states(k)%line)//') checked'
+      end do
+   end subroutine check_initial_states
 
    !> `*DEPVAR, DELETE=n` of a material: Abaqus deletes a material point whose state variable n is
    !> 0 (1: active). interphase's own slots (1 to depvar_needed) start from zeros and hold 0 at an
@@ -1269,6 +1532,9 @@ contains
          names = [character(len=NAME_LEN) :: 'DELETE']
       case ('INCLUDE')
          names = [character(len=NAME_LEN) :: 'INPUT', 'PASSWORD']
+      case ('INITIALCONDITIONS')
+         names = [character(len=NAME_LEN) :: 'CRITERION', 'DEFINITION', 'FILE', 'INC', 'INPUT', 'INTERPOLATE', &
+            'MIDSIDE', 'NORMAL', 'REBAR', 'SECTIONPOINTS', 'STEP', 'TYPE', 'UNBALANCEDSTRESS', 'USER', 'VARIABLE']
       case ('SOLIDSECTION')
          names = [character(len=NAME_LEN) :: 'COMPOSITE', 'CONTROLS', 'ELSET', 'LAYUP', 'MATERIAL', 'ORIENTATION', &
             'REFNODE', 'STACKDIRECTION', 'SYMMETRIC']
