@@ -29,6 +29,7 @@ module interphase_driver_case
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
    use interphase_provider, only: check_run_time_data
+   use interphase_mixed_control, only: TRACTION_TOLERANCE_MAX
    use interphase_status, only: STATUS_OK, MESSAGE_LEN, status_message, STATUS_BAD_MU, STATUS_BAD_S0_N, &
       STATUS_BAD_SF_N, STATUS_BAD_S0_T, STATUS_BAD_SF_T, STATUS_BAD_K_N, STATUS_BAD_K_T, STATUS_BAD_D0, &
       STATUS_BAD_RCURVE, STATUS_BAD_GC_I, STATUS_BAD_GC_II, STATUS_BAD_OPTION, STATUS_RCURVE_OUT_OF_RANGE
@@ -755,8 +756,11 @@ contains
          return
       end if
 
-      if (.not. (traction_tolerance > 0.0_dp .and. ieee_is_finite(traction_tolerance))) then
-         message = where//'traction_tolerance must be a finite number > 0 (MPa), got '//real_to_string(traction_tolerance)
+      if (.not. (traction_tolerance > 0.0_dp .and. traction_tolerance <= TRACTION_TOLERANCE_MAX)) then
+         ! (1e-3: TRACTION_TOLERANCE_MAX)
+         message = where//'traction_tolerance must be a finite number > 0 and at most 1e-3 (MPa), got '// &
+            real_to_string(traction_tolerance)// &
+            ': Newton meets an imposed traction only to within it (joints carry tractions of 0.01 to 10 MPa)'
          return
       end if
       if (output_every < 1) then

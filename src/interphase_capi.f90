@@ -30,7 +30,7 @@ module interphase_capi
    use interphase_state, only: interface_state_type, state_unpack, state_pack, state_slots
    use interphase_kernel, only: interface_update, update_point
    use interphase_mixed_control, only: point_law_type, path_point_type, path_failure_type, replay_history_path, &
-      describe_failure, component_name, FAILURE_OUTPUT
+      describe_failure, component_name, FAILURE_OUTPUT, TRACTION_TOLERANCE_MAX
    use interphase_status, only: STATUS_BAD_HISTORY, STATUS_OUTPUT_FULL, separation_text, STATUS_NONFINITE_SEPARATION, &
       STATUS_SEPARATION_OUT_OF_RANGE
    implicit none
@@ -484,9 +484,11 @@ contains
          write (message, '(a,i0,a)') 'increments = ', increments, ' must be at least 1'
       else if (output_every < 1) then
          write (message, '(a,i0,a)') 'output_every = ', output_every, ' must be at least 1'
-      else if (.not. (traction_tolerance > 0.0_dp .and. ieee_is_finite(traction_tolerance))) then
+      else if (.not. (traction_tolerance > 0.0_dp .and. traction_tolerance <= TRACTION_TOLERANCE_MAX)) then
+         ! (1e-3: TRACTION_TOLERANCE_MAX)
          write (message, '(a,es12.4e3,a)') 'traction_tolerance = ', traction_tolerance, &
-            ' MPa must be a finite number > 0'
+            ' MPa must be a finite number > 0 and at most 1e-3 MPa: Newton meets an imposed traction only to within '// &
+            'it (joints carry tractions of 0.01 to 10 MPa)'
       else
          code = STATUS_OK
       end if

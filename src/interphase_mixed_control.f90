@@ -69,6 +69,12 @@ module interphase_mixed_control
    !> stiffness of 1e-12 K would need a separation of 1e10 times s0 or more to carry a traction of
    !> the order of the strength.
    real(dp), parameter, public :: FLAT_STIFFNESS = 1.0e-12_dp
+   !> The loosest traction tolerance (MPa) a replay takes: Newton accepts an iterate whose
+   !> traction-controlled components are within the tolerance of their imposed values, so a
+   !> looser one leaves an imposed traction unmet by as much (at 1 MPa a precompression of
+   !> 0.5 MPa is not applied at all), against joint tractions of 0.01 to 10 MPa. Defaults:
+   !> 1e-12 MPa (interphase-point, the C API's callers).
+   real(dp), parameter, public :: TRACTION_TOLERANCE_MAX = 1.0e-3_dp
 
    !> What ended a replay that did not reach the end of its history.
    integer, parameter, public :: FAILURE_NONE = 0      !! the history was replayed to its end

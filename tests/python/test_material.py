@@ -924,6 +924,15 @@ def test_mixed_control_errors_carry_the_library_status():
     with pytest.raises(interphase.InterphaseError, match="traction_tolerance") as caught:
         m.run([[0.0, 0.0], [0.1, 0.0]], control=[True, False], traction_tolerance=0.0)
     assert caught.value.status == interphase.STATUS_BAD_HISTORY
+    # a tolerance as large as the imposed traction would leave it unapplied: refused, and the
+    # loosest one taken meets it to within itself
+    with pytest.raises(interphase.InterphaseError, match="at most 1e-3 MPa") as caught:
+        m.run([[0.0, 0.0], [-0.5, 0.0], [-0.5, 0.1]], increments=200, control=[True, False], traction_tolerance=1.0)
+    assert caught.value.status == interphase.STATUS_BAD_HISTORY
+    loose = m.run([[0.0, 0.0], [-0.5, 0.0], [-0.5, 0.1]], increments=200, control=[True, False],
+                  traction_tolerance=interphase.TRACTION_TOLERANCE_MAX)
+    assert np.abs(loose.traction[1:, 0] - np.interp(loose.time[1:], [0.0, 1.0, 2.0], [0.0, -0.5, -0.5])).max() \
+        <= interphase.TRACTION_TOLERANCE_MAX
     with pytest.raises(interphase.InterphaseError, match="output_every") as caught:
         m.run([[0.0, 0.0], [0.1, 0.0]], output_every=0)
     assert caught.value.status == interphase.STATUS_BAD_HISTORY
@@ -1230,9 +1239,16 @@ def test_words_are_split_at_blanks_and_tabs_only(tmp_path):
      "8: &loading: tangent_step must be a finite number > 0 (mm), got -0.1E-7"),
     ("tangent_step = 1e-7", "7: &loading: tangent_step is an entry of the tangent check only: set tangent_check > 0 "
                             "too, or drop tangent_step"),
-    ("traction_tolerance = 0", "7: &loading: traction_tolerance must be a finite number > 0 (MPa), got 0.0"),
+    ("traction_tolerance = 0", "7: &loading: traction_tolerance must be a finite number > 0 and at most 1e-3 (MPa), "
+                               "got 0.0: Newton meets an imposed traction only to within it (joints carry tractions "
+                               "of 0.01 to 10 MPa)"),
     ("traction_tolerance = -2.5e-300",
-     "7: &loading: traction_tolerance must be a finite number > 0 (MPa), got -0.25E-299"),
+     "7: &loading: traction_tolerance must be a finite number > 0 and at most 1e-3 (MPa), got -0.25E-299: Newton "
+     "meets an imposed traction only to within it (joints carry tractions of 0.01 to 10 MPa)"),
+    # (a tolerance as large as the tractions: Newton would accept an imposed 0.5 MPa never applied)
+    ("traction_tolerance = 0.1",
+     "7: &loading: traction_tolerance must be a finite number > 0 and at most 1e-3 (MPa), got 0.1: Newton meets "
+     "an imposed traction only to within it (joints carry tractions of 0.01 to 10 MPa)"),
     ("output_every = 0", "7: &loading: output_every must be at least 1, got 0"),
     ("output_every = -3", "7: &loading: output_every must be at least 1, got -3"),
     ("increments = -2", "7: &loading: increments must be at least 1, got -2"),
@@ -1325,6 +1341,7 @@ DRIVER_CASES = {
     "tangent_step_negative": ("increments = 20", "increments = 20\n  tangent_check = 1e-5, tangent_step = -1e-8",
                               None),
     "traction_tolerance": ("increments = 20", "increments = 20, traction_tolerance = -1e-3", None),
+    "traction_tolerance_loose": ("increments = 20", "increments = 20, traction_tolerance = 1.0", None),
     "output_every": ("increments = 20", "increments = 20, output_every = 0", None),
     "mu_and_one_row": ("mu = 0.75", "mu = -0.75", "0 0 0\n"),
     "model_nbsp": ("'simplified'", "'simplified\u00a0'", None),
@@ -1510,3 +1527,22 @@ def test_run_refuses_a_time_step_beyond_the_largest_double():
                        r"finite") as caught:
         m.run([[0.0, 0.0], [0.01, 0.0]], time=[-1e308, 1e308])
     assert caught.value.status == interphase.STATUS_BAD_HISTORY and caught.value.result is None
+
+
+def _fortran_parameter(path, name):
+    """The value of a Fortran `parameter` NAME = value in the file at path (a real or an integer)."""
+    found = re.search(rf"::\s*{name}\s*=\s*([0-9.eEdD+-]+?)(?:_dp)?\s*$", path.read_text(), re.MULTILINE)
+    assert found, f"{name} not found in {path}"
+    return float(found.group(1).replace("d", "e").replace("D", "e"))
+
+
+def test_constants_are_the_librarys_and_the_drivers(source_dir):
+    # the package's copies of the replay's limits and the driver's defaults, against the Fortran
+    # sources they document (a change there must reach the package)
+    mixed = source_dir / "src" / "interphase_mixed_control.f90"
+    case = source_dir / "drivers" / "interphase_driver_case.f90"
+    assert interphase.MAX_HALVINGS == _fortran_parameter(mixed, "MAX_HALVINGS")
+    assert interphase.MAX_NEWTON == _fortran_parameter(mixed, "MAX_NEWTON")
+    assert interphase.TRACTION_TOLERANCE_MAX == _fortran_parameter(mixed, "TRACTION_TOLERANCE_MAX")
+    assert interphase.DEFAULT_TRACTION_TOLERANCE == _fortran_parameter(case, "DEFAULT_TRACTION_TOLERANCE")
+    assert interphase.DEFAULT_TANGENT_STEP == _fortran_parameter(case, "DEFAULT_TANGENT_STEP")

@@ -15,7 +15,8 @@ The package loads the shared library libinterphase (see interphase._library for 
 
 from ._library import InterphaseError, status_message, load_table, load_rcurve, path as library_path
 from ._material import (Material, Update, Result, TangentCheck, format_csv, REGIME_NAMES, NSTATE, NSTATE_VISCOUS,
-                        MAX_HALVINGS, MAX_NEWTON, DEFAULT_TRACTION_TOLERANCE, DEFAULT_TANGENT_STEP)
+                        MAX_HALVINGS, MAX_NEWTON, DEFAULT_TRACTION_TOLERANCE, TRACTION_TOLERANCE_MAX,
+                        DEFAULT_TANGENT_STEP)
 from ._files import read_history, read_case, read_namelist, Case
 from ._status import *  # noqa: F401,F403  (the STATUS_* codes)
 from ._status import STATUS_CODES
@@ -25,4 +26,4 @@ __version__ = "0.1.0"
 __all__ = ["Material", "Update", "Result", "TangentCheck", "InterphaseError", "status_message", "load_table",
            "load_rcurve", "read_history", "read_case", "read_namelist", "Case", "format_csv", "REGIME_NAMES",
            "NSTATE", "NSTATE_VISCOUS", "MAX_HALVINGS", "MAX_NEWTON", "DEFAULT_TRACTION_TOLERANCE",
-           "STATUS_CODES", "library_path", "DEFAULT_TANGENT_STEP"]
+           "STATUS_CODES", "library_path", "DEFAULT_TANGENT_STEP", "TRACTION_TOLERANCE_MAX"]

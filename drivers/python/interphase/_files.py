@@ -9,7 +9,7 @@ import numpy as np
 
 from . import _status
 from ._library import InterphaseError
-from ._material import Material, DEFAULT_TRACTION_TOLERANCE, DEFAULT_TANGENT_STEP, _count, _path
+from ._material import Material, DEFAULT_TRACTION_TOLERANCE, TRACTION_TOLERANCE_MAX, DEFAULT_TANGENT_STEP, _count, _path
 
 _NUMBER = re.compile(r"[+-]?([0-9]+\.?[0-9]*|\.[0-9]+)([eEdD][+-]?[0-9]+)?")
 # why a nonzero literal below the smallest normal double is refused (interphase_text_input's UNDERFLOW_WHY)
@@ -905,8 +905,9 @@ def read_case(path):
     if increments < 1:
         refuse(f"increments must be at least 1, got {increments}")
     tolerance = loading.get("traction_tolerance", DEFAULT_TRACTION_TOLERANCE)
-    if not (tolerance > 0.0 and np.isfinite(tolerance)):
-        refuse(f"traction_tolerance must be a finite number > 0 (MPa), got {_real_text(tolerance)}")
+    if not (0.0 < tolerance <= TRACTION_TOLERANCE_MAX):
+        refuse(f"traction_tolerance must be a finite number > 0 and at most 1e-3 (MPa), got {_real_text(tolerance)}: "
+               f"Newton meets an imposed traction only to within it (joints carry tractions of 0.01 to 10 MPa)")
     output_every = loading.get("output_every", 1)
     if output_every < 1:
         refuse(f"output_every must be at least 1, got {output_every}")

@@ -31,6 +31,8 @@ MAX_HALVINGS = 10
 MAX_NEWTON = 25
 #: interphase-point's default traction_tolerance (MPa)
 DEFAULT_TRACTION_TOLERANCE = 1.0e-12
+#: the loosest traction_tolerance a replay takes (MPa; interphase_mixed_control's TRACTION_TOLERANCE_MAX)
+TRACTION_TOLERANCE_MAX = 1.0e-3
 #: interphase-point's default tangent_step (mm): the perturbation of the tangent check
 DEFAULT_TANGENT_STEP = 1.0e-8
 
