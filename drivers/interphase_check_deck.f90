@@ -162,6 +162,7 @@ program interphase_check_deck
       character(len=80) :: elset = '', material = '', response = '', thickness_mode = ''
       real(dp) :: thickness = -1.0_dp
       logical :: thickness_empty = .false.     !! the thickness an empty field (Abaqus reads 0)
+      logical :: thickness_read = .false.      !! a thickness (or an empty field) on the data line
       character(len=512) :: bad_data = ''      !! a field of its data line that is not a number
       integer :: refused = 0                   !! failed checks on its own lines (reported as read)
    end type section_type
@@ -200,6 +201,10 @@ program interphase_check_deck
       else if (path == '--version') then
          call print_version('interphase-check-deck')
          call exit_program(0)
+      else if (len(path) == 0) then
+         write (error_unit, '(a,i0,a)') 'interphase-check-deck: error: argument ', iarg, ' is empty (an empty deck name)'
+         call print_usage(error_unit)
+         call exit_program(2)
       else if (len(path) > 0) then
          if (path(1:1) == '-') then
             write (error_unit, '(a)') 'interphase-check-deck: error: unknown option '//path
@@ -319,6 +324,9 @@ contains
       !> the first step procedure of each solver (line and keyword): one analysis runs one solver
       integer :: explicit_line, standard_line
       logical, allocatable :: keep(:)          !! the sections interphase serves
+      logical, allocatable :: unused(:)        !! the materials with a *USER MATERIAL no section uses
+      logical :: calculix                      !! a section of a CalculiX-named user material was seen
+      integer :: keyword_lines                 !! keyword lines read
       character(len=:), allocatable :: explicit_file, standard_file
       character(len=:), allocatable :: include_input !! an *INCLUDE's INPUT= as written
       character(len=:), allocatable :: include_path  !! the file it names, as opened
@@ -358,6 +366,7 @@ contains
       current = 0
       data_lines = 0
       lineno = 0
+      keyword_lines = 0
       have_held = .false.
       do
          if (have_held) then
@@ -411,6 +420,7 @@ contains
                end if
                line = trim(line)//' '//trim(held)
             end do
+            keyword_lines = keyword_lines + 1
             previous_keyword = keyword
             previous_keyword_text = keyword_text
             previous_data_lines = data_lines
@@ -572,9 +582,18 @@ contains
                      [character(len=NAME_LEN) :: 'TRACTIONSEPARATION', 'CONTINUUM', 'GASKET']), &
                   thickness_mode=parameter_choice(parameter_names, parameter_values, 'THICKNESS', &
                      [character(len=NAME_LEN) :: 'GEOMETRY', 'SPECIFIED']))]
+               ! (THICKNESS= left out: Abaqus's default, checked with the section)
+               if (.not. any(parameter_names == 'THICKNESS')) sections(size(sections))%thickness_mode = 'DEFAULT'
             case ('INITIALCONDITIONS')
                ! the state variables' initial values: read after the deck (read_initial_states)
-               if (parameter_choice(parameter_names, parameter_values, 'TYPE', INITIAL_CONDITION_TYPES) == 'SOLUTION') then
+               field = parameter_choice(parameter_names, parameter_values, 'TYPE', INITIAL_CONDITION_TYPES)
+               if (len_trim(field) > 0 .and. .not. any(INITIAL_CONDITION_TYPES == field)) then
+                  ! (a type this check does not know, or a misspelt one: TYPE=SOLUTON would leave the
+                  ! state variables unchecked without a word)
+                  write (output_unit, '(a)') path//':'//int_to_string(lineno)//': note: *'//trim(keyword_text)// &
+                     ', TYPE='//parameter_value(parameter_names, parameter_values, 'TYPE')//': not a type this check '// &
+                     'knows (TYPE=SOLUTION gives the state variables, which it checks): not checked'
+               else if (field == 'SOLUTION') then
                   if (any(parameter_names == 'USER')) then
                      write (output_unit, '(a)') path//':'//int_to_string(lineno)//': note: *'//trim(keyword_text)// &
                         ', TYPE=SOLUTION, USER: the user subroutine SDVINI gives the state variables, which this '// &
@@ -703,6 +722,7 @@ contains
             if (data_lines == 1 .and. nvalues >= 1) then
                sections(size(sections))%thickness = values(1)
                sections(size(sections))%thickness_empty = empty(1)
+               sections(size(sections))%thickness_read = .true.
             end if
          end select
          call attribute_failures(nfail - nfail_line, keyword, current, materials, sections)
@@ -735,12 +755,35 @@ contains
             end if
          end if
       end do
+      ! a *USER MATERIAL that no section uses (a misspelt section keyword leaves it so); none of it
+      ! is checked
+      allocate (unused(size(materials)))
+      do k = 1, size(materials)
+         unused(k) = materials(k)%user_line /= 0 .and. .not. any(sections%material == materials(k)%name)
+      end do
+      calculix = any(.not. keep .and. sections%solid .and. (index(sections%material, 'ABAQUS') == 1 .or. &
+         index(sections%material, '@') == 1))
       sections = pack(sections, keep)
       if (size(sections) == 0) then
-         write (output_unit, '(a)') deck//': no *COHESIVE SECTION, and no *SOLID SECTION of an Abaqus *USER '// &
-            'MATERIAL: nothing for interphase to check (CalculiX decks are not checked: docs/abaqus.md)'
+         if (keyword_lines == 0) then
+            call record_failure(deck//': no keyword line (*HEADING, *MATERIAL, ...): not an Abaqus input deck', nfail)
+         else if (any(unused) .and. .not. calculix) then
+            do k = 1, size(materials)
+               if (unused(k)) call record_failure(materials(k)%file//':'//int_to_string(materials(k)%user_line)// &
+                  ': *USER MATERIAL of '//trim(materials(k)%name)//', but no *COHESIVE SECTION or *SOLID SECTION '// &
+                  'uses it: nothing of interphase''s would run (a misspelt section keyword? a material library is '// &
+                  'checked with the deck that includes it)', nfail)
+            end do
+         else
+            write (output_unit, '(a)') deck//': no *COHESIVE SECTION, and no *SOLID SECTION of an Abaqus *USER '// &
+               'MATERIAL: nothing for interphase to check (CalculiX decks are not checked: docs/abaqus.md)'
+         end if
          return
       end if
+      do k = 1, size(materials)
+         if (unused(k)) write (output_unit, '(a)') materials(k)%file//':'//int_to_string(materials(k)%user_line)// &
+            ': note: *USER MATERIAL of '//trim(materials(k)%name)//': no section uses it (not checked)'
+      end do
       call read_initial_states(solution_lines, sections, materials, states, nfail)
       do i = 1, size(sections)
          call check_section(deck, sections(i), materials, explicit, states, nfail)
@@ -773,10 +816,14 @@ contains
          trim(merge('SOLID SECTION   ', 'COHESIVE SECTION', section%solid))//', ELSET='//trim(section%elset)
       section_where = where
       if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
-      if (.not. section%solid .and. section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') &
+      if (.not. section%solid .and. len_trim(section%response) == 0) then
+         call record_failure(where//': no RESPONSE= (Abaqus requires it): interphase is a traction-separation law: '// &
+            'RESPONSE=TRACTION SEPARATION', nfail)
+      else if (.not. section%solid .and. section%response /= 'TRACTIONSEPARATION' .and. section%response /= 'CONTINUUM') then
          call record_failure(where//': RESPONSE='//trim(section%response)//' but interphase is a traction-separation '// &
             'law: RESPONSE=TRACTION SEPARATION, or CONTINUUM (its strains are the separations over the constitutive '// &
             'thickness T0: give the layer thickness option t = T0, docs/abaqus.md)', nfail)
+      end if
       m = 0
       ! (a section without MATERIAL= is named where it is read, and refers to no material)
       if (len_trim(section%material) > 0) then
@@ -1287,7 +1334,7 @@ contains
       character(len=:), allocatable, intent(inout) :: notes
       integer, intent(inout) :: nfail
       real(dp) :: t0
-      character(len=:), allocatable :: rule
+      character(len=:), allocatable :: rule, mode, default_note
       t0 = 1.0_dp
       rule = 'constitutive thickness 1 (strain = separation in mm)'
       if (t_layer > 0.0_dp) then
@@ -1297,19 +1344,34 @@ contains
       end if
       if (normal /= 0) call record_failure(where//': the material''s layer normal axis is '// &
          int_to_string(normal)//' but a cohesive element is normal first: set it to 0', nfail)
-      if (section%thickness_mode /= 'SPECIFIED') then
-         if (section%response == 'CONTINUUM' .and. section%thickness_mode == 'GEOMETRY' .and. t_layer > 0.0_dp) then
-            notes = notes//'; note: THICKNESS=GEOMETRY: the constitutive thickness comes from the nodes and '// &
-               'must equal the layer thickness option '//real_to_string(t_layer)//' mm (not checked)'
+      ! THICKNESS= left out: Abaqus takes GEOMETRY for a continuum response, SPECIFIED otherwise
+      ! (Abaqus Keywords Guide, *COHESIVE SECTION)
+      mode = trim(section%thickness_mode)
+      default_note = ''
+      if (mode == 'DEFAULT') then
+         mode = trim(merge('GEOMETRY ', 'SPECIFIED', section%response == 'CONTINUUM'))
+         default_note = ' (THICKNESS= left out: Abaqus''s default for RESPONSE='//trim(section%response)//')'
+      end if
+      if (mode /= 'SPECIFIED') then
+         if (section%response == 'CONTINUUM' .and. mode == 'GEOMETRY' .and. t_layer > 0.0_dp) then
+            notes = notes//'; note: THICKNESS=GEOMETRY'//default_note//': the constitutive thickness comes from the '// &
+               'nodes and must equal the layer thickness option '//real_to_string(t_layer)//' mm (not checked)'
          else
-            call record_failure(where//': THICKNESS='//trim(section%thickness_mode)//' but interphase needs '// &
+            call record_failure(where//': THICKNESS='//mode//default_note//' but interphase needs '// &
                'THICKNESS=SPECIFIED with '//rule, nfail)
          end if
-      else if (section%thickness_empty .and. section%response == 'TRACTIONSEPARATION' .and. t_layer <= 0.0_dp) then
+      else if (len_trim(section%bad_data) > 0) then
+         continue     ! its field is not a number: named with the section
+      else if ((section%thickness_empty .or. .not. section%thickness_read) .and. &
+         section%response == 'TRACTIONSEPARATION' .and. t_layer <= 0.0_dp) then
          ! the field has a default, 1.0 for a traction-separation response (Abaqus Analysis User's
          ! Guide, 'Defining the constitutive thickness'): an empty field takes it
-         notes = notes//'; note: the constitutive thickness is an empty field: Abaqus takes its default, 1.0, '// &
-            'for a traction-separation response (write 1. to make it plain)'
+         notes = notes//'; note: the constitutive thickness is '//trim(merge('an empty field', 'not given     ', &
+            section%thickness_read))//': Abaqus takes its default, 1.0, for a traction-separation response (write 1. '// &
+            'to make it plain)'
+      else if (.not. section%thickness_read) then
+         call record_failure(where//': no constitutive thickness (the section''s data line) but interphase needs '// &
+            rule, nfail)
       else if (.not. is_finite(section%thickness) .or. abs(section%thickness - t0) > 1.0e-12_dp*t0) then
          call record_failure(where//': constitutive thickness '//real_to_string(section%thickness)// &
             empty_field_note(section%thickness_empty)//' but interphase needs '//rule, nfail)
