@@ -486,16 +486,17 @@ contains
    end subroutine reject
 
    !> The selector code held by a PROPS value: c when `x` is exactly the real number c for a code
-   !> 0 <= c <= MAX_SELECTOR, else -1 (which no selector uses). The range is tested on the bit
-   !> pattern first (+0 <= x <= MAX_SELECTOR: false for -0, NaN and Inf), so the conversion and
-   !> the comparison of bit patterns only ever see a finite x in that range: no floating-point
-   !> exception.
+   !> 0 <= c <= MAX_SELECTOR, else -1 (which no selector uses); -0 is the code 0, as +0 (a deck's
+   !> `-0.` is the number 0). The range is tested on the bit pattern first (+0 <= x <=
+   !> MAX_SELECTOR: false for NaN and Inf), so the conversion and the comparison of bit patterns
+   !> only ever see a finite x in that range: no floating-point exception.
    pure integer function selector_code(x) result(code)
       real(dp), intent(in) :: x
       integer(int64) :: b
       integer :: k
       code = -1
       b = binary64_bits(x)
+      if (b == ibset(0_int64, 63)) b = 0_int64
       if (b >= 0_int64 .and. b <= MAX_SELECTOR_BITS) then
          k = int(x)
          if (binary64_bits(real(k, dp)) == b) code = k
