@@ -376,8 +376,8 @@ contains
       end if
       if (.not. check_relative(where, 'tolerance', tolerance, message)) return
       if (.not. check_relative(where, 'displacement_tolerance', displacement_tolerance, message)) return
-      if (.not. check_window(where, 'min_increment', min_increment, message)) return
-      if (min_increment > 1.0_dp) then
+      ! (one range, one message: the window's [1e-20, 1e20] would name a range that 5 lies in)
+      if (.not. (min_increment >= PROPS_VALUE_MIN .and. min_increment <= 1.0_dp)) then
          message = where//'min_increment is a fraction of the nominal increment and must lie in [1e-20, 1], got '// &
             real_to_string(min_increment)
          return
