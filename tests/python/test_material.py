@@ -319,23 +319,63 @@ def test_run_sizes_its_output_for_the_rows_it_writes():
 
 
 def test_blank_text_entries_are_left_out(source_dir, tmp_path):
-    """table = '' (or blanks) is no table, as interphase-point reads it from a namelist: the
-    built-in one for the micromechanical model, nothing for the simplified one; an empty
-    rcurve_file is no file."""
+    """A case file's table = '' (or blanks) is no table, as interphase-point reads it from a
+    namelist: the built-in one for the micromechanical model; its rcurve_file = '' is no file. A
+    word keyword left empty is its default. (A path keyword is a path: the next test.)"""
     s = [[0, 0], [0.001, 0.002]]
     builtin = interphase.Material(**MICRO).run(s, increments=10).traction
-    assert np.array_equal(interphase.Material(**dict(MICRO, table="")).run(s, increments=10).traction, builtin)
-    interphase.Material(**dict(SIMPLIFIED, table="  "))
-    interphase.Material(**dict(SIMPLIFIED, rcurve_file="", growth_slip="", stiffness=""))
-    with pytest.raises(interphase.InterphaseError, match="rcurve = 'tabulated' needs the entry rcurve_file"):
-        interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated", rcurve_file=""))
+    interphase.Material(**dict(SIMPLIFIED, growth_slip="", stiffness=" "))
     case = (source_dir / "drivers" / "cases" / "micro" / "h1I.nml").read_text()
     assert "&material" in case
     (tmp_path / "h1I.txt").write_text((source_dir / "drivers" / "cases" / "h1I.txt").read_text())
-    case = case.replace("'../h1I.txt'", "'h1I.txt'").replace("\n&material\n", "\n&material\n  table = ''\n", 1)
-    assert "'h1I.txt'" in case and "table = ''" in case
-    (tmp_path / "blank.nml").write_text(case)
-    assert interphase.read_case(tmp_path / "blank.nml").material.table_path is None
+    case = case.replace("'../h1I.txt'", "'h1I.txt'")
+    for blank in ("''", "'  '"):
+        blanked = case.replace("\n&material\n", f"\n&material\n  table = {blank}\n", 1)
+        assert "'h1I.txt'" in blanked and f"table = {blank}" in blanked
+        (tmp_path / "blank.nml").write_text(blanked)
+        read = interphase.read_case(tmp_path / "blank.nml")
+        assert read.material.table_path is None
+        assert np.array_equal(read.material.run(s, increments=10).traction, builtin)
+    fracture = CASE.replace("'displacement'", "'fracture', d0 = 0.1, rcurve = 'tabulated', rcurve_file = '  '")
+    with pytest.raises(interphase.InterphaseError, match="rcurve = 'tabulated' needs the entry rcurve_file"):
+        interphase.read_case(write_case(tmp_path, fracture))
+
+
+@pytest.mark.parametrize("name, given", [
+    ("x.dat ", "x.dat "), ("x.dat ", b"x.dat "), ("x.dat ", pathlib.Path("x.dat ")),
+    ("x.dat", "  "), ("x.dat", ""), ("x.dat", b"  "), ("x.dat", b"")],
+    ids=["str", "bytes", "PathLike", "blank", "empty", "blank-bytes", "empty-bytes"])
+def test_a_keyword_path_is_taken_as_given(source_dir, tmp_path, monkeypatch, name, given):
+    """A table or rcurve_file given as a keyword (or to from_props) is a path, as load_table and
+    the C API take it (tables/README.md): one that ends in a blank, or a blank or empty one, is
+    refused with load_table's own message, whether str, bytes or os.PathLike; not trimmed into
+    another file's name, nor the built-in table (or no R-curve) in silence. Only read_case trims
+    (the previous tests)."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / name).write_bytes((source_dir / "tables" / "paper-resolution.dat").read_bytes())
+    (tmp_path / f"r{name}").write_text("# D G_cI G_cII\n0.0 0.005 0.0085\n1.0 0.005 0.0085\n")
+    text = os.fsdecode(os.fspath(given))
+    for kind, make, load in (
+            ("table", lambda: interphase.Material(**dict(MICRO, table=given)), interphase.load_table),
+            ("table", lambda: interphase.Material.from_props(interphase.Material(**dict(MICRO, table=name)).props,
+                                                             table=given), interphase.load_table),
+            ("rcurve_file", lambda: interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1,
+                                                               rcurve="tabulated", rcurve_file=given)),
+             interphase.load_rcurve)):
+        with pytest.raises(interphase.InterphaseError) as refused:
+            load(given)
+        with pytest.raises(interphase.InterphaseError) as caught:
+            make()
+        assert (caught.value.status, str(caught.value)) == (refused.value.status, str(refused.value)), kind
+        if text.strip(" "):
+            assert f'the path "{text}" ends in a blank' in str(caught.value), kind
+        else:
+            assert ("is empty" if text == "" else f'the path is blank ("{text}")') in str(caught.value), kind
+    # a path entry of a material that takes none is refused as given, not dropped as blank
+    with pytest.raises(interphase.InterphaseError, match="table is an entry of model = 'micromechanical' only"):
+        interphase.Material(**dict(SIMPLIFIED, table=given))
+    with pytest.raises(interphase.InterphaseError, match="rcurve_file is an entry of damage_law = 'fracture' only"):
+        interphase.Material(**dict(SIMPLIFIED, rcurve_file=given))
 
 
 def test_an_rcurve_that_runs_out_stops_the_run(source_dir):
@@ -1117,9 +1157,10 @@ def write_case(tmp_path, case=CASE, history=HISTORY, name="case.nml"):
     return path
 
 
-def test_paths_are_read_without_the_blanks_around_them(source_dir, tmp_path):
+def test_paths_are_read_without_the_blanks_around_them(source_dir, tmp_path, monkeypatch):
     """history, table and rcurve_file = ' file ' name the file, and output = ' x.csv ' the CSV
-    x.csv, as interphase-point trims them; Material's table and rcurve_file too."""
+    x.csv, as interphase-point trims them; Material's keywords table and rcurve_file are taken as
+    given (test_a_keyword_path_is_taken_as_given), a leading blank part of the name."""
     for history in ("'h.txt '", "' h.txt'", "'  h.txt  '"):
         case = interphase.read_case(write_case(tmp_path, CASE.replace("'h.txt'", history)))
         assert case.time.tolist() == [0.0, 1.0]
@@ -1134,9 +1175,23 @@ def test_paths_are_read_without_the_blanks_around_them(source_dir, tmp_path):
     fracture = CASE.replace("'displacement'", "'fracture', d0 = 0.1, rcurve = 'tabulated', "
                                               "rcurve_file = 'rcurve.txt  '")
     assert interphase.read_case(write_case(tmp_path, fracture)).material.rcurve_path == str(rcurve)
-    assert interphase.Material(**dict(MICRO, table=f" {table} ")).table_path == str(table)
+    assert interphase.Material(**dict(MICRO, table=str(table))).table_path == str(table)
     assert interphase.Material(**dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
-                                      rcurve_file=f"{rcurve} ")).rcurve_path == str(rcurve)
+                                      rcurve_file=str(rcurve))).rcurve_path == str(rcurve)
+    for given, entries, load in (
+            (f"{table} ", dict(MICRO, table=f"{table} "), interphase.load_table),
+            (f"{rcurve} ", dict(SIMPLIFIED, damage_law="fracture", d0=0.1, rcurve="tabulated",
+                                rcurve_file=f"{rcurve} "), interphase.load_rcurve)):
+        with pytest.raises(interphase.InterphaseError) as refused:
+            load(given)
+        with pytest.raises(interphase.InterphaseError) as caught:
+            interphase.Material(**entries)
+        assert str(caught.value) == str(refused.value)
+        # (the library shows the end of a long path)
+        assert f'{os.path.basename(given)}" ends in a blank' in str(caught.value)
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / " lead.dat").write_bytes(table.read_bytes())
+    assert interphase.Material(**dict(MICRO, table=" lead.dat")).table_path == str(tmp_path / " lead.dat")
 
 
 def test_a_table_named_in_another_encoding_is_opened(source_dir, tmp_path):

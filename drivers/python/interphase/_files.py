@@ -795,7 +795,7 @@ def _props_material(path, entries, base, lines):
             raise InterphaseError(_status.STATUS_TABLE_NOT_LOADED, _at_entry(
                 path, "material", "props: PROPS(8) = 1 selects a custom RVE table: give its file as the entry table",
                 lines))
-        material.table_path = _path("table", table, base)
+        material.table_path = _path("table", table, base, trim=True)
     elif not blank(table):
         raise InterphaseError(_status.STATUS_BAD_TABLE_SELECTOR, _at_entry(
             path, "material", "table is read only where props select a custom RVE table (the micromechanical model "
@@ -805,7 +805,7 @@ def _props_material(path, entries, base, lines):
             raise InterphaseError(_status.STATUS_RCURVE_NOT_LOADED, _at_entry(
                 path, "material", f"props: PROPS({rcurve_at + 1}) = 3 selects a tabulated R-curve: give its file as "
                 "the entry rcurve_file", lines))
-        material.rcurve_path = _path("rcurve_file", rcurve_file, base)
+        material.rcurve_path = _path("rcurve_file", rcurve_file, base, trim=True)
     elif not blank(rcurve_file):
         raise InterphaseError(_status.STATUS_BAD_RCURVE, _at_entry(
             path, "material", "rcurve_file is read only where props select a tabulated R-curve (the fracture law "

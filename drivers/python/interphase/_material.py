@@ -170,12 +170,23 @@ def _word(value):
     return _ascii_lower(str(value).strip(" "))
 
 
-def _path(name, value, base=None):
-    """A path entry `name` as the driver reads it: blanks around it dropped (`table = 'x.dat '`),
-    taken in the folder `base` when relative (None: the current folder)."""
+# the entries that name a file (a blank or empty one given from Python is a path, not an entry left out)
+_PATH_ENTRIES = ("table", "rcurve_file")
+
+
+def _path(name, value, base=None, trim=False):
+    """A path entry `name`, taken in the folder `base` when relative (None: the current folder).
+
+    trim: the entry of a case file (read_case), read as the driver reads its namelist: blanks
+    around it dropped (`table = 'x.dat '`). A path given from Python (a keyword, from_props) is
+    taken as given, as load_table and the C API take it: one that is empty, blank or ends in a
+    blank is returned as it is (not made absolute, which would make '' the folder), for the loader
+    to refuse it with its message, naming it (tables/README.md)."""
     path = _path_text(name, value)
-    if isinstance(path, str):
+    if trim and isinstance(path, str):
         path = path.strip(" ")
+    if len(path) == 0 or path[-1:] in (" ", b" "):
+        return path
     return os.path.abspath(path if base is None else os.path.join(os.fspath(base), path))
 
 
@@ -214,7 +225,9 @@ class Material:
       damage_law   'displacement' (eqs 13-18) or 'fracture' (eqs 20-24)
       mu, s0_n, sf_n, s0_t, sf_t   friction coefficient and the damage law's separations
       k_n, k_t     spring stiffnesses (simplified model only)
-      table        a custom RVE table file (micromechanical only; default: the built-in table)
+      table        a custom RVE table file (micromechanical only; default: the built-in table);
+                   table and rcurve_file are taken as given: one that ends in a blank, or a blank
+                   or empty one, is refused as load_table refuses it
       d0, rcurve ('constant', 'equivalent', 'tabulated'), rcurve_file, g_ci, g_cii
                    the fracture-mechanics law's entries
       growth_slip ('fixed-pi', 'fixed-lambda'), contact_band, viscosity,
@@ -241,22 +254,26 @@ class Material:
         checked yet and whose files are not loaded (read_case checks them in the driver's order:
         _check_props, then the files at the first update); relative paths are taken in `base`."""
         self = cls.__new__(cls)
-        self._pack(entries, base)
+        self._pack(entries, base, trim=True)
         return self
 
-    def _pack(self, entries, base=None):
+    def _pack(self, entries, base=None, trim=False):
         """Check the entries as interphase-point's material_props does (which are given, which
         words) and pack PROPS; the values are left to the library (_check_props). Relative paths
-        are taken in the folder `base` (None: the current one)."""
+        are taken in the folder `base` (None: the current one). trim: the entries of a case file
+        (read_case), whose paths are read without the blanks around them, as the driver reads
+        them; the keywords' paths are taken as given (_path)."""
         unknown = sorted(set(entries) - set(_ENTRIES))
         if unknown:
             raise TypeError("Material: unknown entries " + ", ".join(unknown) + " (the entries of "
                             "&material are " + ", ".join(_ENTRIES) + ")")
         # (None, or a text entry that is empty or blank, is an entry left out: a namelist cannot
         # tell `table = ''` from no table, and interphase-point reads both alike; blanks are spaces,
-        # as for the driver: a tab is text)
+        # as for the driver: a tab is text. A keyword's path is no namelist entry: an empty or
+        # blank one is a path, refused by the loader as load_table refuses it, not the built-in
+        # table or no R-curve in silence)
         e = {k: v for k, v in entries.items()
-             if v is not None and not (isinstance(v, str) and v.strip(" ") == "")}
+             if v is not None and not (isinstance(v, str) and v.strip(" ") == "" and (trim or k not in _PATH_ENTRIES))}
         model = _word(e.get("model", ""))
         law = _word(e.get("damage_law", ""))
         missing = [k for k in _REQUIRED if k not in e]
@@ -280,7 +297,7 @@ class Material:
                                       "'simplified' only (the micromechanical model takes its "
                                       "stiffness from the RVE table)")
             if "table" in e:
-                self.table_path = _path("table", e["table"], base)
+                self.table_path = _path("table", e["table"], base, trim)
             props = [MODEL_MICROMECHANICAL, 0.0] + values + [TABLE_CUSTOM if self.table_path else TABLE_DEFAULT]
         else:
             raise InterphaseError(st.STATUS_BAD_MODEL, f"model '{str(e['model']).strip(' ')}' is unknown "
@@ -319,7 +336,7 @@ class Material:
             if rcurve == RCURVE_TABULATED:
                 if "rcurve_file" not in e:
                     raise InterphaseError(st.STATUS_BAD_RCURVE, "rcurve = 'tabulated' needs the entry rcurve_file")
-                self.rcurve_path = _path("rcurve_file", e["rcurve_file"], base)
+                self.rcurve_path = _path("rcurve_file", e["rcurve_file"], base, trim)
             if rcurve != RCURVE_CONSTANT and ("g_ci" in e or "g_cii" in e):
                 raise InterphaseError(st.STATUS_BAD_GC_I if "g_ci" in e else st.STATUS_BAD_GC_II,
                                       "g_ci and g_cii are entries of rcurve = 'constant' only")
