@@ -255,8 +255,11 @@ else
     set -- $v
     [ $# -eq 3 ] || die 2 "$(loc a_over_b_uniform)a_over_b_uniform needs 'start stop step', got '$v'"
     checklist "$(loc a_over_b_uniform)a_over_b_uniform" "$v"
-    chk "$3" "x > 0" || die 2 "$(loc a_over_b_uniform)a_over_b_uniform: step must be > 0"
-    awk -v s="$1" -v e="$2" 'BEGIN { exit !(s >= 0 && e <= 1 && s <= e) }' || die 2 "$(loc a_over_b_uniform)a_over_b_uniform: need 0 <= start <= stop <= 1 (a must not exceed b)"
+    chk "$3" "x > 0" || die 2 "$(loc a_over_b_uniform)a_over_b_uniform = $v: step = $3 must be > 0"
+    # (each condition on its own, naming the value that fails it: need 0 <= start <= stop <= 1)
+    chk "$1" "x >= 0" || die 2 "$(loc a_over_b_uniform)a_over_b_uniform = $v: start = $1 must be >= 0 (need 0 <= start <= stop <= 1)"
+    chk "$2" "x <= 1" || die 2 "$(loc a_over_b_uniform)a_over_b_uniform = $v: stop = $2 must be <= 1 (a must not exceed b; need 0 <= start <= stop <= 1)"
+    awk -v s="$1" -v e="$2" 'BEGIN { exit !(s <= e) }' || die 2 "$(loc a_over_b_uniform)a_over_b_uniform = $v: start = $1 exceeds stop = $2 (need 0 <= start <= stop <= 1)"
     # the stop is a point of the range: a step that does not divide stop - start would drop it
     awk -v s="$1" -v e="$2" -v d="$3" 'BEGIN { q = (e - s) / d; exit !(q - int(q + 0.5) <= 1e-9 * (q > 1 ? q : 1) && int(q + 0.5) - q <= 1e-9 * (q > 1 ? q : 1)) }' \
       || die 2 "$(loc a_over_b_uniform)a_over_b_uniform = $v: the step does not divide stop - start, so the points would be $(awk -v s="$1" -v e="$2" -v d="$3" 'BEGIN { for (x = s; x <= e + 1e-12; x += d) printf "%g ", x }')without the stop $2"
@@ -267,7 +270,11 @@ else
     set -- $v
     [ $# -eq 3 ] || die 2 "$(loc ligament_over_b)ligament_over_b needs 'from to per-decade', got '$v'"
     checklist "$(loc ligament_over_b)ligament_over_b" "$v"
-    awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { exit !(f > 0 && f <= 1 && t > 0 && t <= f && n >= 1) }' || die 2 "$(loc ligament_over_b)ligament_over_b: need 0 < to <= from <= 1 and per-decade >= 1"
+    # (each condition on its own, naming the value that fails it: need 0 < to <= from <= 1, per-decade >= 1)
+    chk "$1" "x > 0 && x <= 1" || die 2 "$(loc ligament_over_b)ligament_over_b = $v: from = $1 must lie in (0, 1] (the longest ligament, a fraction of b; need 0 < to <= from <= 1)"
+    chk "$2" "x > 0" || die 2 "$(loc ligament_over_b)ligament_over_b = $v: to = $2 must be > 0 (the shortest ligament, a fraction of b; need 0 < to <= from <= 1)"
+    awk -v f="$1" -v t="$2" 'BEGIN { exit !(t <= f) }' || die 2 "$(loc ligament_over_b)ligament_over_b = $v: to = $2 exceeds from = $1 (the ligaments run from 'from' down to 'to'; need 0 < to <= from <= 1)"
+    chk "$3" "x >= 1" || die 2 "$(loc ligament_over_b)ligament_over_b = $v: per-decade = $3 must be >= 1"
     # a whole number per decade, and the last ligament one of the points: else it would be dropped
     chk "$3" "x == int(x)" || die 2 "$(loc ligament_over_b)ligament_over_b = $v: per-decade = $3 must be a whole number"
     awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { q = n * log(f / t) / log(10); r = int(q + 0.5); exit !(q - r <= 1e-9 * (q > 1 ? q : 1) && r - q <= 1e-9 * (q > 1 ? q : 1)) }' \

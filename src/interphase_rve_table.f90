@@ -725,6 +725,7 @@ contains
 
       real(dp) :: c0_t, c0_n, scale_c, scale_f, tol_i, term(3)
       integer :: i, n, j, k, ios
+      character(len=:), allocatable :: range_text
       integer, parameter :: ZERO_STIFF(6) = [COL_C_TN, COL_C_NT, COL_CC_TN, COL_CC_NT, COL_TC_N, COL_SC_T]
       integer, parameter :: ZERO_JUMP(2) = [COL_DBAR_TN, COL_DBAR_NT]
       integer, parameter :: ZERO_SLIP(2) = [COL_CF_N, COL_SF]
@@ -739,8 +740,11 @@ contains
          end if
          if (abs(r(1, COL_A)) > 0.0_dp .or. abs(r(n, COL_A) - b) > 1.0e-12_dp*b) then
             status = STATUS_TABLE_BAD_RANGE
-            write (message, '(a,es12.5,a,es12.5,a,es12.5)', iostat=ios) message_path(table%source)//': a runs from ', &
-               r(1, COL_A), ' to ', r(n, COL_A), ' mm, not from 0 to b = ', b
+            ! (every value in full: a last a within a hair of b must show that it differs; the path
+            ! shortened where the message would not fit otherwise)
+            range_text = ': a runs from '//trim(real_text(r(1, COL_A)))//' to '//trim(real_text(r(n, COL_A)))// &
+               ' mm, not from 0 to b = '//trim(real_text(b))//' mm (the header''s b, to 1e-12 b)'
+            message = message_path(table%source, MESSAGE_LEN - len(range_text))//range_text
             return
          end if
          do i = 2, n
@@ -824,7 +828,7 @@ contains
          end do
          do i = 1, n
             if (abs(r(i, COL_D) - r(i, COL_A)/b) > 1.0e-12_dp) then
-               call identity(i, 'D = a/b', r(i, COL_D), status, message)
+               call identity(i, 'D = a/b', r(i, COL_D), status, message, r(i, COL_A)/b, 1.0e-12_dp)
                return
             end if
             do j = 1, size(ZERO_STIFF)
@@ -919,14 +923,16 @@ contains
             if (table%has_betti .and. i > 1) then
                term = [r(i, COL_CF_T), -r(i, COL_D)*r(i, COL_TF)*r(i, COL_DBAR_TT)/h, -table%i_fnt(i)/(2.0_dp*b*h)]
                if (abs(sum(term)) > BETTI_TOL*maxval(abs(term))) then
+                  ! (the value shown is the row's I_fNT, and the I_fNT the relation needs from its other terms)
                   call identity(i, 'Cf_T = D Tf Dbar_TT/h + I_fNT/(2bh) (Betti ii'')', table%i_fnt(i), status, message, &
-                     table%i_fnt(i) + 2.0_dp*b*h*sum(term), 2.0_dp*b*h*BETTI_TOL*maxval(abs(term)))
+                     table%i_fnt(i) + 2.0_dp*b*h*sum(term), 2.0_dp*b*h*BETTI_TOL*maxval(abs(term)), 'I_fNT')
                   return
                end if
                term = [r(i, COL_DBAR_TT)*r(i, COL_TF), r(i, COL_UFBAR)*r(i, COL_TC_T), table%i_fnt(i)/(2.0_dp*r(i, COL_A))]
                if (abs(sum(term)) > BETTI_TOL*maxval(abs(term))) then
                   call identity(i, 'Dbar_TT Tf + ufbar Tc_T = -I_fNT/(2a) (Betti iii'')', table%i_fnt(i), status, &
-                     message, table%i_fnt(i) - 2.0_dp*r(i, COL_A)*sum(term), 2.0_dp*r(i, COL_A)*BETTI_TOL*maxval(abs(term)))
+                     message, table%i_fnt(i) - 2.0_dp*r(i, COL_A)*sum(term), 2.0_dp*r(i, COL_A)*BETTI_TOL*maxval(abs(term)), &
+                     'I_fNT')
                   return
                end if
             end if
@@ -952,24 +958,36 @@ contains
    contains
 
       !> The failure of an identity at a row: what, the value found and, for an equation, the value
-      !> it gives (expected) and the largest difference it allows (allowed).
-      pure subroutine identity(row, what, value, status, message, expected, allowed)
+      !> it gives (expected) and the largest difference it allows (allowed). The value is the
+      !> identity's left-hand side unless `named` names the quantity it is (a term on the right,
+      !> such as I_fNT of the Betti relations): then the message says `<named> = value, but the
+      !> relation needs expected`, both values being that quantity's.
+      pure subroutine identity(row, what, value, status, message, expected, allowed, named)
          integer, intent(in) :: row
          character(len=*), intent(in) :: what
          real(dp), intent(in) :: value
          integer, intent(out) :: status
          character(len=MESSAGE_LEN), intent(out) :: message
          real(dp), intent(in), optional :: expected, allowed
+         character(len=*), intent(in), optional :: named
          character(len=:), allocatable :: rest
          character(len=12) :: line_text
          integer :: ios
          status = STATUS_TABLE_IDENTITY
          write (line_text, '(i0)', iostat=ios) table%line(row)
-         rest = ':'//trim(line_text)//': identity '//what//' fails: value '//trim(real_text(value))
+         if (present(named)) then
+            rest = ':'//trim(line_text)//': identity '//what//' fails: '//named//' = '//trim(real_text(value))
+         else
+            rest = ':'//trim(line_text)//': identity '//what//' fails: value '//trim(real_text(value))
+         end if
          if (present(expected) .and. present(allowed)) then
+            if (present(named)) then
+               rest = rest//', but the relation needs '//trim(real_text(expected))
+            else
+               rest = rest//', expected '//trim(real_text(expected))
+            end if
             ! (es_field: a three-digit exponent keeps its E, 1.1E-308, not 1.1-308)
-            rest = rest//', expected '//trim(real_text(expected))//' (difference '// &
-               trim(adjustl(es_field(abs(value - expected), 9, 1)))//', allowed '// &
+            rest = rest//' (difference '//trim(adjustl(es_field(abs(value - expected), 9, 1)))//', allowed '// &
                trim(adjustl(es_field(allowed, 9, 1)))//')'
          end if
          rest = rest//' at a = '//trim(real_text(table%rows(row, COL_A)))//' mm'
