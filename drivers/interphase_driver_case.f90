@@ -847,8 +847,12 @@ contains
       end if
       if (p%viscosity > 0.0_dp) text = text//', eta = '//short(p%viscosity)//' s'
       ! (the options that change the response, where they are not the default; the contact band
-      ! changes nothing in the simplified model, which has no closing jump: not named there)
-      if (p%contact_band > 0.0_dp .and. p%model == MODEL_MICROMECHANICAL) text = text//', chi = '//short(p%contact_band)
+      ! changes nothing in the simplified model, which has no closing jump: named as such, that a
+      ! band given to it is not taken for one at work)
+      if (p%contact_band > 0.0_dp) then
+         text = text//', chi = '//short(p%contact_band)
+         if (p%model == MODEL_SIMPLIFIED) text = text//' (no effect: the simplified model has no closing jump)'
+      end if
       if (p%growth_slip == GROWTH_FIXED_LAMBDA) text = text//', growth_slip fixed-lambda'
       if (p%stiffness == STIFFNESS_SYMMETRIC) text = text//', stiffness symmetric'
       if (p%stiffness == STIFFNESS_FIXED_DAMAGE) text = text//', stiffness fixed-damage'

@@ -14,6 +14,9 @@
 program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_kinds, only: dp
+   use interphase_params, only: law_params_type, from_props
+   use interphase_enums, only: STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_case, only: case_type, read_case, load_start_up_data, d0_entry_of, material_summary, writes_an_input, &
       data_files_summary
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
@@ -126,12 +129,27 @@ program interphase_point
          write (error_unit, '(a)') 'interphase-point: error: '//run%path//': the tangent check failed: '// &
             'worst relative error '//real_to_string(report%worst_tangent_error)//' at t = '// &
             real_to_string(report%worst_tangent_time)//' is above tangent_check = '// &
-            real_to_string(run%tangent_check)//' (column tangent_error of '//csv_path//')'
+            real_to_string(run%tangent_check)//' (column tangent_error of '//csv_path//')'//stiffness_note()
          call exit_program(1)
       end if
    end if
 
 contains
+
+   !> Why a tangent check fails by design: '' for the consistent tangent (the default), else a
+   !> note that the material's stiffness option is not the update's derivative.
+   function stiffness_note() result(note)
+      character(len=:), allocatable :: note
+      type(law_params_type) :: params
+      integer :: status
+      character(len=MESSAGE_LEN) :: decode_message
+      note = ''
+      call from_props(run%props, params, status, decode_message)
+      if (status /= STATUS_OK .or. params%stiffness == STIFFNESS_CONSISTENT) return
+      note = '; the material''s stiffness = '''//trim(merge('symmetric   ', 'fixed-damage', &
+         params%stiffness == STIFFNESS_SYMMETRIC))//''' is by design not the derivative of the update '// &
+         '(docs/abaqus.md, PROPS): the check is for stiffness = ''consistent'', the default'
+   end function stiffness_note
 
    !> Print the message to standard error and stop with exit status 1.
    subroutine fail(text, usage)
