@@ -68,6 +68,10 @@ program interphase_check_deck
    !> The parameters of *USER MATERIAL (Abaqus Keywords Guide): any other one is refused.
    character(len=NAME_LEN), parameter :: USER_MATERIAL_PARAMETERS(5) = [character(len=NAME_LEN) :: 'CONSTANTS', &
       'EFFMOD', 'HYBRIDFORMULATION', 'TYPE', 'UNSYMM']
+   !> The parameters of *COHESIVE SECTION (Abaqus Keywords Guide): another one is named in a note
+   !> (a misspelt THICKNSS= would otherwise leave THICKNESS= to its default without a word).
+   character(len=NAME_LEN), parameter :: COHESIVE_SECTION_PARAMETERS(9) = [character(len=NAME_LEN) :: 'CONTROLS', &
+      'ELSET', 'HALF', 'MATERIAL', 'ORIENTATION', 'RESPONSE', 'STACKDIRECTION', 'SYMMETRIC', 'THICKNESS']
    !> Most constants of one *USER MATERIAL.
    integer, parameter :: MAX_CONSTANTS = 64
    !> Most *INCLUDE files open at once (one inside another): deeper is refused (a file that includes
@@ -567,6 +571,13 @@ contains
                   materials(current)%delete_line = lineno
                end if
             case ('COHESIVESECTION')
+               do k = 1, size(parameter_names)
+                  if (.not. any(COHESIVE_SECTION_PARAMETERS == parameter_names(k))) &
+                     write (output_unit, '(a)') path//':'//int_to_string(lineno)//': note: *'//trim(keyword_text)// &
+                        ': '//trim(parameter_names(k))//' is not a parameter of *COHESIVE SECTION this check knows '// &
+                        '(CONTROLS, ELSET, HALF, MATERIAL, ORIENTATION, RESPONSE, STACK DIRECTION, SYMMETRIC, THICKNESS): '// &
+                        'Abaqus refuses a misspelt one'
+               end do
                ! ELSET= and MATERIAL= are required (Abaqus Keywords Guide); RESPONSE= is checked
                ! with the section
                do k = 1, 2
@@ -1584,8 +1595,7 @@ contains
       case ('USERMATERIAL')
          names = USER_MATERIAL_PARAMETERS
       case ('COHESIVESECTION')
-         names = [character(len=NAME_LEN) :: 'CONTROLS', 'ELSET', 'MATERIAL', 'ORIENTATION', 'RESPONSE', &
-            'STACKDIRECTION', 'THICKNESS']
+         names = COHESIVE_SECTION_PARAMETERS
       case ('DYNAMIC', 'DYNAMICTEMPERATURE-DISPLACEMENT')
          names = [character(len=NAME_LEN) :: 'ALLSDTOL', 'ALPHA', 'APPLICATION', 'DIRECT', 'ELEMENTBYELEMENT', &
             'EXPLICIT', 'FIXEDTIMEINCREMENTATION', 'HAFTOL', 'HALFINC', 'IMPROVEDDTMETHOD', 'INITIAL', 'NOHAF', &
