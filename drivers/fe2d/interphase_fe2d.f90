@@ -142,8 +142,16 @@ contains
          '  Runs the masonry shear test of CASE.nml (bricks: plane-strain Q4; joints: interface', &
          '  elements calling the interphase UMAT) and writes the load-displacement CSV, the', &
          '  Newton log and a PNG of the shear force against the shear displacement (gnuplot).', &
-         '  CASE.nml groups: &geometry, &mesh, &brick, &joint (the &material entries of interphase-point),', &
-         '  &loading; documented in drivers/fe2d/README.md (installed:', &
+         '  CASE.nml: &geometry  bricks, brick_length, brick_height, thickness, sides', &
+         '            &mesh      nx, ny, integration', &
+         '            &brick     e, nu', &
+         '            &joint     the &material entries of interphase-point (model, damage_law, mu,', &
+         '                       s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, rcurve_file, g_ci,', &
+         '                       g_cii, growth_slip, contact_band, viscosity, stiffness; or props)', &
+         '            &loading   precompression, precompression_increments, history, increments,', &
+         '                       tolerance, displacement_tolerance, max_iterations, min_increment,', &
+         '                       output, plot, assembly', &
+         '  Documented in drivers/fe2d/README.md (installed:', &
          '  share/doc/interphase/drivers/fe2d/README.md);', &
          '  cases to start from in share/interphase/fe2d-cases.'
    end subroutine print_usage
