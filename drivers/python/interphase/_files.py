@@ -841,12 +841,18 @@ class Case:
                                  control=self.control if self.control.any() else None,
                                  traction_tolerance=self.traction_tolerance, output_every=self.output_every)
 
-    def check_tangent(self, result):
-        """The case's tangent check (tangent_check > 0, tangent_step) on `result`, a run of the
-        case with output_every = 1: Material.tangent_check. Raises ValueError when the case sets
-        no check (tangent_check = 0)."""
+    def check_tangent(self, result=None):
+        """The case's tangent check (tangent_check > 0, tangent_step): Material.tangent_check on
+        `result`, a run of the case with output_every = 1, or, without `result`, on a replay of
+        the case made with output_every = 1 whatever the case's own (the driver checks every step,
+        whatever rows it writes). Raises ValueError when the case sets no check (tangent_check =
+        0)."""
         if not self.tangent_check > 0.0:
             raise ValueError("the case sets no tangent check (&loading: tangent_check = 0, the default)")
+        if result is None:
+            result = self.material.run(self.value, self.time, self.increments,
+                                       control=self.control if self.control.any() else None,
+                                       traction_tolerance=self.traction_tolerance, output_every=1)
         return self.material.tangent_check(result, self.tangent_check, step=self.tangent_step)
 
 
