@@ -83,8 +83,12 @@ if [ -n "$out" ]; then
   outdir=$(dirname "$out")
   [ -d "$outdir" ] && [ -w "$outdir" ] || die 3 "cannot write $out: its directory $outdir does not exist or is not writable"
   # the table, its diag and side files must not overwrite the parameter file they are made from
-  for f in "$out" "${out%.dat}-diag.txt" "${out%.dat}-fields.dat"; do
-    [ "$f" -ef "$params" ] && die 2 "the output '$f' is the parameter file '$params' itself: name the table file (e.g. $(dirname "$params")/$(basename "${params%.params}").dat)"
+  # (the diag and side files are named after the table: its name without .dat, then -diag.txt or
+  # -fields.dat; with --no-fields the side file is not written)
+  [ "$out" -ef "$params" ] && die 2 "the output '$out' is the parameter file '$params' itself: name the table file (e.g. $(dirname "$params")/$(basename "${params%.params}").dat)"
+  for f in "${out%.dat}-diag.txt" "${out%.dat}-fields.dat"; do
+    case "$f" in *-fields.dat) [ "$want_fields" = 1 ] || continue; what="side file" ;; *) what="diagnostics file" ;; esac
+    [ "$f" -ef "$params" ] && die 2 "the table '$out' would write its $what '$f' (the table's name without .dat, then ${f#"${out%.dat}"}), which is the parameter file '$params': it would overwrite it; name the table otherwise (e.g. ${out%.dat}-table.dat) or rename the parameter file"
   done
 fi
 if [ "$check_only" = 0 ]; then
@@ -151,10 +155,11 @@ checknum() {
        die 2 "$1 = '$2' is not a number" ;;
   esac
 }
-# checklist WHAT LIST: every word a number (checknum); an empty list is refused
+# checklist WHAT LIST [EMPTY-HINT]: every word a number (checknum); an empty list is refused
+# (EMPTY-HINT: what to do then; a key's line by default)
 checklist() {
   local v
-  [ -n "$2" ] || die 2 "$1 is empty: give at least one value (or remove the line)"
+  [ -n "$(printf '%s' "$2" | tr -d ' \t')" ] || die 2 "$1 is empty: ${3:-give at least one value (or remove the line)}"
   for v in $2; do checknum "$1: value" "$v"; done
 }
 # the largest mesh make-table.sh runs: elements along the interface and the sides of the meshed
@@ -212,6 +217,14 @@ if [ "$uniform" = 0 ]; then
   awk -v h="${P[hmax]}" -v r="$refine" -v t="${P[$thin]}" 'BEGIN { exit !(h / r > t) }' \
     && warn "$(loc hmax)hmax/refine = $(awk -v h="${P[hmax]}" -v r="$refine" 'BEGIN { printf "%.6g", h / r }') mm is larger than the thinner layer ($thin = ${P[$thin]} mm): the mesh has less than one far-field element through it and the table will not be converged, although every identity check passes; the mesh sizes hmax, htipmax are lengths in mm, not fractions of the RVE: scale them with the layers and check with convergence.sh (docs/rve.md)"
 fi
+# uniform mesh: rve.edp meshes huni x huni squares and uses neither the graded mesh's keys nor
+# the refinement level; a value given for one of them has no effect, which the user may not know
+if [ "$uniform" = 1 ]; then
+  for key in hmax ftip htipmax grow fseg refine; do
+    get "$key" > /dev/null && warn "$(loc "$key")'$key' = ${P[$key]} is not used: with huni = ${P[huni]} ($(loc huni | sed 's/: $//')) the mesh is uniform squares of side huni: neither the graded mesh's keys (hmax, ftip, htipmax, grow, fseg) nor the refinement level refine have an effect (remove the line, or huni for the graded mesh)"
+  done
+  chk "$refine_mult" "x != 1" && warn "--refine $refine_mult is not used: with huni = ${P[huni]} ($(loc huni | sed 's/: $//')) the mesh is uniform squares of side huni, which the refinement level does not change (for a finer uniform mesh, divide huni)"
+fi
 # uniform mesh: the layers and the RVE must be whole numbers of squares (rve.edp's test)
 if [ "$uniform" = 1 ]; then
   for key in b h_m h_b; do
@@ -224,30 +237,41 @@ fi
 # every table has a = 0 and a = b; the keys (or --a-over-b) add the values in between
 alist_raw=$(printf '0\n%s\n' "$bval")
 given=""     # the keys (or option) that gave a values, for the messages
+# where each a came from, "a<TAB>SOURCE" lines (SOURCE "PARAMS:LINE: key" or the option), so that
+# a message about one a names the entry that gave it, not every list of the file
+asrc_map=$(printf '0\ta = 0 (in every table)\n%s\ta = b (in every table)' "$bval")
+# add_a SOURCE VALUES: VALUES (one a in mm per line) are crack half-lengths given by SOURCE
+add_a() {
+  local x
+  alist_raw+=$'\n'$2
+  for x in $2; do asrc_map+=$'\n'$x$'\t'$1; done
+}
 if [ "$a_override_given" = 1 ]; then
-  checklist "--a-over-b" "$a_override"
+  checklist "--a-over-b" "$a_override" "give at least one value of a/b in (0, 1), e.g. --a-over-b \"0.5 0.9\" (a = 0 and a = b are added), or leave the option out to use the parameter file's crack lengths"
   for f in $a_override; do
     chk "$f" "x >= 0" || die 2 "--a-over-b: a/b = $f < 0"
     chk "$f" "x <= 1" || die 2 "--a-over-b: crack half-length a/b = $f > 1: a must not exceed b"
   done
-  alist_raw+=$'\n'$(for f in $a_override; do awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g\n", (f == 1) ? b : f * b }'; done)
+  add_a "--a-over-b" "$(for f in $a_override; do awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g\n", (f == 1) ? b : f * b }'; done)"
   given="--a-over-b \"$a_override\""
 else
   if v=$(get a_over_b_list); then
     checklist "$(loc a_over_b_list)a_over_b_list" "$v"
+    src="$(loc a_over_b_list)a_over_b_list"
     for f in $v; do
       chk "$f" "x >= 0" || die 2 "$(loc a_over_b_list)a_over_b_list: a/b = $f < 0"
       chk "$f" "x <= 1" || die 2 "$(loc a_over_b_list)a_over_b_list: crack half-length a/b = $f > 1: a must not exceed b"
-      alist_raw+=$'\n'$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", f * b }')
+      add_a "$src" "$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", f * b }')"
     done
     given+=" a_over_b_list = $v;"
   fi
   if v=$(get a_list_mm); then
     checklist "$(loc a_list_mm)a_list_mm" "$v"
+    src="$(loc a_list_mm)a_list_mm"
     for f in $v; do
       chk "$f" "x >= 0" || die 2 "$(loc a_list_mm)a_list_mm: a = $f < 0"
       awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x <= b) }' || die 2 "$(loc a_list_mm)a_list_mm: crack half-length a = $f > b = $bval"
-      alist_raw+=$'\n'$f
+      add_a "$src" "$f"
     done
     given+=" a_list_mm = $v;"
   fi
@@ -263,7 +287,7 @@ else
     # the stop is a point of the range: a step that does not divide stop - start would drop it
     awk -v s="$1" -v e="$2" -v d="$3" 'BEGIN { q = (e - s) / d; exit !(q - int(q + 0.5) <= 1e-9 * (q > 1 ? q : 1) && int(q + 0.5) - q <= 1e-9 * (q > 1 ? q : 1)) }' \
       || die 2 "$(loc a_over_b_uniform)a_over_b_uniform = $v: the step does not divide stop - start, so the points would be $(awk -v s="$1" -v e="$2" -v d="$3" 'BEGIN { for (x = s; x <= e + 1e-12; x += d) printf "%g ", x }')without the stop $2"
-    alist_raw+=$'\n'$(awk -v s="$1" -v e="$2" -v d="$3" -v b="$bval" 'BEGIN { n = int((e - s) / d + 1e-9); for (i = 0; i <= n; i++) printf "%.15g\n", (s + i * d) * b }')
+    add_a "$(loc a_over_b_uniform)a_over_b_uniform" "$(awk -v s="$1" -v e="$2" -v d="$3" -v b="$bval" 'BEGIN { n = int((e - s) / d + 1e-9); for (i = 0; i <= n; i++) printf "%.15g\n", (s + i * d) * b }')"
     given+=" a_over_b_uniform = $v;"
   fi
   if v=$(get ligament_over_b); then
@@ -279,30 +303,36 @@ else
     chk "$3" "x == int(x)" || die 2 "$(loc ligament_over_b)ligament_over_b = $v: per-decade = $3 must be a whole number"
     awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { q = n * log(f / t) / log(10); r = int(q + 0.5); exit !(q - r <= 1e-9 * (q > 1 ? q : 1) && r - q <= 1e-9 * (q > 1 ? q : 1)) }' \
       || die 2 "$(loc ligament_over_b)ligament_over_b = $v: 'to' is not a whole number of steps 10^(-1/$3) below 'from', so it would not be a point (per-decade * log10(from/to) = $(awk -v f="$1" -v t="$2" -v n="$3" 'BEGIN { printf "%.6g", n * log(f / t) / log(10) }'))"
-    alist_raw+=$'\n'$(awk -v f="$1" -v t="$2" -v n="$3" -v b="$bval" 'BEGIN { m = int(n * log(f / t) / log(10) + 1e-9); for (j = 0; j <= m; j++) { l = f * 10 ^ (-j / n); printf "%.15g\n", b - l * b } }')
+    add_a "$(loc ligament_over_b)ligament_over_b" "$(awk -v f="$1" -v t="$2" -v n="$3" -v b="$bval" 'BEGIN { m = int(n * log(f / t) / log(10) + 1e-9); for (j = 0; j <= m; j++) { l = f * 10 ^ (-j / n); printf "%.15g\n", b - l * b } }')"
     given+=" ligament_over_b = $v;"
   fi
 fi
 # the a values of the side file: part of the table (so --no-fields keeps the rows), except with
 # --a-over-b, where the side file holds those of them that are in the list
 fields_raw=""
+fields_map=""   # (their sources, as asrc_map)
 if v=$(get fields_a_over_b); then
   checklist "$(loc fields_a_over_b)fields_a_over_b" "$v"
+  src="$(loc fields_a_over_b)fields_a_over_b"
   for f in $v; do
     chk "$f" "x >= 0 && x <= 1" || die 2 "$(loc fields_a_over_b)fields_a_over_b: a/b = $f outside [0, 1]"
-    fields_raw+=$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", (f == 1) ? b : f * b }')$'\n'
+    x=$(awk -v f="$f" -v b="$bval" 'BEGIN { printf "%.15g", (f == 1) ? b : f * b }')
+    fields_raw+=$x$'\n'
+    fields_map+=$x$'\t'$src$'\n'
   done
   [ "$a_override_given" = 1 ] || given+=" fields_a_over_b = $v;"
 fi
 if v=$(get fields_a_mm); then
   checklist "$(loc fields_a_mm)fields_a_mm" "$v"
+  src="$(loc fields_a_mm)fields_a_mm"
   for f in $v; do
     awk -v x="$f" -v b="$bval" 'BEGIN { exit !(x >= 0 && x <= b) }' || die 2 "$(loc fields_a_mm)fields_a_mm: a = $f outside [0, b]"
     fields_raw+=$f$'\n'
+    fields_map+=$f$'\t'$src$'\n'
   done
   [ "$a_override_given" = 1 ] || given+=" fields_a_mm = $v;"
 fi
-[ "$a_override_given" = 1 ] || alist_raw+=$'\n'$fields_raw
+[ "$a_override_given" = 1 ] || { alist_raw+=$'\n'$fields_raw; asrc_map+=$'\n'$fields_map; }
 # sorted, duplicates (to 1e-12 b) removed
 alist=$(printf '%s\n' "$alist_raw" | awk 'NF' | sort -g | awk -v b="$bval" 'NR == 1 || $1 - last > 1e-12 * b { print; last = $1 }')
 na=$(printf '%s\n' "$alist" | wc -l)
@@ -336,45 +366,74 @@ else
   # Above NMAX_EDGES the mesh of one a takes gigabytes: grow = 1, or a grow
   # close to 1, keeps the spacing at the tip size along the whole line (grow = 1 with ftip = 0.05
   # and a = 0.05 mm: 14 000 elements, > 12 GB per FreeFEM process).
-  # (where the crack lengths were given, for the message of one the mesh cannot take)
-  asrc=''
-  for k in a_over_b_list a_over_b_uniform ligament_over_b a_list_mm; do
-    get "$k" > /dev/null && asrc="${asrc:+$asrc, }$(loc "$k")$k"
-  done
-  printf '%s\n' "$alist" | awk -v b="$bval" -v hm="${P[h_m]}" -v hb="${P[h_b]}" -v hmax="${P[hmax]}" -v ftip="${P[ftip]}" \
+  # (where each crack length was given, asrc_map, for the message of one the mesh cannot take:
+  # the entry that gave it, not every list of the file)
+  printf '%s\n' "$alist" | MT_ASRC_MAP=$asrc_map awk -v b="$bval" -v hm="${P[h_m]}" -v hb="${P[h_b]}" -v hmax="${P[hmax]}" -v ftip="${P[ftip]}" \
       -v htipmax="${P[htipmax]}" -v grow="${P[grow]}" -v fseg="${P[fseg]}" -v refine="$refine" -v rm="$refine_mult" \
-      -v nmax="$NMAX_EDGES" -v ncap=10000000 -v asrc="$asrc" '
+      -v nmax="$NMAX_EDGES" -v ncap=10000000 '
     function min(x, y) { return x < y ? x : y }
     function max(x, y) { return x > y ? x : y }
     # the number of intervals of rve.edp grade(p, L, s0, g, smax) (counting stops at ncap);
-    # first, last = its first and last spacing
-    function grade(L, s0, g, smax,   n, pos, s) {
+    # first, last = its first and last spacing; cnt[kind] counts the intervals at the cap smax
+    # (kind "h": hmax/refine, "f": fseg * segment/refine), cnt["g"] those below it, still growing
+    function grade(L, s0, g, smax, kind,   n, pos, s) {
       n = 0; pos = 0; s = min(s0, smax); first = s
-      while (L - pos > 1.5 * s) { pos += s; n++; s = min(s * g, smax); if (n >= ncap) break }
+      while (L - pos > 1.5 * s) { cnt[s >= smax * (1 - 1e-6) ? kind : "g"]++; pos += s; n++; s = min(s * g, smax); if (n >= ncap) break }
+      cnt[s >= smax * (1 - 1e-6) ? kind : "g"]++
       if (n == 0) first = L
       last = L - pos; return n + 1
     }
-    BEGIN { hfar = hmax / refine; gr = grow ^ (1 / refine); diam = sqrt(b * b + max(hm, hb) ^ 2); hlim = 1.1e-7 * diam }
+    # the entries that gave the crack half-length x (mm)
+    function source(x,   i, j, out, seen) {
+      out = ""
+      for (i = 1; i <= nsrc; i++) {
+        if ((j = index(srcline[i], "\t")) == 0) continue
+        if (abs(substr(srcline[i], 1, j - 1) - x) <= 1e-9 * b && !(substr(srcline[i], j + 1) in seen)) {
+          seen[substr(srcline[i], j + 1)] = 1; out = out (out == "" ? "" : ", ") substr(srcline[i], j + 1)
+        }
+      }
+      return out
+    }
+    function abs(x) { return x < 0 ? -x : x }
+    BEGIN { hfar = hmax / refine; gr = grow ^ (1 / refine); diam = sqrt(b * b + max(hm, hb) ^ 2); hlim = 1.1e-7 * diam
+            nsrc = split(ENVIRON["MT_ASRC_MAP"], srcline, "\n") }
     {
       a = $1 + 0; if (a > b) a = b
       if (a > 0 && a < b) {
         L1 = b - a; htip = min(htipmax, ftip * min(L1, a)) / refine
         if (htip < hlim) {
-          printf "make-table.sh: error: a = %s mm (b - a = %.6g mm): crack or ligament too short for this mesh (tip spacing %.3g mm < %.3g mm, FreeFEM'"'"'s limit) at refine %s; need min(a, b - a) >= %.3g mm, or a larger ftip%s (the crack lengths: %s)\n", \
-            $1, L1, htip, hlim, refine, hlim * refine / ftip, (rm != 1 ? " or a lower --refine" : ""), asrc > "/dev/stderr"
+          printf "make-table.sh: error: a = %s mm (b - a = %.6g mm): crack or ligament too short for this mesh (tip spacing %.3g mm < %.3g mm, FreeFEM'"'"'s limit) at refine %s; need min(a, b - a) >= %.3g mm, or a larger ftip%s (this crack length: %s)\n", \
+            $1, L1, htip, hlim, refine, hlim * refine / ftip, (rm != 1 ? " or a lower --refine" : ""), source($1) > "/dev/stderr"
           exit 1
         }
-        ni = grade(L1, htip, gr, min(hfar, fseg * L1 / refine)); sL = last
-        ni += grade(a, htip, gr, min(hfar, fseg * a / refine)); sR = last
-        how = sprintf("the interface spacing starts at the tip spacing min(htipmax, ftip*min(a, b - a))/refine = %.3g mm and grows by grow^(1/refine) = %.6g per element", htip, gr)
+        delete cnt
+        ni = grade(L1, htip, gr, min(hfar, fseg * L1 / refine), (fseg * L1 / refine < hfar) ? "f" : "h"); sL = last
+        ni += grade(a, htip, gr, min(hfar, fseg * a / refine), (fseg * a / refine < hfar) ? "f" : "h"); sR = last
       } else {
-        ni = grade(b, hfar, 1, hfar); sL = first; sR = last
-        how = sprintf("the interface spacing is hmax/refine = %.3g mm", hfar)
+        delete cnt
+        ni = grade(b, hfar, 1, hfar, "h"); sL = first; sR = last
       }
-      ns = grade(hm, sL, gr, hfar) + grade(hm, sR, gr, hfar) + grade(hb, sL, gr, hfar) + grade(hb, sR, gr, hfar)
+      ns = grade(hm, sL, gr, hfar, "h") + grade(hm, sR, gr, hfar, "h") + grade(hb, sL, gr, hfar, "h") + grade(hb, sR, gr, hfar, "h")
       if (ni + ns > nmax) {
-        printf "make-table.sh: error: grow = %s, ftip = %s, htipmax = %s, hmax = %s, refine %s: at a = %s mm the mesh would need %s%d elements along the interface and %d along the sides (of the meshed quarter), more than the %d allowed (the mesh of one a would take gigabytes): %s; use grow > 1 (1.1 to 1.6 are usual), a larger ftip, htipmax or hmax, or a lower refinement\n", \
-          grow, ftip, htipmax, hmax, refine, $1, (ni >= ncap ? "more than " : ""), ni, ns, nmax, how > "/dev/stderr"
+        # the cause named: most of the elements are either still growing from the tip spacing
+        # (grow^(1/refine) close to 1), or at the far-field size hmax/refine (hmax small against
+        # b and the layers), or at the cap fseg * segment/refine (fseg small)
+        ng = cnt["g"] + 0; nh = cnt["h"] + 0; nf = cnt["f"] + 0
+        lower = (rm != 1 ? " or a lower --refine" : (refine != 1 ? " or a lower refine" : ""))
+        growing = sprintf("%d of them grow from the tip spacing min(htipmax, ftip*min(a, b - a))/refine = %.3g mm by only grow^(1/refine) = %.6g per element", ng, htip, gr)
+        if (ng >= nh && ng >= nf) {
+          if (gr < 1.1 && grow >= 1.1)
+            cause = sprintf("%s (grow = %s at refine %s): the refinement is too high for this grow; use a lower refinement, or a larger ftip or htipmax", growing, grow, refine)
+          else
+            cause = sprintf("%s: grow = %s %s; use grow > 1 (1.1 to 1.6 are usual), a larger ftip or htipmax%s", growing, grow, (grow == 1 ? "keeps the spacing at the tip size" : "is too close to 1"), lower)
+        } else if (nh >= nf) {
+          cause = sprintf("%d of them at the far-field spacing hmax/refine = %.3g mm, over the interface (b = %s mm) and the sides (h_m = %s, h_b = %s mm): %s is too small for this RVE (grow = %s is not the cause); use a larger hmax%s", \
+            nh, hfar, b, hm, hb, (refine == 1 ? "hmax = " hmax " mm" : "hmax/refine = " hmax "/" refine " mm"), grow, lower)
+        } else {
+          cause = sprintf("%d of them at the cap fseg*segment/refine along the crack and the ligament: fseg = %s is too small (grow = %s is not the cause); use a larger fseg%s", nf, fseg, grow, lower)
+        }
+        printf "make-table.sh: error: grow = %s, ftip = %s, htipmax = %s, hmax = %s, fseg = %s, refine %s: at a = %s mm the mesh would need %s%d elements along the interface and %d along the sides (of the meshed quarter), more than the %d allowed (the mesh of one a would take gigabytes): %s (this crack length: %s)\n", \
+          grow, ftip, htipmax, hmax, fseg, refine, $1, (ni >= ncap ? "more than " : ""), ni, ns, nmax, cause, source($1) > "/dev/stderr"
         exit 1
       }
     }' || exit 2
