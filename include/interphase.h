@@ -164,7 +164,7 @@ extern "C" {
  *                       itself (an update in place, which a failure leaves as it was)
  * @param stored_energy  out: recoverable energy per unit area (N/mm)
  * @param detail         out, may be NULL: on failure, a NUL-terminated message naming the bad
- *                       value (e.g. "PROPS(5) sf_N = 1.00000E-004 is out of range: ...")
+ *                       value (e.g. "PROPS(5) sf_N = 0.1E-3 is out of range: ...")
  * @param detail_len     size of @p detail in bytes (257 holds any message: at most 256 characters;
  *                       every value is read as the size_t it is, SIZE_MAX too)
  * @return INTERPHASE_STATUS_OK (0), or a status code; on failure traction, tangent, state_new
@@ -323,7 +323,8 @@ int interphase_run_history(const double *props, int nprops, int ntens, size_t nr
  * NOT thread-safe: it writes library-wide data. Call it once, from one thread, before any thread
  * calls interphase_update; a later call replaces the table and must not overlap any update.
  *
- * @param path        NUL-terminated file name (at most 4096 bytes)
+ * @param path        NUL-terminated file name (at most 4096 bytes; NULL is a file that cannot be
+ *                    read: INTERPHASE_STATUS_TABLE_UNREADABLE, "RVE table path is NULL")
  * @param detail      out, may be NULL: on failure, a NUL-terminated message naming the file, the
  *                    line and the failed check (e.g. "bad.dat:5: 2 numbers where the ...")
  * @param detail_len  size of @p detail in bytes (257 holds any message: at most 256 characters)
@@ -343,7 +344,8 @@ int interphase_load_table(const char *path, char *detail, size_t detail_len);
  * NOT thread-safe: it writes library-wide data. Call it once, from one thread, before any thread
  * calls interphase_update; a later call replaces the R-curve and must not overlap any update.
  *
- * @param path        NUL-terminated file name (at most 4096 bytes)
+ * @param path        NUL-terminated file name (at most 4096 bytes; NULL is a file that cannot be
+ *                    read: INTERPHASE_STATUS_RCURVE_UNREADABLE, "R-curve path is NULL")
  * @param detail      out, may be NULL: on failure, a NUL-terminated message naming the file, the
  *                    line and the failed check
  * @param detail_len  size of @p detail in bytes (257 holds any message: at most 256 characters)

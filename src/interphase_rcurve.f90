@@ -25,7 +25,7 @@ module interphase_rcurve
    implicit none
    private
    public :: load_rcurve, tabulated_rcurve, rcurve_source, rcurve_loaded, rcurve_covers, rcurve_coverage, &
-      rcurve_overrun
+      rcurve_overrun, rcurve_loaded_path
 
    !> Smallest difference of consecutive rows' D. With toughnesses in the PROPS window
    !> [1e-20, 1e20] N/mm it keeps the interpolant's divided differences below about 1e29 N/mm
@@ -499,6 +499,14 @@ contains
    end function rcurve_overrun
 
    !> The file the tabulated R-curve came from, as given to load_rcurve ('' when none is loaded).
+   !> The file of the loaded R-curve as it was opened, absolute ('' when none is loaded): what a
+   !> replay file records, so that it reads back from any folder.
+   pure function rcurve_loaded_path() result(path)
+      character(len=:), allocatable :: path
+      path = ''
+      if (allocated(loaded_tried)) path = loaded_tried
+   end function rcurve_loaded_path
+
    pure function rcurve_source() result(source)
       character(len=:), allocatable :: source
       source = ''

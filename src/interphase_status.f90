@@ -104,6 +104,7 @@ contains
    pure function status_message(status) result(message)
       integer, intent(in) :: status          !! a STATUS_* code
       character(len=:), allocatable :: message
+      character(len=12) :: code_text
 
       select case (status)
       case (STATUS_OK);                    message = 'success'
@@ -169,7 +170,10 @@ contains
       case (STATUS_TABLE_IDENTITY);        message = 'RVE table violates an exact identity of the RVE problems'
       case (STATUS_TABLE_NOT_LOADED);      message = 'custom RVE table selected but none loaded'
       case (STATUS_TABLE_INTERPOLANT);     message = 'RVE table interpolant inadmissible between two rows'
-      case default;                        message = 'unknown status code'
+      case default
+         ! (the value named: a code from another version, or not a status at all)
+         write (code_text, '(i0)') status
+         message = 'unknown status code '//trim(code_text)
       end select
    end function status_message
 

@@ -79,10 +79,14 @@ contains
       character(len=MESSAGE_LEN) :: message
       character(len=:), allocatable :: users
       integer :: status
+      logical :: loaded
       users = ''
       if (present(used_by)) users = used_by
       ok = .true.
-      if (loaded_from == path) then
+      ! (the loaders keep the path as opened, absolute: a relative one names the same file)
+      loaded = loaded_from == path
+      if (.not. loaded) loaded = loaded_from == tried_path(path)
+      if (loaded) then
          call interphase_host_message(SEVERITY_INFO, caller//': '//what//' '//message_path(tried_path(path))//' already loaded')
          return
       end if

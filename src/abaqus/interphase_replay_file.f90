@@ -17,6 +17,10 @@
 !> file, the other's can be lost too).
 module interphase_replay_file
    use interphase_kinds, only: dp
+   use interphase_enums, only: TABLE_CUSTOM_CODE
+   use interphase_micro_coefficients, only: custom_table_loaded, custom_table_source
+   use interphase_rcurve, only: rcurve_loaded, rcurve_loaded_path
+   use interphase_text_input, only: tried_path
    implicit none
    private
    public :: write_replay, write_replay_group, replay_note, REPLAY_VARIABLE, REPLAY_MAX_PROPS, REPLAY_MAX_STATEV
@@ -120,8 +124,9 @@ contains
       real(dp), intent(in) :: props(:), statev(:), stress(:), sse, spd, stran(:), dstran(:), time(2), dtime
       integer, intent(in) :: noel, npt, kinc
       integer, intent(out) :: ios
-      !> the custom RVE table and R-curve files loaded (default: what INTERPHASE_TABLE and
-      !> INTERPHASE_RCURVE name)
+      !> the custom RVE table and R-curve files loaded (default: the files the run loaded, as they
+      !> were opened, absolute; else what INTERPHASE_TABLE and INTERPHASE_RCURVE name, a relative
+      !> path made absolute: the replay file is read back from another folder)
       character(len=*), intent(in), optional :: table_file, rcurve_file
       integer, intent(in), optional :: ndi, nshr   !! the host's NDI, NSHR (default 1, NTENS - 1)
       character(len=:), allocatable :: table, rcurve
@@ -129,12 +134,20 @@ contains
 
       if (present(table_file)) then
          table = table_file
-      else if (.not. environment('INTERPHASE_TABLE', table)) then
+      else if (custom_table_loaded()) then
+         table = custom_table_source(TABLE_CUSTOM_CODE)
+      else if (environment('INTERPHASE_TABLE', table)) then
+         table = tried_path(table)
+      else
          table = ''
       end if
       if (present(rcurve_file)) then
          rcurve = rcurve_file
-      else if (.not. environment('INTERPHASE_RCURVE', rcurve)) then
+      else if (rcurve_loaded()) then
+         rcurve = rcurve_loaded_path()
+      else if (environment('INTERPHASE_RCURVE', rcurve)) then
+         rcurve = tried_path(rcurve)
+      else
          rcurve = ''
       end if
       write (unit, '(a)', iostat=ios) '! A failed '//source//' call of interphase. Repeat it through the UMAT with', &

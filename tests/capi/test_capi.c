@@ -361,7 +361,7 @@ static void test_failures(void) {
   n = interphase_status_message(INTERPHASE_STATUS_NONFINITE_SEPARATION, NULL, 0);
   CHECK(n == strlen("separation is not finite (NaN or Inf)"), "length of message 20: %zu", n);
   interphase_status_message(9999, msg, sizeof msg);
-  CHECK(strcmp(msg, "unknown status code") == 0, "status 9999: \"%s\"", msg);
+  CHECK(strcmp(msg, "unknown status code 9999") == 0, "status 9999: \"%s\"", msg);
   /* every status the header names has a message of its own (ctest capi_status_codes_match checks
      that the header names every code of src/interphase_status.f90, with the same values) */
   const int codes[] = {
@@ -385,7 +385,7 @@ static void test_failures(void) {
       INTERPHASE_STATUS_NULL_ARGUMENT, INTERPHASE_STATUS_RCURVE_BAD_TOUGHNESS};
   for (size_t i = 0; i < sizeof codes / sizeof codes[0]; ++i) {
     interphase_status_message(codes[i], msg, sizeof msg);
-    CHECK(strcmp(msg, "unknown status code") != 0, "status %d has no message", codes[i]);
+    CHECK(strncmp(msg, "unknown status code", 19) != 0, "status %d has no message", codes[i]);
     for (size_t j = 0; j < i; ++j) CHECK(codes[i] != codes[j], "status %d named twice", codes[i]);
   }
 }
