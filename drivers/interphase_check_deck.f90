@@ -124,7 +124,7 @@ program interphase_check_deck
       'ASSEMBLEDFASTENER', 'ASSEMBLEDFASTENERPROPERTY', 'NODEFILE', 'NODEOUTPUT', 'NODEPRINT', 'NODERESPONSE', &
       'NODALENERGYRATE', 'NODALTHICKNESS', 'ELEMENTMATRIXOUTPUT', 'ELEMENTOPERATOROUTPUT', 'ELEMENTOUTPUT', &
       'ELEMENTPROPERTIES', 'ELEMENTRECOVERYMATRIX', 'ELEMENTRESPONSE', 'ELFILE', 'ELPRINT', 'ELSET', &
-      'SOLUTIONTECHNIQUE', 'SOLVERCONTROLS', 'SHELLGENERALSECTION', 'SHELLTOSOLIDCOUPLING']
+      'SOLUTIONTECHNIQUE', 'SOLVERCONTROLS', 'SHELLGENERALSECTION', 'SHELLTOSOLIDCOUPLING', 'INITIALSTATE']
 
    !> What the deck says about one material.
    type :: material_type
@@ -177,7 +177,7 @@ program interphase_check_deck
       character(len=:), allocatable :: file
       integer :: line = 0
       integer :: block = 0                     !! which *INITIAL CONDITIONS it belongs to
-      character(len=LINE_LEN) :: text = ''
+      character(len=:), allocatable :: text    !! the line, trailing blanks dropped
    end type solution_line_type
 
    !> The initial state variables one *INITIAL CONDITIONS, TYPE=SOLUTION gives an element set.
@@ -330,6 +330,10 @@ contains
       logical, allocatable :: keep(:)          !! the sections interphase serves
       logical, allocatable :: unused(:)        !! the materials with a *USER MATERIAL no section uses
       logical :: calculix                      !! a section of a CalculiX-named user material was seen
+      !> a section keyword this check does not read (*SHELL SECTION, a composite *SOLID SECTION,
+      !> ...) was seen, and the materials such sections name by MATERIAL=
+      logical :: other_sections
+      character(len=80), allocatable :: other_materials(:)
       integer :: keyword_lines                 !! keyword lines read
       character(len=:), allocatable :: explicit_file, standard_file
       character(len=:), allocatable :: include_input !! an *INCLUDE's INPUT= as written
@@ -337,13 +341,15 @@ contains
       character(len=80) :: standard_keyword
       !> the data lines of *INITIAL CONDITIONS, TYPE=SOLUTION, the one being read (0: none) and
       !> the number read so far, and the element sets' values read from them
-      type(solution_line_type), allocatable :: solution_lines(:)
-      integer :: solution_block, solution_blocks
+      type(solution_line_type), allocatable :: solution_lines(:), grown_lines(:)
+      integer :: solution_block, solution_blocks, nsolution_lines, nstates
       type(initial_state_type), allocatable :: states(:)
 
-      allocate (materials(0), sections(0), solution_lines(0))
+      allocate (materials(0), sections(0), solution_lines(64), other_materials(0))
+      other_sections = .false.
       solution_block = 0
       solution_blocks = 0
+      nsolution_lines = 0
       path = deck
       depth = 0
       explicit_file = ''
@@ -496,6 +502,18 @@ contains
             end select
             ! (the data lines after an *INCLUDE line continue the keyword before it)
             if (trim(keyword) /= 'INCLUDE') solution_block = 0
+            ! a section of other elements (*SHELL SECTION, *MEMBRANE SECTION, a composite *SOLID
+            ! SECTION, whose materials are on its data lines, ...): its material is used, if not by
+            ! interphase (the job's one UMAT would serve it)
+            k = len_trim(keyword)
+            if (k > 7) then
+               if (keyword(k - 6:k) == 'SECTION' .and. trim(keyword) /= 'COHESIVESECTION' .and. &
+                  (trim(keyword) /= 'SOLIDSECTION' .or. any(parameter_names == 'COMPOSITE'))) then
+                  other_sections = .true.
+                  field = label_value(parameter_value(parameter_names, parameter_values, 'MATERIAL'))
+                  if (len_trim(field) > 0) other_materials = [character(len=80) :: other_materials, field]
+               end if
+            end if
             select case (trim(keyword))
             case ('INCLUDE')
                ! its lines are read where it stands, as Abaqus reads them; a relative INPUT= from
@@ -659,7 +677,17 @@ contains
          ! a data line of the current keyword
          data_lines = data_lines + 1
          if (trim(keyword) == 'INITIALCONDITIONS' .and. solution_block > 0) then
-            solution_lines = [solution_lines, solution_line_type(file=path, line=lineno, block=solution_block, text=line)]
+            ! (the array doubled when full: a deck may give the state of thousands of elements)
+            if (nsolution_lines == size(solution_lines)) then
+               allocate (grown_lines(2*size(solution_lines)))
+               grown_lines(1:nsolution_lines) = solution_lines(1:nsolution_lines)
+               call move_alloc(grown_lines, solution_lines)
+            end if
+            nsolution_lines = nsolution_lines + 1
+            solution_lines(nsolution_lines)%file = path
+            solution_lines(nsolution_lines)%line = lineno
+            solution_lines(nsolution_lines)%block = solution_block
+            solution_lines(nsolution_lines)%text = trim(line)
             cycle
          end if
          call parse_numbers(line, values, empty, nvalues, bad_field, bad_item, bad_why)
@@ -770,7 +798,8 @@ contains
       ! is checked
       allocate (unused(size(materials)))
       do k = 1, size(materials)
-         unused(k) = materials(k)%user_line /= 0 .and. .not. any(sections%material == materials(k)%name)
+         unused(k) = materials(k)%user_line /= 0 .and. .not. any(sections%material == materials(k)%name) .and. &
+            .not. any(other_materials == materials(k)%name)
       end do
       calculix = any(.not. keep .and. sections%solid .and. (index(sections%material, 'ABAQUS') == 1 .or. &
          index(sections%material, '@') == 1))
@@ -778,7 +807,7 @@ contains
       if (size(sections) == 0) then
          if (keyword_lines == 0) then
             call record_failure(deck//': no keyword line (*HEADING, *MATERIAL, ...): not an Abaqus input deck', nfail)
-         else if (any(unused) .and. .not. calculix) then
+         else if (any(unused) .and. .not. (calculix .or. other_sections)) then
             do k = 1, size(materials)
                if (unused(k)) call record_failure(materials(k)%file//':'//int_to_string(materials(k)%user_line)// &
                   ': *USER MATERIAL of '//trim(materials(k)%name)//', but no *COHESIVE SECTION or *SOLID SECTION '// &
@@ -795,9 +824,9 @@ contains
          if (unused(k)) write (output_unit, '(a)') materials(k)%file//':'//int_to_string(materials(k)%user_line)// &
             ': note: *USER MATERIAL of '//trim(materials(k)%name)//': no section uses it (not checked)'
       end do
-      call read_initial_states(solution_lines, sections, materials, states, nfail)
+      call read_initial_states(solution_lines, nsolution_lines, sections, materials, states, nstates, nfail)
       do i = 1, size(sections)
-         call check_section(deck, sections(i), materials, explicit, states, nfail)
+         call check_section(deck, sections(i), materials, explicit, states(1:nstates), nfail)
       end do
 
    end subroutine check_deck
@@ -1043,150 +1072,223 @@ contains
 
    !> The element sets' initial state variables from the data lines of *INITIAL CONDITIONS,
    !> TYPE=SOLUTION (Abaqus Keywords Guide): an element set's label and the values of its first
-   !> seven state variables on one line, eight more on each line after it, as many values as its
-   !> material's *DEPVAR count. An element set is known here by the ELSET= of a section interphase
-   !> serves: where a line names an element (by number) or another set, the values' end is not
-   !> known, and that *INITIAL CONDITIONS is not read further (a note). A field that is not a
-   !> number, a line with more values than Abaqus reads, or a count of values other than *DEPVAR's
-   !> is a failed check (and ends the reading of that *INITIAL CONDITIONS).
-   subroutine read_initial_states(lines, sections, materials, states, nfail)
+   !> seven state variables on one line, eight more on each line after it, for as many state
+   !> variables as its material's *DEPVAR count: so many lines, whatever each holds (a field left
+   !> out, or empty, is 0, as Abaqus reads data lines). An element set is known here by the ELSET=
+   !> of a section interphase serves (a label qualified by an instance, Part-1-1.JOINT, by the
+   !> part after its last point): where a line names an element (by number) or another set, where
+   !> its values end is not known, and the reading goes on at the next line that names a set (a
+   !> label: value lines hold numbers only), with a note. A field that is not a number, a line with
+   !> more values than Abaqus reads there, and a set's line where its values go on are failed
+   !> checks; data that end before a set's last line leave the rest 0, with a note.
+   subroutine read_initial_states(lines, nlines, sections, materials, states, nstates, nfail)
       type(solution_line_type), intent(in) :: lines(:)
+      integer, intent(in) :: nlines                 !! the lines read (the first nlines of `lines`)
       !> the sections interphase serves (a failed check of an element set's values is its section's)
       type(section_type), intent(inout) :: sections(:)
       type(material_type), intent(in) :: materials(:)
       type(initial_state_type), allocatable, intent(out) :: states(:)
+      integer, intent(out) :: nstates               !! the element sets' values read (states(1:nstates))
       integer, intent(inout) :: nfail
-      real(dp) :: buffer(LINE_LEN + 1), x
-      logical :: empty(LINE_LEN + 1), ok
+      real(dp) :: buffer(LINE_LEN + 1)
+      logical :: empty(LINE_LEN + 1)
       real(dp), allocatable :: got(:)
       type(initial_state_type), allocatable :: grown(:)
       character(len=LINE_LEN) :: first, rest, bad_item
       character(len=32) :: why
-      character(len=:), allocatable :: where, label
-      integer :: i, i0, c, s, m, k, n, nvalues, bad_field, limit, nfail_before
-      logical :: failed
+      character(len=:), allocatable :: where, label, line_where
+      integer :: i, i0, s, m, n, nvalues, nfields, bad_field, limit, nfail_before, record_lines, j, given, last
 
-      allocate (states(0), got(0))
+      allocate (states(8))
+      nstates = 0
       i = 1
-      do while (i <= size(lines))
+      do while (i <= nlines)
          i0 = i
          where = lines(i0)%file//':'//int_to_string(lines(i0)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION'
-         c = comma_outside_quotes(lines(i0)%text)
-         if (c > 0) then
-            first = lines(i0)%text(1:c - 1)
-            rest = lines(i0)%text(c + 1:)
-         else
-            first = lines(i0)%text
-            rest = ''
-         end if
-         call parse_real(first, x, ok, why)
-         if (ok) then
+         call split_label(lines(i0)%text, first, rest)
+         if (is_number(first)) then
             write (output_unit, '(a)') where//': note: element '//trim(adjustl(first))//': the state variables '// &
                'of single elements are not checked (this check knows elements by their section''s ELSET=), nor the '// &
-               'lines after them in this *INITIAL CONDITIONS'
-            call next_block(lines, lines(i0)%block, i)
+               'lines after them up to the next that names an element set'
+            call next_set_line(lines, nlines, i)
             cycle
          end if
          label = label_value(first)
-         s = 0
-         do k = 1, size(sections)
-            if (sections(k)%elset == label) then
-               s = k
-               exit
-            end if
-         end do
-         m = 0
-         if (s > 0) then
-            do k = 1, size(materials)
-               if (materials(k)%name == sections(s)%material) m = k
-            end do
-         end if
+         call section_of(label, sections, materials, s, m)
          if (s == 0) then
             write (output_unit, '(a)') where//': note: ELSET='//label//' is not the ELSET= of a section interphase '// &
                'serves (a set of other elements, or one this check cannot resolve: it reads no *ELSET): not checked, '// &
-               'nor the lines after it in this *INITIAL CONDITIONS'
-            call next_block(lines, lines(i0)%block, i)
+               'nor the lines after it up to the next that names an element set'
+            call next_set_line(lines, nlines, i)
             cycle
          else if (m == 0) then
-            call next_block(lines, lines(i0)%block, i)     ! (the section's missing material is its own failed check)
+            call next_set_line(lines, nlines, i)     ! (the section's missing material is its own failed check)
             cycle
          else if (materials(m)%depvar < 1) then
-            call next_block(lines, lines(i0)%block, i)     ! (no *DEPVAR count: the material's own failed check)
+            call next_set_line(lines, nlines, i)     ! (no *DEPVAR count: the material's own failed check)
             cycle
          end if
          n = materials(m)%depvar
+         record_lines = 1 + (max(0, n - SOLUTION_FIRST_LINE_VALUES) + SOLUTION_LINE_VALUES - 1)/SOLUTION_LINE_VALUES
          where = where//' of ELSET='//label
          nfail_before = nfail
-         failed = .false.
-         deallocate (got)
-         allocate (got(0))
-         limit = SOLUTION_FIRST_LINE_VALUES
-         do
-            if (i == i0) then
+         if (allocated(got)) deallocate (got)
+         allocate (got(n))
+         got = 0.0_dp
+         given = 0
+         last = i0
+         do j = 1, record_lines
+            i = last + j - 1
+            if (j > 1) then
+               if (i > nlines) exit
+               if (lines(i)%block /= lines(i0)%block) exit
+            end if
+            line_where = lines(i)%file//':'//int_to_string(lines(i)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION '// &
+               'data line of ELSET='//label
+            if (j == 1) then
                call parse_numbers(rest, buffer, empty, nvalues, bad_field, bad_item, why)
                if (bad_field > 0) bad_field = bad_field + 1   ! (the label is the line's first field)
+               nfields = field_count(rest)
+               limit = SOLUTION_FIRST_LINE_VALUES
             else
                call parse_numbers(lines(i)%text, buffer, empty, nvalues, bad_field, bad_item, why)
-               ! a line whose first field is not a number: the next element set's
-               if (bad_field == 1) exit
+               nfields = field_count(lines(i)%text)
+               limit = SOLUTION_LINE_VALUES
+               if (bad_field == 1) then
+                  ! a line that names the next set where this set's values go on: Abaqus reads its
+                  ! label as a number
+                  call record_failure(line_where//': its '//int_to_string(n)//' state variables (*DEPVAR of '// &
+                     trim(materials(m)%name)//') take '//int_to_string(record_lines)//' lines, '// &
+                     int_to_string(SOLUTION_FIRST_LINE_VALUES)//' values on the line of the set and '// &
+                     int_to_string(SOLUTION_LINE_VALUES)//' on each line after it, but line '// &
+                     int_to_string(lines(i)%line)//" ('"//clip_text(trim(adjustl(bad_item)))//"') is not one of them", &
+                     nfail)
+                  exit
+               end if
             end if
             if (bad_field > 0) then
-               call record_failure(lines(i)%file//':'//int_to_string(lines(i)%line)//': *INITIAL CONDITIONS, '// &
-                  'TYPE=SOLUTION data line of ELSET='//label//': field '//int_to_string(bad_field)//" '"// &
+               call record_failure(line_where//': field '//int_to_string(bad_field)//" '"// &
                   clip_text(trim(adjustl(bad_item)))//"' is "//trim(why), nfail)
-               failed = .true.
                exit
             end if
-            if (nvalues > limit) then
-               call record_failure(lines(i)%file//':'//int_to_string(lines(i)%line)//': *INITIAL CONDITIONS, '// &
-                  'TYPE=SOLUTION data line of ELSET='//label//': '//int_to_string(nvalues)//' values, but Abaqus '// &
-                  'reads '//int_to_string(SOLUTION_FIRST_LINE_VALUES)//' on the line of the element set and '// &
+            if (nfields > limit) then
+               call record_failure(line_where//': '//int_to_string(nfields)//' values, but Abaqus reads '// &
+                  int_to_string(SOLUTION_FIRST_LINE_VALUES)//' on the line of the element set and '// &
                   int_to_string(SOLUTION_LINE_VALUES)//' on each line after it', nfail)
-               failed = .true.
                exit
             end if
-            got = [got, buffer(1:nvalues)]
-            limit = SOLUTION_LINE_VALUES
-            i = i + 1
-            if (size(got) >= n .or. i > size(lines)) exit
-            if (lines(i)%block /= lines(i0)%block) exit
+            ! (the line's values in their slots; fields left out or empty are 0)
+            nvalues = min(nvalues, n - given)
+            got(given + 1:given + nvalues) = buffer(1:nvalues)
+            given = given + limit
          end do
-         if (.not. failed .and. size(got) /= n) then
-            call record_failure(where//': '//int_to_string(size(got))//' value(s), but *DEPVAR of '// &
-               trim(materials(m)%name)//' is '//int_to_string(n)//': Abaqus reads a value for each state variable, '// &
-               int_to_string(SOLUTION_FIRST_LINE_VALUES)//' on the line of the element set and '// &
-               int_to_string(SOLUTION_LINE_VALUES)//' on each line after it', nfail)
-            failed = .true.
-         end if
-         if (failed) then
+         ! (the lines the set's values took: i0 to i0 + j - 2)
+         last = i0 + j - 2
+         if (nfail > nfail_before) then
             sections(s)%refused = sections(s)%refused + (nfail - nfail_before)
-            call next_block(lines, lines(i0)%block, i)
+            i = max(last, i0)
+            call next_set_line(lines, nlines, i)
             cycle
          end if
-         ! (grown by hand: an array constructor of this type with allocatable components is
-         ! miscompiled by gfortran 12)
-         allocate (grown(size(states) + 1))
-         grown(1:size(states)) = states
-         grown(size(grown))%file = lines(i0)%file
-         grown(size(grown))%line = lines(i0)%line
-         grown(size(grown))%elset = label
-         grown(size(grown))%values = got
-         call move_alloc(grown, states)
+         if (j <= record_lines) write (output_unit, '(a)') where//': note: the data end after '// &
+            int_to_string(j - 1)//' of the '//int_to_string(record_lines)//' lines its '//int_to_string(n)// &
+            ' state variables take (*DEPVAR of '//trim(materials(m)%name)//'): STATEV('// &
+            int_to_string(min(n, given) + 1)//':'//int_to_string(n)//') taken as 0'
+         ! (doubled when full: a deck may give thousands of sets)
+         if (nstates == size(states)) then
+            allocate (grown(2*size(states)))
+            grown(1:nstates) = states(1:nstates)
+            call move_alloc(grown, states)
+         end if
+         nstates = nstates + 1
+         states(nstates)%file = lines(i0)%file
+         states(nstates)%line = lines(i0)%line
+         states(nstates)%elset = sections(s)%elset
+         states(nstates)%values = got
+         i = last + 1
       end do
 
    end subroutine read_initial_states
 
-   !> Move i past the lines of `lines` of *INITIAL CONDITIONS number `block` (to the first line of
-   !> the next one, or past the end when none).
-   pure subroutine next_block(lines, block, i)
+   !> Move i to the next of the first nlines `lines`, of any *INITIAL CONDITIONS, that names an
+   !> element set (its first field a label, not a number), or past the last line.
+   subroutine next_set_line(lines, nlines, i)
       type(solution_line_type), intent(in) :: lines(:)
-      integer, intent(in) :: block
+      integer, intent(in) :: nlines
       integer, intent(inout) :: i
-      do while (i <= size(lines))
-         if (lines(i)%block /= block) exit
+      character(len=LINE_LEN) :: head, tail
+      do
          i = i + 1
+         if (i > nlines) return
+         call split_label(lines(i)%text, head, tail)
+         if (.not. is_number(head)) return
       end do
-   end subroutine next_block
+   end subroutine next_set_line
+
+   !> The section (s) whose ELSET= is `label`, or the part of it after its last point (an
+   !> instance's set, Part-1-1.JOINT), and its material (m); 0 when none.
+   subroutine section_of(label, sections, materials, s, m)
+      character(len=*), intent(in) :: label
+      type(section_type), intent(in) :: sections(:)
+      type(material_type), intent(in) :: materials(:)
+      integer, intent(out) :: s, m
+      integer :: k, dot
+      s = 0
+      m = 0
+      do k = 1, size(sections)
+         if (sections(k)%elset == label) s = k
+         if (s > 0) exit
+      end do
+      dot = index(label, '.', back=.true.)
+      if (s == 0 .and. dot > 0) then
+         do k = 1, size(sections)
+            if (sections(k)%elset == label(dot + 1:)) s = k
+            if (s > 0) exit
+         end do
+      end if
+      if (s == 0) return
+      do k = 1, size(materials)
+         if (materials(k)%name == sections(s)%material) m = k
+      end do
+   end subroutine section_of
+
+   !> A data line's first field (before its first comma outside quotes) and the rest after it.
+   pure subroutine split_label(text, first, rest)
+      character(len=*), intent(in) :: text
+      character(len=*), intent(out) :: first, rest
+      integer :: c
+      c = comma_outside_quotes(text)
+      if (c > 0) then
+         first = text(1:c - 1)
+         rest = text(c + 1:)
+      else
+         first = text
+         rest = ''
+      end if
+   end subroutine split_label
+
+   !> The field is one number (an element's label, or a value), not a set's label.
+   logical function is_number(field)
+      character(len=*), intent(in) :: field
+      real(dp) :: x
+      character(len=32) :: why
+      call parse_real(field, x, is_number, why)
+   end function is_number
+
+   !> The fields of a comma-separated data line as Abaqus counts them: every field, empty ones
+   !> too, but for one comma that ends the line.
+   pure integer function field_count(text) result(n)
+      character(len=*), intent(in) :: text
+      integer :: k, last
+      n = 0
+      last = len_trim(text)
+      if (last == 0) return
+      n = 1
+      do k = 1, last
+         if (text(k:k) == ',') n = n + 1
+      end do
+      if (text(last:last) == ',') n = n - 1
+   end function field_count
 
    !> The initial state variables the deck gives the section's element set, checked as the UMAT's
    !> and VUMAT's STATEV reader checks them at the first call (unpack_statev: the same messages),

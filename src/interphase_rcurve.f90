@@ -498,15 +498,16 @@ contains
          ' at separation '//separation_text(s)
    end function rcurve_overrun
 
-   !> The file the tabulated R-curve came from, as given to load_rcurve ('' when none is loaded).
    !> The file of the loaded R-curve as it was opened, absolute ('' when none is loaded): what a
-   !> replay file records, so that it reads back from any folder.
+   !> replay file records, so that it reads back from any folder, and what a start-up hook compares
+   !> a path with before loading it again.
    pure function rcurve_loaded_path() result(path)
       character(len=:), allocatable :: path
       path = ''
       if (allocated(loaded_tried)) path = loaded_tried
    end function rcurve_loaded_path
 
+   !> The file the tabulated R-curve came from, as given to load_rcurve ('' when none is loaded).
    pure function rcurve_source() result(source)
       character(len=:), allocatable :: source
       source = ''

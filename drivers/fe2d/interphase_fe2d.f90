@@ -145,7 +145,7 @@ contains
          '  CASE.nml: &geometry  bricks, brick_length, brick_height, thickness, sides', &
          '            &mesh      nx, ny, integration', &
          '            &brick     e, nu', &
-         '            &joint     the &material entries of interphase-point (model, damage_law, mu,', &
+         '            &joint     interphase-point''s material entries (model, damage_law, mu,', &
          '                       s0_n, sf_n, s0_t, sf_t, k_n, k_t, table, d0, rcurve, rcurve_file, g_ci,', &
          '                       g_cii, growth_slip, contact_band, viscosity, stiffness; or props)', &
          '            &loading   precompression, precompression_increments, history, increments,', &

@@ -20,7 +20,7 @@ module interphase_external_data
    use interphase_enums, only: TABLE_CUSTOM_CODE
    use interphase_layout, only: PROP_TABLE
    use interphase_micro_coefficients, only: load_custom_table, custom_table_source
-   use interphase_rcurve, only: load_rcurve, rcurve_source
+   use interphase_rcurve, only: load_rcurve, rcurve_loaded_path
    use interphase_abaqus_interfaces, only: interphase_host_message
    use interphase_text_input, only: tried_path
    implicit none
@@ -64,7 +64,7 @@ contains
    subroutine load_rcurve_file(caller, path, ok)
       character(len=*), intent(in) :: caller, path
       logical, intent(out) :: ok
-      call load_named_file(caller, RCURVE_VARIABLE, 'R-curve', path, rcurve_source(), load_rcurve, ok)
+      call load_named_file(caller, RCURVE_VARIABLE, 'R-curve', path, rcurve_loaded_path(), load_rcurve, ok)
    end subroutine load_rcurve_file
 
    !> Call `loader` on `path` unless `loaded_from` is that path already; report success (info,
