@@ -1090,110 +1090,19 @@ contains
       type(initial_state_type), allocatable, intent(out) :: states(:)
       integer, intent(out) :: nstates               !! the element sets' values read (states(1:nstates))
       integer, intent(inout) :: nfail
-      real(dp) :: buffer(LINE_LEN + 1)
-      logical :: empty(LINE_LEN + 1)
-      real(dp), allocatable :: got(:)
       type(initial_state_type), allocatable :: grown(:)
-      character(len=LINE_LEN) :: first, rest, bad_item
-      character(len=32) :: why
-      character(len=:), allocatable :: where, label, line_where
-      integer :: i, i0, s, m, n, nvalues, nfields, bad_field, limit, nfail_before, record_lines, j, given, last
+      real(dp), allocatable :: got(:)
+      integer :: i, i0, s
 
       allocate (states(8))
       nstates = 0
       i = 1
+      ! (one set at a time in a procedure of its own: its messages' temporaries end with it, where a
+      ! compiler that keeps them on the stack would otherwise pile them up over thousands of sets)
       do while (i <= nlines)
          i0 = i
-         where = lines(i0)%file//':'//int_to_string(lines(i0)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION'
-         call split_label(lines(i0)%text, first, rest)
-         if (is_number(first)) then
-            write (output_unit, '(a)') where//': note: element '//trim(adjustl(first))//': the state variables '// &
-               'of single elements are not checked (this check knows elements by their section''s ELSET=), nor the '// &
-               'lines after them up to the next that names an element set'
-            call next_set_line(lines, nlines, i)
-            cycle
-         end if
-         label = label_value(first)
-         call section_of(label, sections, materials, s, m)
-         if (s == 0) then
-            write (output_unit, '(a)') where//': note: ELSET='//label//' is not the ELSET= of a section interphase '// &
-               'serves (a set of other elements, or one this check cannot resolve: it reads no *ELSET): not checked, '// &
-               'nor the lines after it up to the next that names an element set'
-            call next_set_line(lines, nlines, i)
-            cycle
-         else if (m == 0) then
-            call next_set_line(lines, nlines, i)     ! (the section's missing material is its own failed check)
-            cycle
-         else if (materials(m)%depvar < 1) then
-            call next_set_line(lines, nlines, i)     ! (no *DEPVAR count: the material's own failed check)
-            cycle
-         end if
-         n = materials(m)%depvar
-         record_lines = 1 + (max(0, n - SOLUTION_FIRST_LINE_VALUES) + SOLUTION_LINE_VALUES - 1)/SOLUTION_LINE_VALUES
-         where = where//' of ELSET='//label
-         nfail_before = nfail
-         if (allocated(got)) deallocate (got)
-         allocate (got(n))
-         got = 0.0_dp
-         given = 0
-         last = i0
-         do j = 1, record_lines
-            i = last + j - 1
-            if (j > 1) then
-               if (i > nlines) exit
-               if (lines(i)%block /= lines(i0)%block) exit
-            end if
-            line_where = lines(i)%file//':'//int_to_string(lines(i)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION '// &
-               'data line of ELSET='//label
-            if (j == 1) then
-               call parse_numbers(rest, buffer, empty, nvalues, bad_field, bad_item, why)
-               if (bad_field > 0) bad_field = bad_field + 1   ! (the label is the line's first field)
-               nfields = field_count(rest)
-               limit = SOLUTION_FIRST_LINE_VALUES
-            else
-               call parse_numbers(lines(i)%text, buffer, empty, nvalues, bad_field, bad_item, why)
-               nfields = field_count(lines(i)%text)
-               limit = SOLUTION_LINE_VALUES
-               if (bad_field == 1) then
-                  ! a line that names the next set where this set's values go on: Abaqus reads its
-                  ! label as a number
-                  call record_failure(line_where//': its '//int_to_string(n)//' state variables (*DEPVAR of '// &
-                     trim(materials(m)%name)//') take '//int_to_string(record_lines)//' lines, '// &
-                     int_to_string(SOLUTION_FIRST_LINE_VALUES)//' values on the line of the set and '// &
-                     int_to_string(SOLUTION_LINE_VALUES)//' on each line after it, but line '// &
-                     int_to_string(lines(i)%line)//" ('"//clip_text(trim(adjustl(bad_item)))//"') is not one of them", &
-                     nfail)
-                  exit
-               end if
-            end if
-            if (bad_field > 0) then
-               call record_failure(line_where//': field '//int_to_string(bad_field)//" '"// &
-                  clip_text(trim(adjustl(bad_item)))//"' is "//trim(why), nfail)
-               exit
-            end if
-            if (nfields > limit) then
-               call record_failure(line_where//': '//int_to_string(nfields)//' values, but Abaqus reads '// &
-                  int_to_string(SOLUTION_FIRST_LINE_VALUES)//' on the line of the element set and '// &
-                  int_to_string(SOLUTION_LINE_VALUES)//' on each line after it', nfail)
-               exit
-            end if
-            ! (the line's values in their slots; fields left out or empty are 0)
-            nvalues = min(nvalues, n - given)
-            got(given + 1:given + nvalues) = buffer(1:nvalues)
-            given = given + limit
-         end do
-         ! (the lines the set's values took: i0 to i0 + j - 2)
-         last = i0 + j - 2
-         if (nfail > nfail_before) then
-            sections(s)%refused = sections(s)%refused + (nfail - nfail_before)
-            i = max(last, i0)
-            call next_set_line(lines, nlines, i)
-            cycle
-         end if
-         if (j <= record_lines) write (output_unit, '(a)') where//': note: the data end after '// &
-            int_to_string(j - 1)//' of the '//int_to_string(record_lines)//' lines its '//int_to_string(n)// &
-            ' state variables take (*DEPVAR of '//trim(materials(m)%name)//'): STATEV('// &
-            int_to_string(min(n, given) + 1)//':'//int_to_string(n)//') taken as 0'
+         call read_set_values(lines, nlines, i, sections, materials, nfail, s, got)
+         if (s == 0) cycle
          ! (doubled when full: a deck may give thousands of sets)
          if (nstates == size(states)) then
             allocate (grown(2*size(states)))
@@ -1204,11 +1113,126 @@ contains
          states(nstates)%file = lines(i0)%file
          states(nstates)%line = lines(i0)%line
          states(nstates)%elset = sections(s)%elset
-         states(nstates)%values = got
-         i = last + 1
+         call move_alloc(got, states(nstates)%values)
       end do
-
    end subroutine read_initial_states
+
+   !> One record of read_initial_states, from line i: the values of the set it names (s its section,
+   !> `got` its *DEPVAR values), or s = 0 when it names an element, an unknown set, or fails (a note
+   !> or a failed check said so); i is left at the next record's first line.
+   subroutine read_set_values(lines, nlines, i, sections, materials, nfail, s, got)
+      type(solution_line_type), intent(in) :: lines(:)
+      integer, intent(in) :: nlines
+      integer, intent(inout) :: i
+      type(section_type), intent(inout) :: sections(:)
+      type(material_type), intent(in) :: materials(:)
+      integer, intent(inout) :: nfail
+      integer, intent(out) :: s
+      real(dp), allocatable, intent(out) :: got(:)
+      real(dp) :: buffer(LINE_LEN + 1)
+      logical :: empty(LINE_LEN + 1)
+      character(len=LINE_LEN) :: first, rest, bad_item
+      character(len=32) :: why
+      character(len=:), allocatable :: where, label, line_where
+      integer :: i0, m, n, nvalues, nfields, bad_field, limit, nfail_before, record_lines, j, given, last
+
+      i0 = i
+      where = lines(i0)%file//':'//int_to_string(lines(i0)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION'
+      call split_label(lines(i0)%text, first, rest)
+      s = 0
+      if (is_number(first)) then
+         write (output_unit, '(a)') where//': note: element '//trim(adjustl(first))//': the state variables '// &
+            'of single elements are not checked (this check knows elements by their section''s ELSET=), nor the '// &
+            'lines after them up to the next that names an element set'
+         call next_set_line(lines, nlines, i)
+         return
+      end if
+      label = label_value(first)
+      call section_of(label, sections, materials, s, m)
+      if (s == 0) then
+         write (output_unit, '(a)') where//': note: ELSET='//label//' is not the ELSET= of a section interphase '// &
+            'serves (a set of other elements, or one this check cannot resolve: it reads no *ELSET): not checked, '// &
+            'nor the lines after it up to the next that names an element set'
+         call next_set_line(lines, nlines, i)
+         return
+      else if (m == 0) then
+         s = 0
+         call next_set_line(lines, nlines, i)     ! (the section's missing material is its own failed check)
+         return
+      else if (materials(m)%depvar < 1) then
+         s = 0
+         call next_set_line(lines, nlines, i)     ! (no *DEPVAR count: the material's own failed check)
+         return
+      end if
+      n = materials(m)%depvar
+      record_lines = 1 + (max(0, n - SOLUTION_FIRST_LINE_VALUES) + SOLUTION_LINE_VALUES - 1)/SOLUTION_LINE_VALUES
+      where = where//' of ELSET='//label
+      nfail_before = nfail
+      allocate (got(n))
+      got = 0.0_dp
+      given = 0
+      last = i0
+      do j = 1, record_lines
+         i = last + j - 1
+         if (j > 1) then
+            if (i > nlines) exit
+            if (lines(i)%block /= lines(i0)%block) exit
+         end if
+         line_where = lines(i)%file//':'//int_to_string(lines(i)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION '// &
+            'data line of ELSET='//label
+         if (j == 1) then
+            call parse_numbers(rest, buffer, empty, nvalues, bad_field, bad_item, why)
+            if (bad_field > 0) bad_field = bad_field + 1   ! (the label is the line's first field)
+            nfields = field_count(rest)
+            limit = SOLUTION_FIRST_LINE_VALUES
+         else
+            call parse_numbers(lines(i)%text, buffer, empty, nvalues, bad_field, bad_item, why)
+            nfields = field_count(lines(i)%text)
+            limit = SOLUTION_LINE_VALUES
+            if (bad_field == 1) then
+               ! a line that names the next set where this set's values go on: Abaqus reads its
+               ! label as a number
+               call record_failure(line_where//': its '//int_to_string(n)//' state variables (*DEPVAR of '// &
+                  trim(materials(m)%name)//') take '//int_to_string(record_lines)//' lines, '// &
+                  int_to_string(SOLUTION_FIRST_LINE_VALUES)//' values on the line of the set and '// &
+                  int_to_string(SOLUTION_LINE_VALUES)//' on each line after it, but line '// &
+                  int_to_string(lines(i)%line)//" ('"//clip_text(trim(adjustl(bad_item)))//"') is not one of them", &
+                  nfail)
+               exit
+            end if
+         end if
+         if (bad_field > 0) then
+            call record_failure(line_where//': field '//int_to_string(bad_field)//" '"// &
+               clip_text(trim(adjustl(bad_item)))//"' is "//trim(why), nfail)
+            exit
+         end if
+         if (nfields > limit) then
+            call record_failure(line_where//': '//int_to_string(nfields)//' values, but Abaqus reads '// &
+               int_to_string(SOLUTION_FIRST_LINE_VALUES)//' on the line of the element set and '// &
+               int_to_string(SOLUTION_LINE_VALUES)//' on each line after it', nfail)
+            exit
+         end if
+         ! (the line's values in their slots; fields left out or empty are 0)
+         nvalues = min(nvalues, n - given)
+         got(given + 1:given + nvalues) = buffer(1:nvalues)
+         given = given + limit
+      end do
+      ! (the lines the set's values took: i0 to i0 + j - 2)
+      last = i0 + j - 2
+      if (nfail > nfail_before) then
+         sections(s)%refused = sections(s)%refused + (nfail - nfail_before)
+         i = max(last, i0)
+         call next_set_line(lines, nlines, i)
+         s = 0
+         return
+      end if
+      if (j <= record_lines) write (output_unit, '(a)') where//': note: the data end after '// &
+         int_to_string(j - 1)//' of the '//int_to_string(record_lines)//' lines its '//int_to_string(n)// &
+         ' state variables take (*DEPVAR of '//trim(materials(m)%name)//'): STATEV('// &
+         int_to_string(min(n, given) + 1)//':'//int_to_string(n)//') taken as 0'
+      ! (the set's values read: the next record starts after the lines they took)
+      i = last + 1
+   end subroutine read_set_values
 
    !> Move i to the next of the first nlines `lines`, of any *INITIAL CONDITIONS, that names an
    !> element set (its first field a label, not a number), or past the last line.
@@ -1302,43 +1326,70 @@ contains
       logical, intent(in) :: explicit
       character(len=:), allocatable, intent(inout) :: notes
       integer, intent(inout) :: nfail
+      character(len=:), allocatable :: note_3d
+      integer :: k, nchecked, first_checked, nnotes_3d
+      logical :: passed
+
+      nchecked = 0
+      first_checked = 0
+      nnotes_3d = 0
+      ! (one state at a time in a procedure of its own: its messages' temporaries end with it)
+      do k = 1, size(states)
+         if (states(k)%elset /= elset) cycle
+         call check_one_state(states(k), params%viscosity > 0.0_dp, explicit, nfail, passed, note_3d)
+         if (len(note_3d) > 0) then
+            nnotes_3d = nnotes_3d + 1
+            if (nnotes_3d == 1) notes = notes//'; note: '//note_3d
+         end if
+         if (.not. passed) cycle
+         nchecked = nchecked + 1
+         if (first_checked == 0) first_checked = k
+      end do
+      if (nnotes_3d > 1) notes = notes//' (and '//int_to_string(nnotes_3d - 1)//' more such line(s))'
+      if (first_checked > 0) notes = notes//'; note: initial state variables (*INITIAL CONDITIONS at '// &
+         states(first_checked)%file//':'//int_to_string(states(first_checked)%line)//') checked'
+   end subroutine check_initial_states
+
+   !> check_initial_states on one element set's values: `passed` false when a failed check was
+   !> recorded; `note_3d` what only a 3-D point refuses ('' when nothing).
+   subroutine check_one_state(given, viscous, explicit, nfail, passed, note_3d)
+      type(initial_state_type), intent(in) :: given
+      logical, intent(in) :: viscous                      !! the material's viscous regularisation
+      logical, intent(in) :: explicit
+      integer, intent(inout) :: nfail
+      logical, intent(out) :: passed
+      character(len=:), allocatable, intent(out) :: note_3d
       type(interface_state_type) :: state
       character(len=MESSAGE_LEN) :: message
       character(len=:), allocatable :: where
-      integer :: k, status, nchecked
-      logical :: viscous
+      integer :: status
 
-      viscous = params%viscosity > 0.0_dp
-      nchecked = 0
-      do k = 1, size(states)
-         if (states(k)%elset /= elset) cycle
-         associate (v => states(k)%values)
-            where = states(k)%file//':'//int_to_string(states(k)%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION of '// &
-               'ELSET='//trim(elset)
-            call unpack_statev(size(v), v, 2, viscous, state, status, message)
-            if (status /= STATUS_OK) then
-               call record_failure(where//': '//trim(message)//' (the '//trim(merge('VUMAT', 'UMAT ', explicit))// &
-                  ' refuses it at the first increment: docs/abaqus.md, STATEV)', nfail)
-               cycle
+      note_3d = ''
+      passed = .false.
+      associate (v => given%values)
+         where = given%file//':'//int_to_string(given%line)//': *INITIAL CONDITIONS, TYPE=SOLUTION of '// &
+            'ELSET='//trim(given%elset)
+         call unpack_statev(size(v), v, 2, viscous, state, status, message)
+         if (status /= STATUS_OK) then
+            call record_failure(where//': '//trim(message)//' (the '//trim(merge('VUMAT', 'UMAT ', explicit))// &
+               ' refuses it at the first increment: docs/abaqus.md, STATEV)', nfail)
+            return
+         end if
+         call unpack_statev(size(v), v, 3, viscous, state, status, message)
+         if (status /= STATUS_OK) note_3d = where//': '//trim(message)//' in a 3-D element (a 2-D one does not '// &
+            'read STATEV(3))'
+         if (explicit .and. size(v) >= SV_SEP_T2) then
+            if (.not. all(abs(v(SV_SEP_N:SV_SEP_T2)) <= 0.0_dp)) then
+               call record_failure(where//': STATEV(6:8) = '//real_to_string(v(SV_SEP_N))//', '// &
+                  real_to_string(v(SV_SEP_T1))//', '//real_to_string(v(SV_SEP_T2))//' mm, but these are the '// &
+                  'VUMAT''s total separations, to which it adds each increment''s: an element at rest starts from 0 '// &
+                  '(another value would offset its traction; docs/abaqus.md, VUMAT)', nfail)
+               return
             end if
-            call unpack_statev(size(v), v, 3, viscous, state, status, message)
-            if (status /= STATUS_OK) notes = notes//'; note: '//where//': '//trim(message)//' in a 3-D element (a '// &
-               '2-D one does not read STATEV(3))'
-            if (explicit .and. size(v) >= SV_SEP_T2) then
-               if (.not. all(abs(v(SV_SEP_N:SV_SEP_T2)) <= 0.0_dp)) then
-                  call record_failure(where//': STATEV(6:8) = '//real_to_string(v(SV_SEP_N))//', '// &
-                     real_to_string(v(SV_SEP_T1))//', '//real_to_string(v(SV_SEP_T2))//' mm, but these are the '// &
-                     'VUMAT''s total separations, to which it adds each increment''s: an element at rest starts from 0 '// &
-                     '(another value would offset its traction; docs/abaqus.md, VUMAT)', nfail)
-                  cycle
-               end if
-            end if
-         end associate
-         nchecked = nchecked + 1
-         if (nchecked == 1) notes = notes//'; note: initial state variables (*INITIAL CONDITIONS at '// &
-            states(k)%file//':'//int_to_string(states(k)%line)//') checked'
-      end do
-   end subroutine check_initial_states
+         end if
+      end associate
+      passed = .true.
+   end subroutine check_one_state
 
    !> `*DEPVAR, DELETE=n` of a material: Abaqus deletes a material point whose state variable n is
    !> 0 (1: active). interphase's own slots (1 to depvar_needed) start from zeros and hold 0 at an
