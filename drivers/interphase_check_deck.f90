@@ -347,6 +347,7 @@ contains
 
       allocate (materials(0), sections(0), solution_lines(64), other_materials(0))
       other_sections = .false.
+      calculix = .false.
       solution_block = 0
       solution_blocks = 0
       nsolution_lines = 0
@@ -787,6 +788,7 @@ contains
          if (keep(i) .and. sections(i)%solid) then
             if (index(sections(i)%material, 'ABAQUS') == 1 .or. index(sections(i)%material, '@') == 1) then
                keep(i) = .false.
+               calculix = .true.
                write (output_unit, '(a)') sections(i)%file//':'//int_to_string(sections(i)%line)//': note: '// &
                   '*SOLID SECTION, ELSET='//trim(sections(i)%elset)//': material '//trim(sections(i)%material)// &
                   ' is named as CalculiX names a user material (ABAQUS..., @...): a CalculiX deck, not checked '// &
@@ -801,8 +803,6 @@ contains
          unused(k) = materials(k)%user_line /= 0 .and. .not. any(sections%material == materials(k)%name) .and. &
             .not. any(other_materials == materials(k)%name)
       end do
-      calculix = any(.not. keep .and. sections%solid .and. (index(sections%material, 'ABAQUS') == 1 .or. &
-         index(sections%material, '@') == 1))
       sections = pack(sections, keep)
       if (size(sections) == 0) then
          if (keyword_lines == 0) then
@@ -1850,8 +1850,8 @@ contains
       integer, intent(out) :: bad_field
       character(len=*), intent(out) :: bad_item  !! that field's text ('' when bad_field = 0)
       character(len=32), intent(out) :: why    !! parse_real's reason for bad_field
-      character(len=len(line)) :: rest, item
-      integer :: i, k
+      character(len=len(line)) :: rest, item, tail
+      integer :: k
       real(dp) :: x
       logical :: ok
       n = 0
@@ -1863,14 +1863,10 @@ contains
       rest = line
       k = 0
       do while (len_trim(rest) > 0 .and. k < size(values))
-         i = index(rest, ',')
-         if (i > 0) then
-            item = rest(1:i - 1)
-            rest = rest(i + 1:)
-         else
-            item = rest
-            rest = ''
-         end if
+         ! (the field before the first comma: a number holds no double quote, so split_label's
+         ! comma outside quotes is the first comma)
+         call split_label(rest, item, tail)
+         rest = tail
          k = k + 1
          if (len_trim(item) == 0) then
             ! 0, as Abaqus reads it; a value only when a field that is not empty follows

@@ -42,7 +42,12 @@ module interphase_driver_case
    private
    public :: case_type, read_case, material_entries_type, material_props, unpack_entries, writes_an_input, &
       load_start_up_data, ENTRY_LEN, UNSET_REAL, is_unset, precheck_case_file, material_entry_kinds, &
-      check_material_props, material_summary, data_files_summary, d0_entry_of
+      check_material_props, material_summary, data_files_summary, d0_entry_of, STIFFNESS_WORDS
+
+   !> The words of the `stiffness` entry, by their STIFFNESS_* codes (0, 1, 2): the entry's reader,
+   !> the console's material summary and interphase-point's tangent-check note name them alike.
+   character(len=12), parameter :: STIFFNESS_WORDS(STIFFNESS_CONSISTENT:STIFFNESS_FIXED_DAMAGE) = &
+      [character(len=12) :: 'consistent', 'symmetric', 'fixed-damage']
 
    !> Length of the character entries of the namelists (model names, paths).
    integer, parameter :: ENTRY_LEN = 1024
@@ -542,8 +547,8 @@ contains
          if (.not. finite_entry('viscosity', e%viscosity)) return
          p%viscosity = e%viscosity
       end if
-      if (.not. keyword_entry('stiffness', e%stiffness, [character(len=12) :: 'consistent', 'symmetric', &
-         'fixed-damage'], [STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE], &
+      if (.not. keyword_entry('stiffness', e%stiffness, STIFFNESS_WORDS, &
+         [STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC, STIFFNESS_FIXED_DAMAGE], &
          "'consistent' (the default), 'symmetric' or 'fixed-damage'", p%stiffness)) return
       ! PROPS from the one encoder (interphase_params); the values are checked by the UMAT's
       ! decoder, whose message names the PROPS index
@@ -854,8 +859,7 @@ contains
          if (p%model == MODEL_SIMPLIFIED) text = text//' (no effect: the simplified model has no closing jump)'
       end if
       if (p%growth_slip == GROWTH_FIXED_LAMBDA) text = text//', growth_slip fixed-lambda'
-      if (p%stiffness == STIFFNESS_SYMMETRIC) text = text//', stiffness symmetric'
-      if (p%stiffness == STIFFNESS_FIXED_DAMAGE) text = text//', stiffness fixed-damage'
+      if (p%stiffness /= STIFFNESS_CONSISTENT) text = text//', stiffness '//trim(STIFFNESS_WORDS(p%stiffness))
    contains
       !> Four significant digits, plain for 1e-5 <= |value| < 1e6 (0.00044, 482.7), else 1.234E-07.
       function short(value) result(t)

@@ -15,9 +15,10 @@ program interphase_point
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use interphase_kinds, only: dp
    use interphase_params, only: law_params_type, from_props
-   use interphase_enums, only: STIFFNESS_CONSISTENT, STIFFNESS_SYMMETRIC
+   use interphase_enums, only: STIFFNESS_CONSISTENT
    use interphase_status, only: STATUS_OK, MESSAGE_LEN
    use interphase_driver_case, only: case_type, read_case, load_start_up_data, d0_entry_of, material_summary, writes_an_input, &
+      STIFFNESS_WORDS, &
       data_files_summary
    use interphase_driver_cli, only: run_arguments_type, parse_run_arguments, make_directory, &
       gnuplot_available, run_gnuplot, exit_program, rename_file, print_version, refuse_special_output, remove_file, &
@@ -146,8 +147,8 @@ contains
       note = ''
       call from_props(run%props, params, status, decode_message)
       if (status /= STATUS_OK .or. params%stiffness == STIFFNESS_CONSISTENT) return
-      note = '; the material''s stiffness = '''//trim(merge('symmetric   ', 'fixed-damage', &
-         params%stiffness == STIFFNESS_SYMMETRIC))//''' is by design not the derivative of the update '// &
+      note = '; the material''s stiffness = '''//trim(STIFFNESS_WORDS(params%stiffness))//''' is by design not '// &
+         'the derivative of the update '// &
          '(docs/abaqus.md, PROPS): the check is for stiffness = ''consistent'', the default'
    end function stiffness_note
 
