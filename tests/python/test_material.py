@@ -1601,3 +1601,26 @@ def test_constants_are_the_librarys_and_the_drivers(source_dir):
     assert interphase.TRACTION_TOLERANCE_MAX == _fortran_parameter(mixed, "TRACTION_TOLERANCE_MAX")
     assert interphase.DEFAULT_TRACTION_TOLERANCE == _fortran_parameter(case, "DEFAULT_TRACTION_TOLERANCE")
     assert interphase.DEFAULT_TANGENT_STEP == _fortran_parameter(case, "DEFAULT_TANGENT_STEP")
+
+
+def test_pickled_material_keeps_read_only_props_and_its_state_size():
+    # a Material sent to a worker process (pickle) kept PROPS writeable (numpy does not pickle the
+    # flag): the viscosity option switched on in place then made the library write 5 state
+    # variables into the 4 of the material's buffers (heap corruption, "double free or corruption")
+    import pickle
+    m = interphase.Material(**dict(SIMPLIFIED, stiffness="symmetric"))   # PROPS hold the viscosity slot (0)
+    copy = pickle.loads(pickle.dumps(m))
+    assert not copy.props.flags.writeable
+    with pytest.raises(ValueError, match="read-only"):
+        copy.props[11] = 0.5
+    r = copy.run([[0.0, 0.0], [0.01, 0.0]], increments=10)
+    assert not pickle.loads(pickle.dumps(r)).props.flags.writeable
+    assert np.array_equal(r.traction, m.run([[0.0, 0.0], [0.01, 0.0]], increments=10).traction)
+    # PROPS replaced by others of another state size: refused before any library call
+    viscous = m.props.copy()
+    viscous[11] = 0.5
+    copy.props = viscous
+    for call in (lambda: copy.update([0.01, 0.0], dt=0.1), lambda: copy.run([[0.0, 0.0], [0.01, 0.0]])):
+        with pytest.raises(ValueError, match="PROPS were changed after it was made .* asks for 5 state variables, "
+                                             "the material has 4"):
+            call()

@@ -42,6 +42,17 @@ _ENTRIES = _REQUIRED + ("k_n", "k_t", "table", "d0", "rcurve", "rcurve_file", "g
                         "growth_slip", "contact_band", "viscosity", "stiffness")
 
 
+def _nstate_of(props):
+    """The state size the library takes from PROPS: NSTATE_VISCOUS when the viscosity option
+    PROPS(nb + 3) is > 0 (nb: the law's own PROPS, 9 simplified / 8 micromechanical, 4 more with the
+    fracture law), else NSTATE."""
+    n = len(props)
+    nb = 9 if n > 0 and props[0] == MODEL_SIMPLIFIED else 8
+    if n > 1 and props[1] == DAMAGE_FRACTURE:
+        nb += 4
+    return NSTATE_VISCOUS if n >= nb + 3 and props[nb + 2] > 0.0 else NSTATE
+
+
 def _as_c(array):
     """A C-contiguous float64 array (a copy only when needed) and its address."""
     a = np.ascontiguousarray(array, dtype=np.float64)
@@ -370,7 +381,7 @@ class Material:
         """The library's check of the values (its decoder, from_props), before any file is loaded:
         an update of a virgin point without loading the table or the R-curve. What only the loaded
         data can tell (none loaded, an R-curve that does not cover D0) is left to the first update."""
-        props, props_p = _as_c(self.props)
+        props, props_p = self._props_c("Material")
         s, s_p = _as_c(np.zeros(2))
         old, old_p = _as_c(self.initial_state())
         traction, tangent, new = np.empty(2), np.empty((2, 2)), np.empty(self.nstate)
@@ -449,10 +460,8 @@ class Material:
         custom_table = n > 7 and self.props[0] == MODEL_MICROMECHANICAL and self.props[7] == TABLE_CUSTOM
         rcurve_at = nb + 1
         tabulated = n > rcurve_at and self.props[1] == DAMAGE_FRACTURE and self.props[rcurve_at] == RCURVE_TABULATED
-        if n > 1 and self.props[1] == DAMAGE_FRACTURE:
-            nb += 4
-        self.viscous = n >= nb + 3 and self.props[nb + 2] > 0.0
-        self.nstate = NSTATE_VISCOUS if self.viscous else NSTATE
+        self.nstate = _nstate_of(self.props)
+        self.viscous = self.nstate == NSTATE_VISCOUS
         self.model = self.damage_law = None
         return self, custom_table, tabulated, rcurve_at
 
@@ -462,6 +471,24 @@ class Material:
                                                                       ("rcurve_file", self.rcurve_path)) if path)
             return f"Material.from_props({self.props.tolist()!r}{files})"
         return "Material(" + ", ".join(f"{k}={v!r}" for k, v in self.entries.items()) + ")"
+
+    def __setstate__(self, state):
+        # (numpy does not pickle an array's writeable flag: a Material sent to a worker process
+        # would come back with PROPS that can be changed in place, nstate no longer theirs)
+        self.__dict__.update(state)
+        if isinstance(self.__dict__.get("props"), np.ndarray):
+            self.props.flags.writeable = False
+
+    def _props_c(self, who):
+        """PROPS as the library takes them, and their address; ValueError when they ask for another
+        state size than this material's buffers hold (PROPS changed after the material was made:
+        the library would write past the state arrays)."""
+        props, props_p = _as_c(self.props)
+        if _nstate_of(props) != self.nstate:
+            raise ValueError(f"{who}: the material's PROPS were changed after it was made (their viscosity "
+                             f"option asks for {_nstate_of(props)} state variables, the material has {self.nstate}): "
+                             "make a new material, Material.from_props(props)")
+        return props, props_p
 
     def initial_state(self):
         """The state of a virgin point: nstate zeros (D, slip_1, slip_2, regime[, inviscid D])."""
@@ -512,7 +539,7 @@ class Material:
                                   "separation (s_N, s_T) is 2-D: a 2-D update does not read lambda_2 and would "
                                   "return it as 0. Go on in 3-D, separation (s_N, s_T1, s_T2), or pass a 2-D state "
                                   "(state[2] = 0)")
-        props, props_p = _as_c(self.props)
+        props, props_p = self._props_c("Material.update")
         traction = np.empty(n)
         tangent = np.empty((n, n))
         new = np.empty(self.nstate)
@@ -617,7 +644,7 @@ class Material:
             ctrl = np.ascontiguousarray(np.broadcast_to(c, (nrows, n)), dtype=np.intc)
         value = np.ascontiguousarray(value)
         t = np.ascontiguousarray(t)
-        props, props_p = _as_c(self.props)
+        props, props_p = self._props_c("Material.run")
         # rows: the start, one per output_every-th sub-increment and the end of every segment; more
         # where steps are halved (the library then says STATUS_OUTPUT_FULL, and the run is made
         # again with 4 times the room)
@@ -887,6 +914,12 @@ class Result:
         self.damage = state[:, 0]
         self.slip = state[:, 1:self.ntens]
         self.regime = state[:, 3].astype(int)
+
+    def __setstate__(self, state):
+        # (PROPS read-only again after unpickling, as the material's: see Material.__setstate__)
+        self.__dict__.update(state)
+        if isinstance(self.__dict__.get("props"), np.ndarray):
+            self.props.flags.writeable = False
 
     def __len__(self):
         return self.time.size
