@@ -897,9 +897,10 @@ class Result:
     time (nrows), separation and traction (nrows, ntens; normal first, mm and MPa), damage
     (nrows), slip (nrows, ntens - 1; mm), regime (nrows, codes; regime_names their names),
     stored_energy and dissipated_energy (nrows; N/mm: the UMAT's SSE and SPD), state (nrows,
-    nstate) and, when asked for, tangent (nrows, ntens, ntens; MPa/mm; NaN at the start). props,
-    table_path, rcurve_path and output_every say which material's run made it and how (None for a
-    Result made by hand from arrays): Material.tangent_check refuses another material's.
+    nstate) and, when asked for, tangent (nrows, ntens, ntens; MPa/mm; NaN in the first row when
+    the history starts at zero separation, as no step reached it). props, table_path,
+    rcurve_path and output_every say which material's run made it and how (None for a Result made
+    by hand from arrays): Material.tangent_check refuses another material's.
     """
 
     def __init__(self, time, separation, traction, state, stored_energy, dissipated_energy, tangent=None,
