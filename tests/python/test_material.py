@@ -750,6 +750,21 @@ def test_shapes_and_ragged_arrays_are_named():
             m.run(history, control=control)
 
 
+def test_masked_entries_are_refused():
+    # numpy drops a mask in silence: the values under it (a 999 marking a bad sample) were replayed
+    m = interphase.Material(**SIMPLIFIED)
+    history = np.ma.masked_array([[0.0, 0.0], [0.001, 0.0], [999.0, 0.0]], mask=[[0, 0], [0, 0], [1, 0]])
+    with pytest.raises(ValueError, match=re.escape("Material.run: history is a masked array with masked entries "
+                                                   "(the first at index (2, 0))")):
+        m.run(history)
+    with pytest.raises(ValueError, match=re.escape("Material.update: separation is a masked array with masked "
+                                                   "entries (the first at index 1)")):
+        m.update(np.ma.masked_array([0.001, 5.0], mask=[0, 1]))
+    # a masked array without masked entries is its values
+    unmasked = np.ma.masked_array([[0.0, 0.0], [0.001, 0.0]], mask=False)
+    assert np.array_equal(m.run(unmasked).traction, m.run(np.array([[0.0, 0.0], [0.001, 0.0]])).traction)
+
+
 def test_errors_cross_process_boundaries():
     """An InterphaseError pickles as itself, its status, detail and the rows of a failed run with
     it, so that an error raised in a worker process (multiprocessing, concurrent.futures, scipy's

@@ -131,7 +131,14 @@ def _numbers(name, value, who):
     with a mere warning: a string ('0.5' read as 0.5), a bool (True as 1.0), a complex number (its
     imaginary part dropped), a date or a time span (as a count of days or seconds), None (as NaN)
     or another object. Rows of different lengths (a ragged list) raise ValueError naming the
-    argument."""
+    argument. A masked array with masked entries raises ValueError: numpy would drop the mask and
+    the library would take the values under it."""
+    if isinstance(value, np.ma.MaskedArray) and np.ma.is_masked(value):
+        first = np.argwhere(np.ma.getmaskarray(value))[0]
+        at = f"index {first[0] if first.size == 1 else tuple(int(i) for i in first)}"
+        raise ValueError(f"{who}: {name} is a masked array with masked entries (the first at {at}): "
+                         "the library would take the values under the mask; remove the masked rows "
+                         "(np.ma.compress_rows) or fill them")
     try:
         a = np.asarray(value)
     except ValueError:
