@@ -397,15 +397,34 @@ contains
          'expected <' // logical_str(expected) // '> but found <' // logical_str(actual) // '>', message)
    end subroutine equal_logical
 
-   !> Strings are equal when they differ only by leading and trailing blanks (pFUnit's default).
+   !> Strings are equal when they differ only by leading and trailing whitespace, blanks and tabs
+   !> (pFUnit's default, TRIM_ALL: its trimAll strips both, then the rest must be the same).
    !> The second argument is `found`, as in pFUnit's string assertion (its numeric ones call it
    !> `actual`), so that a keyword call compiles here only where it compiles with pFUnit.
    subroutine equal_string(expected, found, message)
       character(len=*), intent(in) :: expected, found
       character(len=*), intent(in), optional :: message
-      call conclude(adjustl(expected) == adjustl(found), 'assertEqual', &
-         'expected <"' // trim(adjustl(expected)) // '"> but found <"' // trim(adjustl(found)) // '">', message)
+      character(len=:), allocatable :: e, f
+      e = trim_whitespace(expected)
+      f = trim_whitespace(found)
+      call conclude(len(e) == len(f) .and. e == f, 'assertEqual', &
+         'expected <"' // e // '"> but found <"' // f // '">', message)
    end subroutine equal_string
+
+   !> text without its leading and trailing blanks and tabs.
+   function trim_whitespace(text) result(trimmed)
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: trimmed
+      character(len=*), parameter :: WHITESPACE = ' ' // achar(9)
+      integer :: first, last
+      first = verify(text, WHITESPACE)
+      if (first == 0) then
+         trimmed = ''
+      else
+         last = verify(text, WHITESPACE, back=.true.)
+         trimmed = text(first:last)
+      end if
+   end function trim_whitespace
 
    subroutine equal_r0(expected, actual, message)
       real(dp), intent(in) :: expected, actual
