@@ -237,6 +237,25 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
          end if
 
          if (packaging) then
+            if (lanneal /= 1) then
+               ! the host's values are checked as in an update: a NaN, an Inf or a magnitude out of
+               ! range would otherwise come back as the traction Abaqus estimates wave speeds from
+               ! (a scalar pass: this call comes once per analysis)
+               do km = k0, k1
+                  s_point(1) = THICKNESS*straininc(km, 1)
+                  s_point(2:ntens) = SHEAR_FACTOR*THICKNESS*straininc(km, 2:ntens)
+                  if (all(is_within(s_point(1:ntens), HOST_INCREMENT_MAX)) .and. &
+                     all(is_within(stressold(km, :), HOST_VALUE_MAX)) .and. &
+                     is_within(enerinternold(km), HOST_VALUE_MAX) .and. is_within(enerinelasold(km), HOST_VALUE_MAX)) cycle
+                  write (message, '(a,i0,a,a,a,a,a,a,a,es8.1e3,a,es8.1e3,a)', iostat=ios) 'block point ', km, &
+                     ' (packaging call, totalTime = stepTime = 0): stressOld (MPa)', es_list(stressold(km, :), 3), &
+                     ', energies', es_list([enerinternold(km), enerinelasold(km)], 3), ', increment (mm)', &
+                     es_list(s_point(1:ntens), 3), ': the host must pass finite values within ', HOST_VALUE_MAX, &
+                     ', increments within ', HOST_INCREMENT_MAX, ' mm'
+                  fatal_code = STATUS_BAD_HOST_INPUT
+                  exit update
+               end do
+            end if
             stressnew(k0:k1, :) = stressold(k0:k1, :)
             statenew(k0:k1, 1:NSTATV_VUMAT) = stateold(k0:k1, 1:NSTATV_VUMAT)
             enerinternnew(k0:k1) = enerinternold(k0:k1)
