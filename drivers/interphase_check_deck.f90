@@ -1292,11 +1292,13 @@ contains
    end subroutine split_label
 
    !> The field is one number (an element's label, or a value), not a set's label.
-   logical function is_number(field)
+   !> (The result has a name of its own: passed as the function's name, gfortran took the internal
+   !> function itself and built a trampoline, which put the program's stack in executable memory.)
+   logical function is_number(field) result(number)
       character(len=*), intent(in) :: field
       real(dp) :: x
       character(len=32) :: why
-      call parse_real(field, x, is_number, why)
+      call parse_real(field, x, number, why)
    end function is_number
 
    !> The fields of a comma-separated data line as Abaqus counts them: every field, empty ones
@@ -1384,6 +1386,15 @@ contains
                   real_to_string(v(SV_SEP_T1))//', '//real_to_string(v(SV_SEP_T2))//' mm, but these are the '// &
                   'VUMAT''s total separations, to which it adds each increment''s: an element at rest starts from 0 '// &
                   '(another value would offset its traction; docs/abaqus.md, VUMAT)', nfail)
+               return
+            end if
+         end if
+         if (explicit .and. size(v) >= SV_FAILED) then
+            if (.not. abs(v(SV_FAILED)) <= 0.0_dp) then
+               call record_failure(where//': STATEV('//int_to_string(SV_FAILED)//') = '// &
+                  real_to_string(v(SV_FAILED))//', but it is the VUMAT''s failure flag (1 where a point''s '// &
+                  'update failed and was held), which the VUMAT carries over without reading it: a point starts '// &
+                  'from 0 (docs/abaqus.md, VUMAT)', nfail)
                return
             end if
          end if
