@@ -111,11 +111,13 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    integer :: nsv   !! STATEV slots of the state (state_slots)
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
+   integer :: fatal_point  !! the block point a fatal error is about (its coordMp named), or 0
    integer :: ios
    character(len=MESSAGE_LEN) :: message, first_message
 
    ntens = ndir + nshr
    nt = nshr
+   fatal_point = 0
 
    ! Setup errors leave the block construct with fatal_code set: the whole block is then held
    ! at its old values and a fatal message is reported (no internal procedure: host-associated
@@ -209,6 +211,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             write (message, '(a,i0,a,es13.5e3,a)') 'density at block point ', km, ' = ', density(km), &
                ': the VUMAT needs *Density > 0, within [1e-50, 1e50], on the material (its energies are per unit mass)'
             fatal_code = -1
+            fatal_point = km
             exit update
          end if
          ! (in 2-D the slip-2 column is not looked at: slip 1 stands in, so that it is not read)
@@ -233,6 +236,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             write (first_message, '(a,i0,a,a)') 'block point ', km, ': ', trim(message)
             message = first_message
             fatal_code = status
+            fatal_point = km
             exit update
          end if
 
@@ -253,6 +257,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                      es_list(s_point(1:ntens), 3), ': the host must pass finite values within ', HOST_VALUE_MAX, &
                      ', increments within ', HOST_INCREMENT_MAX, ' mm'
                   fatal_code = STATUS_BAD_HOST_INPUT
+                  fatal_point = km
                   exit update
                end do
             end if
@@ -329,6 +334,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   write (message, '(a,i0,a,a)', iostat=status) 'block point ', km, ': ', &
                      rcurve_overrun(60, max(old%d, params%d0), s_point(1:ntens))
                   fatal_code = STATUS_RCURVE_OUT_OF_RANGE
+                  fatal_point = km
                   exit update
                end if
                ok(k) = status == STATUS_OK
@@ -373,6 +379,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                      ' (T0 strainInc, tensor shears x 2): the host must pass finite increments within ', &
                      HOST_INCREMENT_MAX, ' mm'
                   fatal_code = STATUS_BAD_HOST_INPUT
+                  fatal_point = km
                   exit update
                end if
                if (.not. all(is_within(stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1), SEPARATION_MAX))) then
@@ -381,6 +388,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                      es_list(stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1), 4), ': must be finite within ', SEPARATION_MAX, &
                      ' mm (what the VUMAT returned last)'
                   fatal_code = STATUS_BAD_STATE
+                  fatal_point = km
                   exit update
                end if
             end do
@@ -413,6 +421,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                ': the host must pass finite values within ', &
                HOST_VALUE_MAX, ', increments within ', HOST_INCREMENT_MAX, ' mm'
             fatal_code = STATUS_BAD_HOST_INPUT
+            fatal_point = km
             exit update
          end if
 
@@ -439,6 +448,8 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             write (full, '(a,a,i0,a,i0,a,i0,a,i0,a,a,a,a)') trim(cmname), ': ', nfailed, ' of ', nblock, &
                ' points failed and were held at their old stress and state (STATEV(', SV_FAILED, &
                ') = 1); first at block point ', first_failed, ': ', status_message(first_status), ': ', trim(first_message)
+            ! (Abaqus passes no element number to a VUMAT: the point's coordinates say where it is)
+            full = trim(full)//' (block point at coordMp'//es_list(coordmp(first_failed, 1:ntens), 3)//')'
             ! with INTERPHASE_REPLAY_DIR set: the first failed point's call as a UMAT call (its
             ! separation and increment, the shared STATEV, the energies per unit area)
             sep_old = [stateold(first_failed, SV_SEP_N), stateold(first_failed, SV_SEP_T1), &
@@ -477,6 +488,10 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       else
          write (full, '(a,a,a)') trim(cmname), ': ', trim(message)
       end if
+      ! where the point is: Abaqus passes no element number to a VUMAT, but its coordinates (one a
+      ! dimension: 2 for ndir = 1, nshr = 1, 3 for nshr = 2)
+      if (fatal_point >= 1 .and. fatal_point <= nblock) &
+         full = trim(full)//' (block point at coordMp'//es_list(coordmp(fatal_point, 1:ntens), 3)//')'
       call interphase_host_message(SEVERITY_FATAL, trim(full))
    end block
 
