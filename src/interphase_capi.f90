@@ -158,6 +158,15 @@ contains
       end if
       n = ntens
       viscous = params%viscosity > 0.0_dp
+      ! interphase_update (no dt) refuses a viscous material before it reads the state: its
+      ! caller passes INTERPHASE_NSTATE doubles, and the fifth slot would be read beyond them
+      if (viscous .and. .not. present(dt)) then
+         code = STATUS_BAD_TIME_INCREMENT
+         message = 'the material has viscous regularisation (its viscosity option): call '// &
+            'interphase_update_dt with the time increment'
+         call finish()
+         return
+      end if
       nsv = state_slots(params)
       call c_f_pointer(state_old_c, state_old, [nsv])
       call c_f_pointer(separation_c, separation, [n])

@@ -307,6 +307,25 @@ static void test_failures(void) {
   CHECK(status == INTERPHASE_STATUS_BAD_NTENS && strstr(detail, "ntens = 4") != NULL, "ntens = 4: status %d, \"%s\"",
         status, detail);
 
+  /* a material with viscous regularisation through interphase_update: refused with
+     BAD_TIME_INCREMENT before its state is read. The caller's state holds INTERPHASE_NSTATE
+     doubles, as the header says; the double after them (here an inadmissible "STATEV(5)") must
+     not be read: a read past the array reported it as BAD_STATE naming STATEV(5). */
+  {
+    double vprops[INTERPHASE_NPROPS_SIMPLIFIED + 3];
+    paper_props(vprops);
+    vprops[9] = 0.0;   /* growth slip: default */
+    vprops[10] = 0.0;  /* contact band: none */
+    vprops[11] = 1.0;  /* viscosity eta = 1 s */
+    const double block[INTERPHASE_NSTATE + 1] = {0.0, 0.0, 0.0, 0.0, -3.0};
+    detail[0] = '\0';
+    status = interphase_update(vprops, INTERPHASE_NPROPS_SIMPLIFIED + 3, 2, block, s, traction, tangent, state_new, &psi,
+                               detail, sizeof detail);
+    CHECK(status == INTERPHASE_STATUS_BAD_TIME_INCREMENT && strstr(detail, "interphase_update_dt") != NULL,
+          "viscous material through interphase_update: status %d, \"%s\"", status, detail);
+    CHECK(traction[0] == -7.0 && psi == -7.0, "viscous material through interphase_update: outputs were touched");
+  }
+
   /* NaN separation */
   const double s_nan[2] = {NAN, 0.0};
   status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, s_nan, traction, tangent, state_new, &psi,
