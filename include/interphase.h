@@ -260,7 +260,9 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  * step (counted from the first, the preload's included) and for the end of every segment: the
  * rows of the driver's CSV file.
  *
- * @param props, nprops, ntens  the material and the size, as interphase_update
+ * @param props                material constants, @p nprops doubles (as interphase_update)
+ * @param nprops               number of PROPS
+ * @param ntens                2 (2-D) or 3 (3-D)
  * @param nrows                 rows of the history (>= 1)
  * @param time                  @p nrows doubles, finite and strictly increasing, each step
  *                              time[i] - time[i-1] finite (s)
