@@ -271,7 +271,8 @@ int interphase_run(const double *props, int nprops, int ntens, size_t nrows, con
  * @param control               NULL (every component separation-controlled) or @p nrows * @p ntens
  *                              ints, row-major: 0 separation, 1 traction
  * @param increments            sub-increments per segment (>= 1)
- * @param traction_tolerance    MPa, finite, > 0 (interphase-point's default: 1e-12)
+ * @param traction_tolerance    MPa, finite, > 0 and at most 1e-3 (interphase-point's default: 1e-12;
+ *                              outside, INTERPHASE_STATUS_BAD_HISTORY)
  * @param output_every          a row every k-th converged step (>= 1; 1: every step)
  * @param capacity              rows each output array holds
  * @param out_time              out, NULL or @p capacity doubles: t of each row
