@@ -180,20 +180,16 @@ contains
       if (present(dt)) then
          if (.not. is_finite_nonnegative(dt)) then
             code = STATUS_BAD_TIME_INCREMENT
-            write (message, '(a,es12.4e3,a)') 'dt = ', dt, ' s: the time increment must be finite and >= 0'
+            message = 'dt = '//real_text(dt)//' s: the time increment must be finite and >= 0'
             call finish()
             return
          end if
       end if
       s(1:n) = separation(1:n)
       call update_point(params, old, n, s, t, k, new, psi, code, dt)
-      if (code == STATUS_BAD_TIME_INCREMENT) then
-         ! (dt absent: a finite dt >= 0 was checked above)
-         message = 'the material has viscous regularisation (its viscosity option): call '// &
-            'interphase_update_dt with the time increment'
-         call finish()
-         return
-      else if (code == STATUS_RCURVE_OUT_OF_RANGE) then
+      ! (a viscous material without dt was refused above, and a dt given was checked: the update
+      ! returns no STATUS_BAD_TIME_INCREMENT here)
+      if (code == STATUS_RCURVE_OUT_OF_RANGE) then
          message = rcurve_overrun(76, max(old%d, params%d0), separation(1:n))
          call finish()
          return

@@ -164,8 +164,9 @@ def test_run_input_checks():
     with pytest.raises(ValueError, match=re.escape("time[1] = nan is not finite")):
         m.run([[0, 0], [0.01, 0]], time=[0.0, float("nan")])
     # a time increment is finite and >= 0 whatever the material (only viscosity reads it)
-    for dt in (float("nan"), -1.0, float("inf")):
-        with pytest.raises(interphase.InterphaseError, match="the time increment must be finite and >= 0") as caught:
+    for dt, text in ((float("nan"), "NaN"), (-1.0, "-1.0"), (float("inf"), "Infinity")):
+        with pytest.raises(interphase.InterphaseError, match=re.escape(f"dt = {text} s: the time increment must be "
+                                                                       "finite and >= 0")) as caught:
             m.update([0.001, 0.0], dt=dt)
         assert caught.value.status == interphase.STATUS_BAD_TIME_INCREMENT
     assert m.update([0.001, 0.0], dt=0.0).traction[0] == m.update([0.001, 0.0]).traction[0]
