@@ -16,7 +16,7 @@ module interphase_capi
       c_associated, c_f_pointer
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use interphase_kinds, only: dp
-   use interphase_real_text, only: real_text, es_field, es_fields
+   use interphase_real_text, only: real_text, es_field, es_fields, es_list
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VISCOUS, PROP_TABLE, LFM_RCURVE
    use interphase_provider, only: check_run_time_data
    use interphase_status, only: STATUS_OK, STATUS_BAD_NTENS, STATUS_BAD_NPROPS, MESSAGE_LEN, &
@@ -180,7 +180,7 @@ contains
       if (present(dt)) then
          if (.not. is_finite_nonnegative(dt)) then
             code = STATUS_BAD_TIME_INCREMENT
-            message = 'dt = '//real_text(dt)//' s: the time increment must be finite and >= 0'
+            message = 'dt ='//es_list([dt], 4)//' s: the time increment must be finite and >= 0'
             call finish()
             return
          end if
@@ -637,7 +637,7 @@ contains
       logical, intent(out) :: fatal
       type(interface_state_type) :: old, new
       real(dp) :: s(3), ds(3), t(3), psi, dt
-      integer :: n, ios
+      integer :: n
 
       n = point%ntens
       fatal = .false.
@@ -653,7 +653,7 @@ contains
       dt = time_new - point%time
       call interface_update(law%params, old, s(1:n), t(1:n), tangent, new, psi, status, dt)
       if (status == STATUS_BAD_TIME_INCREMENT) then
-         write (law%detail, '(a,es12.4e3,a)', iostat=ios) 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
+         law%detail = 'dt ='//es_list([dt], 4)//' s: viscous regularisation needs a finite dt >= 0'
          fatal = .true.
          return
       else if (status == STATUS_RCURVE_OUT_OF_RANGE) then

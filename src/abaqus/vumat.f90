@@ -159,7 +159,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       ! viscous regularisation needs dt: one value for the whole block, the host's (as the UMAT's
       ! DTIME: fatal)
       if (viscous .and. .not. is_finite_nonnegative(dt)) then
-         write (message, '(a,es12.4e3,a)', iostat=ios) 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
+         message = 'dt ='//es_list([dt], 4)//' s: viscous regularisation needs a finite dt >= 0'
          fatal_code = STATUS_BAD_TIME_INCREMENT
          exit update
       end if
@@ -252,7 +252,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                      all(is_within(stressold(km, :), HOST_VALUE_MAX)) .and. &
                      is_within(enerinternold(km), HOST_VALUE_MAX) .and. is_within(enerinelasold(km), HOST_VALUE_MAX)) cycle
                   write (message, '(a,i0,a,a,a,a,a,a,a,es8.1e3,a,es8.1e3,a)', iostat=ios) 'block point ', km, &
-                     ' (packaging call, totalTime = stepTime = 0): stressOld (MPa)', es_list(stressold(km, :), 3), &
+                     ' (packaging call): stressOld (MPa)', es_list(stressold(km, :), 3), &
                      ', energies', es_list([enerinternold(km), enerinelasold(km)], 3), ', increment (mm)', &
                      es_list(s_point(1:ntens), 3), ': the host must pass finite values within ', HOST_VALUE_MAX, &
                      ', increments within ', HOST_INCREMENT_MAX, ' mm'

@@ -164,7 +164,7 @@ def test_run_input_checks():
     with pytest.raises(ValueError, match=re.escape("time[1] = nan is not finite")):
         m.run([[0, 0], [0.01, 0]], time=[0.0, float("nan")])
     # a time increment is finite and >= 0 whatever the material (only viscosity reads it)
-    for dt, text in ((float("nan"), "NaN"), (-1.0, "-1.0"), (float("inf"), "Infinity")):
+    for dt, text in ((float("nan"), "NaN"), (-1.0, "-1.0000E+000"), (float("inf"), "Infinity")):
         with pytest.raises(interphase.InterphaseError, match=re.escape(f"dt = {text} s: the time increment must be "
                                                                        "finite and >= 0")) as caught:
             m.update([0.001, 0.0], dt=dt)
@@ -761,6 +761,13 @@ def test_masked_entries_are_refused():
     with pytest.raises(ValueError, match=re.escape("Material.update: separation is a masked array with masked "
                                                    "entries (the first at index 1)")):
         m.update(np.ma.masked_array([0.001, 5.0], mask=[0, 1]))
+    # control too, and masked arrays inside a list
+    with pytest.raises(ValueError, match=re.escape("Material.run: control is a masked array with masked entries "
+                                                   "(the first at index 1)")):
+        m.run([[0.0, 0.0], [0.001, 0.0]], control=np.ma.masked_array([False, True], mask=[0, 1]))
+    with pytest.raises(ValueError, match=re.escape("Material.run: history is a masked array with masked entries "
+                                                   "(the first at index (1, 1))")):
+        m.run([[0.0, 0.0], np.ma.masked_array([0.001, 5.0], mask=[0, 1])])
     # a masked array without masked entries is its values
     unmasked = np.ma.masked_array([[0.0, 0.0], [0.001, 0.0]], mask=False)
     assert np.array_equal(m.run(unmasked).traction, m.run(np.array([[0.0, 0.0], [0.001, 0.0]])).traction)

@@ -133,12 +133,7 @@ def _numbers(name, value, who):
     or another object. Rows of different lengths (a ragged list) raise ValueError naming the
     argument. A masked array with masked entries raises ValueError: numpy would drop the mask and
     the library would take the values under it."""
-    if isinstance(value, np.ma.MaskedArray) and np.ma.is_masked(value):
-        first = np.argwhere(np.ma.getmaskarray(value))[0]
-        at = f"index {first[0] if first.size == 1 else tuple(int(i) for i in first)}"
-        raise ValueError(f"{who}: {name} is a masked array with masked entries (the first at {at}): "
-                         "the library would take the values under the mask; remove the masked rows "
-                         "(np.ma.compress_rows) or fill them")
+    _refuse_masked(name, value, who)
     try:
         a = np.asarray(value)
     except ValueError:
@@ -164,6 +159,33 @@ def _numbers(name, value, who):
     except OverflowError:
         # (an int beyond the double range, as _real names it)
         raise ValueError(f"{who}: {name} holds a number beyond the range of a double (about 1.8e308)") from None
+
+
+def _masked_at(value):
+    """The index of the first masked entry of value (a masked array, or a list or tuple holding
+    masked arrays, at any depth), () for a masked scalar, or None where nothing is masked."""
+    if np.ma.isMaskedArray(value):
+        if not np.ma.is_masked(value):
+            return None
+        return tuple(int(i) for i in np.argwhere(np.ma.getmaskarray(value))[0])
+    if isinstance(value, (list, tuple)):
+        for i, v in enumerate(value):
+            if isinstance(v, (list, tuple)) or np.ma.isMaskedArray(v):
+                at = _masked_at(v)
+                if at is not None:
+                    return (i,) + at
+    return None
+
+
+def _refuse_masked(name, value, who):
+    """ValueError where value holds masked entries: numpy drops a mask in silence, and the library
+    would take the values under it."""
+    at = _masked_at(value)
+    if at is None:
+        return
+    where = f" (the first at index {at[0] if len(at) == 1 else at})" if at else ""
+    raise ValueError(f"{who}: {name} is a masked array with masked entries{where}: the library would take "
+                     "the values under the mask; remove the masked rows (np.ma.compress_rows) or fill them")
 
 
 def _shape_text(a):
@@ -638,6 +660,7 @@ class Material:
         if control is None:
             ctrl = None
         else:
+            _refuse_masked("control", control, "Material.run")
             try:
                 c = np.asarray(control)
             except ValueError:
