@@ -21,9 +21,10 @@ module funit
    ! ---- names real pFUnit's `funit` exports too (FUnit, FUnit_Core, PF_Assert, fHamcrest) ----
    ! A module that uses funit cannot define one of these at its own scope with real pFUnit
    ! (gfortran: "already defined", "conflicts with symbol from module"): pfunit_lite's funit exports
-   ! them too, each the same kind of entity as in pFUnit (a type, a procedure or a constant), so
-   ! that such a module is refused here as well. The procedures take an argument of a private type:
-   ! no call compiles. Test, TestSuite and TestMethod are also the names real pFUnit's generated
+   ! them too, each the same kind of entity as in pFUnit (a type, a constant, a procedure, or a
+   ! generic interface where pFUnit's name is one, which a suite may extend), so that such a module
+   ! is refused here as well. The procedures take an argument of a private type: no call compiles.
+   ! Not every name pFUnit exports: those a test module is most likely to define. Test, TestSuite and TestMethod are also the names real pFUnit's generated
    ! suite function refers to (so does wrap_<module>'s run_suite, with funit_suite_scope).
    public :: Test, TestSuite, TestCase, TestResult, TestRunner, BaseTestRunner, TestListener
    public :: ResultPrinter, XmlPrinter, DebugListener, AbstractTestParameter
@@ -32,6 +33,7 @@ module funit
    public :: assertExceptionRaised, assertSameShape, assertNone, assertNotAll, assertNotEqual
    public :: assertIsNan, assert_that, run, generic_run, get_context, catch, catchNext, is
    public :: equal_to, IGNORE_ALL, TRIM_ALL, KEEP_ALL, IGNORE_DIFFERENCES
+   public :: fail, assertIsNotNaN, assertIsInfinite, conformable, nonConformable, UnusableArgument
    public :: output_unit   ! (FUnit re-exports iso_fortran_env's)
    public :: funit_suite_scope
    type :: Test
@@ -70,6 +72,34 @@ module funit
    end type WhitespaceOptions
    type :: IsEqual
    end type IsEqual
+   type :: UnusableArgument
+   end type UnusableArgument
+   ! (generic interfaces where pFUnit's names are generics, which a suite may extend: each with
+   ! one placeholder specific that no call matches)
+   interface fail
+      module procedure placeholder_fail
+   end interface fail
+   interface assertFail
+      module procedure placeholder_assert_fail
+   end interface assertFail
+   interface assertExceptionRaised
+      module procedure placeholder_assert_exception_raised
+   end interface assertExceptionRaised
+   interface assertIsNan
+      module procedure placeholder_assert_is_nan
+   end interface assertIsNan
+   interface assertIsNotNaN
+      module procedure placeholder_assert_is_not_nan
+   end interface assertIsNotNaN
+   interface assertIsInfinite
+      module procedure placeholder_assert_is_infinite
+   end interface assertIsInfinite
+   interface assertNotEqual
+      module procedure placeholder_assert_not_equal
+   end interface assertNotEqual
+   interface equal_to
+      module procedure placeholder_equal_to
+   end interface equal_to
    type(WhitespaceOptions), parameter :: IGNORE_ALL = WhitespaceOptions(), TRIM_ALL = WhitespaceOptions(), &
       KEEP_ALL = WhitespaceOptions(), IGNORE_DIFFERENCES = WhitespaceOptions()
 
@@ -178,16 +208,16 @@ contains
       associate (unused => unusable)
       end associate
    end subroutine throw
-   subroutine assertFail(unusable)
+   subroutine placeholder_assert_fail(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
-   end subroutine assertFail
-   subroutine assertExceptionRaised(unusable)
+   end subroutine placeholder_assert_fail
+   subroutine placeholder_assert_exception_raised(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
-   end subroutine assertExceptionRaised
+   end subroutine placeholder_assert_exception_raised
    subroutine assertSameShape(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
@@ -203,16 +233,16 @@ contains
       associate (unused => unusable)
       end associate
    end subroutine assertNotAll
-   subroutine assertNotEqual(unusable)
+   subroutine placeholder_assert_not_equal(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
-   end subroutine assertNotEqual
-   subroutine assertIsNan(unusable)
+   end subroutine placeholder_assert_not_equal
+   subroutine placeholder_assert_is_nan(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
-   end subroutine assertIsNan
+   end subroutine placeholder_assert_is_nan
    subroutine assert_that(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
@@ -254,12 +284,40 @@ contains
       end associate
       is = .false.
    end function is
-   logical function equal_to(unusable)
+   logical function placeholder_equal_to(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
-      equal_to = .false.
-   end function equal_to
+      placeholder_equal_to = .false.
+   end function placeholder_equal_to
+
+   subroutine placeholder_fail(unusable)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      associate (unused => unusable)
+      end associate
+   end subroutine placeholder_fail
+   subroutine placeholder_assert_is_not_nan(unusable)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      associate (unused => unusable)
+      end associate
+   end subroutine placeholder_assert_is_not_nan
+   subroutine placeholder_assert_is_infinite(unusable)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      associate (unused => unusable)
+      end associate
+   end subroutine placeholder_assert_is_infinite
+   logical function conformable(unusable)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      associate (unused => unusable)
+      end associate
+      conformable = .false.
+   end function conformable
+   logical function nonConformable(unusable)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      associate (unused => unusable)
+      end associate
+      nonConformable = .false.
+   end function nonConformable
 
    !> Reads the command line: `[-f|--filter] NAME`, `-v|--verbose`, `-h|--help`.
    subroutine funit_initialize(status)
