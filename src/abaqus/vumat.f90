@@ -159,7 +159,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       ! viscous regularisation needs dt: one value for the whole block, the host's (as the UMAT's
       ! DTIME: fatal)
       if (viscous .and. .not. is_finite_nonnegative(dt)) then
-         message = 'dt ='//es_list([dt], 4)//' s: viscous regularisation needs a finite dt >= 0'
+         write (message, '(a,es12.4e3,a)', iostat=ios) 'dt = ', dt, ' s: viscous regularisation needs a finite dt >= 0'
          fatal_code = STATUS_BAD_TIME_INCREMENT
          exit update
       end if
