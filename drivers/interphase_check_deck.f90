@@ -1171,9 +1171,8 @@ contains
       allocate (got(n))
       got = 0.0_dp
       given = 0
-      last = i0
       do j = 1, record_lines
-         i = last + j - 1
+         i = i0 + j - 1
          if (j > 1) then
             if (i > nlines) exit
             if (lines(i)%block /= lines(i0)%block) exit
@@ -1259,15 +1258,19 @@ contains
       integer :: k, dot
       s = 0
       m = 0
-      do k = 1, size(sections)
-         if (sections(k)%elset == label) s = k
-         if (s > 0) exit
-      end do
       dot = index(label, '.', back=.true.)
+      do k = 1, size(sections)
+         if (sections(k)%elset == label) then
+            s = k
+            exit
+         end if
+      end do
       if (s == 0 .and. dot > 0) then
          do k = 1, size(sections)
-            if (sections(k)%elset == label(dot + 1:)) s = k
-            if (s > 0) exit
+            if (sections(k)%elset == label(dot + 1:)) then
+               s = k
+               exit
+            end if
          end do
       end if
       if (s == 0) return
@@ -1329,10 +1332,9 @@ contains
       character(len=:), allocatable, intent(inout) :: notes
       integer, intent(inout) :: nfail
       character(len=:), allocatable :: note_3d
-      integer :: k, nchecked, first_checked, nnotes_3d
+      integer :: k, first_checked, nnotes_3d
       logical :: passed
 
-      nchecked = 0
       first_checked = 0
       nnotes_3d = 0
       ! (one state at a time in a procedure of its own: its messages' temporaries end with it)
@@ -1343,9 +1345,7 @@ contains
             nnotes_3d = nnotes_3d + 1
             if (nnotes_3d == 1) notes = notes//'; note: '//note_3d
          end if
-         if (.not. passed) cycle
-         nchecked = nchecked + 1
-         if (first_checked == 0) first_checked = k
+         if (passed .and. first_checked == 0) first_checked = k
       end do
       if (nnotes_3d > 1) notes = notes//' (and '//int_to_string(nnotes_3d - 1)//' more such line(s))'
       if (first_checked > 0) notes = notes//'; note: initial state variables (*INITIAL CONDITIONS at '// &

@@ -53,6 +53,15 @@ def _nstate_of(props):
     return NSTATE_VISCOUS if n >= nb + 3 and props[nb + 2] > 0.0 else NSTATE
 
 
+def _setstate_read_only_props(self, state):
+    """Material's and Result's __setstate__: PROPS read-only again after unpickling (numpy does not
+    pickle an array's writeable flag: a Material sent to a worker process came back with PROPS that
+    could be changed in place, its nstate no longer theirs)."""
+    self.__dict__.update(state)
+    if isinstance(self.__dict__.get("props"), np.ndarray):
+        self.props.flags.writeable = False
+
+
 def _as_c(array):
     """A C-contiguous float64 array (a copy only when needed) and its address."""
     a = np.ascontiguousarray(array, dtype=np.float64)
@@ -501,12 +510,7 @@ class Material:
             return f"Material.from_props({self.props.tolist()!r}{files})"
         return "Material(" + ", ".join(f"{k}={v!r}" for k, v in self.entries.items()) + ")"
 
-    def __setstate__(self, state):
-        # (numpy does not pickle an array's writeable flag: a Material sent to a worker process
-        # would come back with PROPS that can be changed in place, nstate no longer theirs)
-        self.__dict__.update(state)
-        if isinstance(self.__dict__.get("props"), np.ndarray):
-            self.props.flags.writeable = False
+    __setstate__ = _setstate_read_only_props
 
     def _props_c(self, who):
         """PROPS as the library takes them, and their address; ValueError when they ask for another
@@ -946,11 +950,7 @@ class Result:
         self.slip = state[:, 1:self.ntens]
         self.regime = state[:, 3].astype(int)
 
-    def __setstate__(self, state):
-        # (PROPS read-only again after unpickling, as the material's: see Material.__setstate__)
-        self.__dict__.update(state)
-        if isinstance(self.__dict__.get("props"), np.ndarray):
-            self.props.flags.writeable = False
+    __setstate__ = _setstate_read_only_props
 
     def __len__(self):
         return self.time.size
