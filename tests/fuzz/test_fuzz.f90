@@ -1,3 +1,37 @@
+!> The drivers' readers as a start-up loader for test_fuzz (below), in a module of its own: an
+!> internal procedure of the program passed as an actual argument would need a trampoline on the
+!> stack, and the program an executable stack.
+module test_fuzz_loaders
+   use interphase_status, only: STATUS_OK, MESSAGE_LEN
+   use interphase_driver_history, only: history_type, read_history
+   use interphase_driver_case, only: case_type, read_case
+   implicit none
+   private
+   public :: driver_file_loader
+
+contains
+
+   !> The drivers' readers as a start-up loader (status 1 when they refuse the file): a case
+   !> file (*.nml) through read_case, any other through read_history.
+   subroutine driver_file_loader(path, status, text)
+      character(len=*), intent(in) :: path
+      integer, intent(out) :: status
+      character(len=MESSAGE_LEN), intent(out) :: text
+      type(history_type) :: history
+      type(case_type) :: run
+      character(len=:), allocatable :: why
+      logical :: ok
+      if (index(path, '.nml', back=.true.) == len(path) - 3) then
+         call read_case(path, run, ok, why)
+      else
+         call read_history(path, history, ok, why)
+      end if
+      status = merge(STATUS_OK, 1, ok)
+      text = ''
+      if (.not. ok) text = why
+   end subroutine driver_file_loader
+end module test_fuzz_loaders
+
 !> The fuzz test of interphase (ctest `test_fuzz`, bounded: a few seconds in Release, well under
 !> its 30 s timeout in Debug). A fixed seed and a portable generator (Park-Miller, the same
 !> numbers with every compiler), so that every run is the same and a failure is reproducible.
@@ -42,8 +76,7 @@ program test_fuzz
    use interphase_provider, only: coefficients_at
    use interphase_micro_coefficients, only: load_custom_table
    use interphase_rcurve, only: load_rcurve
-   use interphase_driver_history, only: history_type, read_history
-   use interphase_driver_case, only: case_type, read_case
+   use test_fuzz_loaders, only: driver_file_loader
    use interphase_driver_text, only: int_to_string
    use interphase_test_support, only: paper_k_n, paper_k_t, source_path, scratch_path
    use interphase_adapter_calls, only: umat_point_type, call_umat_point, vumat_block_type, vumat_block_init, &
@@ -666,26 +699,6 @@ contains
       call loader(path, status, message)
       call expect_refused(status /= STATUS_OK, message, path, line, what)
    end subroutine expect_broken_refused
-
-   !> The drivers' readers as a start-up loader (status 1 when they refuse the file): a case
-   !> file (*.nml) through read_case, any other through read_history.
-   subroutine driver_file_loader(path, status, text)
-      character(len=*), intent(in) :: path
-      integer, intent(out) :: status
-      character(len=MESSAGE_LEN), intent(out) :: text
-      type(history_type) :: history
-      type(case_type) :: run
-      character(len=:), allocatable :: why
-      logical :: ok
-      if (index(path, '.nml', back=.true.) == len(path) - 3) then
-         call read_case(path, run, ok, why)
-      else
-         call read_history(path, history, ok, why)
-      end if
-      status = merge(STATUS_OK, 1, ok)
-      text = ''
-      if (.not. ok) text = why
-   end subroutine driver_file_loader
 
    subroutine broken_histories()
       character(len=4096) :: good(6)
