@@ -33,7 +33,6 @@ module funit
    public :: assertExceptionRaised, assertSameShape, assertNone, assertNotAll, assertNotEqual
    public :: assertIsNan, assert_that, run, generic_run, get_context, catch, catchNext, is
    public :: equal_to, IGNORE_ALL, TRIM_ALL, KEEP_ALL, IGNORE_DIFFERENCES
-   public :: fail, assertIsNotNaN, assertIsInfinite, conformable, nonConformable, UnusableArgument
    public :: output_unit   ! (FUnit re-exports iso_fortran_env's)
    public :: funit_suite_scope
    type :: Test
@@ -72,13 +71,8 @@ module funit
    end type WhitespaceOptions
    type :: IsEqual
    end type IsEqual
-   type :: UnusableArgument
-   end type UnusableArgument
    ! (generic interfaces where pFUnit's names are generics, which a suite may extend: each with
    ! one placeholder specific that no call matches)
-   interface fail
-      module procedure placeholder_fail
-   end interface fail
    interface assertFail
       module procedure placeholder_assert_fail
    end interface assertFail
@@ -88,12 +82,6 @@ module funit
    interface assertIsNan
       module procedure placeholder_assert_is_nan
    end interface assertIsNan
-   interface assertIsNotNaN
-      module procedure placeholder_assert_is_not_nan
-   end interface assertIsNotNaN
-   interface assertIsInfinite
-      module procedure placeholder_assert_is_infinite
-   end interface assertIsInfinite
    interface assertNotEqual
       module procedure placeholder_assert_not_equal
    end interface assertNotEqual
@@ -290,34 +278,6 @@ contains
       end associate
       placeholder_equal_to = .false.
    end function placeholder_equal_to
-
-   subroutine placeholder_fail(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-   end subroutine placeholder_fail
-   subroutine placeholder_assert_is_not_nan(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-   end subroutine placeholder_assert_is_not_nan
-   subroutine placeholder_assert_is_infinite(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-   end subroutine placeholder_assert_is_infinite
-   logical function conformable(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-      conformable = .false.
-   end function conformable
-   logical function nonConformable(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-      nonConformable = .false.
-   end function nonConformable
 
    !> Reads the command line: `[-f|--filter] NAME`, `-v|--verbose`, `-h|--help`.
    subroutine funit_initialize(status)
