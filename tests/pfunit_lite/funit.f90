@@ -18,61 +18,165 @@ module funit
    ! ---- used by the generated code ----
    public :: funit_location, funit_initialize, funit_run_test, funit_finalize, funit_test_procedure
 
-   ! ---- names real pFUnit's `funit` exports too (FUnit, FUnit_Core, PF_Assert, fHamcrest) ----
+   ! ---- the names real pFUnit's `funit` exports too ----
    ! A module that uses funit cannot define one of these at its own scope with real pFUnit
    ! (gfortran: "already defined", "conflicts with symbol from module"): pfunit_lite's funit exports
-   ! them too, each the same kind of entity as in pFUnit (a type, a constant, a procedure, or a
-   ! generic interface where pFUnit's name is one, which a suite may extend), so that such a module
-   ! is refused here as well. The procedures take an argument of a private type: no call compiles.
-   ! Not every name pFUnit exports: those a test module is most likely to define. Test, TestSuite and TestMethod are also the names real pFUnit's generated
-   ! suite function refers to (so does wrap_<module>'s run_suite, with funit_suite_scope).
-   public :: Test, TestSuite, TestCase, TestResult, TestRunner, BaseTestRunner, TestListener
-   public :: ResultPrinter, XmlPrinter, DebugListener, AbstractTestParameter
-   public :: ParameterizedTestCase, ParallelContext, SerialContext, SourceLocation
-   public :: WhitespaceOptions, IsEqual, TestMethod, initialize, finalize, stub, throw, assertFail
-   public :: assertExceptionRaised, assertSameShape, assertNone, assertNotAll, assertNotEqual
-   public :: assertIsNan, assert_that, run, generic_run, get_context, catch, catchNext, is
-   public :: equal_to, IGNORE_ALL, TRIM_ALL, KEEP_ALL, IGNORE_DIFFERENCES
-   public :: output_unit   ! (FUnit re-exports iso_fortran_env's)
+   ! them too, each the same kind of entity as in pFUnit (a type, a constant, a procedure, an
+   ! abstract interface, or a generic interface where pFUnit's name is one, which a suite may
+   ! extend), so that such a module is refused here as well. The procedures take an argument of a
+   ! private type: no call compiles (but `not`'s, as pFUnit's, takes anything: below).
+   ! Where the names come from (pFUnit 4.12/4.14 sources, src/funit): module FUnit has no `private`
+   ! statement, so it exports its own procedures and everything the modules it uses export:
+   !  - FUnit itself: initialize, run, generic_run, finalize, get_context, stub; iso_fortran_env's
+   !    OUTPUT_UNIT;
+   !  - FUnit_Core (core/FUnit_Core.F90, its public list; RemoteRunner and RobustRunner under
+   !    `Robust`, which pFUnit's build defines unless SKIP_ROBUST);
+   !  - PF_Assert (asserts/Assert.F90, its public list: not PF_AssertBasic's fail, assertIsNotNaN,
+   !    assertIsInfinite, conformable, nonConformable or UnusableArgument, which it leaves out);
+   !  - fHamcrest (fhamcrest/fHamcrest.F90, no `private` either): the public names of
+   !    pf_MatcherDescription, pf_StringDescription, pf_MatcherAssert, pf_AbstractMatcher, pf_Is,
+   !    pf_IsNot, pf_IsEqual, pf_IsNear, pf_IsRelativelyNear, pf_AnyOf, pf_AllOf, pf_Every,
+   !    pf_StringContains, pf_StringStartsWith, pf_StringEndsWith, pf_IsArrayWithSize, pf_Matchable.
+   ! The assertions of the first section are among them (real ones here). Test, TestSuite and
+   ! TestMethod are also the names real pFUnit's generated suite function refers to (so does
+   ! wrap_<module>'s run_suite, with funit_suite_scope).
+   ! from FUnit
+   public :: initialize, run, generic_run, finalize, get_context, stub, LoadTests_interface
+   public :: output_unit
+   ! from FUnit_Core
+   public :: SourceLocation, Test, TestSuite, TestMethod, TestResult, TestRunner, BaseTestRunner
+   public :: RemoteRunner, RobustRunner, TestListener, TestListenerVector, ListenerPointer
+   public :: ResultPrinter, XmlPrinter, DebugListener, NameFilter, TestCase, AbstractTestParameter
+   public :: ParameterizedTestCase, ParallelContext, SerialContext, throw, catchNext, catch
+   public :: Expectation, Subject, Predicate, wasCalled, wasNotCalled, wasCalledOnce
+   public :: TestAnnotation, StringTestAnnotationMap, Disable, TimeoutAnnotation, TapListener
+   ! from PF_Assert
+   public :: assertFail, assertExceptionRaised, assertSameShape, assertNone, assertNotAll
+   public :: assertNotEqual, assertIsNan, WhitespaceOptions
+   public :: IGNORE_ALL, TRIM_ALL, KEEP_ALL, IGNORE_DIFFERENCES
+   ! from fHamcrest
+   public :: MatcherDescription, StringDescription, assert_that, AbstractMatcher, Is, IsNot, not
+   public :: IsEqual, equal_to, IsNear, near, IsRelativelyNear, relatively_near, AnyOf, any_of
+   public :: AllOf, all_of, Every, every_item, StringContains, contains_string, StringStartsWith
+   public :: starts_with, StringEndsWith, ends_with, IsArrayWithSize, array_with_size, empty_array
+   public :: Matchable
    public :: funit_suite_scope
+   ! (types)
+   type :: SourceLocation
+   end type SourceLocation
    type :: Test
    end type Test
    type, extends(Test) :: TestMethod
    end type TestMethod
-   type :: TestSuite
+   type, extends(Test) :: TestSuite
    end type TestSuite
-   type :: TestCase
+   type, extends(Test) :: TestCase
    end type TestCase
+   type, extends(TestCase) :: ParameterizedTestCase
+   end type ParameterizedTestCase
    type :: TestResult
    end type TestResult
-   type :: TestRunner
-   end type TestRunner
    type :: BaseTestRunner
    end type BaseTestRunner
+   type, extends(BaseTestRunner) :: TestRunner
+   end type TestRunner
+   type, extends(BaseTestRunner) :: RemoteRunner
+   end type RemoteRunner
+   type, extends(BaseTestRunner) :: RobustRunner
+   end type RobustRunner
    type :: TestListener
    end type TestListener
-   type :: ResultPrinter
+   type :: TestListenerVector
+   end type TestListenerVector
+   type :: ListenerPointer
+   end type ListenerPointer
+   type, extends(TestListener) :: ResultPrinter
    end type ResultPrinter
-   type :: XmlPrinter
+   type, extends(TestListener) :: XmlPrinter
    end type XmlPrinter
-   type :: DebugListener
+   type, extends(TestListener) :: DebugListener
    end type DebugListener
+   type, extends(TestListener) :: TapListener
+   end type TapListener
+   type :: NameFilter
+   end type NameFilter
    type :: AbstractTestParameter
    end type AbstractTestParameter
-   type :: ParameterizedTestCase
-   end type ParameterizedTestCase
    type :: ParallelContext
    end type ParallelContext
-   type :: SerialContext
+   type, extends(ParallelContext) :: SerialContext
    end type SerialContext
-   type :: SourceLocation
-   end type SourceLocation
+   type :: Subject
+   end type Subject
+   type :: Predicate
+   end type Predicate
+   type :: Expectation
+   end type Expectation
+   type, extends(Predicate) :: wasCalled
+   end type wasCalled
+   type, extends(Predicate) :: wasNotCalled
+   end type wasNotCalled
+   type, extends(Predicate) :: wasCalledOnce
+   end type wasCalledOnce
+   type :: TestAnnotation
+   end type TestAnnotation
+   type, extends(TestAnnotation) :: TimeoutAnnotation
+   end type TimeoutAnnotation
+   type :: StringTestAnnotationMap
+   end type StringTestAnnotationMap
    type :: WhitespaceOptions
    end type WhitespaceOptions
-   type :: IsEqual
+   type :: MatcherDescription
+   end type MatcherDescription
+   type, extends(MatcherDescription) :: StringDescription
+   end type StringDescription
+   type :: AbstractMatcher
+   end type AbstractMatcher
+   type, extends(AbstractMatcher) :: Is
+   end type Is
+   type, extends(AbstractMatcher) :: IsNot
+   end type IsNot
+   type, extends(AbstractMatcher) :: IsEqual
    end type IsEqual
+   type, extends(AbstractMatcher) :: IsNear
+   end type IsNear
+   type, extends(AbstractMatcher) :: IsRelativelyNear
+   end type IsRelativelyNear
+   type, extends(AbstractMatcher) :: AnyOf
+   end type AnyOf
+   type, extends(AbstractMatcher) :: AllOf
+   end type AllOf
+   type, extends(AbstractMatcher) :: Every
+   end type Every
+   type, extends(AbstractMatcher) :: StringContains
+   end type StringContains
+   type, extends(AbstractMatcher) :: StringStartsWith
+   end type StringStartsWith
+   type, extends(AbstractMatcher) :: StringEndsWith
+   end type StringEndsWith
+   type, extends(AbstractMatcher) :: IsArrayWithSize
+   end type IsArrayWithSize
+   type :: Matchable
+   end type Matchable
+   ! (constants; pFUnit's Disable is a variable, of a type it keeps private)
+   type(WhitespaceOptions), parameter :: IGNORE_ALL = WhitespaceOptions(), TRIM_ALL = WhitespaceOptions(), &
+      KEEP_ALL = WhitespaceOptions(), IGNORE_DIFFERENCES = WhitespaceOptions()
+   type(TestAnnotation), parameter :: Disable = TestAnnotation()
+   ! (abstract interface)
+   abstract interface
+      function LoadTests_interface() result(suite)
+         import :: TestSuite
+         type(TestSuite) :: suite
+      end function LoadTests_interface
+   end interface
    ! (generic interfaces where pFUnit's names are generics, which a suite may extend: each with
-   ! one placeholder specific that no call matches)
+   ! one placeholder specific, a subroutine or a function as pFUnit's, that no call matches ...)
+   interface throw
+      module procedure placeholder_throw
+   end interface throw
+   interface catch
+      module procedure placeholder_catch
+   end interface catch
    interface assertFail
       module procedure placeholder_assert_fail
    end interface assertFail
@@ -85,11 +189,47 @@ module funit
    interface assertNotEqual
       module procedure placeholder_assert_not_equal
    end interface assertNotEqual
+   interface assert_that
+      module procedure placeholder_assert_that
+   end interface assert_that
+   interface is
+      module procedure placeholder_is
+   end interface is
    interface equal_to
       module procedure placeholder_equal_to
    end interface equal_to
-   type(WhitespaceOptions), parameter :: IGNORE_ALL = WhitespaceOptions(), TRIM_ALL = WhitespaceOptions(), &
-      KEEP_ALL = WhitespaceOptions(), IGNORE_DIFFERENCES = WhitespaceOptions()
+   interface near
+      module procedure placeholder_near
+   end interface near
+   interface relatively_near
+      module procedure placeholder_relatively_near
+   end interface relatively_near
+   interface any_of
+      module procedure placeholder_any_of
+   end interface any_of
+   interface all_of
+      module procedure placeholder_all_of
+   end interface all_of
+   interface every_item
+      module procedure placeholder_every_item
+   end interface every_item
+   interface contains_string
+      module procedure placeholder_contains_string
+   end interface contains_string
+   interface starts_with
+      module procedure placeholder_starts_with
+   end interface starts_with
+   interface ends_with
+      module procedure placeholder_ends_with
+   end interface ends_with
+   interface array_with_size
+      module procedure placeholder_array_with_size
+   end interface array_with_size
+   ! (... but `not`, whose pFUnit specific takes class(*): a reference to the intrinsic not(i)
+   ! where funit is in scope resolves to it and does not compile with pFUnit, nor here)
+   interface not
+      module procedure placeholder_not
+   end interface not
 
    !> funit_initialize() status: run the tests, usage shown on request, bad command line.
    integer, parameter, public :: FUNIT_RUN = 0, FUNIT_HELP_SHOWN = 1, FUNIT_USAGE_ERROR = 2
@@ -147,6 +287,10 @@ module funit
       module procedure is_finite_r0
    end interface assertIsFinite
 
+   interface anyExceptions
+      module procedure any_exceptions
+   end interface anyExceptions
+
    !> As pFUnit's KeywordEnforcer: an optional dummy of a type no caller can name, placed
    !> before `message` where pFUnit has one (logical assertEqual, integer orderings), so that a
    !> positional message matches no specific procedure and does not compile, as with pFUnit.
@@ -175,7 +319,8 @@ contains
       end associate
    end subroutine funit_suite_scope
 
-   ! (placeholders for real pFUnit's procedures of these names: see the public statements)
+   ! (placeholders for real pFUnit's procedures of these names: see the public statements;
+   ! a subroutine where pFUnit's is one, else a function)
    subroutine initialize(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
@@ -191,21 +336,6 @@ contains
       associate (unused => unusable)
       end associate
    end subroutine stub
-   subroutine throw(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-   end subroutine throw
-   subroutine placeholder_assert_fail(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-   end subroutine placeholder_assert_fail
-   subroutine placeholder_assert_exception_raised(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-   end subroutine placeholder_assert_exception_raised
    subroutine assertSameShape(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
@@ -221,63 +351,163 @@ contains
       associate (unused => unusable)
       end associate
    end subroutine assertNotAll
-   subroutine placeholder_assert_not_equal(unusable)
+   subroutine placeholder_throw(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
-   end subroutine placeholder_assert_not_equal
+   end subroutine placeholder_throw
+   subroutine placeholder_assert_fail(unusable)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      associate (unused => unusable)
+      end associate
+   end subroutine placeholder_assert_fail
+   subroutine placeholder_assert_exception_raised(unusable)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      associate (unused => unusable)
+      end associate
+   end subroutine placeholder_assert_exception_raised
    subroutine placeholder_assert_is_nan(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
    end subroutine placeholder_assert_is_nan
-   subroutine assert_that(unusable)
+   subroutine placeholder_assert_not_equal(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
-   end subroutine assert_that
-   logical function run(unusable)
+   end subroutine placeholder_assert_not_equal
+   subroutine placeholder_assert_that(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
       end associate
-      run = .false.
+   end subroutine placeholder_assert_that
+   function run(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      logical :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = .false.
    end function run
-   logical function generic_run(unusable)
+   function generic_run(unusable) result(placeholder)
       type(keyword_enforcer_type), intent(in) :: unusable
+      logical :: placeholder
       associate (unused => unusable)
       end associate
-      generic_run = .false.
+      placeholder = .false.
    end function generic_run
-   logical function get_context(unusable)
+   function get_context(unusable) result(placeholder)
       type(keyword_enforcer_type), intent(in) :: unusable
+      type(ParallelContext) :: placeholder
       associate (unused => unusable)
       end associate
-      get_context = .false.
+      placeholder = ParallelContext()
    end function get_context
-   logical function catch(unusable)
+   function catchNext(unusable) result(placeholder)
       type(keyword_enforcer_type), intent(in) :: unusable
+      type(TestResult) :: placeholder
       associate (unused => unusable)
       end associate
-      catch = .false.
-   end function catch
-   logical function catchNext(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-      catchNext = .false.
+      placeholder = TestResult()
    end function catchNext
-   logical function is(unusable)
+   function empty_array(unusable) result(placeholder)
       type(keyword_enforcer_type), intent(in) :: unusable
+      type(IsArrayWithSize) :: placeholder
       associate (unused => unusable)
       end associate
-      is = .false.
-   end function is
-   logical function placeholder_equal_to(unusable)
+      placeholder = IsArrayWithSize()
+   end function empty_array
+   function placeholder_catch(unusable) result(placeholder)
       type(keyword_enforcer_type), intent(in) :: unusable
+      logical :: placeholder
       associate (unused => unusable)
       end associate
-      placeholder_equal_to = .false.
+      placeholder = .false.
+   end function placeholder_catch
+   function placeholder_is(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(Is) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = Is()
+   end function placeholder_is
+   function placeholder_equal_to(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(IsEqual) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = IsEqual()
    end function placeholder_equal_to
+   function placeholder_near(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(IsNear) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = IsNear()
+   end function placeholder_near
+   function placeholder_relatively_near(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(IsRelativelyNear) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = IsRelativelyNear()
+   end function placeholder_relatively_near
+   function placeholder_any_of(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(AnyOf) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = AnyOf()
+   end function placeholder_any_of
+   function placeholder_all_of(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(AllOf) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = AllOf()
+   end function placeholder_all_of
+   function placeholder_every_item(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(Every) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = Every()
+   end function placeholder_every_item
+   function placeholder_contains_string(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(StringContains) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = StringContains()
+   end function placeholder_contains_string
+   function placeholder_starts_with(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(StringStartsWith) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = StringStartsWith()
+   end function placeholder_starts_with
+   function placeholder_ends_with(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(StringEndsWith) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = StringEndsWith()
+   end function placeholder_ends_with
+   function placeholder_array_with_size(unusable) result(placeholder)
+      type(keyword_enforcer_type), intent(in) :: unusable
+      type(IsArrayWithSize) :: placeholder
+      associate (unused => unusable)
+      end associate
+      placeholder = IsArrayWithSize()
+   end function placeholder_array_with_size
+   !> pFUnit's not(value) takes any value (class(*)): so does this one, which returns a matcher.
+   function placeholder_not(value) result(placeholder)
+      class(*), intent(in) :: value
+      type(IsNot) :: placeholder
+      associate (unused => value)
+      end associate
+      placeholder = IsNot()
+   end function placeholder_not
 
    !> Reads the command line: `[-f|--filter] NAME`, `-v|--verbose`, `-h|--help`.
    subroutine funit_initialize(status)
@@ -368,10 +598,11 @@ contains
       location_line = line
    end subroutine funit_location
 
-   !> True once an assertion of the running test has failed (pFUnit's name).
-   logical function anyExceptions()
-      anyExceptions = current_failed
-   end function anyExceptions
+   !> anyExceptions(): true once an assertion of the running test has failed (pFUnit's name, a
+   !> generic there too).
+   logical function any_exceptions()
+      any_exceptions = current_failed
+   end function any_exceptions
 
    ! ================================ equality =================================
 
