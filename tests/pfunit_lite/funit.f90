@@ -39,7 +39,7 @@ module funit
    !    pf_StringContains, pf_StringStartsWith, pf_StringEndsWith, pf_IsArrayWithSize, pf_Matchable.
    ! The assertions of the first section are among them (real ones here). Test, TestSuite and
    ! TestMethod are also the names real pFUnit's generated suite function refers to (so does
-   ! wrap_<module>'s run_suite, with funit_suite_scope).
+   ! wrap_<module>'s <module>_suite, with funit_suite_scope).
    ! from FUnit
    public :: initialize, run, generic_run, finalize, get_context, stub, LoadTests_interface
    public :: output_unit
@@ -310,7 +310,7 @@ contains
 
    ! =============================== driver side ===============================
 
-   !> Does nothing: wrap_<module>'s run_suite declares real pFUnit's suite function's locals
+   !> Does nothing: wrap_<module>'s <module>_suite declares real pFUnit's suite function's locals
    !> (`type(TestSuite) :: suite`, `class(Test), allocatable :: t`) and hands them here.
    subroutine funit_suite_scope(suite, t)
       type(TestSuite), intent(in) :: suite

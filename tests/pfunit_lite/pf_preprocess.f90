@@ -7,7 +7,7 @@
 !> assertions `@assertXxx(...)` whose names are in ASSERTIONS. Other lines are copied
 !> verbatim. An assertion becomes `call funit_location(file, line)`, `call assertXxx(...)` and
 !> `if (anyExceptions()) return`, with `#line` markers so that compiler messages (and backtraces)
-!> point at the .pf lines. After the file a module `wrap_<module>` is appended whose `run_suite` runs the
+!> point at the .pf lines. After the file a module `wrap_<module>` is appended whose `<module>_suite` runs the
 !> tests in file order through funit_run_test. Anything else starting with `@`, an assertion with a
 !> trailing comment, an @assert line that real pFUnit would truncate (over 132 - 8 columns without
 !> its indentation), a @test/@before/@after before anything but a line of the one form real pFUnit
@@ -302,12 +302,13 @@ contains
       end do
    end subroutine check_registration_lines
 
-   !> Appends `module wrap_<module>` with `run_suite`, which runs every test in file order.
+   !> Appends `module wrap_<module>` with `<module>_suite`, which runs every test in file order.
    subroutine emit_wrapper()
-      character(len=:), allocatable :: wrap_name, hooks
+      character(len=:), allocatable :: wrap_name, suite_name, hooks
       integer :: i
 
       wrap_name = WRAP_PREFIX // lower(module_name)
+      suite_name = module_name // PFUNIT_SUITE_SUFFIX
       ! (within MAX_NAME_LEN: the module name is checked against real pFUnit's shorter limit)
       hooks = ''
       if (len(before_name) > 0) hooks = hooks // ', before=' // before_name
@@ -318,14 +319,15 @@ contains
       call emit('module ' // wrap_name)
       call emit('   implicit none')
       call emit('   private')
-      call emit('   public :: run_suite')
+      call emit('   public :: ' // suite_name)
       call emit('contains')
-      call emit('   subroutine run_suite()')
-      ! (the scope of real pFUnit's suite function <module>_suite: all of funit and of the module,
-      ! and its locals suite and t; a public name of the module that clashes there fails here too)
-      call emit('      ! As in real pFUnit''s suite function ' // module_name // PFUNIT_SUITE_SUFFIX // ': all of funit and of ' &
-         // module_name // ', and the locals suite')
-      call emit('      ! and t. A public name of ' // module_name // ' that clashes with these fails with real pFUnit too.')
+      ! (the scope of real pFUnit's suite function <module>_suite: its own name, all of funit and
+      ! of the module, and its locals suite and t; a public name of the module that clashes there
+      ! fails here too)
+      call emit('   subroutine ' // suite_name // '()')
+      call emit('      ! As in real pFUnit''s suite function of this name: its name, all of funit and of the')
+      call emit('      ! module, and the locals suite and t. A public name of the module that clashes with these')
+      call emit('      ! fails with real pFUnit too.')
       call emit('      use funit')
       call emit('      use ' // module_name)
       call emit('      type(TestSuite) :: suite')
@@ -336,7 +338,7 @@ contains
          call emit_statement('      ', 'call funit_run_test(''' // module_name // ''', ''' // tests(i)%s // ''', ' &
             // tests(i)%s // hooks // ')')
       end do
-      call emit('   end subroutine run_suite')
+      call emit('   end subroutine ' // suite_name)
       call emit('end module ' // wrap_name)
    end subroutine emit_wrapper
 
