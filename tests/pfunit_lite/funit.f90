@@ -25,8 +25,9 @@ module funit
    ! abstract interface, or a generic interface where pFUnit's name is one, which a suite may
    ! extend), so that such a module is refused here as well. The procedures take an argument of a
    ! private type: no call compiles (but `not`'s, as pFUnit's, takes anything: below).
-   ! Where the names come from (pFUnit 4.12/4.14 sources, src/funit): module FUnit has no `private`
-   ! statement, so it exports its own procedures and everything the modules it uses export:
+   ! Where the names come from (pFUnit's sources, src/funit, read 2026-12 in the versions of the
+   ! 4.1x releases, which 4.12 and 4.14 share): module FUnit has no `private` statement, so it
+   ! exports its own procedures and everything the modules it uses export:
    !  - FUnit itself: initialize, run, generic_run, finalize, get_context, stub; iso_fortran_env's
    !    OUTPUT_UNIT;
    !  - FUnit_Core (core/FUnit_Core.F90, its public list; RemoteRunner and RobustRunner under
@@ -37,9 +38,13 @@ module funit
    !    pf_MatcherDescription, pf_StringDescription, pf_MatcherAssert, pf_AbstractMatcher, pf_Is,
    !    pf_IsNot, pf_IsEqual, pf_IsNear, pf_IsRelativelyNear, pf_AnyOf, pf_AllOf, pf_Every,
    !    pf_StringContains, pf_StringStartsWith, pf_StringEndsWith, pf_IsArrayWithSize, pf_Matchable.
-   ! The assertions of the first section are among them (real ones here). Test, TestSuite and
-   ! TestMethod are also the names real pFUnit's generated suite function refers to (so does
-   ! wrap_<module>'s <module>_suite, with funit_suite_scope).
+   ! Not here: names seen only in some versions of pFUnit's sources and not shown to be in 4.12 or
+   ! 4.14 (a name refused here that pFUnit accepts is as wrong as the other way round): fHamcrest's
+   ! IsTrueOrFalse, true, false, IsNear_32, IsNear_64 and relational matchers (greater_than, ...),
+   ! PF_Assert's assertRelMinEqual and assertApprox.
+   ! The assertions and anyExceptions of the first section are among the names (real ones here).
+   ! Test, TestSuite and TestMethod are also the names real pFUnit's generated suite function
+   ! refers to (so does wrap_<module>'s <module>_suite, with funit_suite_scope).
    ! from FUnit
    public :: initialize, run, generic_run, finalize, get_context, stub, LoadTests_interface
    public :: output_unit
