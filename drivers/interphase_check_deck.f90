@@ -15,8 +15,10 @@
 !> viscous regularisation) or 9 (VUMAT, when the deck has a *DYNAMIC, EXPLICIT step), UNSYMM for
 !> Abaqus/Standard with the consistent tangent (stiffness option 0), a *DENSITY > 0 for
 !> Abaqus/Explicit, and no *DEPVAR, DELETE= among interphase's slots (which hold 0 at every intact
-!> point: Abaqus would delete it), and the element sets' initial state variables (*INITIAL
-!> CONDITIONS, TYPE=SOLUTION) as the UMAT's and VUMAT's STATEV reader checks them. It reads
+!> point: Abaqus would delete it), none of the built-in cohesive law's keywords (*ELASTIC,
+!> TYPE=TRACTION, *DAMAGE INITIATION, *DAMAGE EVOLUTION, *DAMAGE STABILIZATION) in the material
+!> (a note for a *SECTION CONTROLS' VISCOSITY=, which is not interphase's), and the element sets'
+!> initial state variables (*INITIAL CONDITIONS, TYPE=SOLUTION) as the UMAT's and VUMAT's STATEV reader checks them. It reads
 !> keywords (a keyword line that ends in a comma continued on the next; keywords, parameters and
 !> values abbreviated as Abaqus allows) and their data lines only, those of *INCLUDE files where
 !> they stand (a relative INPUT= from the deck's folder, the job's working directory, in nested
@@ -38,7 +40,8 @@ program interphase_check_deck
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT, MODEL_SIMPLIFIED, DAMAGE_DISPLACEMENT, &
       MODEL_MICROMECHANICAL, TABLE_CUSTOM_CODE, TABLE_DEFAULT_CODE, DAMAGE_FRACTURE, RCURVE_TABULATED, PROP_TABLE, &
       RCURVE_EQUIVALENT, RCURVE_CONSTANT, NSTATV_VISCOUS, STIFFNESS_CONSISTENT, &
-      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, OPT_CONTACT_BAND, OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, SV_DAMAGE, SV_SLIP_1, &
+      GROWTH_FIXED_LAMBDA, HOST_CALCULIX, OPT_HOST, OPT_CONTACT_BAND, OPT_VISCOSITY, OPT_LAYER_THICKNESS, OPT_LAYER_NORMAL, &
+      SV_DAMAGE, SV_SLIP_1, &
       SV_SLIP_2, SV_REGIME, SV_DAMAGE_INVISCID, &
       SV_FAILED, SV_SEP_N, SV_SEP_T1, SV_SEP_T2
    use interphase_status, only: STATUS_OK, STATUS_BAD_OPTION, MESSAGE_LEN
@@ -93,10 +96,26 @@ program interphase_check_deck
    !> takes a keyword, a parameter and most parameter values abbreviated to any start that no
    !> other one shares (its input syntax rules): `resolve_name` reads such an abbreviation as the
    !> name it abbreviates, against these and the Abaqus keywords beside them (KEYWORDS_BESIDE).
-   character(len=NAME_LEN), parameter :: KEYWORDS_READ(17) = [character(len=NAME_LEN) :: 'MATERIAL', &
+   character(len=NAME_LEN), parameter :: KEYWORDS_READ(22) = [character(len=NAME_LEN) :: 'MATERIAL', &
       'USERMATERIAL', 'DEPVAR', 'DENSITY', 'COHESIVESECTION', 'DYNAMIC', 'DYNAMICTEMPERATURE-DISPLACEMENT', &
       'INCLUDE', 'STEP', 'PART', 'ASSEMBLY', 'INSTANCE', 'NODE', 'ELEMENT', 'SOLIDSECTION', 'SHELLSECTION', &
-      'INITIALCONDITIONS']
+      'INITIALCONDITIONS', 'ELASTIC', 'DAMAGEINITIATION', 'DAMAGEEVOLUTION', 'DAMAGESTABILIZATION', 'SECTIONCONTROLS']
+   !> The keywords of Abaqus's built-in cohesive (traction-separation) law in a material: beside
+   !> interphase's *USER MATERIAL they are a second law, left over from a deck that used the built-in
+   !> one (*ELASTIC counts with TYPE=TRACTION or COUPLED TRACTION only).
+   character(len=NAME_LEN), parameter :: BUILT_IN_LAW_KEYWORDS(4) = [character(len=NAME_LEN) :: 'ELASTIC', &
+      'DAMAGEINITIATION', 'DAMAGEEVOLUTION', 'DAMAGESTABILIZATION']
+   !> The values of *ELASTIC's TYPE= (Abaqus Keywords Guide), against which an abbreviation is read.
+   character(len=NAME_LEN), parameter :: ELASTIC_TYPES(8) = [character(len=NAME_LEN) :: 'ANISOTROPIC', &
+      'COUPLEDTRACTION', 'ENGINEERINGCONSTANTS', 'ISOTROPIC', 'LAMINA', 'ORTHOTROPIC', 'SHEAR', 'TRACTION']
+   !> Material options (Abaqus Keywords Guide; the common ones): a keyword among them, after
+   !> *MATERIAL, is still of that material; any other keyword ends the material's block (so that a
+   !> *DAMAGE INITIATION of a *SURFACE INTERACTION is not taken for the material's).
+   character(len=NAME_LEN), parameter :: MATERIAL_OPTIONS(*) = [character(len=NAME_LEN) :: 'USERMATERIAL', &
+      'DEPVAR', 'DENSITY', 'ELASTIC', 'DAMAGEINITIATION', 'DAMAGEEVOLUTION', 'DAMAGESTABILIZATION', 'EXPANSION', &
+      'DAMPING', 'CONDUCTIVITY', 'SPECIFICHEAT', 'LATENTHEAT', 'PLASTIC', 'USERDEFINEDFIELD', &
+      'USEROUTPUTVARIABLES', 'VISCOELASTIC', 'HYPERELASTIC', 'INELASTICHEATFRACTION', 'MASSDIFFUSION', &
+      'INCLUDE']
    !> The values of *INITIAL CONDITIONS' TYPE= (Abaqus Keywords Guide), against which an
    !> abbreviation is read: only TYPE=SOLUTION, the state variables, is checked.
    character(len=NAME_LEN), parameter :: INITIAL_CONDITION_TYPES(*) = [character(len=NAME_LEN) :: &
@@ -152,6 +171,9 @@ program interphase_check_deck
       integer :: density_line = 0              !! line of *DENSITY's value (0: none)
       logical :: density_empty = .false.       !! *DENSITY's value an empty field (Abaqus reads 0)
       integer :: line = 0                      !! line of *MATERIAL
+      !> the first keyword of Abaqus's built-in cohesive law in its block ('' when none: the
+      !> keyword as the deck writes it, with its file and line: file:line: *KEYWORD)
+      character(len=512) :: built_in_law = ''
       character(len=:), allocatable :: file    !! the file its lines are in (the deck or an *INCLUDE)
       character(len=16), allocatable :: options_seen(:)   !! *USER MATERIAL, *DEPVAR, *DENSITY so far
    end type material_type
@@ -164,6 +186,9 @@ program interphase_check_deck
       !> UMAT, interphase's, serves it only in the thin-layer mode
       logical :: solid = .false.
       character(len=80) :: elset = '', material = '', response = '', thickness_mode = ''
+      character(len=80) :: controls = ''       !! CONTROLS= (a *SECTION CONTROLS' NAME=; '' when none)
+      !> that *SECTION CONTROLS' VISCOSITY= as written, with its file and line ('' when none or 0)
+      character(len=512) :: viscosity = ''
       real(dp) :: thickness = -1.0_dp
       logical :: thickness_empty = .false.     !! the thickness an empty field (Abaqus reads 0)
       logical :: thickness_read = .false.      !! a thickness (or an empty field) on the data line
@@ -324,6 +349,13 @@ contains
       integer :: nfail_line                    !! nfail before the line (its failures are attributed)
       character(len=:), allocatable :: label
       logical :: explicit, opened
+      logical :: in_material                   !! the keyword lines read are a material's options
+      !> the *SECTION CONTROLS with a VISCOSITY= other than 0: their names and, for each, the
+      !> value as written with its file and line
+      character(len=80), allocatable :: controls_names(:)
+      character(len=512), allocatable :: controls_viscosity(:)
+      real(dp) :: viscosity_value
+      logical :: viscosity_ok
       logical :: already_open          !! an *INCLUDE's file open already (in a file that includes it)
       !> the first step procedure of each solver (line and keyword): one analysis runs one solver
       integer :: explicit_line, standard_line
@@ -346,6 +378,8 @@ contains
       type(initial_state_type), allocatable :: states(:)
 
       allocate (materials(0), sections(0), solution_lines(64), other_materials(0))
+      allocate (controls_names(0), controls_viscosity(0))
+      in_material = .false.
       other_sections = .false.
       calculix = .false.
       solution_block = 0
@@ -471,7 +505,40 @@ contains
                call record_failure(path//':'//int_to_string(lineno)//': *'//trim(text_before(line(2:), ','))//': parameter '// &
                   trim(repeated)//' given twice: "'//clip_text(trim(line))//'"', nfail)
             end if
+            ! a material's block: *MATERIAL and the material options after it
+            if (trim(keyword) == 'MATERIAL') then
+               in_material = .true.
+            else if (.not. any(MATERIAL_OPTIONS == keyword)) then
+               in_material = .false.
+            end if
+            ! the built-in cohesive law's keywords in a material (checked with the sections of a
+            ! material that has interphase's *USER MATERIAL)
+            if (in_material .and. current > 0 .and. any(BUILT_IN_LAW_KEYWORDS == keyword)) then
+               field = ''
+               if (trim(keyword) == 'ELASTIC') field = parameter_choice(parameter_names, parameter_values, 'TYPE', &
+                  ELASTIC_TYPES)
+               if (trim(keyword) /= 'ELASTIC' .or. field == 'TRACTION' .or. field == 'COUPLEDTRACTION') then
+                  if (len_trim(materials(current)%built_in_law) == 0) materials(current)%built_in_law = &
+                     path//':'//int_to_string(lineno)//': *'//trim(clip_text(text_before(line(2:), ',')))
+                  if (trim(keyword) == 'ELASTIC') materials(current)%built_in_law = &
+                     trim(materials(current)%built_in_law)//', TYPE='//parameter_value(parameter_names, &
+                     parameter_values, 'TYPE')
+               end if
+            end if
             select case (trim(keyword))
+            case ('SECTIONCONTROLS')
+               ! Abaqus's viscous regularisation of its own damage models (VISCOSITY=)
+               field = label_value(parameter_value(parameter_names, parameter_values, 'NAME'))
+               if (len_trim(field) > 0 .and. len(parameter_value(parameter_names, parameter_values, 'VISCOSITY')) > 0) then
+                  call parse_real(parameter_value(parameter_names, parameter_values, 'VISCOSITY'), viscosity_value, &
+                     viscosity_ok, bad_why)
+                  if (.not. viscosity_ok .or. abs(viscosity_value) > 0.0_dp) then
+                     controls_names = [character(len=80) :: controls_names, field]
+                     controls_viscosity = [character(len=512) :: controls_viscosity, &
+                        'VISCOSITY='//parameter_value(parameter_names, parameter_values, 'VISCOSITY')// &
+                        ' (*SECTION CONTROLS, NAME='//trim(field)//' at '//path//':'//int_to_string(lineno)//')']
+                  end if
+               end if
             case ('MATERIAL')
                label = label_value(parameter_value(parameter_names, parameter_values, 'NAME'))
                if (len(label) == 0) then
@@ -611,7 +678,8 @@ contains
                   response=parameter_choice(parameter_names, parameter_values, 'RESPONSE', &
                      [character(len=NAME_LEN) :: 'TRACTIONSEPARATION', 'CONTINUUM', 'GASKET']), &
                   thickness_mode=parameter_choice(parameter_names, parameter_values, 'THICKNESS', &
-                     [character(len=NAME_LEN) :: 'GEOMETRY', 'SPECIFIED']))]
+                     [character(len=NAME_LEN) :: 'GEOMETRY', 'SPECIFIED']), &
+                  controls=label_value(parameter_value(parameter_names, parameter_values, 'CONTROLS')))]
                ! (THICKNESS= left out: Abaqus's default, checked with the section)
                if (.not. any(parameter_names == 'THICKNESS')) sections(size(sections))%thickness_mode = 'DEFAULT'
             case ('INITIALCONDITIONS')
@@ -825,6 +893,13 @@ contains
             ': note: *USER MATERIAL of '//trim(materials(k)%name)//': no section uses it (not checked)'
       end do
       call read_initial_states(solution_lines, nsolution_lines, sections, materials, states, nstates, nfail)
+      ! the section controls' viscosity of each cohesive section (a note: it is not interphase's)
+      do i = 1, size(sections)
+         if (len_trim(sections(i)%controls) == 0) cycle
+         do k = 1, size(controls_names)
+            if (controls_names(k) == sections(i)%controls) sections(i)%viscosity = controls_viscosity(k)
+         end do
+      end do
       do i = 1, size(sections)
          call check_section(deck, sections(i), materials, explicit, states(1:nstates), nfail)
       end do
@@ -1037,6 +1112,22 @@ contains
                   ' needs at least '//int_to_string(depvar_needed)//why, nfail)
             end if
             if (mat%delete_line > 0) call check_delete(mat%file, mat, explicit, depvar_needed, notes, nfail)
+            ! a second law beside interphase's: the built-in one's keywords, left from a deck that used it
+            if (len_trim(mat%built_in_law) > 0) call record_failure(trim(mat%built_in_law)//' in *MATERIAL, NAME='// &
+               trim(mat%name)//', beside interphase''s *USER MATERIAL: a keyword of Abaqus''s built-in cohesive '// &
+               'law (*ELASTIC, TYPE=TRACTION, *DAMAGE INITIATION, *DAMAGE EVOLUTION, *DAMAGE STABILIZATION), which '// &
+               'interphase''s PROPS replace (stiffness, strengths, fracture energies, viscosity: docs/abaqus.md, '// &
+               '''Coming from the built-in cohesive law''): remove it', nfail)
+            if (len_trim(section%viscosity) > 0) then
+               why = 'nb + 3'
+               if (decoded) then
+                  call constants_count(params%model, params%damage_law, nm, nconstants)
+                  why = int_to_string(nconstants + OPT_VISCOSITY)
+               end if
+               notes = notes//'; note: '//trim(section%viscosity)//': Abaqus''s viscous regularisation of its own '// &
+                  'damage models, which does not reach the damage inside a user material: interphase''s is the '// &
+                  'viscosity option PROPS('//why//') (docs/abaqus.md, PROPS)'
+            end if
             if (.not. explicit .and. .not. mat%unsymm) then
                if (.not. decoded) then
                   call record_failure(where//': no UNSYMM: the tangent DDSDDE is unsymmetric (friction, damage)', nfail)
@@ -1766,6 +1857,12 @@ contains
             'SCALEFACTOR']
       case ('DEPVAR')
          names = [character(len=NAME_LEN) :: 'DELETE']
+      case ('ELASTIC')
+         names = [character(len=NAME_LEN) :: 'DEPENDENCIES', 'MODULI', 'POREFLUID', 'REGULARIZE', 'RTOL', 'TYPE']
+      case ('SECTIONCONTROLS')
+         names = [character(len=NAME_LEN) :: 'DISTORTIONCONTROL', 'ELEMENTCONVERSION', 'ELEMENTDELETION', &
+            'HOURGLASS', 'INITIALGAPOPENING', 'KINEMATICSPLIT', 'LENGTHRATIO', 'MAXDEGRADATION', 'NAME', &
+            'SECONDORDERACCURACY', 'VISCOSITY', 'WEIGHTFACTOR']
       case ('INCLUDE')
          names = [character(len=NAME_LEN) :: 'INPUT', 'PASSWORD']
       case ('INITIALCONDITIONS')
