@@ -159,6 +159,12 @@ program interphase_check_deck
       integer :: constant_field(MAX_CONSTANTS) = 0      !! its field on that line
       logical :: constant_empty(MAX_CONSTANTS) = .false. !! an empty field (Abaqus reads 0)
       logical :: line_overflow = .false.       !! a data line with more than 8 constants (reported)
+      character(len=512) :: last_data_line = '' !! the last *USER MATERIAL data line read (file:line)
+      integer :: last_data_fields = 0          !! and its fields
+      !> the first *USER MATERIAL data line (file:line) with fewer than 8 fields that another data
+      !> line follows ('': none), and its fields: whether Abaqus pads it to 8 is not known here (a note)
+      character(len=512) :: short_line = ''
+      integer :: short_fields = 0
       integer :: refused = 0                   !! failed checks on its own lines (reported as read)
       logical :: unsymm = .false.
       integer :: depvar = -1                   !! *DEPVAR (-1: none)
@@ -791,6 +797,14 @@ contains
          case ('USERMATERIAL')
             if (current > 0) then
                associate (mat => materials(current))
+                  ! a line of fewer than 8 constants with another after it
+                  if (data_lines > 1 .and. len_trim(mat%short_line) == 0 .and. &
+                      mat%last_data_fields < CONSTANTS_PER_LINE) then
+                     mat%short_line = mat%last_data_line
+                     mat%short_fields = mat%last_data_fields
+                  end if
+                  mat%last_data_line = path//':'//int_to_string(lineno)
+                  mat%last_data_fields = nvalues
                   do k = 1, nvalues
                      mat%nread = mat%nread + 1
                      if (mat%nread <= MAX_CONSTANTS) then
@@ -1146,6 +1160,11 @@ contains
                      ' but the VUMAT needs a density > 0: its energies are per unit mass', nfail)
                end if
             end if
+            if (len_trim(mat%short_line) > 0) notes = notes//'; note: '//trim(mat%short_line)//': this '// &
+               '*USER MATERIAL data line holds '//int_to_string(mat%short_fields)//' constants and another line follows: '// &
+               'this check reads the constants one after the other, but Abaqus''s data lines of eight values may '// &
+               'read a shorter line as padded with zeros to 8, shifting every PROPS after it: write 8 on every line '// &
+               'but the last'
             if (decoded .and. any(mat%constant_empty(1:min(mat%nread, MAX_CONSTANTS)))) &
                notes = notes//'; note: '//empty_fields(mat, .true.)//' read as 0, as Abaqus reads an empty data field'
             if (decoded .and. mat%depvar >= depvar_needed) &
