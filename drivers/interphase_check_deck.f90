@@ -932,7 +932,7 @@ contains
 
       type(law_params_type) :: params
       character(len=MESSAGE_LEN) :: message
-      character(len=:), allocatable :: where, solver, summary, notes, hook, section_where, why
+      character(len=:), allocatable :: where, solver, summary, notes, hook, section_where, why, maker
       integer :: m, k, status, nfail_before, depvar_needed, normal, nm, nconstants, nempty
       logical :: decoded       !! the material's constants decode (params holds them)
       logical :: refused       !! its own or its material's lines have failed checks (named as read)
@@ -1004,6 +1004,8 @@ contains
          end if
       end if
       hook = trim(merge('VEXTERNALDB', 'UEXTERNALDB', explicit))
+      ! (the one-file source with that hook: --explicit makes the VUMAT's, with VEXTERNALDB)
+      maker = trim(merge('make-user-file.sh --explicit --uexternaldb', 'make-user-file.sh --uexternaldb           ', explicit))
       if (len_trim(section%material) == 0) then
          continue     ! named where the section is read
       else if (m == 0) then
@@ -1077,7 +1079,7 @@ contains
                   if (params%model == MODEL_MICROMECHANICAL .and. params%table == TABLE_CUSTOM_CODE) &
                      notes = notes//'; note: PROPS('//int_to_string(PROP_TABLE)//') = 1 (custom RVE table): '// &
                      'the run needs INTERPHASE_TABLE set to the table file (an absolute path: a relative one '// &
-                     'opens from the analysis'' working directory) and '//hook//' linked (make-user-file.sh --uexternaldb)'
+                     'opens from the analysis'' working directory) and '//hook//' linked ('//maker//')'
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve /= RCURVE_EQUIVALENT) &
                      notes = notes//'; note: the toughness (PROPS or R-curve file) is energy per unit crack '// &
                      'area, as measured (interphase before 2026-12 read it per unit '// &
@@ -1101,7 +1103,7 @@ contains
                   end if
                   if (params%damage_law == DAMAGE_FRACTURE .and. params%rcurve == RCURVE_TABULATED) &
                      notes = notes//'; note: tabulated R-curve: the run needs INTERPHASE_RCURVE set to the '// &
-                     'R-curve file (an absolute path) and '//hook//' linked (make-user-file.sh --uexternaldb)'
+                     'R-curve file (an absolute path) and '//hook//' linked ('//maker//')'
                   notes = notes//units_notes(params)
                end if
             end if
