@@ -179,7 +179,8 @@ contains
          if (table /= TABLE_DEFAULT_CODE .and. table /= TABLE_CUSTOM_CODE) then
             status = STATUS_BAD_TABLE_SELECTOR
             write (message, '(a,i0,a,a,a)') 'PROPS(', PROP_TABLE, ') table = ', real_text(props(PROP_TABLE)), &
-               ' is not a table selector: use 0 (built-in table) or 1 (custom table loaded at start-up)'
+               ' is not a table selector: use 0 (built-in table) or 1 (custom table loaded at start-up); the '// &
+               'micromechanical model takes no K_N, K_T (its RVE table gives them)'
             return
          end if
          call check_values(model, props(PROP_MU), props(PROP_S0_N), props(PROP_SF_N), props(PROP_S0_T), &
