@@ -312,7 +312,8 @@ contains
          '  Checks every *COHESIVE SECTION of an Abaqus deck that uses interphase (and every *SOLID SECTION', &
          '  of a *USER MATERIAL: the thin-layer mode): RESPONSE, THICKNESS,', &
          '  *USER MATERIAL constants decoded as interphase PROPS, *DEPVAR (and its DELETE=), UNSYMM,', &
-         '  *DENSITY (Explicit), *INITIAL CONDITIONS, TYPE=SOLUTION (initial state variables).', &
+         '  *DENSITY (Explicit), *INITIAL CONDITIONS, TYPE=SOLUTION (initial state variables), and no', &
+         '  keyword of Abaqus''s built-in cohesive law (*ELASTIC, TYPE=TRACTION, *DAMAGE ...) beside it.', &
          '  *INCLUDE files are read where they stand (a relative INPUT= from the deck''s folder, as the job''s).', &
          '  Exit status: 0 all checks pass, 1 a check failed, 2 a file cannot be read.', &
          '  Documented in drivers/README.md and docs/abaqus.md.'
