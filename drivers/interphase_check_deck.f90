@@ -180,6 +180,10 @@ program interphase_check_deck
       !> the first keyword of Abaqus's built-in cohesive law in its block ('' when none: the
       !> keyword as the deck writes it, with its file and line: file:line: *KEYWORD)
       character(len=512) :: built_in_law = ''
+      !> its first *ELASTIC or *HYPERELASTIC, of any type (file:line: *KEYWORD; '' when none): a
+      !> material of Abaqus's own whose cohesive sections are not interphase's when it has no
+      !> *USER MATERIAL (a brick's potential crack with the built-in law, an adhesive layer)
+      character(len=512) :: own_law = ''
       character(len=:), allocatable :: file    !! the file its lines are in (the deck or an *INCLUDE)
       character(len=16), allocatable :: options_seen(:)   !! *USER MATERIAL, *DEPVAR, *DENSITY so far
    end type material_type
@@ -520,13 +524,17 @@ contains
             end if
             ! the built-in cohesive law's keywords in a material (checked with the sections of a
             ! material that has interphase's *USER MATERIAL)
+            if (in_material .and. current > 0 .and. (trim(keyword) == 'ELASTIC' .or. trim(keyword) == 'HYPERELASTIC')) then
+               if (len_trim(materials(current)%own_law) == 0) materials(current)%own_law = &
+                  path//':'//int_to_string(lineno)//': *'//trim(clip_text(trim(text_before(line(2:), ','))))
+            end if
             if (in_material .and. current > 0 .and. any(BUILT_IN_LAW_KEYWORDS == keyword)) then
                field = ''
                if (trim(keyword) == 'ELASTIC') field = parameter_choice(parameter_names, parameter_values, 'TYPE', &
                   ELASTIC_TYPES)
                if (trim(keyword) /= 'ELASTIC' .or. field == 'TRACTION' .or. field == 'COUPLEDTRACTION') then
                   if (len_trim(materials(current)%built_in_law) == 0) materials(current)%built_in_law = &
-                     path//':'//int_to_string(lineno)//': *'//trim(clip_text(text_before(line(2:), ',')))
+                     path//':'//int_to_string(lineno)//': *'//trim(clip_text(trim(text_before(line(2:), ','))))
                   if (trim(keyword) == 'ELASTIC') materials(current)%built_in_law = &
                      trim(materials(current)%built_in_law)//', TYPE='//parameter_value(parameter_names, &
                      parameter_values, 'TYPE')
@@ -944,6 +952,21 @@ contains
       solver = merge('Abaqus/Explicit (VUMAT)', 'Abaqus/Standard (UMAT) ', explicit)
       where = section%file//':'//int_to_string(section%line)//': *'// &
          trim(merge('SOLID SECTION   ', 'COHESIVE SECTION', section%solid))//', ELSET='//trim(section%elset)
+      ! a cohesive section of a material with a law of Abaqus's own (*ELASTIC, of any type) and no
+      ! *USER MATERIAL is not interphase's (the built-in cohesive law of a brick's potential crack,
+      ! an adhesive layer): named, not checked
+      ! (a material defined twice is named as such, and its section checked as interphase's)
+      if (.not. section%solid .and. len_trim(section%material) > 0 .and. &
+          count(materials%name == section%material) == 1) then
+         do k = 1, size(materials)
+            if (materials(k)%name /= section%material) cycle
+            if (materials(k)%user_line == 0 .and. len_trim(materials(k)%own_law) > 0) then
+               write (output_unit, '(a)') where//': note: material '//trim(section%material)//' has no *USER '// &
+                  'MATERIAL but a law of Abaqus''s own ('//trim(materials(k)%own_law)//'): not interphase''s, not checked'
+               return
+            end if
+         end do
+      end if
       section_where = where
       if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
       if (.not. section%solid .and. len_trim(section%response) == 0) then
