@@ -34,15 +34,21 @@ module interphase_external_data
 contains
 
    !> Load what the environment names; `caller` ('UEXTERNALDB', 'VEXTERNALDB') heads the messages.
-   !> ok = .false. after a fatal error (already reported to the host).
+   !> Each file is loaded (or refused) on its own: a refused RVE table does not keep a good R-curve
+   !> from loading, so that a host whose message hook returns (interphase::host_stderr) runs the
+   !> materials that need only the R-curve, and a material that needs a refused file finds that
+   !> file's own error at the start of the run. ok = .false. after a fatal error (already
+   !> reported to the host).
    subroutine load_external_data(caller, ok)
       character(len=*), intent(in) :: caller
       logical, intent(out) :: ok
       character(len=:), allocatable :: path
-      ok = .true.
-      if (environment(caller, TABLE_VARIABLE, 'custom RVE table', path)) call load_table_file(caller, path, ok)
-      if (.not. ok) return
-      if (environment(caller, RCURVE_VARIABLE, 'R-curve', path)) call load_rcurve_file(caller, path, ok)
+      logical :: table_ok, rcurve_ok
+      table_ok = .true.
+      rcurve_ok = .true.
+      if (environment(caller, TABLE_VARIABLE, 'custom RVE table', path)) call load_table_file(caller, path, table_ok)
+      if (environment(caller, RCURVE_VARIABLE, 'R-curve', path)) call load_rcurve_file(caller, path, rcurve_ok)
+      ok = table_ok .and. rcurve_ok
    end subroutine load_external_data
 
    !> Load the custom RVE table from `path` (unless that file is loaded already) and report. The
