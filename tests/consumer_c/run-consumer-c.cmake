@@ -1,6 +1,7 @@
 # Install the interphase build tree into a scratch prefix, then build and run the C program
 # tests/consumer_c/consumer.c against it twice: as a C-only CMake project (find_package) and by
-# hand with pkg-config (interphase.pc). Fails on any step; pkg-config missing: a skip (SKIP_CODE 77) or a failure (strict CI).
+# hand with pkg-config (interphase.pc), and, with OTHER_FORTRAN_COMPILER, as a project that enables
+# Fortran with that compiler (not the one that built interphase). Fails on any step; pkg-config missing: a skip (SKIP_CODE 77) or a failure (strict CI).
 foreach(var INTERPHASE_BUILD CONSUMER_SOURCE WORK C_COMPILER SKIP_CODE)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "run-consumer-c.cmake: ${var} not set")
@@ -25,6 +26,14 @@ run_step("configure the C-only consumer" ${CMAKE_COMMAND} -S ${CONSUMER_SOURCE} 
          -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${BUILD_TYPE} -DCMAKE_C_COMPILER=${C_COMPILER})
 run_step("build the C-only consumer" ${CMAKE_COMMAND} --build ${WORK}/build)
 run_step("run the C-only consumer" ${WORK}/build/consumer_c)
+# the same program in a project that enables Fortran with the other tested compiler
+if(OTHER_FORTRAN_COMPILER)
+  run_step("configure the consumer with Fortran enabled (${OTHER_FORTRAN_COMPILER})" ${CMAKE_COMMAND}
+           -S ${CONSUMER_SOURCE} -B ${WORK}/build-other -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=${BUILD_TYPE}
+           -DCMAKE_C_COMPILER=${C_COMPILER} -DCONSUMER_ENABLE_FORTRAN=ON -DCMAKE_Fortran_COMPILER=${OTHER_FORTRAN_COMPILER})
+  run_step("build the consumer with Fortran enabled (${OTHER_FORTRAN_COMPILER})" ${CMAKE_COMMAND} --build ${WORK}/build-other)
+  run_step("run the consumer with Fortran enabled (${OTHER_FORTRAN_COMPILER})" ${WORK}/build-other/consumer_c)
+endif()
 
 find_program(PKG_CONFIG_EXE NAMES pkg-config pkgconf)
 if(NOT PKG_CONFIG_EXE)
