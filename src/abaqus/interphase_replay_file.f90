@@ -13,8 +13,8 @@
 !>
 !> Thread-safe: no module data; each call opens its own unit (`newunit`) on a file it creates
 !> (status 'new': two calls never write one file; of two that take the same name at the same
-!> instant, one writes none, and with flang 19, whose failed open as new deletes the existing
-!> file, the other's can be lost too).
+!> instant, the one whose open fails takes the next copy's name, and with flang 19, whose failed
+!> open as new deletes the existing file, the other's can be lost).
 module interphase_replay_file
    use interphase_kinds, only: dp
    use interphase_enums, only: TABLE_CUSTOM_CODE
@@ -31,6 +31,10 @@ module interphase_replay_file
    integer, parameter :: REPLAY_MAX_PROPS = 64, REPLAY_MAX_STATEV = 64
    !> Most files of one name (the name itself, then -2 ... -REPLAY_MAX_COPIES).
    integer, parameter :: REPLAY_MAX_COPIES = 999
+   !> Most failed opens of one call (each tries the next copy's name) before it gives up: a name
+   !> another thread took between the look-up and the open is retried, a folder that cannot take
+   !> a file at all costs only these.
+   integer, parameter :: REPLAY_MAX_OPEN_FAILURES = 8
 
 contains
 
@@ -55,7 +59,8 @@ contains
       character(len=64) :: name
       character(len=8) :: copy
       character(len=256) :: iomsg
-      integer :: unit, ios, n
+      character(len=:), allocatable :: first_failure
+      integer :: unit, ios, n, failed_opens
       logical :: exists
 
       written = ''
@@ -64,6 +69,7 @@ contains
       given = folder
       write (name, '(a,a,a,i0,a,i0,a,i0)') 'interphase-replay-', source, '-e', noel, '-p', npt, '-k', kinc
       if (folder(len(folder):len(folder)) /= '/') folder = folder//'/'
+      failed_opens = 0
       do n = 1, REPLAY_MAX_COPIES
          copy = ''
          if (n > 1) write (copy, '(a,i0)') '-', n
@@ -83,13 +89,17 @@ contains
             cycle
          end if
          ! status 'new': a call that takes the same name at the same instant (another thread) makes
-         ! this open fail, and this call writes none, rather than both writing one file
+         ! this open fail, rather than both writing one file; this call then tries the next copy's
+         ! name, as for a name taken before the look-up
          iomsg = ''
          open (newunit=unit, file=path, status='new', action='write', form='formatted', iostat=ios, iomsg=iomsg)
          if (ios == 0) exit
-         ! no folder, not writable, or the name taken just now
-         if (present(why)) why = 'cannot create '//trim(name)//trim(copy)//'.nml in '//REPLAY_VARIABLE//' = '// &
-            given//': '//trim(iomsg)
+         ! no folder, not writable, or the name taken just now: the first failure is the one named
+         if (failed_opens == 0) first_failure = 'cannot create '//trim(name)//trim(copy)//'.nml in '// &
+            REPLAY_VARIABLE//' = '//given//': '//trim(iomsg)
+         failed_opens = failed_opens + 1
+         if (failed_opens < REPLAY_MAX_OPEN_FAILURES .and. n < REPLAY_MAX_COPIES) cycle
+         if (present(why)) why = first_failure
          return
       end do
       call write_replay_group(unit, source, message, props, statev, stress, sse, spd, stran, dstran, &
