@@ -114,8 +114,9 @@ program interphase_calibrate
    end if
    if (nint(run%props(PROP_MODEL)) /= MODEL_MICROMECHANICAL) &
       call fail(case_path//": the case must use model = 'micromechanical' (the calibration maps a "// &
-      "micromechanical material onto the simplified model; a simplified material's peaks are K_N s0_N and K_T s0_T "// &
-      "and its fracture energies (1/2) K_N s0_N sf_N and (1/2) K_T s0_T sf_T: interphase-point replays them)")
+      "micromechanical material onto the simplified model; under the displacement-driven law a simplified material's "// &
+      "peaks are K_N s0_N and K_T s0_T and its fracture energies (1/2) K_N s0_N sf_N and (1/2) K_T s0_T sf_T: "// &
+      "interphase-point replays them)")
    ! the tests are quasi-static, one second a step: a viscous damage would depend on the step
    call from_props(run%props, params, status, why)
    if (status /= STATUS_OK) call fail(case_path//': '//trim(why))

@@ -108,14 +108,30 @@ program interphase_check_deck
    !> The values of *ELASTIC's TYPE= (Abaqus Keywords Guide), against which an abbreviation is read.
    character(len=NAME_LEN), parameter :: ELASTIC_TYPES(8) = [character(len=NAME_LEN) :: 'ANISOTROPIC', &
       'COUPLEDTRACTION', 'ENGINEERINGCONSTANTS', 'ISOTROPIC', 'LAMINA', 'ORTHOTROPIC', 'SHEAR', 'TRACTION']
-   !> Material options (Abaqus Keywords Guide; the common ones): a keyword among them, after
-   !> *MATERIAL, is still of that material; any other keyword ends the material's block (so that a
-   !> *DAMAGE INITIATION of a *SURFACE INTERACTION is not taken for the material's).
+   !> Material options (the Abaqus Keywords Guide's material data keywords and their suboptions): a
+   !> keyword among them, after *MATERIAL, is still of that material; any other keyword ends the
+   !> material's block (so that a *DAMAGE INITIATION of a *SURFACE INTERACTION is not taken for the
+   !> material's).
    character(len=NAME_LEN), parameter :: MATERIAL_OPTIONS(*) = [character(len=NAME_LEN) :: 'USERMATERIAL', &
       'DEPVAR', 'DENSITY', 'ELASTIC', 'DAMAGEINITIATION', 'DAMAGEEVOLUTION', 'DAMAGESTABILIZATION', 'EXPANSION', &
       'DAMPING', 'CONDUCTIVITY', 'SPECIFICHEAT', 'LATENTHEAT', 'PLASTIC', 'USERDEFINEDFIELD', &
       'USEROUTPUTVARIABLES', 'VISCOELASTIC', 'HYPERELASTIC', 'INELASTICHEATFRACTION', 'MASSDIFFUSION', &
-      'INCLUDE']
+      'INCLUDE', 'ACOUSTICMEDIUM', 'ANISOTROPICHYPERELASTIC', 'BIAXIALTESTDATA', 'BRITTLECRACKING', &
+      'BRITTLEFAILURE', 'BRITTLESHEAR', 'CAPCREEP', 'CAPHARDENING', 'CAPPLASTICITY', &
+      'CASTIRONCOMPRESSIONHARDENING', 'CASTIRONPLASTICITY', 'CASTIRONTENSIONHARDENING', 'CLAYHARDENING', &
+      'CLAYPLASTICITY', 'COMBINEDTESTDATA', 'CONCRETE', 'CONCRETECOMPRESSIONDAMAGE', &
+      'CONCRETECOMPRESSIONHARDENING', 'CONCRETEDAMAGEDPLASTICITY', 'CONCRETETENSIONDAMAGE', &
+      'CONCRETETENSIONSTIFFENING', 'CREEP', 'CREEPSTRAINRATECONTROL', 'CRUSHABLEFOAM', 'CRUSHABLEFOAMHARDENING', &
+      'CYCLEDPLASTIC', 'CYCLICHARDENING', 'DEFORMATIONPLASTICITY', 'DIELECTRIC', 'DIFFUSIVITY', 'DRUCKERPRAGER', &
+      'DRUCKERPRAGERCREEP', 'DRUCKERPRAGERHARDENING', 'ELECTRICALCONDUCTIVITY', 'EOS', 'EOSCOMPACTION', &
+      'FAILSTRAIN', 'FAILSTRESS', 'FAILURERATIOS', 'FLUIDLEAKOFF', 'GAPFLOW', 'GEL', 'HEATGENERATION', &
+      'HYPERFOAM', 'HYPOELASTIC', 'JOULEHEATFRACTION', 'LOWDENSITYFOAM', 'MAGNETICPERMEABILITY', 'MOHRCOULOMB', &
+      'MOHRCOULOMBHARDENING', 'MOISTURESWELLING', 'MULLINSEFFECT', 'ORNL', 'PERMEABILITY', 'PIEZOELECTRIC', &
+      'PLANARTESTDATA', 'PLASTICAXIAL', 'PLASTICM1', 'PLASTICM2', 'PLASTICTORQUE', 'POROUSBULKMODULI', &
+      'POROUSELASTIC', 'POROUSFAILURECRITERIA', 'POROUSMETALPLASTICITY', 'POTENTIAL', 'RATEDEPENDENT', 'RATIOS', &
+      'SHEARFAILURE', 'SHEARRETENTION', 'SHEARTESTDATA', 'SOFTROCKHARDENING', 'SOFTROCKPLASTICITY', 'SOLUBILITY', &
+      'SORPTION', 'SWELLING', 'TENSILEFAILURE', 'TENSIONSTIFFENING', 'TRS', 'UNIAXIALTESTDATA', 'VISCOSITY', &
+      'VOLUMETRICTESTDATA', 'HYSTERESIS']
    !> The values of *INITIAL CONDITIONS' TYPE= (Abaqus Keywords Guide), against which an
    !> abbreviation is read: only TYPE=SOLUTION, the state variables, is checked.
    character(len=NAME_LEN), parameter :: INITIAL_CONDITION_TYPES(*) = [character(len=NAME_LEN) :: &
@@ -505,6 +521,13 @@ contains
                   end if
                end do
             end if
+            ! a material's block: *MATERIAL and the material options after it (read before a
+            ! thermal *USER MATERIAL is renamed below: it is a material option too)
+            if (trim(keyword) == 'MATERIAL') then
+               in_material = .true.
+            else if (.not. any(MATERIAL_OPTIONS == keyword)) then
+               in_material = .false.
+            end if
             ! *USER MATERIAL, TYPE=THERMAL is a UMATHT's (heat transfer), not interphase's: its
             ! constants are neither decoded nor counted as the material's *USER MATERIAL
             if (trim(keyword) == 'USERMATERIAL') then
@@ -515,12 +538,6 @@ contains
             if (len_trim(repeated) > 0) then
                call record_failure(path//':'//int_to_string(lineno)//': *'//trim(text_before(line(2:), ','))//': parameter '// &
                   trim(repeated)//' given twice: "'//clip_text(trim(line))//'"', nfail)
-            end if
-            ! a material's block: *MATERIAL and the material options after it
-            if (trim(keyword) == 'MATERIAL') then
-               in_material = .true.
-            else if (.not. any(MATERIAL_OPTIONS == keyword)) then
-               in_material = .false.
             end if
             ! the built-in cohesive law's keywords in a material (checked with the sections of a
             ! material that has interphase's *USER MATERIAL)
@@ -961,6 +978,8 @@ contains
          do k = 1, size(materials)
             if (materials(k)%name /= section%material) cycle
             if (materials(k)%user_line == 0 .and. len_trim(materials(k)%own_law) > 0) then
+               ! (a field of its lines that is not one number is refused all the same: Abaqus would)
+               if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
                write (output_unit, '(a)') where//': note: material '//trim(section%material)//' has no *USER '// &
                   'MATERIAL but a law of Abaqus''s own ('//trim(materials(k)%own_law)//'): not interphase''s, not checked'
                return

@@ -70,6 +70,7 @@ contains
       write (name, '(a,a,a,i0,a,i0,a,i0)') 'interphase-replay-', source, '-e', noel, '-p', npt, '-k', kinc
       if (folder(len(folder):len(folder)) /= '/') folder = folder//'/'
       failed_opens = 0
+      first_failure = ''
       do n = 1, REPLAY_MAX_COPIES
          copy = ''
          if (n > 1) write (copy, '(a,i0)') '-', n
