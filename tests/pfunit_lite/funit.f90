@@ -67,7 +67,11 @@ module funit
    public :: Matchable
    public :: funit_suite_scope
    ! (types)
+   !> Where a failure happened, as pFUnit's (its components in pFUnit's order, so that
+   !> SourceLocation(file, line) constructs one): `throw` reports it.
    type :: SourceLocation
+      character(len=256) :: fileName = '(unknown location)'
+      integer :: lineNumber = 0
    end type SourceLocation
    type :: Test
    end type Test
@@ -176,8 +180,10 @@ module funit
    end interface
    ! (generic interfaces where pFUnit's names are generics, which a suite may extend: each with
    ! one placeholder specific, a subroutine or a function as pFUnit's, that no call matches ...)
+   ! (throw is pFUnit's, not a placeholder: a message and an optional location, and the running
+   ! test fails; a suite's own specific taking a message alone is ambiguous here, as with pFUnit)
    interface throw
-      module procedure placeholder_throw
+      module procedure throw_message
    end interface throw
    interface catch
       module procedure placeholder_catch
@@ -200,8 +206,10 @@ module funit
    interface is
       module procedure placeholder_is
    end interface is
+   ! (is, equal_to and not take any value, as pFUnit's specifics do (class(*); equal_to a scalar
+   ! or a 1-D array): a suite's own specific of these generics is ambiguous here, as with pFUnit)
    interface equal_to
-      module procedure placeholder_equal_to
+      module procedure placeholder_equal_to, placeholder_equal_to_1d
    end interface equal_to
    interface near
       module procedure placeholder_near
@@ -356,11 +364,17 @@ contains
       associate (unused => unusable)
       end associate
    end subroutine assertNotAll
-   subroutine placeholder_throw(unusable)
-      type(keyword_enforcer_type), intent(in) :: unusable
-      associate (unused => unusable)
-      end associate
-   end subroutine placeholder_throw
+   !> throw(message[, location]): the running test fails with the message (pFUnit's exception),
+   !> at the location given, else at the last assertion's.
+   subroutine throw_message(message, location)
+      character(len=*), intent(in) :: message
+      type(SourceLocation), intent(in), optional :: location
+      if (present(location)) then
+         location_file = trim(location%fileName)
+         location_line = location%lineNumber
+      end if
+      call conclude(.false., 'throw', message)
+   end subroutine throw_message
    subroutine placeholder_assert_fail(unusable)
       type(keyword_enforcer_type), intent(in) :: unusable
       associate (unused => unusable)
@@ -428,20 +442,27 @@ contains
       end associate
       placeholder = .false.
    end function placeholder_catch
-   function placeholder_is(unusable) result(placeholder)
-      type(keyword_enforcer_type), intent(in) :: unusable
+   function placeholder_is(value) result(placeholder)
+      class(*), intent(in) :: value
       type(Is) :: placeholder
-      associate (unused => unusable)
+      associate (unused => value)
       end associate
       placeholder = Is()
    end function placeholder_is
-   function placeholder_equal_to(unusable) result(placeholder)
-      type(keyword_enforcer_type), intent(in) :: unusable
+   function placeholder_equal_to(operand) result(placeholder)
+      class(*), intent(in) :: operand
       type(IsEqual) :: placeholder
-      associate (unused => unusable)
+      associate (unused => operand)
       end associate
       placeholder = IsEqual()
    end function placeholder_equal_to
+   function placeholder_equal_to_1d(operand) result(placeholder)
+      class(*), intent(in) :: operand(:)
+      type(IsEqual) :: placeholder
+      associate (unused => operand)
+      end associate
+      placeholder = IsEqual()
+   end function placeholder_equal_to_1d
    function placeholder_near(unusable) result(placeholder)
       type(keyword_enforcer_type), intent(in) :: unusable
       type(IsNear) :: placeholder

@@ -1,8 +1,9 @@
 # Preprocess a .pf file and compile it against pfunit_lite's funit module: the compilation must
 # fail with a message matching EXPECT (a construct real pFUnit refuses at compile time must not
-# compile here either).
+# compile here either). With -DWARNING_ONLY=ON it must compile, with a warning matching EXPECT (a
+# construct that real pFUnit's funit makes a warning with this compiler: the same warning here).
 #   cmake -DPREPROCESS=<pf_preprocess> -DPF=<file.pf> -DCOMPILER=<fc> -DMODULE_DIR=<funit mod dir>
-#         -DWORK=<dir> -DEXPECT=<regex> -P compile_must_fail.cmake
+#         -DWORK=<dir> -DEXPECT=<regex> [-DWARNING_ONLY=ON] -P compile_must_fail.cmake
 cmake_minimum_required(VERSION 3.20)
 foreach(var IN ITEMS PREPROCESS PF COMPILER MODULE_DIR WORK EXPECT)
   if(NOT DEFINED ${var})
@@ -19,6 +20,15 @@ endif()
 execute_process(COMMAND "${COMPILER}" -c "-I${MODULE_DIR}" "${WORK}/${name}.F90" -o "${WORK}/${name}.o"
   WORKING_DIRECTORY "${WORK}" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("---- compiler output for ${PF}\n${out}${err}----")
+if(WARNING_ONLY)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${PF} did not compile, but real pFUnit's funit gives this compiler a warning only")
+  endif()
+  if(NOT "${out}${err}" MATCHES "${EXPECT}")
+    message(FATAL_ERROR "${PF} compiled without the warning: ${EXPECT}")
+  endif()
+  return()
+endif()
 if(status EQUAL 0)
   message(FATAL_ERROR "${PF} compiled, but real pFUnit refuses it")
 endif()
