@@ -70,8 +70,8 @@ module funit
    !> Where a failure happened, as pFUnit's (its components in pFUnit's order, so that
    !> SourceLocation(file, line) constructs one): `throw` reports it.
    type :: SourceLocation
-      character(len=256) :: fileName = '(unknown location)'
-      integer :: lineNumber = 0
+      character(len=255) :: fileName = '<unknown file>'
+      integer :: lineNumber = -1
    end type SourceLocation
    type :: Test
    end type Test
@@ -365,7 +365,7 @@ contains
       end associate
    end subroutine assertNotAll
    !> throw(message[, location]): the running test fails with the message (pFUnit's exception),
-   !> at the location given, else at the last assertion's.
+   !> at the location given (else '(unknown location)': the generated code marks assertions only).
    subroutine throw_message(message, location)
       character(len=*), intent(in) :: message
       type(SourceLocation), intent(in), optional :: location

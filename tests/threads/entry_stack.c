@@ -61,6 +61,13 @@ static int material_props(int material, double *props) {
    return (int)(n / sizeof(double));
 }
 
+/* a case whose call did not end as its name says (a failure where none was meant, or none where
+ * one was): the stack it measured is not that of the path it names (exit status 2) */
+static void wrong_outcome(const struct call_case *c, const char *what) {
+   fprintf(stderr, "entry_stack: %s: %s, so its stack is not that of the path it names\n", c->name, what);
+   exit(2);
+}
+
 #define NB 64
 static void call_vumat(const struct call_case *c) {
    static const int ndir = 1, nstatev = 9, nfieldv = 1, lanneal = 0;
@@ -89,6 +96,13 @@ static void call_vumat(const struct call_case *c) {
           coord, charlength, props, density, strain_inc, relspin, temp, stretch, defgrad, field, stress_old,
           state_old, e_int_old, e_inel_old, temp, stretch, defgrad, field, stress_new, state_new, e_int_new,
           e_inel_new, sizeof cmname);
+   /* STATEV(9), the failure flag: 1 at the failed point only, else 0 */
+   for (int i = 0; i < NB; i++) {
+      const double flag = state_new[8 * NB + i];
+      if (c->fail && i == 0 && flag != 1.0) wrong_outcome(c, "its first point did not fail");
+      if ((!c->fail || i > 0) && flag != 0.0) wrong_outcome(c, "a point failed");
+      if ((!c->fail || i > 0) && !isfinite(stress_new[i])) wrong_outcome(c, "a traction is not finite");
+   }
    free(a);
 }
 
@@ -113,6 +127,10 @@ static void call_umat(const struct call_case *c) {
          stran, dstran, time, &dtime, &zero, &zero, &zero, &zero, cmname, &ndi, &nshr, &ntens, &nstatv, props,
          &nprops, coords, drot, &pnewdt, &celent, dfgrd, dfgrd, &noel, &npt, &layer, &kspt, jstep, &kinc,
          sizeof cmname);
+   /* a failed call asks for a smaller increment (PNEWDT < 1); an update leaves PNEWDT >= 1 */
+   if (c->fail && !(pnewdt < 1)) wrong_outcome(c, "the call did not fail");
+   if (!c->fail && !(pnewdt >= 1)) wrong_outcome(c, "the call failed");
+   if (!c->fail && !(stress[0] > 0)) wrong_outcome(c, "the opening gave no normal traction");
    free(a);
 }
 
