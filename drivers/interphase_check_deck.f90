@@ -363,6 +363,7 @@ contains
       character(len=MESSAGE_LEN) :: message
       character(len=80) :: keyword, field, repeated
       character(len=:), allocatable :: ambiguous     !! an ambiguous abbreviation's reading, or ''
+      character(len=:), allocatable :: keyword_at    !! file:line: *KEYWORD of a keyword line
       character(len=80) :: keyword_text        !! the keyword as the deck writes it (for messages)
       !> the keyword before an *INCLUDE line, which the included data lines continue
       character(len=80) :: previous_keyword, previous_keyword_text
@@ -541,22 +542,21 @@ contains
                call record_failure(path//':'//int_to_string(lineno)//': *'//trim(text_before(line(2:), ','))//': parameter '// &
                   trim(repeated)//' given twice: "'//clip_text(trim(line))//'"', nfail)
             end if
-            ! the built-in cohesive law's keywords in a material (checked with the sections of a
-            ! material that has interphase's *USER MATERIAL)
-            if (in_material .and. current > 0 .and. (trim(keyword) == 'ELASTIC' .or. trim(keyword) == 'HYPERELASTIC')) then
-               if (len_trim(materials(current)%own_law) == 0) materials(current)%own_law = &
-                  path//':'//int_to_string(lineno)//': *'//trim(clip_text(trim(text_before(line(2:), ','))))
-            end if
-            if (in_material .and. current > 0 .and. any(BUILT_IN_LAW_KEYWORDS == keyword)) then
-               field = ''
-               if (trim(keyword) == 'ELASTIC') field = parameter_choice(parameter_names, parameter_values, 'TYPE', &
-                  ELASTIC_TYPES)
-               if (trim(keyword) /= 'ELASTIC' .or. field == 'TRACTION' .or. field == 'COUPLEDTRACTION') then
-                  if (len_trim(materials(current)%built_in_law) == 0) materials(current)%built_in_law = &
-                     path//':'//int_to_string(lineno)//': *'//trim(clip_text(trim(text_before(line(2:), ','))))
-                  if (trim(keyword) == 'ELASTIC') materials(current)%built_in_law = &
-                     trim(materials(current)%built_in_law)//', TYPE='//parameter_value(parameter_names, &
-                     parameter_values, 'TYPE')
+            ! a law of Abaqus's own in a material (its first *ELASTIC or *HYPERELASTIC), and the
+            ! built-in cohesive law's keywords there (checked with the sections of a material that has
+            ! interphase's *USER MATERIAL): each the first one, as file:line: *KEYWORD[, TYPE=...]
+            if (in_material .and. current > 0) then
+               keyword_at = path//':'//int_to_string(lineno)//': *'//trim(clip_text(trim(text_before(line(2:), ','))))
+               if (len_trim(materials(current)%own_law) == 0 .and. &
+                   (trim(keyword) == 'ELASTIC' .or. trim(keyword) == 'HYPERELASTIC')) materials(current)%own_law = keyword_at
+               if (len_trim(materials(current)%built_in_law) == 0 .and. any(BUILT_IN_LAW_KEYWORDS == keyword)) then
+                  if (trim(keyword) /= 'ELASTIC') then
+                     materials(current)%built_in_law = keyword_at
+                  else if (any(parameter_choice(parameter_names, parameter_values, 'TYPE', ELASTIC_TYPES) == &
+                           [character(len=NAME_LEN) :: 'TRACTION', 'COUPLEDTRACTION'])) then
+                     materials(current)%built_in_law = keyword_at//', TYPE='// &
+                        parameter_value(parameter_names, parameter_values, 'TYPE')
+                  end if
                end if
             end if
             select case (trim(keyword))
@@ -977,16 +977,17 @@ contains
       ! (a material defined twice is named as such, and its section checked as interphase's)
       if (.not. section%solid .and. len_trim(section%material) > 0 .and. &
           count(materials%name == section%material) == 1) then
+         ! (the material's index by a loop: findloc on the component materials%name would copy it)
          do k = 1, size(materials)
-            if (materials(k)%name /= section%material) cycle
-            if (materials(k)%user_line == 0 .and. len_trim(materials(k)%own_law) > 0) then
-               ! (a field of its lines that is not one number is refused all the same: Abaqus would)
-               if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
-               write (output_unit, '(a)') where//': note: material '//trim(section%material)//' has no *USER '// &
-                  'MATERIAL but a law of Abaqus''s own ('//trim(materials(k)%own_law)//'): not interphase''s, not checked'
-               return
-            end if
+            if (materials(k)%name == section%material) exit
          end do
+         if (materials(k)%user_line == 0 .and. len_trim(materials(k)%own_law) > 0) then
+            ! (a field of its lines that is not one number is refused all the same: Abaqus would)
+            if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
+            write (output_unit, '(a)') where//': note: material '//trim(section%material)//' has no *USER '// &
+               'MATERIAL but a law of Abaqus''s own ('//trim(materials(k)%own_law)//'): not interphase''s, not checked'
+            return
+         end if
       end if
       section_where = where
       if (len_trim(section%bad_data) > 0) call record_failure(trim(section%bad_data), nfail)
