@@ -410,6 +410,7 @@ contains
       allocate (materials(0), sections(0), solution_lines(64), other_materials(0))
       allocate (controls_names(0), controls_viscosity(0))
       in_material = .false.
+      keyword_at = ''
       other_sections = .false.
       calculix = .false.
       solution_block = 0
