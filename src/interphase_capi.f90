@@ -35,8 +35,8 @@ module interphase_capi
       STATUS_SEPARATION_OUT_OF_RANGE
    implicit none
    private
-   public :: interphase_update_c, interphase_update_dt_c, interphase_status_message_c, interphase_load_table_c, &
-      interphase_load_rcurve_c, interphase_run_c, interphase_run_history_c
+   public :: interphase_update_c, interphase_update_dt_c, interphase_update_increment_c, interphase_status_message_c, &
+      interphase_load_table_c, interphase_load_rcurve_c, interphase_run_c, interphase_run_history_c
 
    !> The update of interphase_run_history: the kernel as the Abaqus UMAT calls it (the update at
    !> STRAN + DSTRAN with DTIME, the dissipated energy accumulated as its SPD, the state carried
@@ -119,10 +119,47 @@ contains
          stored_energy, detail, detail_len, dt)
    end function interphase_update_dt_c
 
-   !> The update behind both C entry points; `dt` absent: interphase_update (no time increment,
-   !> which a material with viscous regularisation refuses).
+   !> C: `int interphase_update_increment(const double *props, int nprops, int ntens,
+   !>    const double *state_old, const double *separation_old, const double *separation,
+   !>    const double *dt, double *traction, double *tangent, double *state_new,
+   !>    double *stored_energy, char *detail, size_t detail_len)`: interphase_update (dt NULL) or
+   !> interphase_update_dt (*dt) given also the separation at the start of the increment, which
+   !> a crack that closes within the increment needs: its friction starts from the slip where the
+   !> faces met (docs/theory.md, 'An increment across which the crack closes'), as in the UMAT,
+   !> the VUMAT and interphase_run.
+   function interphase_update_increment_c(props, nprops, ntens, state_old, separation_old, separation, dt, &
+         traction, tangent, state_new, stored_energy, detail, detail_len) result(status) &
+         bind(C, name="interphase_update_increment")
+      integer(c_int), value, intent(in) :: nprops          !! number of PROPS (docs/abaqus.md)
+      type(c_ptr), value, intent(in) :: props              !! nprops doubles: PROPS, docs/abaqus.md
+      integer(c_int), value, intent(in) :: ntens           !! 2 (2-D) or 3 (3-D)
+      type(c_ptr), value, intent(in) :: state_old          !! state_slots(params) doubles
+      type(c_ptr), value, intent(in) :: separation_old     !! ntens doubles: at the start of the increment (mm)
+      type(c_ptr), value, intent(in) :: separation         !! ntens doubles: at its end (mm)
+      type(c_ptr), value, intent(in) :: dt                 !! one double, the time increment (s), or NULL
+      type(c_ptr), value, intent(in) :: traction           !! out: ntens doubles (MPa)
+      type(c_ptr), value, intent(in) :: tangent            !! out: ntens*ntens doubles, row-major (MPa/mm)
+      type(c_ptr), value, intent(in) :: state_new          !! out: state_slots(params) doubles
+      type(c_ptr), value, intent(in) :: stored_energy      !! out: one double, stored energy per unit area (N/mm)
+      type(c_ptr), value, intent(in) :: detail             !! char buffer or NULL
+      integer(c_size_t), value, intent(in) :: detail_len   !! its size in bytes
+      integer(c_int) :: status
+      real(c_double), pointer :: dt_value
+      if (c_associated(dt)) then
+         call c_f_pointer(dt, dt_value)
+         status = capi_update(props, nprops, ntens, state_old, separation, traction, tangent, state_new, &
+            stored_energy, detail, detail_len, dt_value, separation_old)
+      else
+         status = capi_update(props, nprops, ntens, state_old, separation, traction, tangent, state_new, &
+            stored_energy, detail, detail_len, separation_old_c=separation_old)
+      end if
+   end function interphase_update_increment_c
+
+   !> The update behind the C entry points; `dt` absent: interphase_update (no time increment,
+   !> which a material with viscous regularisation refuses); `separation_old_c` present:
+   !> interphase_update_increment (the separation at the start of the increment).
    function capi_update(props_c, nprops, ntens, state_old_c, separation_c, traction_c, tangent_c, &
-         state_new_c, stored_energy_c, detail, detail_len, dt) result(status)
+         state_new_c, stored_energy_c, detail, detail_len, dt, separation_old_c) result(status)
       integer(c_int), intent(in) :: nprops
       type(c_ptr), intent(in) :: props_c, state_old_c, separation_c, traction_c, tangent_c, state_new_c, &
          stored_energy_c                                   !! the C arrays (NULL refused)
@@ -130,13 +167,14 @@ contains
       type(c_ptr), intent(in) :: detail
       integer(c_size_t), intent(in) :: detail_len
       real(c_double), intent(in), optional :: dt
+      type(c_ptr), intent(in), optional :: separation_old_c   !! the C array (NULL refused)
       integer(c_int) :: status
 
       real(c_double), pointer :: props(:), state_old(:), separation(:), traction(:), tangent(:), state_new(:), &
-         stored_energy
+         stored_energy, separation_old(:)
       type(law_params_type) :: params
       type(interface_state_type) :: old, new
-      real(dp) :: s(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS)
+      real(dp) :: s(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS), s_old(3)
       integer :: code, i, j, n, nsv
       logical :: viscous
       character(len=MESSAGE_LEN) :: message
@@ -149,6 +187,13 @@ contains
       if (code /= STATUS_OK) then
          call finish()
          return
+      end if
+      if (present(separation_old_c)) then
+         call refuse_null([separation_old_c], [character(len=14) :: 'separation_old'], code, message)
+         if (code /= STATUS_OK) then
+            call finish()
+            return
+         end if
       end if
       call c_f_pointer(props_c, props, [max(nprops, 0_c_int)])
       call decode_material(props, nprops, ntens, 'the C API', params, code, message)
@@ -186,7 +231,21 @@ contains
          end if
       end if
       s(1:n) = separation(1:n)
-      call update_point(params, old, n, s, t, k, new, psi, code, dt)
+      if (present(separation_old_c)) then
+         call c_f_pointer(separation_old_c, separation_old, [n])
+         if (.not. all(is_within(separation_old(1:n), SEPARATION_MAX))) then
+            code = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, &
+               all(is_finite(separation_old(1:n))))
+            message = 'separation_old: '//separation_failure(code, separation_old(1:n))
+            call finish()
+            return
+         end if
+         s_old = 0.0_dp
+         s_old(1:n) = separation_old(1:n)
+         call update_point(params, old, n, s, t, k, new, psi, code, dt, s_old)
+      else
+         call update_point(params, old, n, s, t, k, new, psi, code, dt)
+      end if
       ! (a viscous material without dt was refused above, and a dt given was checked: the update
       ! returns no STATUS_BAD_TIME_INCREMENT here)
       if (code == STATUS_RCURVE_OUT_OF_RANGE) then
@@ -263,7 +322,7 @@ contains
       real(c_double), pointer :: props_f(:), separations(:), tractions(:), states(:), stored(:), dissipated(:), &
          times(:), tangents(:)
       integer(c_size_t), pointer :: done
-      real(dp) :: s(3), ds(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS), dt
+      real(dp) :: s(3), ds(3), t(3), k(3, 3), psi, sv(NSTATV_VISCOUS), dt, s_old(3)
       integer(c_size_t) :: row, n_done, at
       integer :: code, i, j, n, nsv, ios
       logical :: viscous, timed, dt_ok
@@ -331,11 +390,14 @@ contains
       if (timed) call c_f_pointer(time, times, [nrows])
       if (c_associated(tangent)) call c_f_pointer(tangent, tangents, [nrows*int(n*n, c_size_t)])
       n_done = 1
+      s_old = 0.0_dp
       do row = 2, nrows
          at = (row - 1)*n                 ! offset of this row in the ntens-wide arrays
          ! the UMAT's increment: DSTRAN = s[i] - s[i-1], the separation STRAN + DSTRAN
          ds(1:n) = separations(at + 1:at + n) - separations(at - n + 1:at)
          s(1:n) = separations(at - n + 1:at) + ds(1:n)
+         ! (the row before: the start of the increment, for a crack that closes within it)
+         s_old(1:n) = separations(at - n + 1:at)
          if (timed) then
             ! the times finite, their step finite (a step beyond the largest double is not
             ! formed) and not negative, whatever the material (only viscous regularisation reads
@@ -353,9 +415,9 @@ contains
                call finish()
                return
             end if
-            call update_point(params, old, n, s, t, k, new, psi, code, dt)
+            call update_point(params, old, n, s, t, k, new, psi, code, dt, s_old)
          else
-            call update_point(params, old, n, s, t, k, new, psi, code)
+            call update_point(params, old, n, s, t, k, new, psi, code, s_old=s_old)
          end if
          if (code /= STATUS_OK) then
             ! (the messages name the row's separation as given: s is the previous row's plus the
@@ -651,7 +713,7 @@ contains
       ds(1:n) = separation_new - point%separation(1:n)
       s(1:n) = point%separation(1:n) + ds(1:n)
       dt = time_new - point%time
-      call interface_update(law%params, old, s(1:n), t(1:n), tangent, new, psi, status, dt)
+      call interface_update(law%params, old, s(1:n), t(1:n), tangent, new, psi, status, dt, point%separation(1:n))
       if (status == STATUS_BAD_TIME_INCREMENT) then
          law%detail = 'dt ='//es_list([dt], 4)//' s: viscous regularisation needs a finite dt >= 0'
          fatal = .true.

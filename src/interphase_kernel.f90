@@ -45,7 +45,7 @@ module interphase_kernel
    use interphase_state, only: interface_state_type
    implicit none
    private
-   public :: interface_update, update_point
+   public :: interface_update, update_point, closes_within
 
    !> The model the included coefficient providers serve (interphase_coefficients_at.inc): every
    !> model, the one PROPS select.
@@ -55,7 +55,7 @@ contains
 
    !> Update one interface point from the old state and the separation at the end of the
    !> increment. On a non-zero status the outputs are undefined and must not be used.
-   pure subroutine interface_update(params, old, s, traction, tangent, new, psi, status, dt)
+   pure subroutine interface_update(params, old, s, traction, tangent, new, psi, status, dt, s_old)
       type(law_params_type), intent(in) :: params        !! material parameters
       type(interface_state_type), intent(in) :: old      !! state at the start of the increment
       real(dp), intent(in) :: s(:)                       !! separation (s_N, s_T[, s_T2]) (mm)
@@ -67,8 +67,14 @@ contains
       !> time increment (s): needed with viscous regularisation (params%viscosity > 0), where it
       !> must be finite and >= 0 (else STATUS_BAD_TIME_INCREMENT); not used otherwise
       real(dp), intent(in), optional :: dt
+      !> separation at the start of the increment (mm), same order and size as s: where the
+      !> state at the start is open and the crack closes within the increment, the friction
+      !> step starts from the slip where s_N passed through zero on the straight path from s_old
+      !> to s (docs/theory.md, 'An increment across which the crack closes'); without it, from
+      !> the state's slip
+      real(dp), intent(in), optional :: s_old(:)
 
-      real(dp) :: s3(3), traction3(3), tangent3(3, 3)
+      real(dp) :: s3(3), traction3(3), tangent3(3, 3), s_old3(3)
       integer :: ntens, j
 
       ntens = size(s)
@@ -79,7 +85,23 @@ contains
       s3(1) = s(1)
       s3(2) = s(2)
       if (ntens == 3) s3(3) = s(3)
-      call update_point(params, old, ntens, s3, traction3, tangent3, new, psi, status, dt)
+      if (present(s_old)) then
+         if (size(s_old) /= ntens) then
+            status = STATUS_BAD_NTENS
+            return
+         end if
+         if (.not. all_within(ntens, s_old, SEPARATION_MAX)) then
+            status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s_old)))
+            return
+         end if
+         s_old3(1) = s_old(1)
+         s_old3(2) = s_old(2)
+         s_old3(3) = 0.0_dp
+         if (ntens == 3) s_old3(3) = s_old(3)
+         call update_point(params, old, ntens, s3, traction3, tangent3, new, psi, status, dt, s_old3)
+      else
+         call update_point(params, old, ntens, s3, traction3, tangent3, new, psi, status, dt)
+      end if
       if (status /= STATUS_OK) return
       ! (component by component, the 2-D and 3-D cases written apart: with array sections of a
       ! run-time extent GCC's link-time inlining warns of writes beyond a caller's arrays)
@@ -101,7 +123,7 @@ contains
    !> `interface_update` on arrays of fixed size (the first NTENS components used), assigning
    !> every component of `new`: no descriptors and no default initialisation at the call (the
    !> UMAT's entry). On a non-zero status the outputs are undefined and must not be used.
-   pure subroutine update_point(params, old, ntens, s, traction, tangent, new, psi, status, dt)
+   pure subroutine update_point(params, old, ntens, s, traction, tangent, new, psi, status, dt, s_old)
       type(law_params_type), intent(in) :: params        !! material parameters
       type(interface_state_type), intent(in) :: old      !! state at the start of the increment
       integer, intent(in) :: ntens                       !! 2 (s_N, s_T) or 3 (s_N, s_T1, s_T2)
@@ -113,6 +135,9 @@ contains
       integer, intent(out) :: status                     !! STATUS_OK or a failure code
       !> time increment (s), as for `interface_update`
       real(dp), intent(in), optional :: dt
+      !> the separation at the start of the increment (mm, the first NTENS components; checked by
+      !> the caller: finite, within SEPARATION_MAX), as interface_update's s_old; absent: not known
+      real(dp), intent(in), optional :: s_old(3)
 
       type(coefficient_set_type) :: c, dc
       type(response_type) :: r
@@ -120,6 +145,9 @@ contains
       type(damage_terms_type) :: terms
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
+      ! the crack that closes within the increment (interphase_law_update.inc)
+      real(dp) :: s_start(3), slip_from(2), dfrom_ds(2, 3), d_start, m_start
+      logical :: closing
       integer :: nt, which
       !> the damage law's D is on its growing branch (displacement law: D_law < D^ < 1; fracture
       !> law: D_n < D < 1), the only case where dD/ds can be non-zero and the tangent needs dt/dD
@@ -140,6 +168,8 @@ contains
          status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s(1:ntens))))
          return
       end if
+      s_start = 0.0_dp
+      if (present(s_old)) s_start = s_old
       ! the damage law's step, the response and the outputs (one source with the UMAT's paths)
       ! (update_law: interphase_law_update.inc's name of the damage law, DAMAGE_*)
       associate (update_law => params%damage_law)
@@ -158,6 +188,7 @@ contains
    ! the response at fixed D, here where the compiler inlines it into the update
    ! (interphase_response's, from the same source: a private copy)
    include 'interphase_response.inc'
+   include 'interphase_closing_slip.inc'
    ! the displacement law, here where the compiler inlines it into the update (interphase_damage's,
    ! from the same source: a private copy)
    include 'interphase_damage.inc'

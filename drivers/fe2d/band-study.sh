@@ -102,8 +102,8 @@ series() {
 }
 series couplet-micro-band-monotonic lobatto 1 1e-4 2e-4 40 80 160 320 640
 series couplet-micro-band-monotonic gauss 1 1e-4 2e-4 40 80 160 320 640
-series couplet-micro-band-cyclic gauss 0 1e-4 2e-4 20 40 80 160
-series couplet-micro-band-cyclic lobatto 0 1e-4 2e-4 20 40 80 160
+series couplet-micro-band-cyclic gauss 1 1e-4 2e-4 20 40 80 160 320
+series couplet-micro-band-cyclic lobatto 1 1e-4 2e-4 20 40 80 160 320
 series couplet-micro-viscous-monotonic lobatto 1 1e-2 1e-2 40 80 160 320 640
 series couplet-micro-viscous-monotonic gauss 1 1e-2 1e-2 40 80 160 320 640
 series couplet-micro-viscous-cyclic gauss 0 1e-2 1e-2 20 40 80 160

@@ -78,7 +78,7 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
    real(dp), intent(in) :: celent, dfgrd0(3, 3), dfgrd1(3, 3)
    character(len=80), intent(in) :: cmname
 
-   real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6), work
+   real(dp) :: s(3), traction(3), tangent(3, 3), psi, sigma(6), work, s_old(3)
    integer :: status, severity, nsep, i, j
    logical :: host_energies, within, taken
    !> the host is CalculiX (known once PROPS are decoded): its DDSDDE is uninitialised, and it
@@ -224,17 +224,26 @@ subroutine umat(stress, statev, ddsdde, sse, spd, scd, rpl, ddsddt, drplde, drpl
          status = STATUS_BAD_OPTION
          exit update
       end if
+      ! (s_old: the separation at the start of the increment, for a crack that closes within it)
       if (map%identity) then
          ! a cohesive element: the separations themselves (NTENS = 2 or 3; written out, as below)
          s(1) = stran(1) + dstran(1)
          s(2) = stran(2) + dstran(2)
          if (ntens == 3) s(3) = stran(3) + dstran(3)
+         s_old(1) = stran(1)
+         s_old(2) = stran(2)
+         s_old(3) = 0.0_dp
+         if (ntens == 3) s_old(3) = stran(3)
       else
          do i = 1, nsep
             s(i) = map%thickness*(stran(map%component(i)) + dstran(map%component(i)))
          end do
+         s_old = 0.0_dp
+         do i = 1, nsep
+            s_old(i) = map%thickness*stran(map%component(i))
+         end do
       end if
-      call update_point(params, old, nsep, s, traction, tangent, new, psi, status, dtime)
+      call update_point(params, old, nsep, s, traction, tangent, new, psi, status, dtime, s_old)
       if (status == STATUS_BAD_TIME_INCREMENT) then
          write (message, '(a,es12.4e3,a)') 'DTIME = ', dtime, ' s: viscous regularisation needs a finite DTIME >= 0'
          exit update

@@ -54,7 +54,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    use interphase_params, only: HOST_VALUE_MAX, HOST_INCREMENT_MAX, SEPARATION_MAX
    use interphase_params, only: law_params_type, from_props, refuse_umat_options
    use interphase_state, only: interface_state_type, unpack_statev, pack_statev, count_invalid_states, state_slots
-   use interphase_kernel, only: update_point
+   use interphase_kernel, only: update_point, closes_within
    use interphase_coefficients, only: coefficient_set_type
    use interphase_provider, only: coefficients_at, check_run_time_data
    use interphase_block, only: block_update, density_counts, block_supports, block_energies
@@ -106,9 +106,11 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    type(coefficient_set_type) :: intact, intact_rate
    real(dp) :: ds(CHUNK, 3), psi(CHUNK)
    logical :: ok(CHUNK)
-   real(dp) :: s_point(3), sv(NSTATV_VISCOUS)
+   !> the block's points whose crack closes within the increment (they take the point update)
+   logical :: closing(CHUNK)
+   real(dp) :: s_point(3), s_point_old(3), sv(NSTATV_VISCOUS)
    real(dp) :: traction(3), tangent(3, 3), psi_first
-   logical :: blocked, packaging, viscous, bad_state
+   logical :: blocked, packaging, viscous, bad_state, by_point
    integer :: nsv   !! STATEV slots of the state (state_slots)
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
@@ -320,16 +322,33 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   statenew(k0:k1, SV_SLIP_1), statenew(k0:k1, SV_SLIP_2), statenew(k0:k1, SV_REGIME), &
                   psi(1:n), ok(1:n), nbad)
             end if
+            ! a crack that closes within the increment starts its friction step from the slip
+            ! where the faces met (interphase_closing_slip.inc), which the block does not form:
+            ! such points take the point update below, which replaces the block's values (the
+            ! kernel's closes_within decides, for the block as for every update)
+            closing(1:n) = closes_within(stateold(k0:k1, SV_REGIME), stateold(k0:k1, SV_DAMAGE), &
+               stateold(k0:k1, SV_SEP_N), statenew(k0:k1, SV_SEP_N))
+            by_point = any(closing(1:n))
          else
             if (ntens == 2) statenew(k0:k1, SV_SEP_T2) = 0.0_dp
             nbad = 0
+            by_point = .true.
+         end if
+         s_point_old = 0.0_dp
+         if (by_point) then
             do k = 1, n
+               if (blocked) then
+                  if (.not. closing(k)) cycle
+                  ! (the block's count of failed points without this one's: the point update counts it)
+                  if (.not. ok(k)) nbad = nbad - 1
+               end if
                km = k0 + k - 1
                ! checked above, cannot fail here
                sv(1:nsv) = stateold(km, 1:nsv)
                call unpack_statev(nsv, sv, ntens, viscous, old, status, message)
                s_point(1:ntens) = statenew(km, SV_SEP_N:SV_SEP_N + ntens - 1)
-               call update_point(params, old, ntens, s_point, traction, tangent, new, psi(k), status, dt)
+               s_point_old(1:ntens) = stateold(km, SV_SEP_N:SV_SEP_N + ntens - 1)
+               call update_point(params, old, ntens, s_point, traction, tangent, new, psi(k), status, dt, s_point_old)
                if (status == STATUS_RCURVE_OUT_OF_RANGE) then
                   ! the R-curve file does not reach the damage this point needs: a setup error
                   write (message, '(a,i0,a,a)', iostat=status) 'block point ', km, ': ', &
@@ -362,7 +381,9 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   sv(1:nsv) = stateold(first_failed, 1:nsv)
                   call unpack_statev(nsv, sv, ntens, viscous, old, status, message)
                   s_point(1:ntens) = statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
-                  call update_point(params, old, ntens, s_point, traction, tangent, new, psi_first, first_status, dt)
+                  s_point_old(1:ntens) = stateold(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)
+                  call update_point(params, old, ntens, s_point, traction, tangent, new, psi_first, first_status, dt, &
+                     s_point_old)
                end if
                write (first_message, '(a,3es13.4e3)') 'separation (mm) ', &
                   statenew(first_failed, SV_SEP_N:SV_SEP_N + ntens - 1)

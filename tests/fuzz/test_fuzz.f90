@@ -367,7 +367,7 @@ contains
             cpsi = 0.0_dp
             cnew = cstate(:, k)
             call call_capi(props, ntens, cstate(:, k), s_new(1:ntens), ct(1:ntens), ck(1:ntens, 1:ntens), cnew, &
-               cpsi, status, detail)
+               cpsi, status, detail, sep(1:ntens, k))
             capi_ok = status == STATUS_OK
             vumat_ok = .not. (vblock%state(k, SV_FAILED) > 0.0_dp)
             call check(umat_ok .eqv. capi_ok, where, 'UMAT ok = '//trim(merge('T', 'F', umat_ok))// &

@@ -3,11 +3,11 @@
 !> and the C entry point. The arguments Abaqus passes but interphase does not read are set to
 !> neutral values here, once.
 module interphase_adapter_calls
-   use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_char, c_null_char, c_loc
+   use, intrinsic :: iso_c_binding, only: c_int, c_size_t, c_char, c_null_char, c_loc, c_null_ptr
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_REQUIRED, NSTATV_VUMAT
    use interphase_abaqus_interfaces, only: umat, vumat
-   use interphase_capi, only: interphase_update_c
+   use interphase_capi, only: interphase_update_c, interphase_update_increment_c
    implicit none
    private
    public :: umat_point_type, call_umat_point, call_umat_element, vumat_block_type, vumat_block_init, call_vumat_block, &
@@ -134,13 +134,16 @@ contains
       b%ener_inelas = ep_new
    end subroutine call_vumat_block
 
-   !> One call of the C entry point interphase_update (through its Fortran binding); the tangent
-   !> comes back row-major as C returns it, reshaped here to tangent(i, j) = dt_i/ds_j. On a
-   !> non-zero status the outputs are left as they were and `detail` holds the message.
-   subroutine call_capi(props, ntens, state_old, separation, traction, tangent, state_new, psi, status, detail)
+   !> One call of the C entry point interphase_update, or interphase_update_increment where the
+   !> separation at the start of the increment is given (through their Fortran bindings); the
+   !> tangent comes back row-major as C returns it, reshaped here to tangent(i, j) = dt_i/ds_j. On
+   !> a non-zero status the outputs are left as they were and `detail` holds the message.
+   subroutine call_capi(props, ntens, state_old, separation, traction, tangent, state_new, psi, status, detail, &
+         separation_old)
       real(dp), intent(in) :: props(:)
       integer, intent(in) :: ntens
       real(dp), intent(in) :: state_old(NSTATV_REQUIRED), separation(ntens)
+      real(dp), intent(in), optional :: separation_old(ntens)
       real(dp), intent(inout) :: traction(ntens), tangent(ntens, ntens), state_new(NSTATV_REQUIRED), psi
       integer, intent(out) :: status
       character(len=*), intent(out) :: detail
@@ -148,7 +151,7 @@ contains
       character(kind=c_char), target :: buffer(DETAIL_LEN)
       ! (the C entry takes pointers: targets holding the arguments)
       real(dp), target :: row_major(ntens*ntens), c_props(size(props)), c_old(NSTATV_REQUIRED), c_s(ntens), &
-         c_t(ntens), c_new(NSTATV_REQUIRED), c_psi
+         c_t(ntens), c_new(NSTATV_REQUIRED), c_psi, c_s_old(ntens)
       integer :: i, j
       c_props = props
       c_old = state_old
@@ -163,8 +166,15 @@ contains
          end do
       end do
       buffer = c_null_char
-      status = int(interphase_update_c(c_loc(c_props), int(size(props), c_int), int(ntens, c_int), c_loc(c_old), &
-         c_loc(c_s), c_loc(c_t), c_loc(row_major), c_loc(c_new), c_loc(c_psi), c_loc(buffer), int(DETAIL_LEN, c_size_t)))
+      if (present(separation_old)) then
+         c_s_old = separation_old
+         status = int(interphase_update_increment_c(c_loc(c_props), int(size(props), c_int), int(ntens, c_int), &
+            c_loc(c_old), c_loc(c_s_old), c_loc(c_s), c_null_ptr, c_loc(c_t), c_loc(row_major), c_loc(c_new), &
+            c_loc(c_psi), c_loc(buffer), int(DETAIL_LEN, c_size_t)))
+      else
+         status = int(interphase_update_c(c_loc(c_props), int(size(props), c_int), int(ntens, c_int), c_loc(c_old), &
+            c_loc(c_s), c_loc(c_t), c_loc(row_major), c_loc(c_new), c_loc(c_psi), c_loc(buffer), int(DETAIL_LEN, c_size_t)))
+      end if
       traction = c_t
       state_new = c_new
       psi = c_psi

@@ -116,12 +116,14 @@ contains
       path = 'scratch_'//name
    end function scratch_path
 
-   !> Central finite-difference tangent of the update at fixed old state (MPa/mm).
-   function fd_tangent(params, old, s, step) result(tangent)
+   !> Central finite-difference tangent of the update at fixed old state (MPa/mm), from the
+   !> separation s_old at the start of the increment where given (interface_update's).
+   function fd_tangent(params, old, s, step, s_old) result(tangent)
       type(law_params_type), intent(in) :: params
       type(interface_state_type), intent(in) :: old
       real(dp), intent(in) :: s(:)
       real(dp), intent(in) :: step           !! separation step (mm)
+      real(dp), intent(in), optional :: s_old(:)
       real(dp) :: tangent(size(s), size(s))
       real(dp) :: sp(size(s)), tp(size(s)), tm(size(s)), k(size(s), size(s)), psi
       type(interface_state_type) :: new
@@ -129,9 +131,9 @@ contains
       do j = 1, size(s)
          sp = s
          sp(j) = s(j) + step
-         call interface_update(params, old, sp, tp, k, new, psi, status)
+         call interface_update(params, old, sp, tp, k, new, psi, status, s_old=s_old)
          sp(j) = s(j) - step
-         call interface_update(params, old, sp, tm, k, new, psi, status)
+         call interface_update(params, old, sp, tm, k, new, psi, status, s_old=s_old)
          tangent(:, j) = (tp - tm)/(2.0_dp*step)
       end do
    end function fd_tangent
