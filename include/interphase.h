@@ -7,7 +7,7 @@
  * `target_link_libraries(app PRIVATE interphase::interphase)`, or the shared
  * `libinterphase.so`, `interphase::shared`), plus the Fortran runtime (`-lgfortran`) and LAPACK
  * when linking the static library by hand. interphase_update, interphase_update_dt,
- * interphase_run, interphase_run_history and interphase_status_message are re-entrant and
+ * interphase_update_increment, interphase_run, interphase_run_history and interphase_status_message are re-entrant and
  * thread-safe: they keep no state; the caller owns every array. The loaders
  * interphase_load_table and interphase_load_rcurve are not: they write library-wide data (the
  * custom RVE table, the tabulated R-curve) that every later update reads. Call them once, from
@@ -189,6 +189,23 @@ int interphase_update(const double *props, int nprops, int ntens, const double *
 int interphase_update_dt(const double *props, int nprops, int ntens, const double *state_old,
                          const double *separation, double dt, double *traction, double *tangent,
                          double *state_new, double *stored_energy, char *detail, size_t detail_len);
+
+/**
+ * interphase_update (@p dt NULL) or interphase_update_dt (@p dt pointing at the time increment,
+ * s) given also @p separation_old, the separation at the start of the increment (mm, @p ntens
+ * doubles), where @p state_old was reached. A crack open in @p state_old that is closed at
+ * @p separation (s_N <= 0) met its faces during the increment, on the straight path from
+ * @p separation_old: its friction then starts from the slip it had there, not from the state's
+ * slip, so that the closed state does not depend on where the increment began (docs/theory.md,
+ * 'An increment across which the crack closes'). The UMAT (STRAN), the VUMAT and interphase_run
+ * do the same. @p separation_old is checked as @p separation is (not NULL:
+ * INTERPHASE_STATUS_NULL_ARGUMENT; finite, within INTERPHASE_SEPARATION_MAX, the detail naming
+ * it). Otherwise as interphase_update_dt.
+ */
+int interphase_update_increment(const double *props, int nprops, int ntens, const double *state_old,
+                                const double *separation_old, const double *separation, const double *dt,
+                                double *traction, double *tangent, double *state_new, double *stored_energy,
+                                char *detail, size_t detail_len);
 
 /**
  * One point along a whole path of separations in one call: the loop over the increments runs

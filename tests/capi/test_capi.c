@@ -1048,6 +1048,69 @@ static void test_arguments(void) {
   printf("arguments: NULL arrays named, sizes of 2^63 and more read unsigned\n");
 }
 
+/* interphase_update_increment: the separation at the start of the increment reaches the update as
+ * in interphase_run (the same numbers, bit for bit, along a path whose fifth row closes the crack
+ * within its increment), the closure ends where the faces met, and separation_old and dt are
+ * checked. */
+static void test_update_increment(void) {
+  double props[INTERPHASE_NPROPS_SIMPLIFIED];
+  paper_props(props);
+  enum { N = 6 };
+  const double path[N][2] = {{0.0, 0.0},    {0.001, 0.0015},  {0.002, 0.003},
+                             {0.003, 0.004}, {-0.001, 0.0005}, {-0.0012, 0.0}};
+  double tra[N * 2] = {0}, sta[N * INTERPHASE_NSTATE] = {0}, psi[N] = {0}, wd[N] = {0};
+  size_t done = 0;
+  char detail[257] = "";
+  int status = interphase_run(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, N, &path[0][0], NULL, tra, NULL, sta, psi, wd,
+                              &done, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && done == N, "increment path: interphase_run status %d: %s", status, detail);
+  double state[INTERPHASE_NSTATE] = {0}, t[2], k[4], next[INTERPHASE_NSTATE], e;
+  for (int i = 1; i < N; ++i) {
+    status = interphase_update_increment(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, state, path[i - 1], path[i], NULL, t, k,
+                                         next, &e, detail, sizeof detail);
+    CHECK(status == INTERPHASE_STATUS_OK, "increment row %d: status %d: %s", i, status, detail);
+    CHECK(memcmp(t, &tra[2 * i], sizeof t) == 0 && memcmp(next, &sta[INTERPHASE_NSTATE * i], sizeof next) == 0 &&
+              e == psi[i],
+          "increment row %d: traction (%.17g, %.17g), not interphase_run's (%.17g, %.17g)", i, t[0], t[1], tra[2 * i],
+          tra[2 * i + 1]);
+    memcpy(state, next, sizeof state);
+  }
+  /* row 4: open at (0.003, 0.004) mm, closed at (-0.001, 0.0005): s_N = 0 at s_T = 1.375 um, where the
+   * simplified model's faces stick with the slip s_T */
+  const double *closed = &sta[INTERPHASE_NSTATE * 4];
+  CHECK(sta[INTERPHASE_NSTATE * 3 + 3] == 1.0 && closed[3] == 2.0 && close_to(closed[1], 1.375e-3, 0.0, 1e-14),
+        "increment closure: regimes %g -> %g, slip %.17g mm (1.375e-3 expected)", sta[INTERPHASE_NSTATE * 3 + 3],
+        closed[3], closed[1]);
+  /* interphase_update, without the start: the state's slip, another closed state */
+  status = interphase_update(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, &sta[INTERPHASE_NSTATE * 3], path[4], t, k, next, &e,
+                             NULL, 0);
+  CHECK(status == INTERPHASE_STATUS_OK && fabs(t[1] - tra[2 * 4 + 1]) > 0.1,
+        "increment closure without the start: Sigma_T %.17g against %.17g", t[1], tra[2 * 4 + 1]);
+
+  const double virgin[INTERPHASE_NSTATE] = {0};
+  status = interphase_update_increment(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, virgin, NULL, path[1], NULL, t, k, next,
+                                       &e, detail, sizeof detail);
+  expect_null(status, detail, "separation_old", "interphase_update_increment");
+  const double nan_start[2] = {NAN, 0.0};
+  status = interphase_update_increment(props, INTERPHASE_NPROPS_SIMPLIFIED, 2, virgin, nan_start, path[1], NULL, t, k,
+                                       next, &e, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_NONFINITE_SEPARATION && strstr(detail, "separation_old") != NULL,
+        "increment: a NaN start gave status %d: %s", status, detail);
+  double viscous[INTERPHASE_NPROPS_SIMPLIFIED + 3];
+  memcpy(viscous, props, sizeof props);
+  viscous[9] = 0.0, viscous[10] = 0.0, viscous[11] = 0.5;
+  double vstate[INTERPHASE_NSTATE_VISCOUS] = {0}, vnext[INTERPHASE_NSTATE_VISCOUS];
+  status = interphase_update_increment(viscous, INTERPHASE_NPROPS_SIMPLIFIED + 3, 2, vstate, path[0], path[1], NULL, t, k,
+                                       vnext, &e, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_BAD_TIME_INCREMENT, "increment: a viscous material without dt gave status %d",
+        status);
+  const double dt = 0.1;
+  status = interphase_update_increment(viscous, INTERPHASE_NPROPS_SIMPLIFIED + 3, 2, vstate, path[0], path[1], &dt, t, k,
+                                       vnext, &e, detail, sizeof detail);
+  CHECK(status == INTERPHASE_STATUS_OK && vnext[0] > 0.0, "increment: viscous, dt = 0.1 s: status %d, D %g: %s", status,
+        vnext[0], detail);
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--load") == 0) {
     test_load_table(argv[2], argv[3]);
@@ -1059,6 +1122,7 @@ int main(int argc, char **argv) {
     test_run(argv[1]);
     test_run_history(argv[1]);
     test_arguments();
+    test_update_increment();
   } else {
     fprintf(stderr, "usage: %s <tests/driver/reference/mixed.csv>\n"
                     "       %s --load <tables/paper.dat> <tables/paper-resolution.dat>\n", argv[0], argv[0]);

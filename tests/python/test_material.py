@@ -1647,3 +1647,47 @@ def test_pickled_material_keeps_read_only_props_and_its_state_size():
         with pytest.raises(ValueError, match="PROPS were changed after it was made .* asks for 5 state variables, "
                                              "the material has 4"):
             call()
+
+
+@pytest.mark.parametrize("material", [SIMPLIFIED, MICRO])
+def test_update_from_the_start_separation_closes_where_the_faces_met(material):
+    """An increment across which the crack closes (docs/theory.md): with separation_old, one
+    increment ends where a refined path does; without it, from the state's slip, it does not."""
+    m = interphase.Material(**material)
+    u = None
+    s_old = np.zeros(2)
+    for i in range(1, 41):
+        s = np.array([0.003, 0.004]) * i / 40
+        u = m.update(s, None if u is None else u.state, separation_old=s_old)
+        s_old = s
+    opened = u.state
+    assert opened[3] == 1  # open
+    start, end = np.array([0.003, 0.004]), np.array([-0.001, 0.0005])
+    one = m.update(end, opened, separation_old=start)
+    refined, previous = opened, start
+    for i in range(1, 1002):
+        s = start + (end - start) * i / 1001
+        r = m.update(s, refined, separation_old=previous)
+        refined, previous = r.state, s
+    assert one.state[3] == 2 and r.state[3] == 2  # stick
+    assert one.traction[1] == pytest.approx(r.traction[1], rel=1e-10)
+    assert abs(m.update(end, opened).traction[1] - r.traction[1]) > 0.1
+    # the tangent is the derivative of that update, the start held
+    h = 1e-8
+    fd = np.empty((2, 2))
+    for j in range(2):
+        e = np.zeros(2)
+        e[j] = h
+        fd[:, j] = (m.update(end + e, opened, separation_old=start).traction
+                    - m.update(end - e, opened, separation_old=start).traction) / (2 * h)
+    assert np.max(np.abs(one.tangent - fd)) < 1e-6 * np.max(np.abs(one.tangent))
+
+
+def test_update_checks_the_start_separation():
+    m = interphase.Material(**SIMPLIFIED)
+    with pytest.raises(ValueError, match="separation_old must hold 2"):
+        m.update([0.001, 0.0], separation_old=[0.0, 0.0, 0.0])
+    with pytest.raises(interphase.InterphaseError, match="separation_old"):
+        m.update([0.001, 0.0], separation_old=[float("nan"), 0.0])
+    with pytest.raises(TypeError):
+        m.update([0.001, 0.0], separation_old=["a", 0.0])

@@ -63,6 +63,9 @@ _int, _size, _ptr, _dbl = ctypes.c_int, ctypes.c_size_t, ctypes.c_void_p, ctypes
 lib.interphase_update_dt.restype = _int
 lib.interphase_update_dt.argtypes = [_ptr, _int, _int, _ptr, _ptr, _dbl, _ptr, _ptr, _ptr, _c_double_p,
                                      ctypes.c_char_p, _size]
+lib.interphase_update_increment.restype = _int
+lib.interphase_update_increment.argtypes = [_ptr, _int, _int, _ptr, _ptr, _ptr, _c_double_p, _ptr, _ptr, _ptr,
+                                            _c_double_p, ctypes.c_char_p, _size]
 lib.interphase_update.restype = _int
 lib.interphase_update.argtypes = [_ptr, _int, _int, _ptr, _ptr, _ptr, _ptr, _ptr, _c_double_p,
                                   ctypes.c_char_p, _size]

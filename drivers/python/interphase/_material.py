@@ -532,13 +532,17 @@ class Material:
         ensure_loaded("rcurve", self.rcurve_path)
 
     @_holding_files
-    def update(self, separation, state=None, dt=None):
+    def update(self, separation, state=None, dt=None, separation_old=None):
         """One update at `separation` (s_N, s_T) or (s_N, s_T1, s_T2) (mm) from `state`.
 
         Returns an Update (traction (MPa), tangent (MPa/mm, tangent[i, j] = d t_i/d s_j),
         state, stored_energy (N/mm)); `dt` (s) is the time increment, which viscous
-        regularisation needs. Raises InterphaseError on a failed update; TypeError when the
-        separation or the state holds anything but real numbers (ints and floats).
+        regularisation needs; `separation_old` (mm, the separation's shape) is the separation
+        at the start of the increment, where `state` was reached: a crack that closes within the
+        increment then starts its friction from the slip where the faces met, as in the UMAT and
+        in run() (without it, from the state's slip: docs/theory.md, 'An increment across which
+        the crack closes'). Raises InterphaseError on a failed update; TypeError when the
+        separation, separation_old or the state holds anything but real numbers (ints and floats).
 
         The separation's length makes the update 2-D or 3-D. A state whose second slip
         state[2] (lambda_2) is not zero is a 3-D one: a 2-D update refuses it (InterphaseError,
@@ -578,7 +582,17 @@ class Material:
         new = np.empty(self.nstate)
         psi = ctypes.c_double()
         detail = detail_buffer()
-        if dt is None:
+        if separation_old is not None:
+            s_old = _numbers("separation_old", separation_old, "Material.update")
+            if s_old.shape != (n,):
+                raise ValueError(f"Material.update: separation_old must hold {n} components, as the separation, "
+                                 f"got {_shape_text(s_old)}")
+            s_old, s_old_p = _as_c(s_old)
+            dt_c = None if dt is None else ctypes.byref(ctypes.c_double(_real("dt", dt, "Material.update")))
+            status = lib.interphase_update_increment(props_p, props.size, n, old_p, s_old_p, s_p, dt_c,
+                                                     traction.ctypes.data, tangent.ctypes.data, new.ctypes.data,
+                                                     ctypes.byref(psi), detail, DETAIL_LEN)
+        elif dt is None:
             status = lib.interphase_update(props_p, props.size, n, old_p, s_p, traction.ctypes.data,
                                            tangent.ctypes.data, new.ctypes.data, ctypes.byref(psi),
                                            detail, DETAIL_LEN)
@@ -588,7 +602,7 @@ class Material:
                                               ctypes.byref(psi), detail, DETAIL_LEN)
         if status != st.STATUS_OK:
             if status == st.STATUS_BAD_TIME_INCREMENT and dt is None:
-                # (the library's message names its C entry, interphase_update_dt)
+                # (the library's message names its C entries)
                 raise InterphaseError(status, "the material has viscous regularisation (its viscosity option): "
                                       "pass the time increment, Material.update(separation, state, dt=...)")
             raise InterphaseError(status, text_of(detail))
