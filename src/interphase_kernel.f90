@@ -42,6 +42,7 @@ module interphase_kernel
    use interphase_damage, only: damage_terms_type
    use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
    use interphase_response, only: response_type, slip_measure
+   use interphase_closing, only: closing_slip, add_closing_share
    use interphase_state, only: interface_state_type
    implicit none
    private
@@ -145,8 +146,9 @@ contains
       type(damage_terms_type) :: terms
       real(dp) :: s_n, st(2), t, t_sq, d_hat, dd_dsn, dd_dt, d, dd_ds(3), slip_trial(2), dslip_dd(2), m_from
       real(dp) :: d_law
-      ! the crack that closes within the increment (interphase_law_update.inc)
-      real(dp) :: s_start(3), slip_from(2), dfrom_ds(2, 3), d_start, m_start
+      ! the slip the friction step starts from (interphase_law_update.inc's): lambda_n, or for a
+      ! crack that closes within the increment the slip where its faces met
+      real(dp) :: slip_from(2), dfrom_ds(2, 3), d_start, m_start
       logical :: closing
       integer :: nt, which
       !> the damage law's D is on its growing branch (displacement law: D_law < D^ < 1; fracture
@@ -168,8 +170,23 @@ contains
          status = merge(STATUS_SEPARATION_OUT_OF_RANGE, STATUS_NONFINITE_SEPARATION, all(is_finite(s(1:ntens))))
          return
       end if
-      s_start = 0.0_dp
-      if (present(s_old)) s_start = s_old
+      ! the slip the friction step starts from: lambda_n, or where the crack closes within the
+      ! increment (open at its start, s_N,n > 0, closed at its end) the slip where s_N passed
+      ! through zero (closes_within decides, interphase_closes_within.inc; interphase_closing
+      ! forms it). (The regime first, as an integer: the one test most calls stop at.)
+      slip_from = old%slip
+      closing = .false.
+      if (present(s_old)) then
+         if (old%regime == REGIME_OPEN) closing = closes_within(real(REGIME_OPEN, dp), old%d, s_old(1), s(1))
+         if (closing) then
+            s_n = s(1)
+            st(1) = s(2)
+            st(2) = 0.0_dp
+            if (ntens == 3) st(2) = s(3)
+            call closing_slip(params, old, s_old, s_n, st(1), st(2), ntens, slip_from, dfrom_ds, status)
+            if (status /= STATUS_OK) return
+         end if
+      end if
       ! the damage law's step, the response and the outputs (one source with the UMAT's paths)
       ! (update_law: interphase_law_update.inc's name of the damage law, DAMAGE_*)
       associate (update_law => params%damage_law)
@@ -188,7 +205,7 @@ contains
    ! the response at fixed D, here where the compiler inlines it into the update
    ! (interphase_response's, from the same source: a private copy)
    include 'interphase_response.inc'
-   include 'interphase_closing_slip.inc'
+   include 'interphase_closes_within.inc'
    ! the displacement law, here where the compiler inlines it into the update (interphase_damage's,
    ! from the same source: a private copy)
    include 'interphase_damage.inc'

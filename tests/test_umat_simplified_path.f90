@@ -13,7 +13,9 @@
 !> SSE, SPD and PNEWDT, and the message the call reports (its count, severity and text), must
 !> agree bit for bit. Each path is also asked directly which calls it takes: every call the
 !> general path accepts for a material and element a path is for (its model and law, no options,
-!> mu, G_cI and G_cII not -0) must be that path's, and the other element's path must take none.
+!> mu, G_cI and G_cII not -0), but for a crack that closes within the increment (closes_within:
+!> the general path forms its start slip), must be that path's, and the other element's path
+!> must take none.
 !>
 !> Materials: half simplified, half micromechanical (the built-in table, or the custom table: the
 !> paper's, loaded from the source tree after part 0); half with the displacement-driven law,
@@ -49,6 +51,7 @@ program test_umat_simplified_path
    use interphase_layout, only: NSTATV_REQUIRED, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, SV_REGIME, REGIME_INTACT, &
       REGIME_OPEN, REGIME_STICK, REGIME_SLIP
    use interphase_adapter_calls, only: call_umat_element
+   use interphase_kernel, only: closes_within
    use interphase_umat_simplified, only: simplified_cohesive_path => cohesive_path
    use interphase_umat_micromechanical, only: micromechanical_cohesive_path => cohesive_path
    use interphase_umat_simplified_fracture, only: simplified_fracture_path => cohesive_path
@@ -459,8 +462,10 @@ contains
       call call_umat(general, [p, 0.0_dp])
       its_material = same_bits(p(1:2), SELECTORS(:, m)) .and. .not. minus_zero(p(3))
       if (m >= 3) its_material = its_material .and. .not. (minus_zero(p(size(p) - 1)) .or. minus_zero(p(size(p))))
+      ! (a crack that closes within the increment is the general path's: its start slip)
       if (general%reported == 0 .and. c%ndi == 1 .and. c%nshr == c%ntens - 1 .and. c%ntens == e + 1 &
-         .and. its_material) ntakeable(m, e) = ntakeable(m, e) + 1
+         .and. its_material .and. .not. closes_within(c%statev(SV_REGIME), c%statev(SV_DAMAGE), c%stran(1), &
+         c%stran(1) + c%dstran(1))) ntakeable(m, e) = ntakeable(m, e) + 1
    end subroutine count_taken
 
    !> Whether path m (PATH_NP's order) for element e (1: 2-D, 2: 3-D) takes the call, asked on a

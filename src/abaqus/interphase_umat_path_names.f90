@@ -31,6 +31,7 @@ module interphase_umat_path_names
    use interphase_damage, only: damage_terms_type
    use interphase_response, only: response_type, slip_measure
    use interphase_fracture, only: crack_load_type, growth_point_type, grow_crack
+   use interphase_closing, only: closing_slip, add_closing_share
    implicit none
    private
    public :: int64, dp, is_finite, is_finite_nonnegative, HIGH_HALF, LOW_HALF, LOW_HALF_MASK, &
@@ -50,5 +51,5 @@ module interphase_umat_path_names
       coefficient_set_type, NO_COEFFICIENTS, SIMPLIFIED_UFBAR, micro_coefficients, micro_values, &
       table_curvature_type, custom_table_loaded, real_text, rcurve_loaded, rcurve_covers, &
       rcurve_coverage, damage_terms_type, response_type, slip_measure, crack_load_type, &
-      growth_point_type, grow_crack
+      growth_point_type, grow_crack, closing_slip, add_closing_share
 end module interphase_umat_path_names

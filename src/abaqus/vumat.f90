@@ -323,7 +323,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
                   psi(1:n), ok(1:n), nbad)
             end if
             ! a crack that closes within the increment starts its friction step from the slip
-            ! where the faces met (interphase_closing_slip.inc), which the block does not form:
+            ! where the faces met (interphase_closing), which the block does not form:
             ! such points take the point update below, which replaces the block's values (the
             ! kernel's closes_within decides, for the block as for every update)
             closing(1:n) = closes_within(stateold(k0:k1, SV_REGIME), stateold(k0:k1, SV_DAMAGE), &

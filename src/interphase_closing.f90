@@ -1,71 +1,56 @@
-! The crack that closes within the increment: the slip its friction step starts from, and that
-! slip's share of the tangent. One source, included in interphase_kernel (update_point) and in
-! the UMAT's paths (interphase_umat_cohesive_path.inc), which include interphase_law_update.inc,
-! its caller; the includer provides the names interphase_kernel uses for them (dp,
-! law_params_type, interface_state_type, coefficient_set_type, response_type,
-! coefficient_values_at, growth_trial_slip, binary64_bits, int64, REGIME_OPEN, REGIME_STICK,
-! REGIME_SLIP, STATUS_OK, STATUS_BAD_COEFFICIENTS).
-!
-! An increment that starts open (s_N,n > 0) and ends closed (s_N <= 0) passes, on its straight
-! path s_n + t (s - s_n), through s_N = 0 at t_c = s_N,n/(s_N,n - s_N), where the faces meet. There
-! the closed crack carries no normal stress (sigma = S^c_N s_N = 0), so no friction: its faces
-! slip to tau = 0, lambda_c = (T^c_T/kf) s_T(t_c), kf = -T^f, with the coefficients at D_n (the
-! closed branch of the response at s_N = 0; a refined path reaches the same slip, whichever side
-! of s_N = 0 its increments end on). The friction step then starts from lambda_c, not from lambda_n,
-! and the closed state no longer depends on where the increment began (docs/theory.md, 'An
-! increment across which the crack closes'). For the simplified model lambda_c = s_T(t_c), the
-! open crack's slip there; for the micromechanical model the table's open slip dbar_t s_T/ufbar
-! lies within 0.2 % of it (at D = 0.9; the same docs).
+!> A crack that closes within the increment: the slip its friction step starts from, and that
+!> slip's share of the tangent (docs/theory.md, 'An increment across which the crack closes').
+!> The decision is `closes_within` (interphase_closes_within.inc, inlined where the update runs);
+!> these procedures run only where it holds, and live in their own module so that the update's
+!> hot path does not carry them (a compiler that inlined them there grew the UMAT's paths past
+!> their own inlining: docs/performance.md).
+!>
+!> An increment that starts open (s_N,n > 0) and ends closed (s_N <= 0) passes, on its straight
+!> path s_n + t (s - s_n), through s_N = 0 at t_c = s_N,n/(s_N,n - s_N), where the faces meet. There
+!> the closed crack carries no normal stress (sigma = S^c_N s_N = 0), so no friction: its faces
+!> slip to tau = 0, lambda_c = (T^c_T/kf) s_T(t_c), kf = -T^f, with the coefficients at D_n (the
+!> closed branch of the response at s_N = 0; a refined path reaches the same slip, whichever side
+!> of s_N = 0 its increments end on). The friction step then starts from lambda_c, not from lambda_n,
+!> and the closed state no longer depends on where the increment began (docs/theory.md, 'An
+!> increment across which the crack closes'). For the simplified model lambda_c = s_T(t_c), the
+!> open crack's slip there; for the micromechanical model the table's open slip dbar_t s_T/ufbar
+!> lies within 0.2 % of it (at D = 0.9; the same docs).
+module interphase_closing
+   use interphase_kinds, only: dp
+   use interphase_params, only: law_params_type
+   use interphase_state, only: interface_state_type
+   use interphase_enums, only: REGIME_STICK, REGIME_SLIP
+   use interphase_status, only: STATUS_OK, STATUS_BAD_COEFFICIENTS
+   use interphase_coefficients, only: coefficient_set_type
+   use interphase_provider, only: coefficient_values_at
+   use interphase_response, only: response_type, growth_trial_slip
+   implicit none
+   private
+   public :: closing_slip, add_closing_share
 
-   !> Whether the crack closes within the increment: open at its start (REGIME_OPEN, D_n > 0)
-   !> with s_N,n > 1e-200 mm, and s_N <= 0 at its end. The one test of it, for the point update
-   !> (interphase_law_update.inc) and for the VUMAT's block, whose closing points take the point
-   !> update. A caller that does not know s_N,n passes 0. On bit patterns: the block passes its
-   !> STATEV columns as they come, whose bad values (NaN among them, which the block reports) make
-   !> a floating-point comparison raise the invalid flag, a trap in a host that traps it; every
-   !> value that is not finite is 'not closing' here (for finite ones the tests are the
-   !> comparisons they replace: non-negative doubles order as their bit patterns).
-   pure elemental logical function closes_within(regime, d_old, s_n_start, s_n)
-      real(dp), intent(in) :: regime                     !! REGIME_* at the start, as a real (STATEV's form)
-      real(dp), intent(in) :: d_old                      !! D_n (-)
-      real(dp), intent(in) :: s_n_start, s_n             !! s_N at the start and at the end (mm)
-      !> The start opening below which the crack counts as closed at the start already (mm): the
-      !> start slip's slope d lambda_c/ds_N = (T^c_T/kf) (s_T - s_T,n) s_N,n/(s_N,n - s_N)^2 grows as
-      !> the tangential increment over the normal one, and with s_N,n - s_N >= 1e-200 mm it stays
-      !> finite for every admissible separation (|s_i| <= 1e20 mm: at most ~1e220), where a
-      !> subnormal s_N,n would overflow it. A length with no physical meaning (an atom is 1e-7 mm).
-      real(dp), parameter :: CLOSING_START_MIN = 1.0e-200_dp
-      integer(int64), parameter :: OPEN_BITS = transfer(real(REGIME_OPEN, dp), 0_int64)
-      integer(int64), parameter :: START_MIN_BITS = transfer(CLOSING_START_MIN, 0_int64)
-      integer(int64), parameter :: HUGE_BITS = transfer(huge(1.0_dp), 0_int64)
-      integer(int64) :: start_bits, end_bits, d_bits
-      start_bits = binary64_bits(s_n_start)
-      end_bits = binary64_bits(s_n)
-      d_bits = binary64_bits(d_old)
-      ! regime 1.0; 1e-200 < s_N,n <= huge; s_N <= 0 (+0, -0 or negative), finite; 0 < D_n <= huge
-      closes_within = binary64_bits(regime) == OPEN_BITS .and. start_bits > START_MIN_BITS .and. &
-         start_bits <= HUGE_BITS .and. end_bits <= 0_int64 .and. ibclr(end_bits, 63) <= HUGE_BITS .and. &
-         d_bits > 0_int64 .and. d_bits <= HUGE_BITS
-   end function closes_within
+contains
 
    !> For a crack that closes within the increment (interphase_law_update.inc decides: the state
    !> at its start open with D_n > 0, s_N,n > 0 at the start and s_N <= 0 at the end), the slip
    !> lambda_c the friction step starts from and d lambda_c/ds (columns 1:ntens; zeros beyond).
-   pure subroutine closing_slip(params, old, s_start, s_n, st, ntens, slip_from, dfrom_ds, status)
+   pure subroutine closing_slip(params, old, s_start, s_n, st1, st2, ntens, slip_from, dfrom_ds, status)
       type(law_params_type), intent(in) :: params
       type(interface_state_type), intent(in) :: old      !! state at the start of the increment
       real(dp), intent(in) :: s_start(3)                 !! separation at the start, s_N,n > 0 (mm)
-      real(dp), intent(in) :: s_n, st(2)                 !! separation at the end (mm), s_N <= 0
+      !> separation at the end (mm), s_N <= 0 (by value: the caller's array is not passed, so that
+      !> its compiler keeps it where it likes)
+      real(dp), value :: s_n, st1, st2
       integer, intent(in) :: ntens
       real(dp), intent(out) :: slip_from(2)              !! lambda_c (mm)
       real(dp), intent(out) :: dfrom_ds(2, 3)            !! d lambda_c/ds (-)
       integer, intent(out) :: status
 
       type(coefficient_set_type) :: c_n, dc_n
-      real(dp) :: t_c, dt_dsn, ratio, st_start(2), st_c(2)
+      real(dp) :: t_c, dt_dsn, ratio, st_start(2), st_c(2), st(2)
 
       dfrom_ds = 0.0_dp
       slip_from = old%slip
+      st = [st1, st2]
       call coefficient_values_at(params, old%d, c_n, dc_n, status)
       if (status /= STATUS_OK) return
       if (.not. (-c_n%tf > 0.0_dp)) then
@@ -136,3 +121,5 @@
       r%dlam_ds(1:nt, 1:ntens) = r%dlam_ds(1:nt, 1:ntens) + share(1:nt, 1:ntens)
       r%tangent(2:ntens, 1:ntens) = r%tangent(2:ntens, 1:ntens) + c%cf_t*share(1:nt, 1:ntens)
    end subroutine add_closing_share
+
+end module interphase_closing
