@@ -44,6 +44,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
       stretchold, defgradold, fieldold, stressold, stateold, enerinternold, enerinelasold, &
       tempnew, stretchnew, defgradnew, fieldnew, stressnew, statenew, enerinternnew, &
       enerinelasnew)
+   use, intrinsic :: iso_fortran_env, only: int64
    use interphase_kinds, only: dp
    use interphase_layout, only: NSTATV_VUMAT, SV_DAMAGE, SV_SLIP_1, SV_SLIP_2, &
       SV_REGIME, SV_SEP_N, SV_SEP_T1, SV_SEP_T2, SV_FAILED, SV_DAMAGE_INVISCID, NSTATV_SHARED, NSTATV_VISCOUS
@@ -111,6 +112,7 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
    real(dp) :: s_point(3), s_point_old(3), sv(NSTATV_VISCOUS)
    real(dp) :: traction(3), tangent(3, 3), psi_first
    logical :: blocked, packaging, viscous, bad_state, by_point
+   integer(int64) :: ncross   !! points whose s_N passes from positive to not positive
    integer :: nsv   !! STATEV slots of the state (state_slots)
    integer :: ntens, nt, km, k, k0, k1, n, j, nbad, status, nfailed, first_failed, first_status, nbad_energy
    integer :: fatal_code   !! a STATUS_* code, or < 0 when `message` says it all
@@ -326,9 +328,21 @@ subroutine vumat(nblock, ndir, nshr, nstatev, nfieldv, nprops, lanneal, steptime
             ! where the faces met (interphase_closing), which the block does not form:
             ! such points take the point update below, which replaces the block's values (the
             ! kernel's closes_within decides, for the block as for every update)
-            closing(1:n) = closes_within(stateold(k0:k1, SV_REGIME), stateold(k0:k1, SV_DAMAGE), &
-               stateold(k0:k1, SV_SEP_N), statenew(k0:k1, SV_SEP_N))
-            by_point = any(closing(1:n))
+            ! (a screen first, in a pass of its own, which vectorises: the points whose s_N passed
+            ! from positive to not positive, on bit patterns as the block's checks, so that a NaN
+            ! raises no flag; only where there is one, closes_within, the decision)
+            ncross = 0
+            do k = 1, n
+               km = k0 + k - 1
+               ncross = ncross + merge(1_int64, 0_int64, transfer(stateold(km, SV_SEP_N), 0_int64) > 0_int64 &
+                  .and. transfer(statenew(km, SV_SEP_N), 0_int64) <= 0_int64)
+            end do
+            by_point = ncross > 0
+            if (by_point) then
+               closing(1:n) = closes_within(stateold(k0:k1, SV_REGIME), stateold(k0:k1, SV_DAMAGE), &
+                  stateold(k0:k1, SV_SEP_N), statenew(k0:k1, SV_SEP_N))
+               by_point = any(closing(1:n))
+            end if
          else
             if (ntens == 2) statenew(k0:k1, SV_SEP_T2) = 0.0_dp
             nbad = 0
