@@ -196,7 +196,8 @@ int interphase_update_dt(const double *props, int nprops, int ntens, const doubl
  * doubles), where @p state_old was reached. A crack open in @p state_old that is closed at
  * @p separation (s_N <= 0) met its faces during the increment, on the straight path from
  * @p separation_old: its friction then starts from the slip it had there, not from the state's
- * slip, so that the closed state does not depend on where the increment began (docs/theory.md,
+ * slip (and, with the displacement-driven law, from the damage it had grown to there), so that
+ * the closed state does not depend on where the increment began (docs/theory.md,
  * 'An increment across which the crack closes'). The UMAT (STRAN), the VUMAT and interphase_run
  * do the same. @p separation_old is checked as @p separation is (not NULL:
  * INTERPHASE_STATUS_NULL_ARGUMENT; finite, within INTERPHASE_SEPARATION_MAX, the detail naming

@@ -136,8 +136,8 @@ contains
       integer, intent(out) :: status                     !! STATUS_OK or a failure code
       !> time increment (s), as for `interface_update`
       real(dp), intent(in), optional :: dt
-      !> the separation at the start of the increment (mm, the first NTENS components; checked by
-      !> the caller: finite, within SEPARATION_MAX), as interface_update's s_old; absent: not known
+      !> the separation at the start of the increment (mm, the first NTENS components), as
+      !> interface_update's s_old; absent, or not finite within SEPARATION_MAX: not known
       real(dp), intent(in), optional :: s_old(3)
 
       type(coefficient_set_type) :: c, dc
@@ -148,7 +148,7 @@ contains
       real(dp) :: d_law
       ! the slip the friction step starts from (interphase_law_update.inc's): lambda_n, or for a
       ! crack that closes within the increment the slip where its faces met
-      real(dp) :: slip_from(2), dfrom_ds(2, 3), d_start, m_start
+      real(dp) :: slip_from(2), dfrom_ds(2, 3), d_start, m_start, d_from, dd_from_ds(3), dm_from
       logical :: closing
       integer :: nt, which
       !> the damage law's D is on its growing branch (displacement law: D_law < D^ < 1; fracture
@@ -175,15 +175,20 @@ contains
       ! through zero (closes_within decides, interphase_closes_within.inc; interphase_closing
       ! forms it). (The regime first, as an integer: the one test most calls stop at.)
       slip_from = old%slip
+      d_from = old%d
       closing = .false.
       if (present(s_old)) then
          if (old%regime == REGIME_OPEN) closing = closes_within(real(REGIME_OPEN, dp), old%d, s_old(1), s(1))
+         ! (a start beyond the separation's range, which a host's STRAN may hold, is taken as not
+         ! known: the start slip is formed from it only where its arithmetic is the separation's)
+         if (closing) closing = all_within(ntens, s_old, SEPARATION_MAX)
          if (closing) then
             s_n = s(1)
             st(1) = s(2)
             st(2) = 0.0_dp
             if (ntens == 3) st(2) = s(3)
-            call closing_slip(params, old, s_old, s_n, st(1), st(2), ntens, slip_from, dfrom_ds, status)
+            call closing_slip(params, old, s_old, s_n, st(1), st(2), ntens, slip_from, dfrom_ds, d_from, dd_from_ds, &
+               dm_from, status)
             if (status /= STATUS_OK) return
          end if
       end if

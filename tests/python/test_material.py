@@ -1691,3 +1691,13 @@ def test_update_checks_the_start_separation():
         m.update([0.001, 0.0], separation_old=[float("nan"), 0.0])
     with pytest.raises(TypeError):
         m.update([0.001, 0.0], separation_old=["a", 0.0])
+
+
+def test_tangent_check_replays_a_row_that_closes_the_crack():
+    """A run whose second step closes the open crack within the increment: tangent_check replays
+    it from the row before (its start slip), and the tangent is that update's derivative."""
+    m = interphase.Material(**SIMPLIFIED)
+    r = m.run([[0.0, 0.0], [0.003, 0.004], [-0.001, 0.0005]])
+    assert r.state[1][3] == 1 and r.state[2][3] == 2  # open, then stick
+    check = m.tangent_check(r, 1e-5)
+    assert check.checked == 2 and check.passed

@@ -781,7 +781,10 @@ class Material:
             old = result.state[k - 1]
             s = result.separation[k].copy()
             dt = result.time[k] - result.time[k - 1]
-            base = self.update(s, old, dt=dt)
+            # (from the row before, as the run took the step: a crack that closes within it starts
+            # its friction from the slip where its faces met)
+            s_old = result.separation[k - 1]
+            base = self.update(s, old, dt=dt, separation_old=s_old)
             if not (np.array_equal(base.traction, result.traction[k]) and np.array_equal(base.state, result.state[k])):
                 every = getattr(result, "output_every", None)
                 if every is None:
@@ -802,9 +805,9 @@ class Material:
                 probe = s.copy()
                 try:
                     probe[j] = s[j] + step
-                    plus = self.update(probe, old, dt=dt).traction
+                    plus = self.update(probe, old, dt=dt, separation_old=s_old).traction
                     probe[j] = s[j] - step
-                    minus = self.update(probe, old, dt=dt).traction
+                    minus = self.update(probe, old, dt=dt, separation_old=s_old).traction
                 except InterphaseError:
                     failed = True
                     break
