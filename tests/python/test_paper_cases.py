@@ -254,24 +254,34 @@ def test_tangent_check_is_the_drivers(point_driver, source_dir, tmp_path):
 
 
 def test_tangent_check_finds_a_wrong_tangent(source_dir, tmp_path):
-    """h2I at t = 4: a closed, damaged crack at s_N = 0 with s_T = 0, where the update slips on both
-    sides and DDSDDE is the stick tangent (drivers/README.md, 'The tangent check'): the check
-    reports it, relative error 0.41, and fails. On the mixed history written every 10th step the
-    rows are not each the update of the previous one (friction makes the path count): refused."""
+    """A closed, damaged crack held at s = 0 after it closed there: its state sticks at the apex of
+    the Coulomb cone (Sigma_N = 0, tau = 0), the next update slips on both sides in s_T, and DDSDDE
+    is the stick tangent (drivers/README.md, 'The tangent check'): the check reports it, relative
+    error 0.36, and fails. The step that closes the crack at s = 0 from its open state passes (its
+    friction starts from the slip where the faces met: docs/theory.md, 'An increment across which
+    the crack closes'), as h2I's closures at t = 2 and t = 4 do. On the mixed history written
+    every 10th step the rows are not each the update of the previous one (friction makes the path
+    count): refused."""
     c = interphase.read_case(tangent_case(source_dir, tmp_path, "h2I.txt"))
     check = c.check_tangent(c.run())
+    assert check.passed and check.exception_rows.tolist() == [400, 800] and check.worst < 1e-5
+    m = c.material
+    r = m.run([[0.0, 0.0], [0.003, 0.0], [0.0, 0.0], [0.0, 0.0]])
+    check = m.tangent_check(r, 1e-5)
     assert not check.passed
-    assert check.worst == pytest.approx(0.41, abs=0.01)
-    assert check.worst_time == pytest.approx(4.0)
+    assert check.worst == pytest.approx(0.355, abs=0.01)
+    assert check.worst_time == pytest.approx(3.0)
     # the failure says where, and that it is the documented exception (a closed, damaged crack
-    # sticking at s_N = 0: t = 2 and t = 4), and what the check measures away from it
-    assert check.worst_row == 800 and check.exception_rows.tolist() == [400, 800]
-    assert check.failure.startswith("the tangent check failed: worst relative error 0.41")
-    assert ("at t = 4.0 (row 800, s_N = 0.0, s_T = 0.0 mm) is above the tolerance 0.1E-4; that row is the "
+    # sticking at s_N = 0: rows 2 and 3, the closing step passing), and what the check measures
+    # away from it
+    assert check.worst_row == 3 and check.exception_rows.tolist() == [2, 3]
+    assert check.errors[2] < 1e-5
+    assert check.failure.startswith("the tangent check failed: worst relative error 0.35")
+    assert ("at t = 3.0 (row 3, s_N = 0.0, s_T = 0.0 mm) is above the tolerance 0.1E-4; that row is the "
             "tangent check's one documented exception: a closed, damaged crack that sticks at s_N = 0 exactly"
             in check.failure)
     assert check.failure.endswith("rows at this exception: 2; away from them the worst relative error is "
-                                  f"{_real_text(check.worst_elsewhere)} at t = 4.755 (row 951), within the tolerance")
+                                  f"{_real_text(check.worst_elsewhere)} at t = 1.0 (row 1), within the tolerance")
     assert check.worst_elsewhere < 1e-5
     c = interphase.read_case(tangent_case(source_dir, tmp_path, "mixed.txt", ", output_every = 10"))
     with pytest.raises(ValueError, match="output_every=1"):

@@ -880,7 +880,9 @@ class TangentCheck:
     (D > 0) that sticks at s_N = 0 exactly with mu > 0. There Sigma_N = 0, so a stick state has the
     crack shear stress tau = 0 and phi = mu sigma + |tau| = 0 (the apex of the Coulomb cone): any
     change of s_T makes the crack slip, and the tangent, the stick one, is not the derivative of
-    both sides (h2I at t = 4: relative error 0.41). worst_elsewhere and worst_elsewhere_row: the
+    both sides (a crack held at s = 0 after it closed there: relative error 0.36 at the hold; the
+    step that closes it there passes, its start slip being where the faces met: docs/theory.md).
+    worst_elsewhere and worst_elsewhere_row: the
     largest error of the other checked rows (0 and None when there are none)."""
 
     def __init__(self, time, errors, tolerance, step, checked, kinks, unchecked, separation=None, state=None,
