@@ -131,7 +131,7 @@ contains
    pure subroutine add_closing_share(params, d_from, m_from, d, c, dc, s_n, st, ntens, slip_trial, dfrom_ds, r, &
          slip_from, dd_from_ds, dm_from)
       type(law_params_type), intent(in) :: params
-      real(dp), intent(in) :: d_from, m_from              !! D_n and m(D_n), as growth_trial_slip takes them
+      real(dp), intent(in) :: d_from, m_from              !! D_n (or D_c) and m of it, as growth_trial_slip takes them
       real(dp), intent(in) :: d                           !! damage D of the response (-)
       type(coefficient_set_type), intent(in) :: c, dc     !! coefficients at D (and d/dD)
       real(dp), intent(in) :: s_n, st(2)                  !! separation (mm)
